@@ -1,0 +1,92 @@
+// rupture/cli/main.cpp
+// The `rupture` command line:
+//   rupture check CASE.toml [--set key=value ...]   validate and print derived quantities
+//   rupture run   CASE.toml -o DIR [--set key=value ...] [--quiet]
+// Exit codes: 0 success, 1 bad input, 2 the run went unstable, 3 I/O or other failure.
+#include <CLI/CLI.hpp>
+#include <cmath>
+#include <fmt/format.h>
+
+#include "core/errors.hpp"
+#include "io/case_toml.hpp"
+#include "run/driver.hpp"
+#include "solver/summary.hpp"
+
+using namespace rupture;
+
+namespace {
+
+void print_check(const std::string& path, const Case& c) {
+  const CaseSummary s = summarize(c);
+  fmt::print("case: {}{}\n", path, c.title.empty() ? "" : " (" + c.title + ")");
+  fmt::print("plane {}, scheme {}, flip {:g}\n", c.plane == PlaneMode::strain ? "strain" : "stress",
+             scheme_name(c.solver.scheme), c.solver.flip);
+  for (std::size_t k = 0; k < c.materials.size(); ++k) {
+    const WaveSpeeds& w = s.speeds[k];
+    fmt::print(
+        "material {}: c_D = {:.1f} m/s, c_S = {:.1f} m/s, c_R = {:.1f} m/s (approx. {:.1f}), "
+        "sqrt(2) c_S = {:.1f} m/s\n",
+        c.materials[k].name, w.dilatational, w.shear, w.rayleigh, w.rayleigh_approx,
+        std::sqrt(2.0) * w.shear);
+  }
+  for (std::size_t b = 0; b < c.bodies.size(); ++b)
+    fmt::print("body {} (field {}): {} particles\n", c.bodies[b].name, c.bodies[b].field,
+               s.particles_per_body[b]);
+  fmt::print("dt={:.6e}\n", s.dt);
+  fmt::print("dt_cfl_limit={:.6e}\n", s.dt_cfl);
+  fmt::print("cells={}\n", s.cells);
+  fmt::print("nodes={}\n", s.nodes);
+  fmt::print("particles={}\n", s.particles);
+  fmt::print("steps={}\n", s.steps);
+  fmt::print("memory_estimate_mib={:.1f}\n", double(s.memory_bytes) / (1024.0 * 1024.0));
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"rupture: dynamic fracture with GIMP and cohesive zones"};
+  app.require_subcommand(1);
+  std::string case_path, out_dir;
+  std::vector<std::string> overrides;
+  bool quiet = false;
+
+  auto* check = app.add_subcommand("check", "validate a case and print derived quantities");
+  check->add_option("case", case_path, "case file (TOML)")->required();
+  check->add_option("--set", overrides, "override an input key: dotted.key=value");
+
+  auto* run = app.add_subcommand("run", "run a case");
+  run->add_option("case", case_path, "case file (TOML)")->required();
+  run->add_option("-o,--output", out_dir, "output directory")->required();
+  run->add_option("--set", overrides, "override an input key: dotted.key=value");
+  run->add_flag("-q,--quiet", quiet, "no progress line");
+
+  CLI11_PARSE(app, argc, argv);
+
+  try {
+    const Case c = load_case(case_path, overrides);
+    if (check->parsed()) {
+      print_check(case_path, c);
+      return 0;
+    }
+    print_check(case_path, c);
+    const RunResult r = run_case(c, RunOptions{out_dir, !quiet});
+    fmt::print("status={}\n", r.ok ? "completed" : "failed");
+    fmt::print("steps={}\n", r.steps);
+    fmt::print("simulated_time={:.6e}\n", r.simulated_time);
+    fmt::print("wall_seconds={:.3f}\n", r.wall_seconds);
+    fmt::print("particle_updates_per_second={:.4e}\n", r.particle_updates_per_second);
+    fmt::print("energy_balance_error={:.4e}\n", r.energy_balance_error);
+    fmt::print("output={}\n", out_dir);
+    if (!r.ok) {
+      fmt::print(stderr, "error: {}\n", r.message);
+      return 2;
+    }
+    return 0;
+  } catch (const InputError& e) {
+    fmt::print(stderr, "error: {}\n", e.what());
+    return 1;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "error: {}\n", e.what());
+    return 3;
+  }
+}

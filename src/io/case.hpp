@@ -1,0 +1,61 @@
+// rupture/io/case.hpp
+// A validated simulation case: everything the solver needs, in SI units, produced only by
+// io/case_toml (which owns all input validation). Plain data; no behaviour.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "bc/velocity_bc.hpp"
+#include "material/elastic.hpp"
+
+namespace rupture {
+
+enum class Scheme { USF, USL, MUSL };
+
+struct BodySpec {
+  std::string name;
+  int material = 0;             // index into Case::materials
+  double min[2]{}, max[2]{};    // rectangle, m
+  double velocity[2]{};         // initial velocity, m/s
+  int field = 0;                // velocity field: one per body
+};
+
+struct GridSpec {
+  double min[2]{}, max[2]{};     // physical domain, m
+  double cell_size = 0.0;        // h, m
+  int particles_per_cell = 2;    // per direction (2 -> 2x2, SPEC §2)
+};
+
+struct TimeSpec {
+  double end = 0.0;  // s
+  double cfl = 0.4;  // Delta t = cfl * h / c_D (SPEC E6)
+};
+
+struct SolverSpec {
+  Scheme scheme = Scheme::MUSL;
+  double flip = 1.0;  // FLIP fraction of the particle velocity update (1 = FLIP, 0 = PIC)
+  int threads = 0;    // 0 = OpenMP default
+};
+
+struct OutputSpec {
+  double history_interval = 0.0;   // s; 0 = every step
+  double snapshot_interval = 0.0;  // s; 0 = no snapshots
+  double progress_interval = 1.0;  // wall-clock seconds between progress lines
+};
+
+struct Case {
+  std::string title;
+  PlaneMode plane = PlaneMode::strain;
+  std::vector<ElasticMaterial> materials;
+  std::vector<BodySpec> bodies;
+  GridSpec grid;
+  TimeSpec time;
+  SolverSpec solver;
+  std::vector<VelocityBC> boundary;
+  OutputSpec output;
+  std::string input_toml;  // the merged input (file + --set) as TOML, echoed into run.json
+};
+
+const char* scheme_name(Scheme s);
+
+}  // namespace rupture

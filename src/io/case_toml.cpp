@@ -1,0 +1,433 @@
+// rupture/io/case_toml.cpp
+#include "io/case_toml.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <toml++/toml.h>
+
+#include "core/errors.hpp"
+
+namespace rupture {
+namespace {
+
+std::string show(const toml::node& n) {
+  std::ostringstream os;
+  if (auto s = n.as_string()) {
+    os << '"' << s->get() << '"';
+  } else if (n.is_table()) {
+    os << "{...}";
+  } else {
+    n.visit([&os](const auto& v) { os << v; });
+  }
+  return os.str();
+}
+
+[[noreturn]] void fail(const std::string& key, const std::string& value, const std::string& rule) {
+  throw InputError(fmt::format("input key '{}' = {}: {}", key, value, rule));
+}
+
+[[noreturn]] void fail(const std::string& key, double value, const std::string& rule) {
+  fail(key, fmt::format("{:g}", value), rule);
+}
+
+// A view of one TOML table that records which keys were read, so that unknown keys
+// (typos) are reported instead of silently ignored.
+class Section {
+ public:
+  Section(const toml::table& t, std::string path) : t_(t), path_(std::move(path)) {}
+
+  std::string key(const std::string& k) const { return path_.empty() ? k : path_ + "." + k; }
+  bool has(const std::string& k) {
+    used_.insert(k);
+    return t_.contains(k);
+  }
+
+  const toml::node* node(const std::string& k) {
+    used_.insert(k);
+    return t_.get(k);
+  }
+
+  double number(const std::string& k) {
+    const toml::node* n = node(k);
+    if (!n) fail(key(k), "(missing)", "required, a number");
+    if (auto v = n->value<double>(); v && (n->is_floating_point() || n->is_integer())) {
+      if (!std::isfinite(*v)) fail(key(k), show(*n), "must be a finite number");
+      return *v;
+    }
+    fail(key(k), show(*n), "must be a number");
+  }
+  double number(const std::string& k, double fallback) { return has(k) ? number(k) : fallback; }
+
+  long integer(const std::string& k, long fallback) {
+    const toml::node* n = node(k);
+    if (!n) return fallback;
+    if (!n->is_integer()) fail(key(k), show(*n), "must be an integer");
+    return long(*n->value<std::int64_t>());
+  }
+
+  std::string string(const std::string& k, const std::string& fallback,
+                     const std::vector<std::string>& allowed = {}) {
+    const toml::node* n = node(k);
+    if (!n) {
+      if (fallback.empty() && !allowed.empty())
+        fail(key(k), "(missing)", "required, one of " + join(allowed));
+      return fallback;
+    }
+    if (!n->is_string()) fail(key(k), show(*n), "must be a string");
+    std::string v = n->as_string()->get();
+    if (!allowed.empty() && std::find(allowed.begin(), allowed.end(), v) == allowed.end())
+      fail(key(k), show(*n), "must be one of " + join(allowed));
+    return v;
+  }
+
+  // A 2-vector [a, b] of numbers.
+  void pair(const std::string& k, double out[2], bool required) {
+    const toml::node* n = node(k);
+    if (!n) {
+      if (required) fail(key(k), "(missing)", "required, an array of two numbers [x, y]");
+      return;
+    }
+    const toml::array* a = n->as_array();
+    if (!a || a->size() != 2) fail(key(k), show(*n), "must be an array of two numbers [x, y]");
+    for (std::size_t i = 0; i < 2; ++i) {
+      auto v = (*a)[i].value<double>();
+      if (!v || !std::isfinite(*v)) fail(key(k), show(*n), "must be an array of two finite numbers");
+      out[i] = *v;
+    }
+  }
+
+  std::vector<std::string> strings(const std::string& k) {
+    std::vector<std::string> out;
+    const toml::node* n = node(k);
+    if (!n) return out;
+    const toml::array* a = n->as_array();
+    if (!a) fail(key(k), show(*n), "must be an array of strings");
+    for (const auto& e : *a) {
+      if (!e.is_string()) fail(key(k), show(*n), "must be an array of strings");
+      out.push_back(e.as_string()->get());
+    }
+    return out;
+  }
+
+  Section table(const std::string& k, bool required) {
+    static const toml::table empty;
+    const toml::node* n = node(k);
+    if (!n) {
+      if (required) fail(key(k), "(missing)", "required table [" + key(k) + "]");
+      return Section(empty, key(k));
+    }
+    if (!n->is_table()) fail(key(k), show(*n), "must be a table");
+    return Section(*n->as_table(), key(k));
+  }
+
+  const toml::table& raw() const { return t_; }
+
+  // Every key present must have been read.
+  void finish() const {
+    for (const auto& [k, v] : t_) {
+      const std::string name(k.str());
+      if (!used_.count(name)) {
+        std::vector<std::string> known(used_.begin(), used_.end());
+        fail(key(name), show(v), "unknown key; allowed here: " + join(known));
+      }
+    }
+  }
+
+  static std::string join(const std::vector<std::string>& v) {
+    std::string s;
+    for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + ("\"" + v[i] + "\"");
+    return s.empty() ? "(none)" : s;
+  }
+
+ private:
+  const toml::table& t_;
+  std::string path_;
+  std::set<std::string> used_;
+};
+
+void apply_override(toml::table& root, const std::string& assignment) {
+  const auto eq = assignment.find('=');
+  if (eq == std::string::npos || eq == 0)
+    fail("--set", "\"" + assignment + "\"", "must have the form dotted.key=value");
+  std::string path = assignment.substr(0, eq);
+  std::string text = assignment.substr(eq + 1);
+  std::vector<std::string> parts;
+  std::stringstream ss(path);
+  for (std::string part; std::getline(ss, part, '.');) {
+    part.erase(0, part.find_first_not_of(" \t"));
+    part.erase(part.find_last_not_of(" \t") + 1);
+    if (part.empty()) fail("--set", "\"" + assignment + "\"", "the key has an empty component");
+    parts.push_back(part);
+  }
+  toml::table* t = &root;
+  for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
+    toml::node* n = t->get(parts[i]);
+    if (!n) {
+      t->insert(parts[i], toml::table{});
+      n = t->get(parts[i]);
+    }
+    if (!n->is_table()) fail(path, show(*n), "--set cannot descend into a non-table value");
+    t = n->as_table();
+  }
+  // Parse the value as TOML; a bare word that is not TOML is taken as a string.
+  toml::table parsed;
+  try {
+    parsed = toml::parse("v = " + text);
+  } catch (const toml::parse_error&) {
+    parsed.insert("v", text);
+  }
+  t->insert_or_assign(parts.back(), *parsed.get("v"));
+}
+
+bool inside(double a, double lo, double hi, double tol) { return a >= lo - tol && a <= hi + tol; }
+
+bool whole_cells(double length, double h) {
+  const double n = length / h;
+  return std::fabs(n - std::round(n)) <= 1e-6 * std::max(1.0, n);
+}
+
+Case build_case(const toml::table& root) {
+  Case c;
+  Section top(root, "");
+  c.title = top.string("title", "");
+
+  {
+    Section model = top.table("model", false);
+    const std::string plane = model.string("plane", "strain", {"strain", "stress"});
+    c.plane = plane == "strain" ? PlaneMode::strain : PlaneMode::stress;
+    model.finish();
+  }
+
+  std::map<std::string, int> material_index;
+  {
+    Section mats = top.table("materials", true);
+    for (const auto& [k, v] : mats.raw()) {
+      const std::string name(k.str());
+      Section m = mats.table(name, true);
+      ElasticMaterial em;
+      em.name = name;
+      em.youngs_modulus = m.number("youngs_modulus");
+      if (em.youngs_modulus <= 0) fail(m.key("youngs_modulus"), em.youngs_modulus, "must be > 0 (Pa)");
+      em.poisson_ratio = m.number("poisson_ratio");
+      if (!(em.poisson_ratio > -1.0 && em.poisson_ratio < 0.5))
+        fail(m.key("poisson_ratio"), em.poisson_ratio, "must lie in (-1, 0.5)");
+      em.density = m.number("density");
+      if (em.density <= 0) fail(m.key("density"), em.density, "must be > 0 (kg/m^3)");
+      m.finish();
+      material_index[name] = int(c.materials.size());
+      c.materials.push_back(em);
+    }
+    if (c.materials.empty()) fail("materials", "{}", "at least one material is required");
+    if (c.materials.size() > 255) fail("materials", double(c.materials.size()), "at most 255 materials");
+    mats.finish();
+  }
+
+  {
+    Section g = top.table("grid", true);
+    g.pair("min", c.grid.min, true);
+    g.pair("max", c.grid.max, true);
+    for (int d = 0; d < 2; ++d) {
+      if (!(c.grid.max[d] > c.grid.min[d]))
+        fail(g.key("max"), fmt::format("[{:g}, {:g}]", c.grid.max[0], c.grid.max[1]),
+             fmt::format("must exceed grid.min = [{:g}, {:g}] in both components", c.grid.min[0],
+                         c.grid.min[1]));
+    }
+    c.grid.cell_size = g.number("cell_size");
+    if (c.grid.cell_size <= 0) fail(g.key("cell_size"), c.grid.cell_size, "must be > 0 (m)");
+    for (int d = 0; d < 2; ++d) {
+      const double len = c.grid.max[d] - c.grid.min[d];
+      if (!whole_cells(len, c.grid.cell_size))
+        fail(g.key("cell_size"), c.grid.cell_size,
+             fmt::format("must divide the domain extent along {} ({:g} m) into whole cells",
+                         d == 0 ? "x" : "y", len));
+    }
+    const double cells = (c.grid.max[0] - c.grid.min[0]) * (c.grid.max[1] - c.grid.min[1]) /
+                         (c.grid.cell_size * c.grid.cell_size);
+    if (cells > 2e9) fail(g.key("cell_size"), c.grid.cell_size, fmt::format("gives {:.3g} cells; at most 2e9", cells));
+    const long ppc = g.integer("particles_per_cell", 2);
+    if (ppc < 1 || ppc > 8) fail(g.key("particles_per_cell"), double(ppc), "must lie in [1, 8] (per direction)");
+    c.grid.particles_per_cell = int(ppc);
+    g.finish();
+  }
+
+  std::map<std::string, int> body_index;
+  {
+    Section bodies = top.table("bodies", true);
+    const double h = c.grid.cell_size, tol = 1e-9 * h;
+    for (const auto& [k, v] : bodies.raw()) {
+      const std::string name(k.str());
+      Section b = bodies.table(name, true);
+      BodySpec bs;
+      bs.name = name;
+      const std::string mat = b.string("material", "");
+      if (mat.empty()) fail(b.key("material"), "(missing)", "required, the name of a [materials] entry");
+      if (!material_index.count(mat)) {
+        std::vector<std::string> names;
+        for (const auto& m : c.materials) names.push_back(m.name);
+        fail(b.key("material"), "\"" + mat + "\"", "must name a material: " + Section::join(names));
+      }
+      bs.material = material_index[mat];
+      b.pair("min", bs.min, true);
+      b.pair("max", bs.max, true);
+      b.pair("velocity", bs.velocity, false);
+      for (int d = 0; d < 2; ++d) {
+        if (!(bs.max[d] > bs.min[d]))
+          fail(b.key("max"), fmt::format("[{:g}, {:g}]", bs.max[0], bs.max[1]),
+               fmt::format("the body is empty: must exceed {} = [{:g}, {:g}] in both components",
+                           b.key("min"), bs.min[0], bs.min[1]));
+        if (!inside(bs.min[d], c.grid.min[d], c.grid.max[d], tol) ||
+            !inside(bs.max[d], c.grid.min[d], c.grid.max[d], tol))
+          fail(b.key(inside(bs.min[d], c.grid.min[d], c.grid.max[d], tol) ? "max" : "min"),
+               fmt::format("[{:g}, {:g}]..[{:g}, {:g}]", bs.min[0], bs.min[1], bs.max[0], bs.max[1]),
+               fmt::format("the body must lie inside the grid [{:g}, {:g}]..[{:g}, {:g}]",
+                           c.grid.min[0], c.grid.min[1], c.grid.max[0], c.grid.max[1]));
+        if (!whole_cells(bs.min[d] - c.grid.min[d], h) || !whole_cells(bs.max[d] - c.grid.min[d], h))
+          fail(b.key("min"), fmt::format("[{:g}, {:g}]..[{:g}, {:g}]", bs.min[0], bs.min[1], bs.max[0], bs.max[1]),
+               fmt::format("body edges must lie on grid lines (multiples of grid.cell_size = {:g} m from grid.min)", h));
+      }
+      b.finish();
+      bs.field = int(c.bodies.size());
+      body_index[name] = bs.field;
+      c.bodies.push_back(bs);
+    }
+    if (c.bodies.empty()) fail("bodies", "{}", "at least one body is required");
+    if (c.bodies.size() > 255) fail("bodies", double(c.bodies.size()), "at most 255 bodies");
+    for (std::size_t i = 0; i < c.bodies.size(); ++i)
+      for (std::size_t j = i + 1; j < c.bodies.size(); ++j) {
+        const BodySpec &a = c.bodies[i], &b = c.bodies[j];
+        const double ox = std::min(a.max[0], b.max[0]) - std::max(a.min[0], b.min[0]);
+        const double oy = std::min(a.max[1], b.max[1]) - std::max(a.min[1], b.min[1]);
+        if (ox > tol && oy > tol)
+          fail("bodies." + b.name, "\"" + b.name + "\"",
+               "overlaps bodies." + a.name + "; bodies must not overlap");
+      }
+    bodies.finish();
+  }
+
+  {
+    Section t = top.table("time", true);
+    c.time.end = t.number("end");
+    if (c.time.end <= 0) fail(t.key("end"), c.time.end, "must be > 0 (s)");
+    c.time.cfl = t.number("cfl", 0.4);
+    if (!(c.time.cfl > 0 && c.time.cfl <= 1)) fail(t.key("cfl"), c.time.cfl, "must lie in (0, 1]");
+    t.finish();
+  }
+
+  {
+    Section s = top.table("solver", false);
+    const std::string scheme = s.string("scheme", "MUSL", {"MUSL", "USL", "USF"});
+    c.solver.scheme = scheme == "MUSL" ? Scheme::MUSL : scheme == "USL" ? Scheme::USL : Scheme::USF;
+    c.solver.flip = s.number("flip", 1.0);
+    if (!(c.solver.flip >= 0 && c.solver.flip <= 1)) fail(s.key("flip"), c.solver.flip, "must lie in [0, 1] (1 = FLIP, 0 = PIC)");
+    const long threads = s.integer("threads", 0);
+    if (threads < 0 || threads > 1024) fail(s.key("threads"), double(threads), "must lie in [0, 1024] (0 = all cores)");
+    c.solver.threads = int(threads);
+    s.finish();
+  }
+
+  {
+    Section bcs = top.table("boundary", false);
+    for (const auto& [k, v] : bcs.raw()) {
+      const std::string name(k.str());
+      Section b = bcs.table(name, true);
+      VelocityBC bc;
+      bc.name = name;
+      const std::string edge = b.string("edge", "", {"left", "right", "bottom", "top"});
+      bc.edge = edge == "left" ? Edge::left : edge == "right" ? Edge::right : edge == "bottom" ? Edge::bottom : Edge::top;
+      const bool vertical = bc.edge == Edge::left || bc.edge == Edge::right;
+      const int along = vertical ? 1 : 0;
+      const double lo = c.grid.min[along], hi = c.grid.max[along];
+      bc.from = b.number("from", lo);
+      bc.to = b.number("to", hi);
+      const std::string coord = vertical ? "y" : "x";
+      if (!(bc.from <= bc.to)) fail(b.key("to"), bc.to, fmt::format("must be >= {} = {:g}", b.key("from"), bc.from));
+      const double tol = 1e-9 * c.grid.cell_size;
+      if (!inside(bc.from, lo, hi, tol)) fail(b.key("from"), bc.from, fmt::format("must lie on the {} edge: {} in [{:g}, {:g}] m", edge, coord, lo, hi));
+      if (!inside(bc.to, lo, hi, tol)) fail(b.key("to"), bc.to, fmt::format("must lie on the {} edge: {} in [{:g}, {:g}] m", edge, coord, lo, hi));
+      const std::string comp = b.string("component", "", {"x", "y"});
+      bc.component = comp == "x" ? 0 : 1;
+      for (const std::string& body : b.strings("bodies")) {
+        if (!body_index.count(body)) {
+          std::vector<std::string> names;
+          for (const auto& bb : c.bodies) names.push_back(bb.name);
+          fail(b.key("bodies"), "\"" + body + "\"", "must name bodies among " + Section::join(names));
+        }
+        bc.fields.push_back(body_index[body]);
+      }
+      const std::string fn = b.string("function", "constant", {"constant", "trapezoid"});
+      bc.velocity.value = b.number("velocity");
+      if (fn == "trapezoid") {
+        bc.velocity.kind = TimeFunction::Kind::trapezoid;
+        bc.velocity.rise_time = b.number("rise_time");
+        if (bc.velocity.rise_time <= 0) fail(b.key("rise_time"), bc.velocity.rise_time, "must be > 0 (s)");
+        bc.velocity.plateau_time = b.number("plateau_time");
+        if (bc.velocity.plateau_time < 0) fail(b.key("plateau_time"), bc.velocity.plateau_time, "must be >= 0 (s)");
+        bc.velocity.fall_time = b.number("fall_time");
+        if (bc.velocity.fall_time <= 0) fail(b.key("fall_time"), bc.velocity.fall_time, "must be > 0 (s)");
+      } else {
+        for (const char* key : {"rise_time", "plateau_time", "fall_time"})
+          if (b.has(key)) fail(b.key(key), show(*b.node(key)), "only allowed with function = \"trapezoid\"");
+      }
+      b.finish();
+      c.boundary.push_back(bc);
+    }
+    bcs.finish();
+  }
+
+  {
+    Section o = top.table("output", false);
+    c.output.history_interval = o.number("history_interval", c.time.end / 200.0);
+    if (c.output.history_interval < 0) fail(o.key("history_interval"), c.output.history_interval, "must be >= 0 (s; 0 = every step)");
+    c.output.snapshot_interval = o.number("snapshot_interval", 0.0);
+    if (c.output.snapshot_interval < 0) fail(o.key("snapshot_interval"), c.output.snapshot_interval, "must be >= 0 (s; 0 = no snapshots)");
+    c.output.progress_interval = o.number("progress_interval", 1.0);
+    if (c.output.progress_interval <= 0) fail(o.key("progress_interval"), c.output.progress_interval, "must be > 0 (wall-clock s)");
+    o.finish();
+  }
+  top.finish();
+
+  std::ostringstream echo;
+  echo << toml::toml_formatter{root};
+  c.input_toml = echo.str();
+  return c;
+}
+
+}  // namespace
+
+const char* scheme_name(Scheme s) {
+  switch (s) {
+    case Scheme::USF: return "USF";
+    case Scheme::USL: return "USL";
+    case Scheme::MUSL: return "MUSL";
+  }
+  return "?";
+}
+
+Case parse_case(const std::string& toml_text, const std::vector<std::string>& overrides,
+                const std::string& origin) {
+  toml::table root;
+  try {
+    root = toml::parse(toml_text, origin);
+  } catch (const toml::parse_error& e) {
+    const auto& src = e.source();
+    throw InputError(fmt::format("{}:{}:{}: TOML syntax error: {}", origin, src.begin.line,
+                                 src.begin.column, e.description()));
+  }
+  for (const std::string& o : overrides) apply_override(root, o);
+  return build_case(root);
+}
+
+Case load_case(const std::string& path, const std::vector<std::string>& overrides) {
+  std::ifstream in(path);
+  if (!in) throw InputError(fmt::format("cannot read case file '{}'", path));
+  std::stringstream buf;
+  buf << in.rdbuf();
+  return parse_case(buf.str(), overrides, path);
+}
+
+}  // namespace rupture

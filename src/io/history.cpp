@@ -1,0 +1,28 @@
+// rupture/io/history.cpp
+#include "io/history.hpp"
+
+#include <cmath>
+#include <fmt/format.h>
+
+#include "io/atomic_file.hpp"
+
+namespace rupture {
+
+double EnergySample::relative_error() const {
+  const double scale = initial + std::fabs(external_work);
+  return scale > 0.0 ? std::fabs(balance()) / scale : 0.0;
+}
+
+std::string History::csv() const {
+  std::string s =
+      "time,kinetic_energy,strain_energy,external_work,total_energy,balance,"
+      "relative_balance_error\n";
+  for (const EnergySample& e : samples)
+    s += fmt::format("{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.6e}\n", e.time, e.kinetic,
+                     e.strain, e.external_work, e.total(), e.balance(), e.relative_error());
+  return s;
+}
+
+void History::write(const std::string& path) const { write_file_atomic(path, csv()); }
+
+}  // namespace rupture

@@ -1,0 +1,26 @@
+// rupture/io/history.hpp
+// Energy history (SPEC E14), sampled at a fixed interval of simulated time. Units: s and J per
+// unit thickness. The CSV is rewritten atomically, so it is always complete.
+// Columns: time, kinetic_energy, strain_energy, external_work, total_energy, balance,
+// relative_balance_error (balance = initial + external work - kinetic - strain).
+#pragma once
+#include <string>
+#include <vector>
+
+namespace rupture {
+
+struct EnergySample {
+  double time, kinetic, strain, external_work, initial;
+  double total() const { return kinetic + strain; }
+  double balance() const { return initial + external_work - total(); }
+  // |balance| relative to the energy put in (initial + |external work|).
+  double relative_error() const;
+};
+
+struct History {
+  std::vector<EnergySample> samples;
+  std::string csv() const;
+  void write(const std::string& path) const;
+};
+
+}  // namespace rupture

@@ -1,0 +1,62 @@
+// rupture/io/run_json.cpp
+#include "io/run_json.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <toml++/toml.h>
+
+namespace rupture {
+namespace {
+// JSON has no NaN/Inf; a failed run may carry them.
+double finite(double v) { return std::isfinite(v) ? v : 0.0; }
+}  // namespace
+
+std::string run_json(const Case& c, const CaseSummary& s, const RunRecord& r) {
+  toml::table t;
+  t.insert("version", RUPTURE_VERSION);
+  t.insert("title", c.title);
+  t.insert("status", r.status);
+  t.insert("message", r.message);
+  t.insert("dt", s.dt);
+  t.insert("dt_cfl_limit", s.dt_cfl);
+  t.insert("steps", r.steps);
+  t.insert("steps_planned", s.steps);
+  t.insert("end_time", c.time.end);
+  t.insert("simulated_time", r.simulated_time);
+  t.insert("cells", s.cells);
+  t.insert("nodes", s.nodes);
+  t.insert("fields", s.fields);
+  t.insert("particles", s.particles);
+  t.insert("memory_bytes_estimate", std::int64_t(s.memory_bytes));
+  t.insert("threads", r.threads);
+  t.insert("scheme", scheme_name(c.solver.scheme));
+  t.insert("flip", c.solver.flip);
+  t.insert("wall_seconds", r.wall_seconds);
+  t.insert("particle_updates_per_second", finite(r.particle_updates_per_second));
+  toml::table speeds;
+  for (std::size_t k = 0; k < c.materials.size(); ++k) {
+    const WaveSpeeds& w = s.speeds[k];
+    speeds.insert(c.materials[k].name,
+                  toml::table{{"dilatational", w.dilatational},
+                              {"shear", w.shear},
+                              {"rayleigh", w.rayleigh},
+                              {"rayleigh_approx", w.rayleigh_approx}});
+  }
+  t.insert("wave_speeds", speeds);
+  t.insert("energy", toml::table{{"kinetic", finite(r.kinetic_energy)},
+                                 {"strain", finite(r.strain_energy)},
+                                 {"external_work", finite(r.external_work)}});
+  t.insert("energy_balance_error", finite(r.energy_balance_error));
+  toml::table input;
+  try {
+    input = toml::parse(c.input_toml);
+  } catch (const toml::parse_error&) {
+    // The echo was produced by toml++ itself; keep run.json writable regardless.
+  }
+  t.insert("input", input);
+  std::ostringstream os;
+  os << toml::json_formatter{t} << "\n";
+  return os.str();
+}
+
+}  // namespace rupture

@@ -1,0 +1,28 @@
+// rupture/io/run_json.hpp
+// DIR/run.json, the machine-readable record of a run. Stable keys (never renamed):
+//   dt, steps, cells, particles, wall_seconds, particle_updates_per_second (SI units),
+// plus version, status ("running" | "completed" | "failed"), message, input (the merged input
+// echo), and derived quantities. Rewritten atomically whenever it changes.
+#pragma once
+#include <string>
+
+#include "io/case.hpp"
+#include "solver/summary.hpp"
+
+namespace rupture {
+
+struct RunRecord {
+  std::string status = "running";
+  std::string message;
+  long steps = 0;                 // steps taken
+  double simulated_time = 0.0;    // s
+  double wall_seconds = 0.0;
+  double particle_updates_per_second = 0.0;
+  int threads = 1;
+  double kinetic_energy = 0.0, strain_energy = 0.0, external_work = 0.0;
+  double energy_balance_error = 0.0;
+};
+
+std::string run_json(const Case& c, const CaseSummary& s, const RunRecord& r);
+
+}  // namespace rupture

@@ -1,0 +1,126 @@
+// rupture/io/snapshot.cpp
+#include "io/snapshot.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <fmt/format.h>
+#include <hdf5.h>
+#include <stdexcept>
+
+#include "io/atomic_file.hpp"
+
+namespace rupture {
+namespace {
+
+void check(herr_t status, const char* what, const std::string& file) {
+  if (status < 0) throw std::runtime_error(fmt::format("HDF5: {} failed for '{}'", what, file));
+}
+
+void write_dataset(hid_t file, const char* name, hid_t type, const void* data, hsize_t rows,
+                   hsize_t cols, const std::string& path) {
+  hsize_t dims[2] = {rows, cols};
+  hid_t space = H5Screate_simple(cols == 1 ? 1 : 2, dims, nullptr);
+  hid_t set = H5Dcreate2(file, name, type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  if (set < 0) throw std::runtime_error(fmt::format("HDF5: cannot create {} in '{}'", name, path));
+  check(H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), "H5Dwrite", path);
+  H5Dclose(set);
+  H5Sclose(space);
+}
+
+void write_scalar_attribute(hid_t file, const char* name, hid_t type, const void* value) {
+  hid_t space = H5Screate(H5S_SCALAR);
+  hid_t attr = H5Acreate2(file, name, type, space, H5P_DEFAULT, H5P_DEFAULT);
+  H5Awrite(attr, type, value);
+  H5Aclose(attr);
+  H5Sclose(space);
+}
+
+}  // namespace
+
+SnapshotWriter::SnapshotWriter(std::string dir) : dir_(std::move(dir)) {
+  std::filesystem::create_directories(std::filesystem::path(dir_) / "snapshots");
+}
+
+void SnapshotWriter::write(const Particles& p, double time, long step) {
+  const std::size_t n = p.size();
+  std::vector<double> pos(3 * n), vel(3 * n), tau(n);
+  std::vector<int> body(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    pos[3 * i] = p.x[i];
+    pos[3 * i + 1] = p.y[i];
+    pos[3 * i + 2] = 0.0;
+    vel[3 * i] = p.vx[i];
+    vel[3 * i + 1] = p.vy[i];
+    vel[3 * i + 2] = 0.0;
+    const double a = 0.5 * (p.sxx[i] - p.syy[i]);
+    tau[i] = std::sqrt(a * a + p.sxy[i] * p.sxy[i]);  // (sigma_1 - sigma_2)/2, SPEC E13
+    body[i] = p.field[i];
+  }
+  const std::string rel = fmt::format("snapshots/particles_{:06d}.h5", files_.size());
+  const std::string path = dir_ + "/" + rel;
+  const std::string tmp = path + ".tmp";
+  hid_t file = H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  if (file < 0) throw std::runtime_error(fmt::format("HDF5: cannot create '{}'", tmp));
+  write_dataset(file, "position", H5T_NATIVE_DOUBLE, pos.data(), n, 3, path);
+  write_dataset(file, "velocity", H5T_NATIVE_DOUBLE, vel.data(), n, 3, path);
+  write_dataset(file, "sxx", H5T_NATIVE_DOUBLE, p.sxx.data(), n, 1, path);
+  write_dataset(file, "syy", H5T_NATIVE_DOUBLE, p.syy.data(), n, 1, path);
+  write_dataset(file, "sxy", H5T_NATIVE_DOUBLE, p.sxy.data(), n, 1, path);
+  write_dataset(file, "szz", H5T_NATIVE_DOUBLE, p.szz.data(), n, 1, path);
+  write_dataset(file, "tau_max", H5T_NATIVE_DOUBLE, tau.data(), n, 1, path);
+  write_dataset(file, "body", H5T_NATIVE_INT, body.data(), n, 1, path);
+  write_scalar_attribute(file, "time", H5T_NATIVE_DOUBLE, &time);
+  write_scalar_attribute(file, "step", H5T_NATIVE_LONG, &step);
+  check(H5Fclose(file), "H5Fclose", tmp);
+  commit_file(tmp, path);
+  files_.push_back(rel);
+  times_.push_back(time);
+  counts_.push_back(n);
+  write_xdmf();
+}
+
+void SnapshotWriter::write_xdmf() const {
+  std::string x =
+      "<?xml version=\"1.0\" ?>\n"
+      "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
+      "<Xdmf Version=\"3.0\" xmlns:xi=\"http://www.w3.org/2001/XInclude\">\n"
+      "  <Domain>\n"
+      "    <Grid Name=\"particles\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+  for (std::size_t k = 0; k < files_.size(); ++k) {
+    const std::size_t n = counts_[k];
+    const std::string& f = files_[k];
+    x += fmt::format(
+        "      <Grid Name=\"step{}\" GridType=\"Uniform\">\n"
+        "        <Time Value=\"{:.9e}\"/>\n"
+        "        <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"{}\" "
+        "NodesPerElement=\"1\"/>\n"
+        "        <Geometry GeometryType=\"XYZ\">\n"
+        "          <DataItem Dimensions=\"{} 3\" NumberType=\"Float\" Precision=\"8\" "
+        "Format=\"HDF\">{}:/position</DataItem>\n"
+        "        </Geometry>\n"
+        "        <Attribute Name=\"velocity\" AttributeType=\"Vector\" Center=\"Node\">\n"
+        "          <DataItem Dimensions=\"{} 3\" NumberType=\"Float\" Precision=\"8\" "
+        "Format=\"HDF\">{}:/velocity</DataItem>\n"
+        "        </Attribute>\n",
+        k, times_[k], n, n, f, n, f);
+    for (const char* name : {"sxx", "syy", "sxy", "szz", "tau_max"}) {
+      x += fmt::format(
+          "        <Attribute Name=\"{}\" AttributeType=\"Scalar\" Center=\"Node\">\n"
+          "          <DataItem Dimensions=\"{}\" NumberType=\"Float\" Precision=\"8\" "
+          "Format=\"HDF\">{}:/{}</DataItem>\n"
+          "        </Attribute>\n",
+          name, n, f, name);
+    }
+    x += fmt::format(
+        "        <Attribute Name=\"body\" AttributeType=\"Scalar\" Center=\"Node\">\n"
+        "          <DataItem Dimensions=\"{}\" NumberType=\"Int\" Precision=\"4\" "
+        "Format=\"HDF\">{}:/body</DataItem>\n"
+        "        </Attribute>\n"
+        "      </Grid>\n",
+        n, f);
+  }
+  x += "    </Grid>\n  </Domain>\n</Xdmf>\n";
+  write_file_atomic(dir_ + "/particles.xdmf", x);
+}
+
+}  // namespace rupture

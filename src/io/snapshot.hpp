@@ -1,0 +1,30 @@
+// rupture/io/snapshot.hpp
+// Particle snapshots: one HDF5 file per output time under DIR/snapshots/, plus DIR/particles.xdmf,
+// an XDMF 3 temporal collection that ParaView opens as a time series (Polyvertex topology).
+// Datasets (SI): position [N,3] m (z = 0), velocity [N,3] m/s, sxx syy sxy szz tau_max [N] Pa,
+// body [N] (velocity field id); root attributes time (s) and step.
+// tau_max = (sigma_1 - sigma_2)/2, the in-plane maximum shear stress (SPEC E13).
+// Every file is written to a temporary name and renamed when complete.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "particles/particles.hpp"
+
+namespace rupture {
+
+class SnapshotWriter {
+ public:
+  explicit SnapshotWriter(std::string dir);
+  void write(const Particles& p, double time, long step);
+  const std::vector<std::string>& files() const { return files_; }
+
+ private:
+  void write_xdmf() const;
+  std::string dir_;
+  std::vector<std::string> files_;  // relative to dir_
+  std::vector<double> times_;
+  std::vector<std::size_t> counts_;
+};
+
+}  // namespace rupture

@@ -1,0 +1,37 @@
+// rupture/material/elastic.hpp
+// Small-strain isotropic linear elasticity in 2D (SPEC E5) and its wave speeds (SPEC E1).
+// Units: E and stresses in Pa, density in kg/m^3, speeds in m/s.
+// Plane strain keeps sigma_zz = nu (sigma_xx + sigma_yy); plane stress has sigma_zz = 0.
+#pragma once
+#include <string>
+
+namespace rupture {
+
+enum class PlaneMode { strain, stress };
+
+struct ElasticMaterial {
+  std::string name;
+  double youngs_modulus = 0.0;  // E, Pa
+  double poisson_ratio = 0.0;   // nu, -
+  double density = 0.0;         // rho, kg/m^3
+};
+
+// In-plane stiffness for the chosen plane mode: sigma = C : eps with
+//   sxx = c11 exx + c12 eyy, syy = c12 exx + c11 eyy, sxy = 2 mu exy, szz = cz (exx + eyy).
+struct ElasticStiffness {
+  double c11, c12, mu, cz;
+};
+
+ElasticStiffness stiffness(const ElasticMaterial& m, PlaneMode mode);
+
+struct WaveSpeeds {
+  double dilatational;  // c_D, m/s
+  double shear;         // c_S, m/s
+  double rayleigh;      // exact root of the Rayleigh equation, m/s
+  double rayleigh_approx;  // c_S (0.862 + 1.14 nu)/(1 + nu), SPEC E1
+};
+
+// SPEC E1, with kappa = 3 - 4 nu (plane strain) or (3 - nu)/(1 + nu) (plane stress).
+WaveSpeeds wave_speeds(const ElasticMaterial& m, PlaneMode mode);
+
+}  // namespace rupture

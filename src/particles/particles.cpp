@@ -1,0 +1,42 @@
+// rupture/particles/particles.cpp
+#include "particles/particles.hpp"
+
+#include <cmath>
+
+namespace rupture {
+
+void Particles::resize(std::size_t n) {
+  for (auto* v : {&x, &y, &vx, &vy, &mass, &volume0, &volume, &half_x, &half_y, &sxx, &syy, &sxy,
+                  &szz, &exx, &eyy, &exy}) {
+    v->resize(n, 0.0);
+  }
+  field.resize(n, 0);
+  material.resize(n, 0);
+}
+
+void seed_rectangle(Particles& p, const double min[2], const double max[2], double h, int ppc,
+                    double density, std::uint8_t field, std::uint8_t material,
+                    const double velocity[2]) {
+  const long cx = std::lround((max[0] - min[0]) / h);
+  const long cy = std::lround((max[1] - min[1]) / h);
+  const double side = h / ppc;
+  const long nx = cx * ppc, ny = cy * ppc;
+  const std::size_t start = p.size();
+  p.resize(start + std::size_t(nx * ny));
+  std::size_t k = start;
+  for (long j = 0; j < ny; ++j) {
+    for (long i = 0; i < nx; ++i, ++k) {
+      p.x[k] = min[0] + (double(i) + 0.5) * side;
+      p.y[k] = min[1] + (double(j) + 0.5) * side;
+      p.vx[k] = velocity[0];
+      p.vy[k] = velocity[1];
+      p.volume0[k] = p.volume[k] = side * side;
+      p.mass[k] = density * side * side;
+      p.half_x[k] = p.half_y[k] = 0.5 * side;
+      p.field[k] = field;
+      p.material[k] = material;
+    }
+  }
+}
+
+}  // namespace rupture

@@ -1,0 +1,39 @@
+// rupture/particles/particles.hpp
+// Structure-of-arrays particle store (SI: m, m/s, kg, m^3 per unit thickness -> m^2, Pa).
+// Every array has size(); index p is one material point. Stress and strain are the
+// in-plane components plus sigma_zz (kept for plane strain, SPEC E5). `field` is the velocity
+// field the particle maps to (one per body), `material` indexes the material table.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace rupture {
+
+struct Particles {
+  std::vector<double> x, y;            // position, m
+  std::vector<double> vx, vy;          // velocity, m/s
+  std::vector<double> mass;            // kg (per unit thickness)
+  std::vector<double> volume0;         // initial area (volume per unit thickness), m^2
+  std::vector<double> volume;          // current area, m^2
+  std::vector<double> half_x, half_y;  // GIMP half-widths l_p, m (fixed: uGIMP)
+  std::vector<double> sxx, syy, sxy, szz;  // Cauchy stress, Pa
+  std::vector<double> exx, eyy, exy;       // small strain (tensor components), -
+  std::vector<std::uint8_t> field;         // velocity field (body) id
+  std::vector<std::uint8_t> material;      // material id
+
+  std::size_t size() const { return x.size(); }
+  void resize(std::size_t n);
+  // Bytes held per particle by the arrays above.
+  static constexpr std::size_t bytes_per_particle() {
+    return 16 * sizeof(double) + 2 * sizeof(std::uint8_t);
+  }
+};
+
+// Fill the rectangle [xmin,xmax]x[ymin,ymax] (whole cells of size h) with ppc x ppc particles
+// per cell, each a square of side h/ppc, at rest and stress-free. Appends to `p`.
+void seed_rectangle(Particles& p, const double min[2], const double max[2], double h, int ppc,
+                    double density, std::uint8_t field, std::uint8_t material,
+                    const double velocity[2]);
+
+}  // namespace rupture

@@ -1,0 +1,31 @@
+// rupture/run/driver.hpp
+// Runs a validated case to its end time and writes the run directory:
+//   DIR/run.json       input echo, version, sizes, dt, timing, status (see io/run_json.hpp)
+//   DIR/history.csv    energy history (io/history.hpp)
+//   DIR/particles.xdmf + DIR/snapshots/*.h5   particle snapshots (io/snapshot.hpp)
+// An unstable run stops with status "failed" and a diagnosis; what was written stays valid.
+#pragma once
+#include <string>
+
+#include "io/case.hpp"
+
+namespace rupture {
+
+struct RunOptions {
+  std::string output_dir;
+  bool progress = true;
+};
+
+struct RunResult {
+  bool ok = false;
+  std::string message;  // diagnosis when !ok
+  long steps = 0;
+  double simulated_time = 0.0;         // s
+  double wall_seconds = 0.0;           // s
+  double particle_updates_per_second = 0.0;
+  double energy_balance_error = 0.0;   // relative, last history sample
+};
+
+RunResult run_case(const Case& c, const RunOptions& options);
+
+}  // namespace rupture

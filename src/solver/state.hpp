@@ -1,0 +1,61 @@
+// rupture/solver/state.hpp
+// Everything that evolves during a run, plus what is derived once from the Case (grid,
+// material stiffnesses, resolved boundary nodes, time step). make_state() builds it;
+// step() (solver/step.hpp) advances it by one time step. SI units throughout.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "bc/velocity_bc.hpp"
+#include "grid/grid.hpp"
+#include "io/case.hpp"
+#include "material/elastic.hpp"
+#include "particles/particles.hpp"
+
+namespace rupture {
+
+// Race-free scatter without locks: particles are binned into vertical strips of
+// `strip_cells` cell columns. A particle in cell column c touches node columns c-1..c+2, so
+// strips two apart never share a node; strips are processed in two colours (even, then odd),
+// each colour in parallel. The summation order at every node is fixed by the plan, so the
+// result does not depend on the number of threads.
+struct ScatterPlan {
+  int strip_cells = 4;
+  int num_strips = 0;
+  std::vector<std::uint32_t> order;       // particle indices grouped by strip
+  std::vector<std::size_t> strip_begin;   // order[strip_begin[s] .. strip_begin[s+1])
+  std::vector<std::uint32_t> strip_of;    // scratch: strip of each particle
+};
+
+struct StepLimits {
+  double cfl_dt = 0.0;  // cfl * h / max c_D, s (SPEC E6)
+  double dt = 0.0;      // step used, s
+};
+
+struct State {
+  Grid grid;
+  GridFields fields;
+  Particles particles;
+  std::vector<ElasticStiffness> stiffness;  // per material
+  std::vector<VelocityBC> boundary;
+  std::vector<NodeBC> bc_nodes;
+  ScatterPlan plan;
+
+  Scheme scheme = Scheme::MUSL;
+  double flip = 1.0;
+  StepLimits limits;
+  double dt = 0.0;       // s
+  double time = 0.0;     // s
+  long step = 0;
+  double mass_floor = 0.0;  // nodes lighter than this are treated as empty, kg
+
+  double external_work = 0.0;  // work of the prescribed velocities so far, J (per unit thickness)
+  double initial_energy = 0.0; // kinetic + strain energy at t = 0, J
+};
+
+// Builds grid, particles (one velocity field per body), stiffnesses, boundary nodes and the
+// time step from a validated case.
+State make_state(const Case& c);
+
+}  // namespace rupture

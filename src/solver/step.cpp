@@ -1,0 +1,374 @@
+// rupture/solver/step.cpp
+// The time step, phase by phase (SPEC E4-E6). Scatters (particle -> grid) go through the
+// two-colour strip plan of ScatterPlan; gathers (grid -> particle) are plain parallel loops.
+#include "solver/step.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <limits>
+
+#include "core/errors.hpp"
+
+namespace rupture {
+namespace {
+
+constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
+
+// A particle's 3x3 node stencil: weights per axis and the index of its first node.
+struct ParticleStencil {
+  Stencil1D sx, sy;
+  std::size_t base;  // field offset + index of node (sx.first, sy.first)
+};
+
+inline void particle_stencil(const State& s, std::size_t p, ParticleStencil& ps) {
+  const Particles& P = s.particles;
+  stencil(s.grid.x, P.x[p], P.half_x[p], ps.sx);
+  stencil(s.grid.y, P.y[p], P.half_y[p], ps.sy);
+  ps.base = s.fields.offset(P.field[p]) + s.grid.node_index(ps.sx.first, ps.sy.first);
+}
+
+// Runs body(p) for every particle, strips of one colour in parallel (see ScatterPlan).
+template <class Body>
+void for_each_particle_coloured(const ScatterPlan& plan, Body&& body) {
+  for (int colour = 0; colour < 2; ++colour) {
+#pragma omp parallel for schedule(dynamic, 1)
+    for (int strip = colour; strip < plan.num_strips; strip += 2) {
+      for (std::size_t k = plan.strip_begin[strip]; k < plan.strip_begin[strip + 1]; ++k)
+        body(std::size_t(plan.order[k]));
+    }
+  }
+}
+
+// Velocity-BC time function values at the start and end of the step.
+inline double bc_value(const State& s, const NodeBC& e, double t) {
+  return s.boundary[std::size_t(e.condition)].velocity(t);
+}
+
+std::string describe_particle(const State& s, std::size_t p) {
+  const Particles& P = s.particles;
+  return fmt::format("particle {} (field {}) at (x, y) = ({:.6g}, {:.6g}) m, step {}, t = {:.6g} s",
+                     p, int(P.field[p]), P.x[p], P.y[p], s.step, s.time);
+}
+
+}  // namespace
+
+void build_scatter_plan(State& s) {
+  ScatterPlan& plan = s.plan;
+  const Particles& P = s.particles;
+  const std::size_t n = P.size();
+  const int cells = s.grid.x.cells;
+  plan.num_strips = (cells + plan.strip_cells - 1) / plan.strip_cells;
+  plan.strip_of.resize(n);
+  plan.order.resize(n);
+  plan.strip_begin.assign(std::size_t(plan.num_strips) + 1, 0);
+  const double inv_h = 1.0 / s.grid.x.h;
+  for (std::size_t p = 0; p < n; ++p) {
+    int cell = int(std::floor((P.x[p] - s.grid.x.origin) * inv_h));
+    cell = std::clamp(cell, 0, cells - 1);
+    const std::uint32_t strip = std::uint32_t(cell / plan.strip_cells);
+    plan.strip_of[p] = strip;
+    ++plan.strip_begin[strip + 1];
+  }
+  for (int k = 0; k < plan.num_strips; ++k) plan.strip_begin[k + 1] += plan.strip_begin[k];
+  // Stable counting sort; strip_begin[k] is used as the fill cursor and then restored.
+  for (std::size_t p = 0; p < n; ++p) plan.order[plan.strip_begin[plan.strip_of[p]]++] = std::uint32_t(p);
+  for (int k = plan.num_strips; k > 0; --k) plan.strip_begin[k] = plan.strip_begin[k - 1];
+  plan.strip_begin[0] = 0;
+}
+
+void particles_to_grid(State& s, bool with_force) {
+  GridFields& G = s.fields;
+  std::fill(G.mass.begin(), G.mass.end(), 0.0);
+  std::fill(G.mom_x.begin(), G.mom_x.end(), 0.0);
+  std::fill(G.mom_y.begin(), G.mom_y.end(), 0.0);
+  std::fill(G.force_x.begin(), G.force_x.end(), 0.0);
+  std::fill(G.force_y.begin(), G.force_y.end(), 0.0);
+  const Particles& P = s.particles;
+  const std::size_t nx = std::size_t(s.grid.nodes_x());
+  double* mass = G.mass.data();
+  double* mom_x = G.mom_x.data();
+  double* mom_y = G.mom_y.data();
+  double* fx = G.force_x.data();
+  double* fy = G.force_y.data();
+  for_each_particle_coloured(s.plan, [&](std::size_t p) {
+    ParticleStencil ps;
+    particle_stencil(s, p, ps);
+    const double m = P.mass[p], mvx = m * P.vx[p], mvy = m * P.vy[p], V = P.volume[p];
+    const double sxx = P.sxx[p], syy = P.syy[p], sxy = P.sxy[p];
+    for (int b = 0; b < 3; ++b) {
+      const std::size_t row = ps.base + std::size_t(b) * nx;
+      for (int a = 0; a < 3; ++a) {
+        const std::size_t n = row + std::size_t(a);
+        const double w = ps.sx.s[a] * ps.sy.s[b];
+        mass[n] += w * m;
+        mom_x[n] += w * mvx;
+        mom_y[n] += w * mvy;
+        if (with_force) {
+          // SPEC E4: f_i = -sum_p V_p sigma_p . grad S_ip
+          const double gx = ps.sx.ds[a] * ps.sy.s[b], gy = ps.sx.s[a] * ps.sy.ds[b];
+          fx[n] -= V * (sxx * gx + sxy * gy);
+          fy[n] -= V * (sxy * gx + syy * gy);
+        }
+      }
+    }
+  });
+}
+
+void particles_to_grid_force(State& s) {
+  GridFields& G = s.fields;
+  std::fill(G.force_x.begin(), G.force_x.end(), 0.0);
+  std::fill(G.force_y.begin(), G.force_y.end(), 0.0);
+  const Particles& P = s.particles;
+  const std::size_t nx = std::size_t(s.grid.nodes_x());
+  double* fx = G.force_x.data();
+  double* fy = G.force_y.data();
+  for_each_particle_coloured(s.plan, [&](std::size_t p) {
+    ParticleStencil ps;
+    particle_stencil(s, p, ps);
+    const double V = P.volume[p], sxx = P.sxx[p], syy = P.syy[p], sxy = P.sxy[p];
+    for (int b = 0; b < 3; ++b) {
+      const std::size_t row = ps.base + std::size_t(b) * nx;
+      for (int a = 0; a < 3; ++a) {
+        const double gx = ps.sx.ds[a] * ps.sy.s[b], gy = ps.sx.s[a] * ps.sy.ds[b];
+        fx[row + a] -= V * (sxx * gx + sxy * gy);
+        fy[row + a] -= V * (sxy * gx + syy * gy);
+      }
+    }
+  });
+}
+
+void grid_velocity_from_momentum(State& s, double t) {
+  GridFields& G = s.fields;
+  const long n = long(G.mass.size());
+  const double floor = s.mass_floor;
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i) {
+    const double m = G.mass[i];
+    G.remap_x[i] = m > floor ? G.mom_x[i] / m : 0.0;
+    G.remap_y[i] = m > floor ? G.mom_y[i] / m : 0.0;
+  }
+  for (const NodeBC& e : s.bc_nodes) {
+    const std::size_t i = G.offset(e.field) + e.node;
+    (e.component == 0 ? G.remap_x : G.remap_y)[i] = bc_value(s, e, t);
+  }
+}
+
+void integrate_grid(State& s) {
+  GridFields& G = s.fields;
+  const long n = long(G.mass.size());
+  const double dt = s.dt, floor = s.mass_floor;
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i) {
+    const double m = G.mass[i];
+    if (m > floor) {
+      // Nodal momentum update p^{n+1} = p^n + dt f (E4), stored as velocity and increment.
+      const double inv_m = 1.0 / m;
+      G.dvel_x[i] = dt * G.force_x[i] * inv_m;
+      G.dvel_y[i] = dt * G.force_y[i] * inv_m;
+      G.vel_x[i] = G.mom_x[i] * inv_m + G.dvel_x[i];
+      G.vel_y[i] = G.mom_y[i] * inv_m + G.dvel_y[i];
+    } else {
+      G.dvel_x[i] = G.dvel_y[i] = G.vel_x[i] = G.vel_y[i] = 0.0;
+    }
+  }
+  apply_velocity_bcs(s);
+}
+
+void apply_velocity_bcs(State& s) {
+  GridFields& G = s.fields;
+  const double t0 = s.time, t1 = s.time + s.dt;
+  for (const NodeBC& e : s.bc_nodes) {
+    const std::size_t i = G.offset(e.field) + e.node;
+    const double m = G.mass[i];
+    if (m <= s.mass_floor) continue;
+    const double v0 = bc_value(s, e, t0), v1 = bc_value(s, e, t1);
+    double& vel = (e.component == 0 ? G.vel_x : G.vel_y)[i];
+    double& dvel = (e.component == 0 ? G.dvel_x : G.dvel_y)[i];
+    // The constraint's impulse m (V^{n+1} - v_free) acts on a node moving at the mean
+    // prescribed velocity over the step: its work is the external work of SPEC E14.
+    s.external_work += m * (v1 - vel) * 0.5 * (v0 + v1);
+    dvel += v1 - vel;
+    vel = v1;
+  }
+}
+
+void update_particle_velocity_and_remap(State& s) {
+  GridFields& G = s.fields;
+  std::fill(G.remap_x.begin(), G.remap_x.end(), 0.0);
+  std::fill(G.remap_y.begin(), G.remap_y.end(), 0.0);
+  Particles& P = s.particles;
+  const std::size_t nx = std::size_t(s.grid.nodes_x());
+  const double flip = s.flip;
+  const double* vel_x = G.vel_x.data();
+  const double* vel_y = G.vel_y.data();
+  const double* dvel_x = G.dvel_x.data();
+  const double* dvel_y = G.dvel_y.data();
+  double* rx = G.remap_x.data();
+  double* ry = G.remap_y.data();
+  for_each_particle_coloured(s.plan, [&](std::size_t p) {
+    ParticleStencil ps;
+    particle_stencil(s, p, ps);
+    double pic_x = 0, pic_y = 0, dvx = 0, dvy = 0;
+    for (int b = 0; b < 3; ++b) {
+      const std::size_t row = ps.base + std::size_t(b) * nx;
+      for (int a = 0; a < 3; ++a) {
+        const double w = ps.sx.s[a] * ps.sy.s[b];
+        pic_x += w * vel_x[row + a];
+        pic_y += w * vel_y[row + a];
+        dvx += w * dvel_x[row + a];
+        dvy += w * dvel_y[row + a];
+      }
+    }
+    // FLIP/PIC blend of the particle velocity update.
+    const double vx = flip * (P.vx[p] + dvx) + (1.0 - flip) * pic_x;
+    const double vy = flip * (P.vy[p] + dvy) + (1.0 - flip) * pic_y;
+    P.vx[p] = vx;
+    P.vy[p] = vy;
+    const double m = P.mass[p];
+    for (int b = 0; b < 3; ++b) {
+      const std::size_t row = ps.base + std::size_t(b) * nx;
+      for (int a = 0; a < 3; ++a) {
+        const double w = ps.sx.s[a] * ps.sy.s[b] * m;
+        rx[row + a] += w * vx;
+        ry[row + a] += w * vy;
+      }
+    }
+  });
+}
+
+void remapped_grid_velocity(State& s) {
+  GridFields& G = s.fields;
+  const long n = long(G.mass.size());
+  const double floor = s.mass_floor;
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i) {
+    const double m = G.mass[i];
+    G.remap_x[i] = m > floor ? G.remap_x[i] / m : 0.0;
+    G.remap_y[i] = m > floor ? G.remap_y[i] / m : 0.0;
+  }
+  const double t1 = s.time + s.dt;
+  for (const NodeBC& e : s.bc_nodes) {
+    const std::size_t i = G.offset(e.field) + e.node;
+    if (G.mass[i] <= floor) continue;
+    (e.component == 0 ? G.remap_x : G.remap_y)[i] = bc_value(s, e, t1);
+  }
+}
+
+void grid_to_particles(State& s, const double* gvx, const double* gvy, G2PMode mode) {
+  Particles& P = s.particles;
+  const GridFields& G = s.fields;
+  const std::size_t nx = std::size_t(s.grid.nodes_x());
+  const long n = long(P.size());
+  const double dt = s.dt, flip = s.flip;
+  const bool do_velocity =
+      mode == G2PMode::stress_velocity_and_move || mode == G2PMode::velocity_and_move;
+  const bool do_stress = mode != G2PMode::velocity_and_move;
+  const bool do_move = mode != G2PMode::stress_only;
+  // Particles must keep their whole 3-node stencil inside the grid.
+  const double xlo = s.grid.x.node(0) + 0.5 * s.grid.x.h;
+  const double xhi = s.grid.x.node(s.grid.x.cells) - 0.5 * s.grid.x.h;
+  const double ylo = s.grid.y.node(0) + 0.5 * s.grid.y.h;
+  const double yhi = s.grid.y.node(s.grid.y.cells) - 0.5 * s.grid.y.h;
+  std::size_t bad = kNone;
+#pragma omp parallel for schedule(static) reduction(min : bad)
+  for (long pl = 0; pl < n; ++pl) {
+    const std::size_t p = std::size_t(pl);
+    ParticleStencil ps;
+    particle_stencil(s, p, ps);
+    double L00 = 0, L01 = 0, L10 = 0, L11 = 0;  // velocity gradient L_ij = dv_i/dx_j
+    double pic_x = 0, pic_y = 0, dvx = 0, dvy = 0, mvx = 0, mvy = 0;
+    for (int b = 0; b < 3; ++b) {
+      const std::size_t row = ps.base + std::size_t(b) * nx;
+      for (int a = 0; a < 3; ++a) {
+        const std::size_t i = row + std::size_t(a);
+        const double w = ps.sx.s[a] * ps.sy.s[b];
+        if (do_stress) {
+          const double gx = ps.sx.ds[a] * ps.sy.s[b], gy = ps.sx.s[a] * ps.sy.ds[b];
+          L00 += gvx[i] * gx;
+          L01 += gvx[i] * gy;
+          L10 += gvy[i] * gx;
+          L11 += gvy[i] * gy;
+        }
+        if (do_velocity) {
+          pic_x += w * G.vel_x[i];
+          pic_y += w * G.vel_y[i];
+          dvx += w * G.dvel_x[i];
+          dvy += w * G.dvel_y[i];
+        }
+        if (do_move) {
+          mvx += w * G.vel_x[i];
+          mvy += w * G.vel_y[i];
+        }
+      }
+    }
+    if (do_velocity) {
+      P.vx[p] = flip * (P.vx[p] + dvx) + (1.0 - flip) * pic_x;
+      P.vy[p] = flip * (P.vy[p] + dvy) + (1.0 - flip) * pic_y;
+    }
+    if (do_stress) {
+      // SPEC E5: eps_dot = sym(L), sigma_dot = C : eps_dot (small strain, plane mode in C).
+      const ElasticStiffness& C = s.stiffness[P.material[p]];
+      const double dexx = L00 * dt, deyy = L11 * dt, dexy = 0.5 * (L01 + L10) * dt;
+      P.exx[p] += dexx;
+      P.eyy[p] += deyy;
+      P.exy[p] += dexy;
+      P.sxx[p] += C.c11 * dexx + C.c12 * deyy;
+      P.syy[p] += C.c12 * dexx + C.c11 * deyy;
+      P.sxy[p] += 2.0 * C.mu * dexy;
+      P.szz[p] += C.cz * (dexx + deyy);
+      P.volume[p] = P.volume0[p] * (1.0 + P.exx[p] + P.eyy[p]);
+    }
+    if (do_move) {
+      P.x[p] += dt * mvx;
+      P.y[p] += dt * mvy;
+    }
+    const bool finite = std::isfinite(P.vx[p] + P.vy[p] + P.sxx[p] + P.syy[p] + P.sxy[p]);
+    const bool inside = P.x[p] > xlo && P.x[p] < xhi && P.y[p] > ylo && P.y[p] < yhi;
+    if (!finite || !inside) bad = std::min(bad, p);
+  }
+  if (bad != kNone) {
+    const bool finite = std::isfinite(P.vx[bad] + P.vy[bad] + P.sxx[bad] + P.syy[bad] + P.sxy[bad]);
+    if (!finite) {
+      throw SimulationError(fmt::format(
+          "unstable: non-finite state at {} (v = ({:g}, {:g}) m/s, sigma = ({:g}, {:g}, {:g}) "
+          "Pa); reduce time.cfl or check the loading",
+          describe_particle(s, bad), P.vx[bad], P.vy[bad], P.sxx[bad], P.syy[bad], P.sxy[bad]));
+    }
+    throw SimulationError(fmt::format(
+        "particle left the grid: {}; the grid with its ghost cells spans x in [{:g}, {:g}], "
+        "y in [{:g}, {:g}] m",
+        describe_particle(s, bad), xlo, xhi, ylo, yhi));
+  }
+}
+
+void step(State& s) {
+  build_scatter_plan(s);
+  GridFields& G = s.fields;
+  switch (s.scheme) {
+    case Scheme::MUSL:
+      particles_to_grid(s, true);           // E4
+      integrate_grid(s);                    // E4 momentum update + E2 velocity BCs
+      update_particle_velocity_and_remap(s);
+      remapped_grid_velocity(s);
+      grid_to_particles(s, G.remap_x.data(), G.remap_y.data(), G2PMode::stress_and_move);  // E5
+      break;
+    case Scheme::USL:
+      particles_to_grid(s, true);
+      integrate_grid(s);
+      grid_to_particles(s, G.vel_x.data(), G.vel_y.data(), G2PMode::stress_velocity_and_move);
+      break;
+    case Scheme::USF:
+      particles_to_grid(s, false);
+      grid_velocity_from_momentum(s, s.time);
+      grid_to_particles(s, G.remap_x.data(), G.remap_y.data(), G2PMode::stress_only);
+      particles_to_grid_force(s);
+      integrate_grid(s);
+      grid_to_particles(s, G.vel_x.data(), G.vel_y.data(), G2PMode::velocity_and_move);
+      break;
+  }
+  s.time += s.dt;
+  ++s.step;
+}
+
+}  // namespace rupture

@@ -1,0 +1,29 @@
+// rupture/solver/summary.hpp
+// Quantities derived from a Case without allocating it: wave speeds (SPEC E1), time step
+// (SPEC E6), sizes and a memory estimate. Used by `rupture check` and written to run.json.
+#pragma once
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "io/case.hpp"
+#include "material/elastic.hpp"
+
+namespace rupture {
+
+struct CaseSummary {
+  std::vector<WaveSpeeds> speeds;  // per material
+  double dt_cfl = 0.0;             // cfl * h / max c_D, s
+  double dt = 0.0;                 // step used, s
+  long steps = 0;                  // ceil(end / dt)
+  long cells = 0;                  // physical cells
+  long nodes = 0;                  // grid nodes, ghosts included
+  std::vector<long> particles_per_body;
+  long particles = 0;
+  int fields = 0;
+  std::size_t memory_bytes = 0;    // particles + per-field grid arrays + scatter plan
+};
+
+CaseSummary summarize(const Case& c);
+
+}  // namespace rupture
