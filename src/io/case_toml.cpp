@@ -6,7 +6,6 @@
 #include <fmt/format.h>
 #include <fstream>
 #include <map>
-#include <set>
 #include <sstream>
 #include <toml++/toml.h>
 
@@ -39,18 +38,24 @@ std::string show(const toml::node& n) {
 // (typos) are reported instead of silently ignored.
 class Section {
  public:
-  Section(const toml::table& t, std::string path) : t_(t), path_(std::move(path)) {}
+  // `allowed` lists the keys this table may hold; empty = any key (tables of named entries).
+  // Unknown keys are reported at once, before any value is read.
+  Section(const toml::table& t, std::string path, std::vector<std::string> allowed = {})
+      : t_(t), path_(std::move(path)) {
+    if (allowed.empty()) return;
+    for (const auto& [k, v] : t_) {
+      const std::string name(k.str());
+      if (std::find(allowed.begin(), allowed.end(), name) != allowed.end()) continue;
+      std::string hint;
+      for (const std::string& a : allowed)
+        if (edit_distance(a, name) <= 2) hint = " (did you mean '" + key(a) + "'?)";
+      fail(key(name), show(v), "unknown key" + hint + "; allowed here: " + join(allowed));
+    }
+  }
 
   std::string key(const std::string& k) const { return path_.empty() ? k : path_ + "." + k; }
-  bool has(const std::string& k) {
-    used_.insert(k);
-    return t_.contains(k);
-  }
-
-  const toml::node* node(const std::string& k) {
-    used_.insert(k);
-    return t_.get(k);
-  }
+  bool has(const std::string& k) const { return t_.contains(k); }
+  const toml::node* node(const std::string& k) const { return t_.get(k); }
 
   double number(const std::string& k) {
     const toml::node* n = node(k);
@@ -114,7 +119,7 @@ class Section {
     return out;
   }
 
-  Section table(const std::string& k, bool required) {
+  Section table(const std::string& k, bool required, std::vector<std::string> allowed = {}) {
     static const toml::table empty;
     const toml::node* n = node(k);
     if (!n) {
@@ -122,21 +127,10 @@ class Section {
       return Section(empty, key(k));
     }
     if (!n->is_table()) fail(key(k), show(*n), "must be a table");
-    return Section(*n->as_table(), key(k));
+    return Section(*n->as_table(), key(k), std::move(allowed));
   }
 
   const toml::table& raw() const { return t_; }
-
-  // Every key present must have been read.
-  void finish() const {
-    for (const auto& [k, v] : t_) {
-      const std::string name(k.str());
-      if (!used_.count(name)) {
-        std::vector<std::string> known(used_.begin(), used_.end());
-        fail(key(name), show(v), "unknown key; allowed here: " + join(known));
-      }
-    }
-  }
 
   static std::string join(const std::vector<std::string>& v) {
     std::string s;
@@ -147,7 +141,21 @@ class Section {
  private:
   const toml::table& t_;
   std::string path_;
-  std::set<std::string> used_;
+
+  static std::size_t edit_distance(const std::string& a, const std::string& b) {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+      std::size_t diag = row[0];
+      row[0] = i;
+      for (std::size_t j = 1; j <= b.size(); ++j) {
+        const std::size_t up = row[j];
+        row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] != b[j - 1])});
+        diag = up;
+      }
+    }
+    return row[b.size()];
+  }
 };
 
 void apply_override(toml::table& root, const std::string& assignment) {
@@ -193,14 +201,13 @@ bool whole_cells(double length, double h) {
 
 Case build_case(const toml::table& root) {
   Case c;
-  Section top(root, "");
+  Section top(root, "", {"title", "model", "materials", "grid", "bodies", "time", "solver", "boundary", "output"});
   c.title = top.string("title", "");
 
   {
-    Section model = top.table("model", false);
+    Section model = top.table("model", false, {"plane"});
     const std::string plane = model.string("plane", "strain", {"strain", "stress"});
     c.plane = plane == "strain" ? PlaneMode::strain : PlaneMode::stress;
-    model.finish();
   }
 
   std::map<std::string, int> material_index;
@@ -208,7 +215,7 @@ Case build_case(const toml::table& root) {
     Section mats = top.table("materials", true);
     for (const auto& [k, v] : mats.raw()) {
       const std::string name(k.str());
-      Section m = mats.table(name, true);
+      Section m = mats.table(name, true, {"youngs_modulus", "poisson_ratio", "density"});
       ElasticMaterial em;
       em.name = name;
       em.youngs_modulus = m.number("youngs_modulus");
@@ -218,17 +225,15 @@ Case build_case(const toml::table& root) {
         fail(m.key("poisson_ratio"), em.poisson_ratio, "must lie in (-1, 0.5)");
       em.density = m.number("density");
       if (em.density <= 0) fail(m.key("density"), em.density, "must be > 0 (kg/m^3)");
-      m.finish();
       material_index[name] = int(c.materials.size());
       c.materials.push_back(em);
     }
     if (c.materials.empty()) fail("materials", "{}", "at least one material is required");
     if (c.materials.size() > 255) fail("materials", double(c.materials.size()), "at most 255 materials");
-    mats.finish();
   }
 
   {
-    Section g = top.table("grid", true);
+    Section g = top.table("grid", true, {"min", "max", "cell_size", "particles_per_cell"});
     g.pair("min", c.grid.min, true);
     g.pair("max", c.grid.max, true);
     for (int d = 0; d < 2; ++d) {
@@ -252,7 +257,6 @@ Case build_case(const toml::table& root) {
     const long ppc = g.integer("particles_per_cell", 2);
     if (ppc < 1 || ppc > 8) fail(g.key("particles_per_cell"), double(ppc), "must lie in [1, 8] (per direction)");
     c.grid.particles_per_cell = int(ppc);
-    g.finish();
   }
 
   std::map<std::string, int> body_index;
@@ -261,7 +265,7 @@ Case build_case(const toml::table& root) {
     const double h = c.grid.cell_size, tol = 1e-9 * h;
     for (const auto& [k, v] : bodies.raw()) {
       const std::string name(k.str());
-      Section b = bodies.table(name, true);
+      Section b = bodies.table(name, true, {"material", "min", "max", "velocity"});
       BodySpec bs;
       bs.name = name;
       const std::string mat = b.string("material", "");
@@ -290,7 +294,6 @@ Case build_case(const toml::table& root) {
           fail(b.key("min"), fmt::format("[{:g}, {:g}]..[{:g}, {:g}]", bs.min[0], bs.min[1], bs.max[0], bs.max[1]),
                fmt::format("body edges must lie on grid lines (multiples of grid.cell_size = {:g} m from grid.min)", h));
       }
-      b.finish();
       bs.field = int(c.bodies.size());
       body_index[name] = bs.field;
       c.bodies.push_back(bs);
@@ -306,20 +309,18 @@ Case build_case(const toml::table& root) {
           fail("bodies." + b.name, "\"" + b.name + "\"",
                "overlaps bodies." + a.name + "; bodies must not overlap");
       }
-    bodies.finish();
   }
 
   {
-    Section t = top.table("time", true);
+    Section t = top.table("time", true, {"end", "cfl"});
     c.time.end = t.number("end");
     if (c.time.end <= 0) fail(t.key("end"), c.time.end, "must be > 0 (s)");
     c.time.cfl = t.number("cfl", 0.4);
     if (!(c.time.cfl > 0 && c.time.cfl <= 1)) fail(t.key("cfl"), c.time.cfl, "must lie in (0, 1]");
-    t.finish();
   }
 
   {
-    Section s = top.table("solver", false);
+    Section s = top.table("solver", false, {"scheme", "flip", "threads"});
     const std::string scheme = s.string("scheme", "MUSL", {"MUSL", "USL", "USF"});
     c.solver.scheme = scheme == "MUSL" ? Scheme::MUSL : scheme == "USL" ? Scheme::USL : Scheme::USF;
     c.solver.flip = s.number("flip", 1.0);
@@ -327,14 +328,13 @@ Case build_case(const toml::table& root) {
     const long threads = s.integer("threads", 0);
     if (threads < 0 || threads > 1024) fail(s.key("threads"), double(threads), "must lie in [0, 1024] (0 = all cores)");
     c.solver.threads = int(threads);
-    s.finish();
   }
 
   {
     Section bcs = top.table("boundary", false);
     for (const auto& [k, v] : bcs.raw()) {
       const std::string name(k.str());
-      Section b = bcs.table(name, true);
+      Section b = bcs.table(name, true, {"edge", "from", "to", "component", "bodies", "function", "velocity", "rise_time", "plateau_time", "fall_time"});
       VelocityBC bc;
       bc.name = name;
       const std::string edge = b.string("edge", "", {"left", "right", "bottom", "top"});
@@ -373,23 +373,19 @@ Case build_case(const toml::table& root) {
         for (const char* key : {"rise_time", "plateau_time", "fall_time"})
           if (b.has(key)) fail(b.key(key), show(*b.node(key)), "only allowed with function = \"trapezoid\"");
       }
-      b.finish();
       c.boundary.push_back(bc);
     }
-    bcs.finish();
   }
 
   {
-    Section o = top.table("output", false);
+    Section o = top.table("output", false, {"history_interval", "snapshot_interval", "progress_interval"});
     c.output.history_interval = o.number("history_interval", c.time.end / 200.0);
     if (c.output.history_interval < 0) fail(o.key("history_interval"), c.output.history_interval, "must be >= 0 (s; 0 = every step)");
     c.output.snapshot_interval = o.number("snapshot_interval", 0.0);
     if (c.output.snapshot_interval < 0) fail(o.key("snapshot_interval"), c.output.snapshot_interval, "must be >= 0 (s; 0 = no snapshots)");
     c.output.progress_interval = o.number("progress_interval", 1.0);
     if (c.output.progress_interval <= 0) fail(o.key("progress_interval"), c.output.progress_interval, "must be > 0 (wall-clock s)");
-    o.finish();
   }
-  top.finish();
 
   std::ostringstream echo;
   echo << toml::toml_formatter{root};

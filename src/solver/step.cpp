@@ -45,10 +45,42 @@ inline double bc_value(const State& s, const NodeBC& e, double t) {
   return s.boundary[std::size_t(e.condition)].velocity(t);
 }
 
-std::string describe_particle(const State& s, std::size_t p) {
+// A failure spreads through the grid within one step, so the diagnosis reports every bad
+// particle's extent (where it started lies inside) and the worst one, not just the first index.
+std::string diagnose_bad_particles(const State& s, double xlo, double xhi, double ylo, double yhi) {
   const Particles& P = s.particles;
-  return fmt::format("particle {} (field {}) at (x, y) = ({:.6g}, {:.6g}) m, step {}, t = {:.6g} s",
-                     p, int(P.field[p]), P.x[p], P.y[p], s.step, s.time);
+  std::size_t nonfinite = 0, outside = 0, first = kNone;
+  double bx0 = INFINITY, bx1 = -INFINITY, by0 = INFINITY, by1 = -INFINITY;
+  const char* quantity = "velocity";
+  for (std::size_t p = 0; p < P.size(); ++p) {
+    const bool v_ok = std::isfinite(P.vx[p] + P.vy[p]);
+    const bool s_ok = std::isfinite(P.sxx[p] + P.syy[p] + P.sxy[p]);
+    const bool in = P.x[p] > xlo && P.x[p] < xhi && P.y[p] > ylo && P.y[p] < yhi;
+    if (v_ok && s_ok && in) continue;
+    if (first == kNone) first = p;
+    if (!v_ok || !s_ok) {
+      ++nonfinite;
+      if (!s_ok && v_ok) quantity = "stress";
+    } else {
+      ++outside;
+    }
+    if (std::isfinite(P.x[p]) && std::isfinite(P.y[p])) {
+      bx0 = std::min(bx0, P.x[p]), bx1 = std::max(bx1, P.x[p]);
+      by0 = std::min(by0, P.y[p]), by1 = std::max(by1, P.y[p]);
+    }
+  }
+  const std::string where = fmt::format(
+      "at step {}, t = {:.6g} s; affected region x in [{:.6g}, {:.6g}], y in [{:.6g}, {:.6g}] m; "
+      "first: particle {} (field {}) at (x, y) = ({:.6g}, {:.6g}) m, v = ({:.4g}, {:.4g}) m/s",
+      s.step, s.time, bx0, bx1, by0, by1, first, int(P.field[first]), P.x[first], P.y[first],
+      P.vx[first], P.vy[first]);
+  if (nonfinite > 0)
+    return fmt::format("unstable: non-finite {} in {} particle(s) {}; reduce time.cfl or check the loading",
+                       quantity, nonfinite, where);
+  return fmt::format(
+      "particle left the grid: {} particle(s) {}; the grid with its ghost cells spans x in "
+      "[{:.6g}, {:.6g}], y in [{:.6g}, {:.6g}] m",
+      outside, where, xlo, xhi, ylo, yhi);
 }
 
 }  // namespace
@@ -327,19 +359,7 @@ void grid_to_particles(State& s, const double* gvx, const double* gvy, G2PMode m
     const bool inside = P.x[p] > xlo && P.x[p] < xhi && P.y[p] > ylo && P.y[p] < yhi;
     if (!finite || !inside) bad = std::min(bad, p);
   }
-  if (bad != kNone) {
-    const bool finite = std::isfinite(P.vx[bad] + P.vy[bad] + P.sxx[bad] + P.syy[bad] + P.sxy[bad]);
-    if (!finite) {
-      throw SimulationError(fmt::format(
-          "unstable: non-finite state at {} (v = ({:g}, {:g}) m/s, sigma = ({:g}, {:g}, {:g}) "
-          "Pa); reduce time.cfl or check the loading",
-          describe_particle(s, bad), P.vx[bad], P.vy[bad], P.sxx[bad], P.syy[bad], P.sxy[bad]));
-    }
-    throw SimulationError(fmt::format(
-        "particle left the grid: {}; the grid with its ghost cells spans x in [{:g}, {:g}], "
-        "y in [{:g}, {:g}] m",
-        describe_particle(s, bad), xlo, xhi, ylo, yhi));
-  }
+  if (bad != kNone) throw SimulationError(diagnose_bad_particles(s, xlo, xhi, ylo, yhi));
 }
 
 void step(State& s) {

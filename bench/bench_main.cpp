@@ -1,0 +1,122 @@
+// rupture-bench: throughput of the elastic GIMP time step on a uniform N x N grid with 2 x 2
+// particles per cell (uGIMP, double precision, MUSL, one velocity field), loaded by a
+// velocity pulse on the left edge so every phase does real work.
+//   rupture-bench --cells N --steps S --threads T [--repeat R]
+// Prints a per-phase table (ns per particle-update) and ends with
+//   particle_updates_per_second=<value>   (median over the repeats)
+#include <omp.h>
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <chrono>
+#include <fmt/format.h>
+#include <vector>
+
+#include "io/case_toml.hpp"
+#include "solver/state.hpp"
+#include "solver/step.hpp"
+
+using namespace rupture;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+Case bench_case(int cells) {
+  const double h = 1e-3 / 4;  // any size: the cost is per particle
+  const double size = h * cells;
+  return parse_case(fmt::format(R"(
+[materials.homalite]
+youngs_modulus = 5.2e9
+poisson_ratio = 0.34
+density = 1246.0
+[grid]
+min = [0.0, 0.0]
+max = [{0}, {0}]
+cell_size = {1}
+[bodies.plate]
+material = "homalite"
+min = [0.0, 0.0]
+max = [{0}, {0}]
+[time]
+end = 1.0
+[boundary.impact]
+edge = "left"
+component = "x"
+function = "trapezoid"
+velocity = 10.0
+rise_time = 1e-7
+plateau_time = 1.0
+fall_time = 1e-6
+)",
+                                size, h));
+}
+
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"rupture-bench: particle-updates per second of the elastic MUSL step"};
+  int cells = 256, steps = 20, threads = 0, repeat = 3;
+  app.add_option("--cells", cells, "grid cells per direction")->check(CLI::Range(4, 8192));
+  app.add_option("--steps", steps, "time steps per repeat")->check(CLI::Range(1, 1000000));
+  app.add_option("--threads", threads, "OpenMP threads (0 = all)")->check(CLI::Range(0, 1024));
+  app.add_option("--repeat", repeat, "repeats (median reported)")->check(CLI::Range(1, 100));
+  CLI11_PARSE(app, argc, argv);
+  if (threads > 0) omp_set_num_threads(threads);
+
+  const Case c = bench_case(cells);
+  State s = make_state(c);
+  const double n = double(s.particles.size());
+  fmt::print("rupture-bench: {} x {} cells, {} particles, {} steps x {} repeats, {} threads\n",
+             cells, cells, s.particles.size(), steps, repeat, omp_get_max_threads());
+
+  const char* names[] = {"sort/bin", "P2G (mass, momentum, force)", "grid update + BCs",
+                         "G2P velocity + MUSL re-map", "re-mapped grid velocity",
+                         "stress update + move"};
+  constexpr int kPhases = 6;
+  std::vector<double> rates;
+  double phase_total[kPhases] = {};
+  for (int r = 0; r < repeat; ++r) {
+    double phase[kPhases] = {};
+    const auto t0 = Clock::now();
+    for (int k = 0; k < steps; ++k) {
+      // The phases of step() for the MUSL scheme, timed one by one.
+      auto t = Clock::now();
+      build_scatter_plan(s);
+      phase[0] += seconds_since(t), t = Clock::now();
+      particles_to_grid(s, true);
+      phase[1] += seconds_since(t), t = Clock::now();
+      integrate_grid(s);
+      phase[2] += seconds_since(t), t = Clock::now();
+      update_particle_velocity_and_remap(s);
+      phase[3] += seconds_since(t), t = Clock::now();
+      remapped_grid_velocity(s);
+      phase[4] += seconds_since(t), t = Clock::now();
+      grid_to_particles(s, s.fields.remap_x.data(), s.fields.remap_y.data(), G2PMode::stress_and_move);
+      phase[5] += seconds_since(t);
+      s.time += s.dt;
+      ++s.step;
+    }
+    const double wall = seconds_since(t0);
+    rates.push_back(n * steps / wall);
+    for (int p = 0; p < kPhases; ++p) phase_total[p] += phase[p];
+  }
+  fmt::print("{:<32} {:>14}\n", "phase", "ns/particle-update");
+  double sum = 0;
+  for (int p = 0; p < kPhases; ++p) {
+    const double ns = 1e9 * phase_total[p] / (n * steps * repeat);
+    sum += ns;
+    fmt::print("{:<32} {:>14.2f}\n", names[p], ns);
+  }
+  fmt::print("{:<32} {:>14.2f}\n", "total", sum);
+  std::sort(rates.begin(), rates.end());
+  const double median = rates[rates.size() / 2];
+  const double bytes = double(Particles::bytes_per_particle()) * n + double(s.fields.bytes());
+  fmt::print("memory_bytes_per_particle={:.1f}\n", bytes / n);
+  fmt::print("time_per_step_seconds={:.4e}\n", n / median);
+  fmt::print("particle_updates_per_second={:.4e}\n", median);
+  return 0;
+}

@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# Installs dependencies, builds (Release) and runs the default case into runs/default.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+./scripts/install-deps.sh
+cmake --preset release
+cmake --build --preset release --target rupture
+case_file=${1:-examples/elastic_impact.toml}
+./build/release/bin/rupture run "$case_file" -o runs/default
+echo "results: runs/default (run.json, history.csv, particles.xdmf for ParaView)"

@@ -1,0 +1,122 @@
+// Tests of io/case_toml: a valid case parses; every bad input stops with a message naming the
+// key, the value and the allowed range.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "core/errors.hpp"
+#include "io/case_toml.hpp"
+#include "support.hpp"
+
+using namespace rupture;
+
+namespace {
+
+std::string replace(std::string s, const std::string& from, const std::string& to) {
+  const auto pos = s.find(from);
+  EXPECT_NE(pos, std::string::npos) << "test setup: '" << from << "' not in the case";
+  if (pos != std::string::npos) s.replace(pos, from.size(), to);
+  return s;
+}
+
+// Parses `text` (with overrides) and returns the InputError message ("" if none was raised).
+std::string error_of(const std::string& text, const std::vector<std::string>& overrides = {}) {
+  try {
+    parse_case(text, overrides);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+struct BadInput {
+  const char* name;
+  std::string from, to;     // text replacement in the strip case
+  std::string set;          // or a --set override
+  std::vector<std::string> expect;  // substrings the message must contain
+};
+
+}  // namespace
+
+TEST(CaseToml, valid_case_parses_with_derived_fields) {
+  const Case c = parse_case(test::strip_case_toml());
+  ASSERT_EQ(c.materials.size(), 1u);
+  EXPECT_DOUBLE_EQ(c.materials[0].youngs_modulus, 5.2e9);
+  ASSERT_EQ(c.bodies.size(), 1u);
+  EXPECT_EQ(c.bodies[0].field, 0);
+  EXPECT_EQ(c.solver.scheme, Scheme::MUSL);
+  ASSERT_EQ(c.boundary.size(), 1u);
+  EXPECT_EQ(c.boundary[0].edge, Edge::left);
+  EXPECT_DOUBLE_EQ(c.boundary[0].from, 0.0);  // defaults to the whole edge
+  EXPECT_DOUBLE_EQ(c.boundary[0].to, 0.002);
+  EXPECT_NE(c.input_toml.find("homalite"), std::string::npos);
+}
+
+TEST(CaseToml, set_overrides_values_and_is_validated_the_same_way) {
+  const Case c = parse_case(test::strip_case_toml(),
+                            {"boundary.push.velocity=30", "solver.scheme=USL", "time.cfl = 0.2"});
+  EXPECT_DOUBLE_EQ(c.boundary[0].velocity.value, 30.0);
+  EXPECT_EQ(c.solver.scheme, Scheme::USL);
+  EXPECT_DOUBLE_EQ(c.time.cfl, 0.2);
+  const std::string e = error_of(test::strip_case_toml(), {"grid.cell_size=-1"});
+  EXPECT_NE(e.find("grid.cell_size"), std::string::npos) << e;
+  EXPECT_NE(e.find("> 0"), std::string::npos) << e;
+}
+
+TEST(CaseToml, every_bad_input_is_reported_with_key_value_and_rule) {
+  const std::vector<BadInput> cases = {
+      {"unknown top-level key", "title =", "titel =", "", {"'titel'", "unknown key"}},
+      {"unknown key (typo)", "cell_size = 0.5e-3", "cel_size = 0.5e-3", "", {"grid.cel_size", "unknown key"}},
+      {"wrong type", "cell_size = 0.5e-3", "cell_size = \"fine\"", "", {"grid.cell_size", "\"fine\"", "must be a number"}},
+      {"negative cell size", "cell_size = 0.5e-3", "cell_size = -0.5e-3", "", {"grid.cell_size", "-0.0005", "> 0"}},
+      {"zero cell size", "cell_size = 0.5e-3", "cell_size = 0.0", "", {"grid.cell_size", "= 0", "> 0"}},
+      {"cell size not dividing domain", "cell_size = 0.5e-3", "cell_size = 0.3e-3", "", {"grid.cell_size", "whole cells"}},
+      {"poisson ratio 0.5", "poisson_ratio = 0.34", "poisson_ratio = 0.5", "", {"materials.homalite.poisson_ratio", "0.5", "(-1, 0.5)"}},
+      {"poisson ratio below -1", "poisson_ratio = 0.34", "poisson_ratio = -1.2", "", {"poisson_ratio", "-1.2", "(-1, 0.5)"}},
+      {"negative modulus", "youngs_modulus = 5.2e9", "youngs_modulus = -5.2e9", "", {"youngs_modulus", "> 0"}},
+      {"zero density", "density = 1246.0", "density = 0.0", "", {"materials.homalite.density", "> 0"}},
+      {"cfl zero", "cfl = 0.4", "cfl = 0.0", "", {"time.cfl", "(0, 1]"}},
+      {"cfl above one", "cfl = 0.4", "cfl = 1.5", "", {"time.cfl", "1.5", "(0, 1]"}},
+      {"negative end time", "end = 2e-6", "end = -2e-6", "", {"time.end", "> 0"}},
+      {"body outside grid", "max = [0.01, 0.002]\n[time]", "max = [0.02, 0.002]\n[time]", "", {"bodies.strip.max", "inside the grid"}},
+      {"empty body", "min = [0.0, 0.0]\nmax = [0.01, 0.002]\n[time]", "min = [0.0, 0.002]\nmax = [0.01, 0.002]\n[time]", "", {"bodies.strip.max", "empty"}},
+      {"unknown material", "material = \"homalite\"", "material = \"steel\"", "", {"bodies.strip.material", "\"steel\"", "homalite"}},
+      {"bc range off the edge", "component = \"x\"", "component = \"x\"\nfrom = 0.001\nto = 0.005", "", {"boundary.push.to", "0.005", "left edge"}},
+      {"bc edge name", "edge = \"left\"", "edge = \"front\"", "", {"boundary.push.edge", "\"front\"", "\"left\""}},
+      {"bc component", "component = \"x\"", "component = \"z\"", "", {"boundary.push.component", "\"z\"", "\"x\", \"y\""}},
+      {"bc unknown body", "component = \"x\"", "component = \"x\"\nbodies = [\"plate\"]", "", {"boundary.push.bodies", "\"plate\"", "strip"}},
+      {"time key for constant", "velocity = 1.0", "velocity = 1.0\nrise_time = 1e-7", "", {"boundary.push.rise_time", "trapezoid"}},
+      {"flip out of range", "flip = 1.0", "flip = 2.0", "", {"solver.flip", "2", "[0, 1]"}},
+      {"scheme name", "scheme = \"MUSL\"", "scheme = \"FLIP\"", "", {"solver.scheme", "\"FLIP\"", "\"MUSL\""}},
+      {"particles per cell", "particles_per_cell = 2", "particles_per_cell = 0", "", {"grid.particles_per_cell", "[1, 8]"}},
+      {"missing table", "[time]\nend = 2e-6\ncfl = 0.4\n", "", "", {"time", "required"}},
+      {"grid max below min", "max = [0.01, 0.002]\ncell_size", "max = [-0.01, 0.002]\ncell_size", "", {"grid.max", "must exceed"}},
+      {"bad --set form", "", "", "grid.cell_size", {"--set", "dotted.key=value"}},
+      {"--set into a value", "", "", "grid.cell_size.x=1", {"grid.cell_size", "non-table"}},
+      {"negative snapshot interval", "history_interval = 0.1e-6", "history_interval = 0.1e-6\nsnapshot_interval = -1.0", "", {"output.snapshot_interval", ">= 0"}},
+  };
+  EXPECT_GE(cases.size(), 15u);
+  for (const BadInput& b : cases) {
+    std::string text = test::strip_case_toml();
+    if (!b.from.empty()) text = replace(text, b.from, b.to);
+    std::vector<std::string> overrides;
+    if (!b.set.empty()) overrides.push_back(b.set);
+    const std::string msg = error_of(text, overrides);
+    EXPECT_FALSE(msg.empty()) << b.name << ": no error raised";
+    for (const std::string& s : b.expect)
+      EXPECT_NE(msg.find(s), std::string::npos) << b.name << ": '" << s << "' not in: " << msg;
+  }
+}
+
+TEST(CaseToml, syntax_error_gives_line_and_column) {
+  const std::string msg = error_of("[grid\ncell_size = 1");
+  EXPECT_NE(msg.find("TOML syntax error"), std::string::npos) << msg;
+  EXPECT_NE(msg.find(":1:"), std::string::npos) << msg;
+}
+
+TEST(CaseToml, overlapping_bodies_are_rejected) {
+  std::string text = test::strip_case_toml();
+  text = replace(text, "[time]", "[bodies.other]\nmaterial = \"homalite\"\nmin = [0.005, 0.0]\nmax = [0.01, 0.001]\n[time]");
+  const std::string msg = error_of(text);
+  EXPECT_NE(msg.find("overlaps"), std::string::npos) << msg;
+}

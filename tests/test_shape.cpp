@@ -1,0 +1,115 @@
+// Tests of shape/gimp.hpp and grid stencils (SPEC E3).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "grid/grid.hpp"
+#include "shape/gimp.hpp"
+
+using namespace rupture;
+
+namespace {
+
+// Reference: hat function averaged over the particle box by composite Gauss quadrature,
+// splitting at the hat's kinks so each piece is integrated exactly.
+double quadrature_weight(double u, double hL, double hR, double lp) {
+  const double a = u - lp, b = u + lp;
+  std::vector<double> cuts = {a, b};
+  for (double k : {-hL, 0.0, hR})
+    if (k > a && k < b) cuts.push_back(k);
+  std::sort(cuts.begin(), cuts.end());
+  const double g[2] = {-1.0 / std::sqrt(3.0), 1.0 / std::sqrt(3.0)};
+  double sum = 0.0;
+  for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+    const double m = 0.5 * (cuts[k] + cuts[k + 1]), r = 0.5 * (cuts[k + 1] - cuts[k]);
+    for (double gi : g) sum += r * hat_graded(m + r * gi, hL, hR);
+  }
+  return sum / (2.0 * lp);
+}
+
+}  // namespace
+
+TEST(Shape, uniform_matches_quadrature_of_hat_over_particle_box) {
+  const double h = 1.0;
+  for (double lp : {0.25, 0.125, 0.5}) {
+    for (double d = -1.6; d <= 1.6; d += 0.0137) {
+      const double expected = quadrature_weight(d, h, h, lp);
+      EXPECT_NEAR(gimp_uniform(d, h, lp).s, expected, 1e-13) << "d = " << d << ", lp = " << lp;
+    }
+  }
+}
+
+TEST(Shape, graded_matches_quadrature_and_uniform) {
+  for (double hL : {1.0, 0.5, 2.0})
+    for (double hR : {1.0, 0.5, 2.0})
+      for (double u = -2.4; u <= 2.4; u += 0.0113) {
+        const double lp = 0.25 * std::min(hL, hR);
+        EXPECT_NEAR(gimp_graded(u, hL, hR, lp).s, quadrature_weight(u, hL, hR, lp), 1e-13)
+            << "u = " << u << " hL = " << hL << " hR = " << hR;
+      }
+  for (double u = -1.3; u <= 1.3; u += 0.01) {
+    const Weight1D a = gimp_uniform(u, 1.0, 0.25), b = gimp_graded(u, 1.0, 1.0, 0.25);
+    EXPECT_NEAR(a.s, b.s, 1e-14);
+    EXPECT_NEAR(a.ds, b.ds, 1e-12);
+  }
+}
+
+TEST(Shape, gradient_is_derivative_of_weight) {
+  const double h = 2e-3, lp = h / 4, eps = 1e-9;
+  for (double d = -1.2 * h; d <= 1.2 * h; d += 0.01 * h) {
+    const double fd = (gimp_uniform(d + eps, h, lp).s - gimp_uniform(d - eps, h, lp).s) / (2 * eps);
+    EXPECT_NEAR(gimp_uniform(d, h, lp).ds, fd, 1e-5 / h) << "d/h = " << d / h;
+  }
+}
+
+TEST(Shape, weights_are_continuous_across_cell_boundaries) {
+  const double h = 1.0, lp = 0.25;
+  // Kinks of the weight function: |d| = lp, h - lp, h + lp (and their mirror images).
+  for (double k : {0.25, 0.75, 1.25}) {
+    for (double sgn : {-1.0, 1.0}) {
+      const double d = sgn * k;
+      const double below = gimp_uniform(d - 1e-12, h, lp).s, above = gimp_uniform(d + 1e-12, h, lp).s;
+      EXPECT_NEAR(below, above, 1e-10) << "weight jumps at d = " << d;
+      const Weight1D lo = gimp_uniform(d - 1e-9, h, lp), hi = gimp_uniform(d + 1e-9, h, lp);
+      EXPECT_NEAR(lo.ds, hi.ds, 1e-6) << "gradient jumps at d = " << d;  // uGIMP is C1
+    }
+  }
+}
+
+TEST(Shape, stencil_partition_of_unity_and_zero_gradient_sum) {
+  Axis a;
+  a.origin = -0.01;
+  a.h = 0.5e-3;
+  a.cells = 60;
+  for (double lp : {a.h / 4, a.h / 2, a.h / 8}) {
+    for (double x = a.node(1) + 1e-7; x < a.node(a.cells - 1); x += 0.0371 * a.h) {
+      Stencil1D st;
+      stencil(a, x, lp, st);
+      double s = 0, ds = 0;
+      for (int k = 0; k < 3; ++k) s += st.s[k], ds += st.ds[k];
+      EXPECT_NEAR(s, 1.0, 1e-14) << "x = " << x;
+      EXPECT_NEAR(ds, 0.0, 1e-9 / a.h) << "x = " << x;
+      // Nodes outside the 3-node stencil carry no weight.
+      EXPECT_EQ(gimp_uniform(x - a.node(st.first - 1), a.h, lp).s, 0.0);
+      EXPECT_EQ(gimp_uniform(x - a.node(st.first + 3), a.h, lp).s, 0.0);
+    }
+  }
+}
+
+TEST(Shape, graded_axis_partition_of_unity_across_size_jumps) {
+  // Nodes 0..6 with cells 1, 1, 0.5, 0.5, 1, 2: every kind of size change.
+  const std::vector<double> xs = {0, 1, 2, 2.5, 3, 4, 6};
+  for (double x = 1.5; x <= 4.0; x += 0.01) {
+    const double lp = 0.125;
+    double s = 0, ds = 0;
+    for (std::size_t i = 0; i < xs.size(); ++i) {
+      const double hL = i > 0 ? xs[i] - xs[i - 1] : 1.0, hR = i + 1 < xs.size() ? xs[i + 1] - xs[i] : 1.0;
+      const Weight1D w = gimp_graded(x - xs[i], hL, hR, lp);
+      s += w.s;
+      ds += w.ds;
+    }
+    EXPECT_NEAR(s, 1.0, 1e-14) << "x = " << x;
+    EXPECT_NEAR(ds, 0.0, 1e-12) << "x = " << x;
+  }
+}
