@@ -1,0 +1,57 @@
+// rupture/cohesive/xu_needleman.hpp
+// The Xu-Needleman exponential traction-separation law (SPEC E7) with the interpenetration
+// penalty (SPEC E8). Units: tractions and strengths in Pa, openings in m, energies in J/m^2.
+// Returned tractions are the resisting magnitudes T^ = dphi/dDelta in (normal, tangential)
+// components; the interface applies -T^ to the upper face and +T^ to the lower face.
+// Contract: delta_n, delta_t > 0; r != 1; everything finite.
+#pragma once
+#include <cmath>
+
+namespace rupture {
+
+struct CohesiveTraction {
+  double normal;      // T^n, Pa
+  double tangential;  // T^t, Pa
+};
+
+struct XuNeedleman {
+  double sigma_max = 0.0;  // Pa
+  double tau_max = 0.0;    // Pa
+  double delta_n = 0.0;    // m
+  double delta_t = 0.0;    // m
+  double q = 1.0;          // phi_t / phi_n (SPEC: phi_t = sqrt(e/2) tau_max delta_t)
+  double r = 0.0;          // Delta_n* / delta_n
+  double penalty = 1.0;    // k_pen: K = k_pen phi_n / delta_n^2 for Delta_n < 0 (E8)
+
+  double phi_n() const { return std::exp(1.0) * sigma_max * delta_n; }
+  double phi_t() const { return std::sqrt(std::exp(1.0) / 2.0) * tau_max * delta_t; }
+  double penalty_stiffness() const { return penalty * phi_n() / (delta_n * delta_n); }
+  // Initial normal stiffness of the law, e sigma_max / delta_n (SPEC E6).
+  double initial_stiffness() const { return std::exp(1.0) * sigma_max / delta_n; }
+
+  // SPEC E7 (+ E8 for dn < 0). dn, dt: normal and tangential openings, m.
+  CohesiveTraction traction(double dn, double dt) const {
+    const double pn = phi_n();
+    const double xn = dn / delta_n, xt = dt / delta_t;
+    const double en = std::exp(-xn), et = std::exp(-xt * xt);
+    CohesiveTraction T;
+    T.normal = (pn / delta_n) * en * (xn * et + (1.0 - q) / (r - 1.0) * (1.0 - et) * (r - xn));
+    T.tangential = (pn / delta_n) * (2.0 * delta_n / delta_t) * xt * (q + (r - q) / (r - 1.0) * xn) * en * et;
+    if (dn < 0.0) T.normal += penalty_stiffness() * dn;
+    return T;
+  }
+
+  // The potential phi(dn, dt) whose gradient is the traction (J/m^2), penalty included:
+  // phi = phi_n + phi_n e^{-xn} { [1 - r + xn] (1-q)/(r-1) - [q + (r-q)/(r-1) xn] e^{-xt^2} }.
+  double potential(double dn, double dt) const {
+    const double pn = phi_n();
+    const double xn = dn / delta_n, xt = dt / delta_t;
+    double phi = pn + pn * std::exp(-xn) *
+                          ((1.0 - r + xn) * (1.0 - q) / (r - 1.0) -
+                           (q + (r - q) / (r - 1.0) * xn) * std::exp(-xt * xt));
+    if (dn < 0.0) phi += 0.5 * penalty_stiffness() * dn * dn;
+    return phi;
+  }
+};
+
+}  // namespace rupture
