@@ -34,6 +34,16 @@ void print_check(const std::string& path, const Case& c) {
                s.particles_per_body[b]);
   fmt::print("dt={:.6e}\n", s.dt);
   fmt::print("dt_cfl_limit={:.6e}\n", s.dt_cfl);
+  if (s.dt_cohesive > 0) fmt::print("dt_cohesive_limit={:.6e}\n", s.dt_cohesive);
+  for (std::size_t k = 0; k < c.interfaces.size(); ++k) {
+    const InterfaceSpec& is = c.interfaces[k];
+    fmt::print(
+        "interface {}: {} segments of {:.4g} um on y = {:g} m, x in [{:g}, {:g}] m; delta_t = "
+        "{:.4g} um, phi_n = {:.4g} J/m^2, phi_t = {:.4g} J/m^2{}\n",
+        c.interface_names[k], is.segments, 1e6 * (is.end - is.start) / is.segments, is.y,
+        is.start, is.end, 1e6 * is.law.delta_t, is.law.phi_n(), is.law.phi_t(),
+        is.bonded ? fmt::format("; bonded on [{:g}, {:g}] m", is.bonded_from, is.bonded_to) : "");
+  }
   fmt::print("cells={}\n", s.cells);
   fmt::print("nodes={}\n", s.nodes);
   fmt::print("particles={}\n", s.particles);
@@ -76,6 +86,17 @@ int main(int argc, char** argv) {
     fmt::print("wall_seconds={:.3f}\n", r.wall_seconds);
     fmt::print("particle_updates_per_second={:.4e}\n", r.particle_updates_per_second);
     fmt::print("energy_balance_error={:.4e}\n", r.energy_balance_error);
+    if (!r.cracks.empty()) {
+      const CrackSummary& k = r.cracks.front();
+      fmt::print("crack.initiation_time={:.6e}\n", k.initiation_time);
+      fmt::print("crack.sustained_speed={:.1f}\n", k.sustained_speed);
+      fmt::print("crack.peak_speed={:.1f}\n", k.peak_speed);
+      fmt::print("crack.intersonic_time={:.6e}\n", k.intersonic_time);
+      fmt::print("crack.daughter_crack_time={:.6e}\n", k.daughter_time);
+      fmt::print("crack.final_tip={:.6e}\n", k.final_tip);
+      fmt::print("crack.final_cohesive_zone_length={:.6e}\n", k.final_cohesive_zone);
+      fmt::print("crack.regime={}\n", k.regime);
+    }
     fmt::print("output={}\n", out_dir);
     if (!r.ok) {
       fmt::print(stderr, "error: {}\n", r.message);

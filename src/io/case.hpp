@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "bc/velocity_bc.hpp"
+#include "cohesive/interface.hpp"
 #include "material/elastic.hpp"
 
 namespace rupture {
@@ -29,6 +30,7 @@ struct GridSpec {
 struct TimeSpec {
   double end = 0.0;  // s
   double cfl = 0.4;  // Delta t = cfl * h / c_D (SPEC E6)
+  double cohesive_safety = 0.9;  // Delta t <= cohesive_safety * cohesive limit (SPEC E6)
 };
 
 struct SolverSpec {
@@ -41,6 +43,10 @@ struct OutputSpec {
   double history_interval = 0.0;   // s; 0 = every step
   double snapshot_interval = 0.0;  // s; 0 = no snapshots
   double progress_interval = 1.0;  // wall-clock seconds between progress lines
+  double crack_sample_interval = 0.05e-6;  // crack-tip sampling interval, s (E10)
+  double interface_interval = 0.0;  // interface profiles (DIR/interface/*.csv), s; 0 = none
+  bool has_snapshot_region = false;
+  double snapshot_region[4]{};      // xmin, ymin, xmax, ymax of the particles written, m
 };
 
 struct Case {
@@ -52,6 +58,8 @@ struct Case {
   TimeSpec time;
   SolverSpec solver;
   std::vector<VelocityBC> boundary;
+  std::vector<InterfaceSpec> interfaces;  // cohesive interfaces (SPEC §3)
+  std::vector<std::string> interface_names;
   OutputSpec output;
   std::string input_toml;  // the merged input (file + --set) as TOML, echoed into run.json
 };

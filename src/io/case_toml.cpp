@@ -201,7 +201,7 @@ bool whole_cells(double length, double h) {
 
 Case build_case(const toml::table& root) {
   Case c;
-  Section top(root, "", {"title", "model", "materials", "grid", "bodies", "time", "solver", "boundary", "output"});
+  Section top(root, "", {"title", "model", "materials", "grid", "bodies", "time", "solver", "boundary", "interface", "output"});
   c.title = top.string("title", "");
 
   {
@@ -312,11 +312,14 @@ Case build_case(const toml::table& root) {
   }
 
   {
-    Section t = top.table("time", true, {"end", "cfl"});
+    Section t = top.table("time", true, {"end", "cfl", "cohesive_safety"});
     c.time.end = t.number("end");
     if (c.time.end <= 0) fail(t.key("end"), c.time.end, "must be > 0 (s)");
     c.time.cfl = t.number("cfl", 0.4);
     if (!(c.time.cfl > 0 && c.time.cfl <= 1)) fail(t.key("cfl"), c.time.cfl, "must lie in (0, 1]");
+    c.time.cohesive_safety = t.number("cohesive_safety", 0.9);
+    if (!(c.time.cohesive_safety > 0 && c.time.cohesive_safety <= 1))
+      fail(t.key("cohesive_safety"), c.time.cohesive_safety, "must lie in (0, 1]");
   }
 
   {
@@ -378,13 +381,90 @@ Case build_case(const toml::table& root) {
   }
 
   {
-    Section o = top.table("output", false, {"history_interval", "snapshot_interval", "progress_interval"});
+    Section ifs = top.table("interface", false);
+    for (const auto& [k, v] : ifs.raw()) {
+      const std::string name(k.str());
+      Section f = ifs.table(name, true, {"upper_body", "lower_body", "y", "start", "end", "segments",
+                                         "sigma_max", "tau_max", "delta_n", "delta_t", "q", "r",
+                                         "penalty", "separation", "bonded_to"});
+      InterfaceSpec is;
+      std::vector<std::string> names;
+      for (const auto& bb : c.bodies) names.push_back(bb.name);
+      for (const char* which : {"upper_body", "lower_body"}) {
+        const std::string body = f.string(which, "");
+        if (!body_index.count(body))
+          fail(f.key(which), "\"" + body + "\"", "must name a body among " + Section::join(names));
+        (std::string(which) == "upper_body" ? is.upper_field : is.lower_field) = body_index[body];
+      }
+      if (is.upper_field == is.lower_field)
+        fail(f.key("lower_body"), "\"" + c.bodies[is.lower_field].name + "\"", "must differ from upper_body");
+      const BodySpec &up = c.bodies[is.upper_field], &lo = c.bodies[is.lower_field];
+      is.y = f.number("y");
+      const double tol = 1e-9 * c.grid.cell_size;
+      if (std::fabs(up.min[1] - is.y) > tol || std::fabs(lo.max[1] - is.y) > tol)
+        fail(f.key("y"), is.y, fmt::format("must be the bottom of the upper body ({:g}) and the top of the lower body ({:g})", up.min[1], lo.max[1]));
+      is.start = f.number("start");
+      is.end = f.number("end");
+      const double x0 = std::max(up.min[0], lo.min[0]), x1 = std::min(up.max[0], lo.max[0]);
+      if (!inside(is.start, x0, x1, tol)) fail(f.key("start"), is.start, fmt::format("must lie where both bodies meet: [{:g}, {:g}] m", x0, x1));
+      if (!(is.end > is.start) || !inside(is.end, x0, x1, tol)) fail(f.key("end"), is.end, fmt::format("must lie in ({:g}, {:g}] m", is.start, x1));
+      const long segments = f.integer("segments", -1);
+      if (segments < 1 || segments > 100000000) fail(f.key("segments"), double(segments), "required, an integer in [1, 1e8]");
+      is.segments = int(segments);
+      XuNeedleman& law = is.law;
+      law.sigma_max = f.number("sigma_max");
+      if (law.sigma_max <= 0) fail(f.key("sigma_max"), law.sigma_max, "must be > 0 (Pa)");
+      law.tau_max = f.number("tau_max", law.sigma_max);
+      if (law.tau_max <= 0) fail(f.key("tau_max"), law.tau_max, "must be > 0 (Pa)");
+      law.delta_n = f.number("delta_n");
+      if (law.delta_n <= 0) fail(f.key("delta_n"), law.delta_n, "must be > 0 (m)");
+      law.q = f.number("q", 1.0);
+      if (law.q <= 0) fail(f.key("q"), law.q, "must be > 0");
+      law.r = f.number("r", 0.0);
+      if (law.r < 0 || std::fabs(law.r - 1.0) < 1e-12) fail(f.key("r"), law.r, "must be >= 0 and differ from 1");
+      if (f.has("delta_t")) {
+        law.delta_t = f.number("delta_t");
+        if (law.delta_t <= 0) fail(f.key("delta_t"), law.delta_t, "must be > 0 (m)");
+      } else {
+        // q = phi_t/phi_n with phi_t = sqrt(e/2) tau_max delta_t, phi_n = e sigma_max delta_n.
+        law.delta_t = law.q * std::exp(1.0) * law.sigma_max * law.delta_n / (std::sqrt(std::exp(1.0) / 2.0) * law.tau_max);
+      }
+      law.penalty = f.number("penalty", 1.0);
+      if (law.penalty < 0) fail(f.key("penalty"), law.penalty, "must be >= 0 (multiple of phi_n/delta_n^2)");
+      is.separation_factor = f.number("separation", 5.0);
+      if (!(is.separation_factor > 0 && is.separation_factor <= 1000)) fail(f.key("separation"), is.separation_factor, "must lie in (0, 1000] (multiples of delta_t)");
+      if (f.has("bonded_to")) {
+        is.bonded = true;
+        is.bonded_from = is.end;
+        is.bonded_to = f.number("bonded_to");
+        if (!(is.bonded_to > is.end) || !inside(is.bonded_to, x0, x1, tol))
+          fail(f.key("bonded_to"), is.bonded_to, fmt::format("must lie in ({:g}, {:g}] m (the halves are tied from end to here)", is.end, x1));
+      }
+      c.interfaces.push_back(is);
+      c.interface_names.push_back(name);
+    }
+  }
+
+  {
+    Section o = top.table("output", false, {"history_interval", "snapshot_interval", "progress_interval", "crack_sample_interval", "interface_interval", "snapshot_region_min", "snapshot_region_max"});
     c.output.history_interval = o.number("history_interval", c.time.end / 200.0);
     if (c.output.history_interval < 0) fail(o.key("history_interval"), c.output.history_interval, "must be >= 0 (s; 0 = every step)");
     c.output.snapshot_interval = o.number("snapshot_interval", 0.0);
     if (c.output.snapshot_interval < 0) fail(o.key("snapshot_interval"), c.output.snapshot_interval, "must be >= 0 (s; 0 = no snapshots)");
     c.output.progress_interval = o.number("progress_interval", 1.0);
     if (c.output.progress_interval <= 0) fail(o.key("progress_interval"), c.output.progress_interval, "must be > 0 (wall-clock s)");
+    c.output.crack_sample_interval = o.number("crack_sample_interval", 0.05e-6);
+    if (c.output.crack_sample_interval <= 0) fail(o.key("crack_sample_interval"), c.output.crack_sample_interval, "must be > 0 (s)");
+    c.output.interface_interval = o.number("interface_interval", c.output.snapshot_interval);
+    if (o.has("snapshot_region_min") || o.has("snapshot_region_max")) {
+      c.output.has_snapshot_region = true;
+      o.pair("snapshot_region_min", c.output.snapshot_region, true);
+      o.pair("snapshot_region_max", c.output.snapshot_region + 2, true);
+      if (!(c.output.snapshot_region[2] > c.output.snapshot_region[0] && c.output.snapshot_region[3] > c.output.snapshot_region[1]))
+        fail(o.key("snapshot_region_max"), fmt::format("[{:g}, {:g}]", c.output.snapshot_region[2], c.output.snapshot_region[3]),
+             "must exceed output.snapshot_region_min in both components");
+    }
+    if (c.output.interface_interval < 0) fail(o.key("interface_interval"), c.output.interface_interval, "must be >= 0 (s; 0 = none)");
   }
 
   std::ostringstream echo;

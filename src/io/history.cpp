@@ -16,10 +16,11 @@ double EnergySample::relative_error() const {
 std::string History::csv() const {
   std::string s =
       "time,kinetic_energy,strain_energy,external_work,total_energy,balance,"
-      "relative_balance_error\n";
+      "relative_balance_error,cohesive_stored,cohesive_dissipated\n";
   for (const EnergySample& e : samples)
-    s += fmt::format("{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.6e}\n", e.time, e.kinetic,
-                     e.strain, e.external_work, e.total(), e.balance(), e.relative_error());
+    s += fmt::format("{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.6e},{:.9e},{:.9e}\n", e.time,
+                     e.kinetic, e.strain, e.external_work, e.total(), e.balance(),
+                     e.relative_error(), e.cohesive_stored, e.cohesive_dissipated);
   return s;
 }
 

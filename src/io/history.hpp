@@ -2,7 +2,9 @@
 // Energy history (SPEC E14), sampled at a fixed interval of simulated time. Units: s and J per
 // unit thickness. The CSV is rewritten atomically, so it is always complete.
 // Columns: time, kinetic_energy, strain_energy, external_work, total_energy, balance,
-// relative_balance_error (balance = initial + external work - kinetic - strain).
+// relative_balance_error, cohesive_stored, cohesive_dissipated, where
+// total = kinetic + strain + cohesive (stored + dissipated) and balance = initial + external
+// work - total.
 #pragma once
 #include <string>
 #include <vector>
@@ -11,7 +13,8 @@ namespace rupture {
 
 struct EnergySample {
   double time, kinetic, strain, external_work, initial;
-  double total() const { return kinetic + strain; }
+  double cohesive_stored = 0.0, cohesive_dissipated = 0.0;
+  double total() const { return kinetic + strain + cohesive_stored + cohesive_dissipated; }
   double balance() const { return initial + external_work - total(); }
   // |balance| relative to the energy put in (initial + |external work|).
   double relative_error() const;

@@ -47,6 +47,31 @@ std::string run_json(const Case& c, const CaseSummary& s, const RunRecord& r) {
                                  {"strain", finite(r.strain_energy)},
                                  {"external_work", finite(r.external_work)}});
   t.insert("energy_balance_error", finite(r.energy_balance_error));
+  t.insert("dt_cohesive_limit", s.dt_cohesive);
+  if (!r.cracks.empty()) {
+    toml::array all;
+    for (std::size_t k = 0; k < r.cracks.size(); ++k) {
+      const CrackSummary& cs = r.cracks[k];
+      toml::table ct{{"interface", c.interface_names[k]},
+                     {"initiated", cs.initiated},
+                     {"initiation_time", cs.initiation_time},
+                     {"sustained_speed", finite(cs.sustained_speed)},
+                     {"peak_speed", finite(cs.peak_speed)},
+                     {"intersonic_time", cs.intersonic_time},
+                     {"daughter_crack_time", cs.daughter_time},
+                     {"final_tip", cs.final_tip},
+                     {"final_cohesive_zone_length", cs.final_cohesive_zone},
+                     {"regime", cs.regime}};
+      if (k == 0) {
+        t.insert("crack", ct);
+        for (auto&& [key, value] : ct) t.insert("crack." + std::string(key.str()), value);
+      }
+      all.push_back(ct);
+    }
+    t.insert("cracks", all);
+  }
+  t.insert("energy_cohesive", toml::table{{"stored", finite(r.cohesive_stored)},
+                                          {"dissipated", finite(r.cohesive_dissipated)}});
   toml::table input;
   try {
     input = toml::parse(c.input_toml);

@@ -1,11 +1,15 @@
 // rupture/io/run_json.hpp
 // DIR/run.json, the machine-readable record of a run. Stable keys (never renamed):
 //   dt, steps, cells, particles, wall_seconds, particle_updates_per_second (SI units),
+//   energy_balance_error, and for the first cohesive interface crack.initiation_time,
+//   crack.sustained_speed, crack.peak_speed, crack.regime (as a nested "crack" object and,
+//   for tools that look up dotted names, as flat "crack.*" keys with the same values),
 // plus version, status ("running" | "completed" | "failed"), message, input (the merged input
 // echo), and derived quantities. Rewritten atomically whenever it changes.
 #pragma once
 #include <string>
 
+#include "cohesive/crack_tip.hpp"
 #include "io/case.hpp"
 #include "solver/summary.hpp"
 
@@ -21,6 +25,8 @@ struct RunRecord {
   int threads = 1;
   double kinetic_energy = 0.0, strain_energy = 0.0, external_work = 0.0;
   double energy_balance_error = 0.0;
+  double cohesive_stored = 0.0, cohesive_dissipated = 0.0;
+  std::vector<CrackSummary> cracks;  // one per interface
 };
 
 std::string run_json(const Case& c, const CaseSummary& s, const RunRecord& r);

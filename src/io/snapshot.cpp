@@ -37,24 +37,31 @@ void write_scalar_attribute(hid_t file, const char* name, hid_t type, const void
 
 }  // namespace
 
-SnapshotWriter::SnapshotWriter(std::string dir) : dir_(std::move(dir)) {
+SnapshotWriter::SnapshotWriter(std::string dir, const Particles& p, const double* region)
+    : dir_(std::move(dir)) {
   std::filesystem::create_directories(std::filesystem::path(dir_) / "snapshots");
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (!region || (p.x[i] >= region[0] && p.y[i] >= region[1] && p.x[i] <= region[2] &&
+                    p.y[i] <= region[3]))
+      selection_.push_back(i);
 }
 
 void SnapshotWriter::write(const Particles& p, double time, long step) {
-  const std::size_t n = p.size();
-  std::vector<double> pos(3 * n), vel(3 * n), tau(n);
+  const std::size_t n = selection_.size();
+  std::vector<double> pos(3 * n), vel(3 * n), tau(n), sxx(n), syy(n), sxy(n), szz(n);
   std::vector<int> body(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    pos[3 * i] = p.x[i];
-    pos[3 * i + 1] = p.y[i];
-    pos[3 * i + 2] = 0.0;
-    vel[3 * i] = p.vx[i];
-    vel[3 * i + 1] = p.vy[i];
-    vel[3 * i + 2] = 0.0;
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t i = selection_[k];
+    pos[3 * k] = p.x[i];
+    pos[3 * k + 1] = p.y[i];
+    pos[3 * k + 2] = 0.0;
+    vel[3 * k] = p.vx[i];
+    vel[3 * k + 1] = p.vy[i];
+    vel[3 * k + 2] = 0.0;
+    sxx[k] = p.sxx[i], syy[k] = p.syy[i], sxy[k] = p.sxy[i], szz[k] = p.szz[i];
     const double a = 0.5 * (p.sxx[i] - p.syy[i]);
-    tau[i] = std::sqrt(a * a + p.sxy[i] * p.sxy[i]);  // (sigma_1 - sigma_2)/2, SPEC E13
-    body[i] = p.field[i];
+    tau[k] = std::sqrt(a * a + p.sxy[i] * p.sxy[i]);  // (sigma_1 - sigma_2)/2, SPEC E13
+    body[k] = p.field[i];
   }
   const std::string rel = fmt::format("snapshots/particles_{:06d}.h5", files_.size());
   const std::string path = dir_ + "/" + rel;
@@ -63,10 +70,10 @@ void SnapshotWriter::write(const Particles& p, double time, long step) {
   if (file < 0) throw std::runtime_error(fmt::format("HDF5: cannot create '{}'", tmp));
   write_dataset(file, "position", H5T_NATIVE_DOUBLE, pos.data(), n, 3, path);
   write_dataset(file, "velocity", H5T_NATIVE_DOUBLE, vel.data(), n, 3, path);
-  write_dataset(file, "sxx", H5T_NATIVE_DOUBLE, p.sxx.data(), n, 1, path);
-  write_dataset(file, "syy", H5T_NATIVE_DOUBLE, p.syy.data(), n, 1, path);
-  write_dataset(file, "sxy", H5T_NATIVE_DOUBLE, p.sxy.data(), n, 1, path);
-  write_dataset(file, "szz", H5T_NATIVE_DOUBLE, p.szz.data(), n, 1, path);
+  write_dataset(file, "sxx", H5T_NATIVE_DOUBLE, sxx.data(), n, 1, path);
+  write_dataset(file, "syy", H5T_NATIVE_DOUBLE, syy.data(), n, 1, path);
+  write_dataset(file, "sxy", H5T_NATIVE_DOUBLE, sxy.data(), n, 1, path);
+  write_dataset(file, "szz", H5T_NATIVE_DOUBLE, szz.data(), n, 1, path);
   write_dataset(file, "tau_max", H5T_NATIVE_DOUBLE, tau.data(), n, 1, path);
   write_dataset(file, "body", H5T_NATIVE_INT, body.data(), n, 1, path);
   write_scalar_attribute(file, "time", H5T_NATIVE_DOUBLE, &time);

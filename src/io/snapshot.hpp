@@ -4,7 +4,8 @@
 // Datasets (SI): position [N,3] m (z = 0), velocity [N,3] m/s, sxx syy sxy szz tau_max [N] Pa,
 // body [N] (velocity field id); root attributes time (s) and step.
 // tau_max = (sigma_1 - sigma_2)/2, the in-plane maximum shear stress (SPEC E13).
-// Every file is written to a temporary name and renamed when complete.
+// Optionally only a region of interest is written. Every file is written to a temporary name
+// and renamed when complete.
 #pragma once
 #include <string>
 #include <vector>
@@ -15,13 +16,16 @@ namespace rupture {
 
 class SnapshotWriter {
  public:
-  explicit SnapshotWriter(std::string dir);
+  // Writes every particle, or only those that start inside `region` (xmin, ymin, xmax, ymax)
+  // when given: the same particles at every output time, so ParaView sees one point set.
+  SnapshotWriter(std::string dir, const Particles& p, const double* region = nullptr);
   void write(const Particles& p, double time, long step);
   const std::vector<std::string>& files() const { return files_; }
 
  private:
   void write_xdmf() const;
   std::string dir_;
+  std::vector<std::size_t> selection_;  // particle indices written
   std::vector<std::string> files_;  // relative to dir_
   std::vector<double> times_;
   std::vector<std::size_t> counts_;

@@ -5,11 +5,14 @@
 #include <cmath>
 #include <filesystem>
 #include <fmt/format.h>
+#include <memory>
 #include <omp.h>
 
+#include "cohesive/crack_tip.hpp"
 #include "core/errors.hpp"
 #include "io/atomic_file.hpp"
 #include "io/history.hpp"
+#include "io/interface_csv.hpp"
 #include "io/run_json.hpp"
 #include "io/snapshot.hpp"
 #include "run/progress.hpp"
@@ -22,15 +25,22 @@ namespace rupture {
 namespace {
 
 EnergySample sample(const State& s) {
-  return {s.time, kinetic_energy(s.particles), strain_energy(s.particles), s.external_work,
-          s.initial_energy};
+  EnergySample e{s.time, kinetic_energy(s.particles), strain_energy(s.particles), s.external_work,
+                 s.initial_energy};
+  for (const CohesiveInterface& c : s.interfaces) {
+    const double stored = c.stored_energy();
+    e.cohesive_stored += stored;
+    e.cohesive_dissipated += c.work - stored;  // work on the interface not stored in it (E14)
+  }
+  return e;
 }
 
 // An explicit scheme that goes unstable grows its energy without bound; twice the energy put
 // in is far outside any discretization error and catches it long before overflow.
 void check_energy(const State& s, const EnergySample& e) {
   const double supplied = e.initial + std::fabs(e.external_work);
-  if (e.total() <= 2.0 * supplied || e.total() <= 0.0) return;
+  const double mechanical = e.kinetic + e.strain;
+  if (mechanical <= 2.0 * supplied || mechanical <= 0.0) return;
   const Particles& P = s.particles;
   std::size_t fastest = 0;
   double vmax = -1.0;
@@ -42,8 +52,18 @@ void check_energy(const State& s, const EnergySample& e) {
       "unstable: energy blow-up at step {}, t = {:.6g} s: kinetic + strain = {:.6g} J/m exceeds "
       "twice the energy supplied ({:.6g} J/m); fastest particle {} at (x, y) = ({:.6g}, {:.6g}) "
       "m with |v| = {:.6g} m/s; reduce time.cfl",
-      s.step, s.time, e.total(), supplied, fastest, P.x[fastest], P.y[fastest], vmax));
+      s.step, s.time, mechanical, supplied, fastest, P.x[fastest], P.y[fastest], vmax));
 }
+
+// Fires at multiples of an interval of simulated time (never when the interval is 0).
+struct Schedule {
+  double interval, next;
+  explicit Schedule(double dt) : interval(dt), next(dt) {}
+  bool due(double t, double eps) const { return interval > 0 && t >= next - eps; }
+  void advance(double t, double eps) {
+    while (next <= t + eps) next += interval;
+  }
+};
 
 }  // namespace
 
@@ -61,14 +81,38 @@ RunResult run_case(const Case& c, const RunOptions& options) {
 
   History history;
   std::unique_ptr<SnapshotWriter> snapshots;
-  if (c.output.snapshot_interval > 0) snapshots = std::make_unique<SnapshotWriter>(dir);
+  if (c.output.snapshot_interval > 0)
+    snapshots = std::make_unique<SnapshotWriter>(
+        dir, s.particles, c.output.has_snapshot_region ? c.output.snapshot_region : nullptr);
+  std::vector<CrackTracker> cracks(s.interfaces.size());
+  // Crack speeds are reported against the speeds of the lower body's material.
+  std::vector<WaveSpeeds> crack_speeds;
+  for (const InterfaceSpec& is : c.interfaces)
+    crack_speeds.push_back(summary.speeds[std::size_t(c.bodies[is.lower_field].material)]);
+  int interface_files = 0;
+  auto write_interfaces = [&]() {
+    if (s.interfaces.empty()) return;
+    fs::create_directories(dir + "/interface");
+    for (std::size_t k = 0; k < s.interfaces.size(); ++k)
+      write_interface_csv(fmt::format("{}/interface/{}_{:06d}.csv", dir,
+                                      k == 0 ? std::string("interface") : c.interface_names[k],
+                                      interface_files),
+                          s.interfaces[k], s.time);
+    ++interface_files;
+  };
+  auto write_cracks = [&]() {
+    if (!cracks.empty()) cracks[0].write(dir, crack_speeds[0].rayleigh, crack_speeds[0].shear);
+  };
 
   history.samples.push_back(sample(s));
   if (snapshots) snapshots->write(s.particles, s.time, s.step);
-  // Output times are multiples of the interval; a tiny tolerance absorbs round-off in time.
-  const double eps = 1e-6 * s.dt;
-  double next_history = c.output.history_interval;
-  double next_snapshot = c.output.snapshot_interval;
+  if (c.output.interface_interval > 0) write_interfaces();
+  for (std::size_t k = 0; k < cracks.size(); ++k) cracks[k].sample(s.interfaces[k], s.time);
+
+  const double eps = 1e-6 * s.dt;  // absorbs round-off in accumulated time
+  Schedule hist(c.output.history_interval > 0 ? c.output.history_interval : s.dt);
+  Schedule snap(c.output.snapshot_interval), prof(c.output.interface_interval);
+  Schedule crack(c.output.crack_sample_interval);
 
   Progress progress(summary.steps, c.time.end, c.output.progress_interval, options.progress);
   RunResult result;
@@ -77,15 +121,24 @@ RunResult run_case(const Case& c, const RunOptions& options) {
       s.dt = std::min(s.limits.dt, c.time.end - s.time);  // land exactly on the end time
       step(s);
       const bool last = s.time >= c.time.end - eps;
-      if (s.time >= next_history - eps || last) {
+      if (crack.due(s.time, eps) || last) {
+        for (std::size_t k = 0; k < cracks.size(); ++k) cracks[k].sample(s.interfaces[k], s.time);
+        crack.advance(s.time, eps);
+      }
+      if (hist.due(s.time, eps) || last) {
         history.samples.push_back(sample(s));
         check_energy(s, history.samples.back());
-        while (next_history <= s.time + eps) next_history += std::max(c.output.history_interval, s.dt);
+        hist.advance(s.time, eps);
       }
-      if (snapshots && (s.time >= next_snapshot - eps || last)) {
+      if (prof.due(s.time, eps) || (last && prof.interval > 0)) {
+        write_interfaces();
+        prof.advance(s.time, eps);
+      }
+      if (snapshots && (snap.due(s.time, eps) || last)) {
         snapshots->write(s.particles, s.time, s.step);
         history.write(dir + "/history.csv");
-        while (next_snapshot <= s.time + eps) next_snapshot += c.output.snapshot_interval;
+        write_cracks();
+        snap.advance(s.time, eps);
       }
       progress.update(s.step, s.time);
     }
@@ -101,6 +154,7 @@ RunResult run_case(const Case& c, const RunOptions& options) {
   }
   const double wall = progress.elapsed();
   history.write(dir + "/history.csv");
+  write_cracks();
 
   const EnergySample& last = history.samples.back();
   result.steps = s.step;
@@ -109,6 +163,9 @@ RunResult run_case(const Case& c, const RunOptions& options) {
   result.particle_updates_per_second =
       wall > 0 ? double(s.particles.size()) * double(s.step) / wall : 0.0;
   result.energy_balance_error = last.relative_error();
+  for (std::size_t k = 0; k < cracks.size(); ++k)
+    result.cracks.push_back(cracks[k].summarize(s.interfaces[k], crack_speeds[k].shear,
+                                                crack_speeds[k].dilatational));
 
   record.steps = s.step;
   record.simulated_time = s.time;
@@ -118,6 +175,9 @@ RunResult run_case(const Case& c, const RunOptions& options) {
   record.strain_energy = last.strain;
   record.external_work = last.external_work;
   record.energy_balance_error = last.relative_error();
+  record.cohesive_stored = last.cohesive_stored;
+  record.cohesive_dissipated = last.cohesive_dissipated;
+  record.cracks = result.cracks;
   write_file_atomic(dir + "/run.json", run_json(c, summary, record));
   return result;
 }

@@ -3,10 +3,15 @@
 //   DIR/run.json       input echo, version, sizes, dt, timing, status (see io/run_json.hpp)
 //   DIR/history.csv    energy history (io/history.hpp)
 //   DIR/particles.xdmf + DIR/snapshots/*.h5   particle snapshots (io/snapshot.hpp)
+//   DIR/crack_tip.csv, DIR/crack_stretches.csv crack tip and separated stretches (E10, E11)
+//   DIR/interface/*.csv                       interface profiles (io/interface_csv.hpp)
 // An unstable run stops with status "failed" and a diagnosis; what was written stays valid.
 #pragma once
 #include <string>
 
+#include <vector>
+
+#include "cohesive/crack_tip.hpp"
 #include "io/case.hpp"
 
 namespace rupture {
@@ -24,6 +29,7 @@ struct RunResult {
   double wall_seconds = 0.0;           // s
   double particle_updates_per_second = 0.0;
   double energy_balance_error = 0.0;   // relative, last history sample
+  std::vector<CrackSummary> cracks;    // one per cohesive interface
 };
 
 RunResult run_case(const Case& c, const RunOptions& options);

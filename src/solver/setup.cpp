@@ -1,9 +1,11 @@
 // rupture/solver/setup.cpp
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "solver/energy.hpp"
 #include "solver/state.hpp"
+#include "solver/cohesive_step.hpp"
 #include "solver/summary.hpp"
 
 namespace rupture {
@@ -25,9 +27,14 @@ State make_state(const Case& c) {
 
   const CaseSummary summary = summarize(c);
   s.limits.cfl_dt = summary.dt_cfl;
+  s.limits.cohesive_dt = summary.dt_cohesive > 0 ? summary.dt_cohesive : INFINITY;
   s.limits.dt = summary.dt;
   s.dt = s.limits.dt;
 
+  for (const InterfaceSpec& is : c.interfaces) {
+    s.interfaces.push_back(make_interface(is));
+    s.bonded.push_back(bonded_nodes(s.grid, is));
+  }
   s.scheme = c.solver.scheme;
   s.flip = c.solver.flip;
   double min_mass = std::numeric_limits<double>::max();

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "bc/velocity_bc.hpp"
+#include "cohesive/interface.hpp"
 #include "grid/grid.hpp"
 #include "io/case.hpp"
 #include "material/elastic.hpp"
@@ -29,8 +30,9 @@ struct ScatterPlan {
 };
 
 struct StepLimits {
-  double cfl_dt = 0.0;  // cfl * h / max c_D, s (SPEC E6)
-  double dt = 0.0;      // step used, s
+  double cfl_dt = 0.0;       // cfl * h / max c_D, s (SPEC E6)
+  double cohesive_dt = 0.0;  // cohesive stability limit 2/sqrt(2k/m), s (SPEC E6; inf if none)
+  double dt = 0.0;           // step used, s
 };
 
 struct State {
@@ -41,6 +43,8 @@ struct State {
   std::vector<VelocityBC> boundary;
   std::vector<NodeBC> bc_nodes;
   ScatterPlan plan;
+  std::vector<CohesiveInterface> interfaces;
+  std::vector<std::vector<std::size_t>> bonded;  // per interface: tied grid nodes (row y0)
 
   Scheme scheme = Scheme::MUSL;
   double flip = 1.0;

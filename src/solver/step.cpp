@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "core/errors.hpp"
+#include "solver/cohesive_step.hpp"
 
 namespace rupture {
 namespace {
@@ -367,28 +368,39 @@ void step(State& s) {
   GridFields& G = s.fields;
   switch (s.scheme) {
     case Scheme::MUSL:
-      particles_to_grid(s, true);           // E4
+      particles_to_grid(s, true);           // E4, per velocity field
+      add_cohesive_forces(s);               // E7-E9
+      tie_bonded_nodes(s, TieWhat::mass_momentum);
+      tie_bonded_nodes(s, TieWhat::force);
       integrate_grid(s);                    // E4 momentum update + E2 velocity BCs
       update_particle_velocity_and_remap(s);
+      tie_bonded_nodes(s, TieWhat::remapped_momentum);
       remapped_grid_velocity(s);
       grid_to_particles(s, G.remap_x.data(), G.remap_y.data(), G2PMode::stress_and_move);  // E5
       break;
     case Scheme::USL:
       particles_to_grid(s, true);
+      add_cohesive_forces(s);
+      tie_bonded_nodes(s, TieWhat::mass_momentum);
+      tie_bonded_nodes(s, TieWhat::force);
       integrate_grid(s);
       grid_to_particles(s, G.vel_x.data(), G.vel_y.data(), G2PMode::stress_velocity_and_move);
       break;
     case Scheme::USF:
       particles_to_grid(s, false);
+      tie_bonded_nodes(s, TieWhat::mass_momentum);
       grid_velocity_from_momentum(s, s.time);
       grid_to_particles(s, G.remap_x.data(), G.remap_y.data(), G2PMode::stress_only);
       particles_to_grid_force(s);
+      add_cohesive_forces(s);
+      tie_bonded_nodes(s, TieWhat::force);
       integrate_grid(s);
       grid_to_particles(s, G.vel_x.data(), G.vel_y.data(), G2PMode::velocity_and_move);
       break;
   }
   s.time += s.dt;
   ++s.step;
+  advance_interfaces(s);  // face nodes follow their fields; jumps and tractions at t^{n+1}
 }
 
 }  // namespace rupture

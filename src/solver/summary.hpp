@@ -14,6 +14,7 @@ namespace rupture {
 struct CaseSummary {
   std::vector<WaveSpeeds> speeds;  // per material
   double dt_cfl = 0.0;             // cfl * h / max c_D, s
+  double dt_cohesive = 0.0;        // cohesive stability limit, s (0 = no interface)
   double dt = 0.0;                 // step used, s
   long steps = 0;                  // ceil(end / dt)
   long cells = 0;                  // physical cells

@@ -1,0 +1,58 @@
+// rupture/cohesive/crack_tip.hpp
+// Crack-tip tracking on a cohesive interface (SPEC §4, E10-E11).
+//  - tip (E10): the farthest cohesive node from the initial tip (interface start) whose jump
+//    magnitude has reached the separation criterion; sampled at a fixed interval;
+//  - every separated stretch (run of cracked nodes) is recorded, so a daughter crack ahead of
+//    the main tip shows up as a second stretch;
+//  - speed (E11): slope of a least-squares line through 31 consecutive tip positions (centred);
+//  - summary: initiation time, sustained speed (least-squares slope over the last 4 us),
+//    peak speed, first time above c_S, first daughter crack, regime.
+// Units: s, m, m/s.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "cohesive/interface.hpp"
+
+namespace rupture {
+
+struct CrackSample {
+  double time = 0.0;
+  double tip = 0.0;                  // tip position x (interface start if not initiated), m
+  double cohesive_zone = 0.0;        // length ahead of the tip past the peak-traction opening, m
+  std::vector<double> stretch_begin, stretch_end;  // separated stretches, m
+};
+
+struct CrackSummary {
+  bool initiated = false;
+  double initiation_time = -1.0;     // s (first node to crack; -1 if none)
+  double sustained_speed = 0.0;      // m/s, slope over the last `window` seconds
+  double peak_speed = 0.0;           // m/s, max of the E11 speeds
+  double intersonic_time = -1.0;     // first time the E11 speed exceeds c_S (-1: never)
+  double daughter_time = -1.0;       // first sample with a separated stretch ahead of the main one
+  double final_tip = 0.0;            // m
+  double final_cohesive_zone = 0.0;  // m
+  std::string regime = "none";       // none | sub-Rayleigh | intersonic | supersonic
+};
+
+class CrackTracker {
+ public:
+  static constexpr int kWindow = 31;  // E11
+
+  void sample(const CohesiveInterface& c, double t);
+  const std::vector<CrackSample>& samples() const { return samples_; }
+  // E11 speed at each sample (NaN where the centred window does not fit).
+  std::vector<double> speeds() const;
+  CrackSummary summarize(const CohesiveInterface& c, double c_s, double c_d,
+                         double window = 4e-6) const;
+  // DIR/crack_tip.csv and DIR/crack_stretches.csv (rewritten atomically).
+  void write(const std::string& dir, double c_r, double c_s) const;
+
+ private:
+  std::vector<CrackSample> samples_;
+};
+
+// Least-squares slope of y(t) (E11).
+double least_squares_slope(const double* t, const double* y, std::size_t n);
+
+}  // namespace rupture

@@ -1,0 +1,54 @@
+// rupture/cohesive/interface.hpp
+// A straight horizontal cohesive interface between two velocity fields (SPEC §3, E7-E9).
+// Cohesive nodes x_0 < ... < x_N lie on y = y0; each exists twice, an upper face (moving with
+// the upper body's field) and a lower face (lower body's field), coincident at t = 0.
+// Face velocities are the grid velocities of their field interpolated with the bilinear hat at
+// the face position; forces go back to the same grid nodes with the same weights.
+// Separation (SPEC §3): a Gauss point whose jump magnitude reaches separation_factor * delta_t
+// carries no traction from then on; a node whose jump reaches it counts as cracked (E10).
+// Units: m, m/s, N per unit thickness (N/m), J/m.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "cohesive/xu_needleman.hpp"
+
+namespace rupture {
+
+struct InterfaceSpec {
+  int upper_field = 0, lower_field = 1;
+  double y = 0.0;                   // m
+  double start = 0.0, end = 0.0;    // m
+  int segments = 1;
+  XuNeedleman law;
+  double separation_factor = 5.0;   // multiple of delta_t (SPEC: 5)
+  bool bonded = false;              // tie the fields along y on [bonded_from, bonded_to]
+  double bonded_from = 0.0, bonded_to = 0.0;  // m
+};
+
+struct CohesiveInterface {
+  static constexpr int kGauss = 4;  // Gauss points per segment (E9)
+  InterfaceSpec spec;
+  std::vector<double> x0;                  // reference node positions, m (N + 1)
+  std::vector<double> ux_up, uy_up;        // upper-face displacement, m
+  std::vector<double> ux_lo, uy_lo;        // lower-face displacement, m
+  std::vector<double> fx_node, fy_node;    // cohesive force on the upper face node, N/m
+  std::vector<double> node_crack_time;     // time the node's jump reached the criterion (or -1)
+  std::vector<double> gp_dn, gp_dt;        // jump at each Gauss point (segment-major), m
+  std::vector<double> gp_tn, gp_tt;        // traction at each Gauss point, Pa
+  std::vector<std::uint8_t> gp_separated;  // irreversible separation flags
+  std::vector<double> seg_fa_x, seg_fa_y, seg_fb_x, seg_fb_y;  // per-segment end forces (scratch)
+  double work = 0.0;  // work done on the interface by the bodies so far, J/m (stored + dissipated)
+
+  std::size_t num_nodes() const { return x0.size(); }
+  std::size_t num_segments() const { return x0.size() - 1; }
+  double jump_normal(std::size_t k) const { return uy_up[k] - uy_lo[k]; }
+  double jump_tangential(std::size_t k) const { return ux_up[k] - ux_lo[k]; }
+  double separation_opening() const { return spec.separation_factor * spec.law.delta_t; }
+  // Energy stored in intact Gauss points (potential of the law), J/m.
+  double stored_energy() const;
+};
+
+CohesiveInterface make_interface(const InterfaceSpec& spec);
+
+}  // namespace rupture

@@ -1,0 +1,25 @@
+// rupture/io/interface_csv.cpp
+#include "io/interface_csv.hpp"
+
+#include <fmt/format.h>
+
+#include "io/atomic_file.hpp"
+
+namespace rupture {
+
+void write_interface_csv(const std::string& path, const CohesiveInterface& c, double time) {
+  std::string s =
+      "time,x,jump_n,jump_t,traction_n,traction_t,force_x,force_y,y_upper,y_lower,cracked\n";
+  s.reserve(s.size() + c.num_nodes() * 180);
+  for (std::size_t k = 0; k < c.num_nodes(); ++k) {
+    const double dn = c.jump_normal(k), dt = c.jump_tangential(k);
+    const bool cracked = c.node_crack_time[k] >= 0.0;
+    const CohesiveTraction T = cracked ? CohesiveTraction{0.0, 0.0} : c.spec.law.traction(dn, dt);
+    s += fmt::format("{:.9e},{:.9e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.9e},{:.9e},{}\n",
+                     time, c.x0[k], dn, dt, T.normal, T.tangential, c.fx_node[k], c.fy_node[k],
+                     c.spec.y + c.uy_up[k], c.spec.y + c.uy_lo[k], cracked ? 1 : 0);
+  }
+  write_file_atomic(path, s);
+}
+
+}  // namespace rupture
