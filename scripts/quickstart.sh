@@ -5,6 +5,6 @@ cd "$(dirname "$0")/.."
 ./scripts/install-deps.sh
 cmake --preset release
 cmake --build --preset release --target rupture
-case_file=${1:-examples/elastic_impact.toml}
+case_file=${1:-examples/rosakis1999.toml}
 ./build/release/bin/rupture run "$case_file" -o runs/default
 echo "results: runs/default (run.json, history.csv, particles.xdmf for ParaView)"
