@@ -4,6 +4,14 @@
 
 namespace rupture::test {
 
+// Homalite-100 (SPEC §1) as a [materials] table, shared by the test cases.
+inline constexpr const char* kHomaliteToml = R"(
+[materials.homalite]
+youngs_modulus = 5.2e9
+poisson_ratio = 0.34
+density = 1246.0
+)";
+
 // A valid single-body Homalite strip. Lines can be replaced by tests of bad input.
 inline std::string strip_case_toml() {
   return R"(

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "io/case_toml.hpp"
+#include "support.hpp"
 #include "solver/state.hpp"
 #include "solver/step.hpp"
 
@@ -18,11 +19,7 @@ namespace {
 // Xu-Needleman interface over [0, L]; `extra` is appended (boundary conditions, bonding).
 Case two_bodies(double L, double H, double h, const std::string& extra, double end,
                 const std::string& interface_extra = "") {
-  return parse_case(fmt::format(R"(
-[materials.homalite]
-youngs_modulus = 5.2e9
-poisson_ratio = 0.34
-density = 1246.0
+  return parse_case(fmt::format(R"({7}
 [grid]
 min = [0.0, -{1}]
 max = [{0}, {1}]
@@ -49,7 +46,7 @@ delta_n = 0.4e-6
 end = {3}
 {6}
 )",
-                                L, H, h, end, int(std::lround(L / 2e-6 / 10)), interface_extra, extra));
+                                L, H, h, end, int(std::lround(L / 2e-6 / 10)), interface_extra, extra, test::kHomaliteToml));
 }
 
 

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "io/case_toml.hpp"
+#include "support.hpp"
 #include "solver/state.hpp"
 #include "solver/step.hpp"
 
@@ -19,11 +20,7 @@ namespace rupture::test {
 inline Case strip_1d(double length, double height, double h, const std::string& drive, double v,
                      double end, const std::string& scheme = "MUSL") {
   const std::string roller = drive == "x" ? "y" : "x";
-  const std::string text = fmt::format(R"(
-[materials.homalite]
-youngs_modulus = 5.2e9
-poisson_ratio = 0.34
-density = 1246.0
+  const std::string text = fmt::format(R"({8}
 [grid]
 min = [0.0, 0.0]
 max = [{0}, {1}]
@@ -50,7 +47,7 @@ edge = "top"
 component = "{7}"
 velocity = 0.0
 )",
-                                       length, height, h, drive, v, end, scheme, roller);
+                                       length, height, h, drive, v, end, scheme, roller, test::kHomaliteToml);
   return parse_case(text);
 }
 
