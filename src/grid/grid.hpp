@@ -34,14 +34,12 @@ struct Stencil1D {
 // The particle at xp with half-width lp (<= h/2) touches nodes first..first+2 (SPEC E3).
 // Nodes i0-1..i0+1 if xp lies in the left half of cell i0, else i0..i0+2.
 inline void stencil(const Axis& a, double xp, double lp, Stencil1D& st) {
-  const double xi = (xp - a.origin) / a.h;
-  const int cell = int(std::floor(xi));
-  st.first = (xi - cell < 0.5) ? cell - 1 : cell;
-  for (int k = 0; k < 3; ++k) {
-    const Weight1D w = gimp_uniform(xp - a.node(st.first + k), a.h, lp);
-    st.s[k] = w.s;
-    st.ds[k] = w.ds;
-  }
+  const double inv_h = 1.0 / a.h;
+  const double xi = (xp - a.origin) * inv_h;
+  const double cell = std::floor(xi);
+  const int first = int(cell) - (xi - cell < 0.5 ? 1 : 0);
+  st.first = first;
+  gimp_uniform_stencil(xi - double(first), lp * inv_h, inv_h, st.s, st.ds);
 }
 
 struct Grid {

@@ -1,7 +1,9 @@
 // rupture/io/snapshot.cpp
 #include "io/snapshot.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fmt/format.h>
 #include <hdf5.h>
@@ -40,18 +42,28 @@ void write_scalar_attribute(hid_t file, const char* name, hid_t type, const void
 SnapshotWriter::SnapshotWriter(std::string dir, const Particles& p, const double* region)
     : dir_(std::move(dir)) {
   std::filesystem::create_directories(std::filesystem::path(dir_) / "snapshots");
+  // Select by particle id (the solver re-sorts particles); slot_of_id_ gives each selected
+  // particle its row in every snapshot, in id order, so rows are comparable across files.
+  slot_of_id_.assign(p.size(), -1);
+  std::vector<std::uint32_t> ids;
   for (std::size_t i = 0; i < p.size(); ++i)
     if (!region || (p.x[i] >= region[0] && p.y[i] >= region[1] && p.x[i] <= region[2] &&
                     p.y[i] <= region[3]))
-      selection_.push_back(i);
+      ids.push_back(p.id[i]);
+  std::sort(ids.begin(), ids.end());
+  for (std::size_t k = 0; k < ids.size(); ++k) slot_of_id_[ids[k]] = std::int64_t(k);
+  selected_ = ids.size();
 }
 
 void SnapshotWriter::write(const Particles& p, double time, long step) {
-  const std::size_t n = selection_.size();
+  const std::size_t n = selected_;
   std::vector<double> pos(3 * n), vel(3 * n), tau(n), sxx(n), syy(n), sxy(n), szz(n);
-  std::vector<int> body(n);
-  for (std::size_t k = 0; k < n; ++k) {
-    const std::size_t i = selection_[k];
+  std::vector<int> body(n), id(n);
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const std::int64_t slot = slot_of_id_[p.id[i]];
+    if (slot < 0) continue;
+    const std::size_t k = std::size_t(slot);
+    id[k] = int(p.id[i]);
     pos[3 * k] = p.x[i];
     pos[3 * k + 1] = p.y[i];
     pos[3 * k + 2] = 0.0;
@@ -76,6 +88,7 @@ void SnapshotWriter::write(const Particles& p, double time, long step) {
   write_dataset(file, "szz", H5T_NATIVE_DOUBLE, szz.data(), n, 1, path);
   write_dataset(file, "tau_max", H5T_NATIVE_DOUBLE, tau.data(), n, 1, path);
   write_dataset(file, "body", H5T_NATIVE_INT, body.data(), n, 1, path);
+  write_dataset(file, "id", H5T_NATIVE_INT, id.data(), n, 1, path);
   write_scalar_attribute(file, "time", H5T_NATIVE_DOUBLE, &time);
   write_scalar_attribute(file, "step", H5T_NATIVE_LONG, &step);
   check(H5Fclose(file), "H5Fclose", tmp);

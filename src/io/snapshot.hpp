@@ -2,11 +2,13 @@
 // Particle snapshots: one HDF5 file per output time under DIR/snapshots/, plus DIR/particles.xdmf,
 // an XDMF 3 temporal collection that ParaView opens as a time series (Polyvertex topology).
 // Datasets (SI): position [N,3] m (z = 0), velocity [N,3] m/s, sxx syy sxy szz tau_max [N] Pa,
-// body [N] (velocity field id); root attributes time (s) and step.
+// body [N] (velocity field id), id [N] (particle creation index; rows are in id order, the
+// same particles in the same rows in every file); root attributes time (s) and step.
 // tau_max = (sigma_1 - sigma_2)/2, the in-plane maximum shear stress (SPEC E13).
 // Optionally only a region of interest is written. Every file is written to a temporary name
 // and renamed when complete.
 #pragma once
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -25,7 +27,8 @@ class SnapshotWriter {
  private:
   void write_xdmf() const;
   std::string dir_;
-  std::vector<std::size_t> selection_;  // particle indices written
+  std::vector<std::int64_t> slot_of_id_;  // row of particle id in every file, -1: not written
+  std::size_t selected_ = 0;
   std::vector<std::string> files_;  // relative to dir_
   std::vector<double> times_;
   std::vector<std::size_t> counts_;

@@ -12,6 +12,30 @@ void Particles::resize(std::size_t n) {
   }
   field.resize(n, 0);
   material.resize(n, 0);
+  id.resize(n, 0);
+}
+
+namespace {
+template <class T>
+void permute_one(std::vector<T>& v, const std::vector<std::uint32_t>& order, std::vector<T>& tmp) {
+  const long n = long(order.size());
+  tmp.resize(order.size());
+#pragma omp parallel for schedule(static)
+  for (long k = 0; k < n; ++k) tmp[std::size_t(k)] = v[order[std::size_t(k)]];
+  v.swap(tmp);
+}
+}  // namespace
+
+void Particles::permute(const std::vector<std::uint32_t>& order, std::vector<double>& scratch) {
+  for (auto* v : {&x, &y, &vx, &vy, &mass, &volume0, &volume, &half_x, &half_y, &sxx, &syy, &sxy,
+                  &szz, &exx, &eyy, &exy}) {
+    permute_one(*v, order, scratch);
+  }
+  std::vector<std::uint8_t> tmp8;
+  permute_one(field, order, tmp8);
+  permute_one(material, order, tmp8);
+  std::vector<std::uint32_t> tmp32;
+  permute_one(id, order, tmp32);
 }
 
 void seed_rectangle(Particles& p, const double min[2], const double max[2], double h, int ppc,
@@ -35,6 +59,7 @@ void seed_rectangle(Particles& p, const double min[2], const double max[2], doub
       p.half_x[k] = p.half_y[k] = 0.5 * side;
       p.field[k] = field;
       p.material[k] = material;
+      p.id[k] = std::uint32_t(k);
     }
   }
 }

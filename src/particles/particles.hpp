@@ -1,6 +1,7 @@
 // rupture/particles/particles.hpp
 // Structure-of-arrays particle store (SI: m, m/s, kg, m^3 per unit thickness -> m^2, Pa).
-// Every array has size(); index p is one material point. Stress and strain are the
+// Every array has size(); index p is one material point. The solver re-sorts particles by
+// cell (solver/step.hpp), so an index is not stable in time: `id` is. Stress and strain are the
 // in-plane components plus sigma_zz (kept for plane strain, SPEC E5). `field` is the velocity
 // field the particle maps to (one per body), `material` indexes the material table.
 #pragma once
@@ -21,13 +22,18 @@ struct Particles {
   std::vector<double> exx, eyy, exy;       // small strain (tensor components), -
   std::vector<std::uint8_t> field;         // velocity field (body) id
   std::vector<std::uint8_t> material;      // material id
+  std::vector<std::uint32_t> id;           // creation index: identity across re-sorting
+
 
   std::size_t size() const { return x.size(); }
   void resize(std::size_t n);
   // Bytes held per particle by the arrays above.
   static constexpr std::size_t bytes_per_particle() {
-    return 16 * sizeof(double) + 2 * sizeof(std::uint8_t);
+    return 16 * sizeof(double) + 2 * sizeof(std::uint8_t) + sizeof(std::uint32_t);
   }
+  // Reorders every array so that the particle now at index k is the one that was at
+  // order[k]. `scratch` is reused between calls to avoid allocating in the time loop.
+  void permute(const std::vector<std::uint32_t>& order, std::vector<double>& scratch);
 };
 
 // Fill the rectangle [xmin,xmax]x[ymin,ymax] (whole cells of size h) with ppc x ppc particles

@@ -5,6 +5,7 @@
 
 #include "solver/energy.hpp"
 #include "solver/state.hpp"
+#include "solver/step.hpp"
 #include "solver/cohesive_step.hpp"
 #include "solver/summary.hpp"
 
@@ -44,6 +45,8 @@ State make_state(const Case& c) {
   // gradient is not small (dS ~ sqrt(S)), which breaks rigid-body motion at the 1e-9 level.
   s.mass_floor = 1e-20 * min_mass;
   s.initial_energy = kinetic_energy(s.particles) + strain_energy(s.particles);
+  // Sorted from the start, so particle indices are stable until the first re-sort.
+  build_scatter_plan(s);
   return s;
 }
 

@@ -16,17 +16,25 @@
 
 namespace rupture {
 
-// Race-free scatter without locks: particles are binned into vertical strips of
-// `strip_cells` cell columns. A particle in cell column c touches node columns c-1..c+2, so
-// strips two apart never share a node; strips are processed in two colours (even, then odd),
-// each colour in parallel. The summation order at every node is fixed by the plan, so the
-// result does not depend on the number of threads.
+// Race-free scatter without locks: particles are kept physically sorted by vertical strips
+// of `strip_cells` cell columns, and by cell row inside a strip (so consecutive particles
+// touch the same nodes and memory is walked in order). A particle in cell column c touches
+// node columns c-1..c+2. With 5-column strips, strips two apart stay node-disjoint even when
+// particles drift up to one column out of their strip, so strips are processed in two colours
+// (even, then odd), each colour in parallel, and the sort is redone only every
+// `sort_interval` steps or as soon as a particle drifts further (`valid` false). The
+// summation order at every node is fixed by the sort, so results do not depend on the
+// number of threads.
 struct ScatterPlan {
-  int strip_cells = 4;
+  int strip_cells = 5;
+  int sort_interval = 25;
   int num_strips = 0;
-  std::vector<std::uint32_t> order;       // particle indices grouped by strip
-  std::vector<std::size_t> strip_begin;   // order[strip_begin[s] .. strip_begin[s+1])
-  std::vector<std::uint32_t> strip_of;    // scratch: strip of each particle
+  long sorted_step = -1;                 // step of the last sort
+  bool valid = false;                    // particles within their strips' drift tolerance
+  std::vector<std::size_t> strip_begin;  // particles of strip k: [strip_begin[k], strip_begin[k+1])
+  std::vector<std::uint32_t> order;      // scratch for the sort
+  std::vector<std::uint32_t> bucket;     // scratch: count per (strip, row)
+  std::vector<double> scratch;           // scratch for the permutation
 };
 
 struct StepLimits {

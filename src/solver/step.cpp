@@ -16,28 +16,67 @@ namespace {
 
 constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
 
-// A particle's 3x3 node stencil: weights per axis and the index of its first node.
-struct ParticleStencil {
-  Stencil1D sx, sy;
-  std::size_t base;  // field offset + index of node (sx.first, sy.first)
+// Stencils of a batch of consecutive particles, computed SIMD over particles (the weights are
+// then reused across the batch's node loops). For particle k: weights sx[a][k], sy[b][k] of
+// node (first_x + a, first_y + b) and their derivatives; base[k] = field offset + index of
+// node (first_x, first_y).
+constexpr int kBatch = 16;
+struct StencilBatch {
+  alignas(64) double sx[3][kBatch];
+  alignas(64) double dsx[3][kBatch];
+  alignas(64) double sy[3][kBatch];
+  alignas(64) double dsy[3][kBatch];
+  std::size_t base[kBatch];
 };
 
-inline void particle_stencil(const State& s, std::size_t p, ParticleStencil& ps) {
-  const Particles& P = s.particles;
-  stencil(s.grid.x, P.x[p], P.half_x[p], ps.sx);
-  stencil(s.grid.y, P.y[p], P.half_y[p], ps.sy);
-  ps.base = s.fields.offset(P.field[p]) + s.grid.node_index(ps.sx.first, ps.sy.first);
+// One axis for n <= kBatch particles: the stencil rule of grid/grid.hpp (stencil()).
+inline void axis_stencils(const Axis& ax, const double* __restrict xp, const double* __restrict lp,
+                          int n, double (*__restrict w)[kBatch], double (*__restrict dw)[kBatch],
+                          int* __restrict first) {
+  const double inv_h = 1.0 / ax.h, origin = ax.origin;
+#pragma omp simd
+  for (int k = 0; k < n; ++k) {
+    const double xi = (xp[k] - origin) * inv_h;
+    const double cell = std::floor(xi);
+    const double f = (xi - cell < 0.5) ? cell - 1.0 : cell;
+    first[k] = int(f);
+    const double u = xi - f, l = lp[k] * inv_h, inv_2l = 0.5 / l;
+    gimp_uniform_node(u, l, inv_2l, inv_h, w[0][k], dw[0][k]);
+    gimp_uniform_node(u - 1.0, l, inv_2l, inv_h, w[1][k], dw[1][k]);
+    gimp_uniform_node(u - 2.0, l, inv_2l, inv_h, w[2][k], dw[2][k]);
+  }
 }
 
-// Runs body(p) for every particle, strips of one colour in parallel (see ScatterPlan).
+inline void batch_stencils(const State& s, std::size_t p0, int n, StencilBatch& B) {
+  const Particles& P = s.particles;
+  int fx[kBatch], fy[kBatch];
+  axis_stencils(s.grid.x, P.x.data() + p0, P.half_x.data() + p0, n, B.sx, B.dsx, fx);
+  axis_stencils(s.grid.y, P.y.data() + p0, P.half_y.data() + p0, n, B.sy, B.dsy, fy);
+  const std::size_t nx = std::size_t(s.grid.nodes_x()), nn = s.fields.num_nodes;
+  for (int k = 0; k < n; ++k)
+    B.base[k] = std::size_t(P.field[p0 + std::size_t(k)]) * nn + std::size_t(fy[k]) * nx +
+                std::size_t(fx[k]);
+}
+
+// Runs body(p, k, B) for particles [begin, end), batch by batch (k: index in the batch B).
 template <class Body>
-void for_each_particle_coloured(const ScatterPlan& plan, Body&& body) {
+inline void for_each_in_batches(const State& s, std::size_t begin, std::size_t end, Body&& body) {
+  StencilBatch B;
+  for (std::size_t p0 = begin; p0 < end; p0 += kBatch) {
+    const int n = int(std::min<std::size_t>(kBatch, end - p0));
+    batch_stencils(s, p0, n, B);
+    for (int k = 0; k < n; ++k) body(p0 + std::size_t(k), k, B);
+  }
+}
+
+// Runs body(begin, end) over the particle range of every strip, strips of one colour in
+// parallel (see ScatterPlan).
+template <class Body>
+void for_each_strip_coloured(const ScatterPlan& plan, Body&& body) {
   for (int colour = 0; colour < 2; ++colour) {
 #pragma omp parallel for schedule(dynamic, 1)
-    for (int strip = colour; strip < plan.num_strips; strip += 2) {
-      for (std::size_t k = plan.strip_begin[strip]; k < plan.strip_begin[strip + 1]; ++k)
-        body(std::size_t(plan.order[k]));
-    }
+    for (int strip = colour; strip < plan.num_strips; strip += 2)
+      body(plan.strip_begin[std::size_t(strip)], plan.strip_begin[std::size_t(strip) + 1]);
   }
 }
 
@@ -73,7 +112,7 @@ std::string diagnose_bad_particles(const State& s, double xlo, double xhi, doubl
   const std::string where = fmt::format(
       "at step {}, t = {:.6g} s; affected region x in [{:.6g}, {:.6g}], y in [{:.6g}, {:.6g}] m; "
       "first: particle {} (field {}) at (x, y) = ({:.6g}, {:.6g}) m, v = ({:.4g}, {:.4g}) m/s",
-      s.step, s.time, bx0, bx1, by0, by1, first, int(P.field[first]), P.x[first], P.y[first],
+      s.step, s.time, bx0, bx1, by0, by1, P.id[first], int(P.field[first]), P.x[first], P.y[first],
       P.vx[first], P.vy[first]);
   if (nonfinite > 0)
     return fmt::format("unstable: non-finite {} in {} particle(s) {}; reduce time.cfl or check the loading",
@@ -86,29 +125,78 @@ std::string diagnose_bad_particles(const State& s, double xlo, double xhi, doubl
 
 }  // namespace
 
-void build_scatter_plan(State& s) {
+void sort_particles(State& s) {
   ScatterPlan& plan = s.plan;
-  const Particles& P = s.particles;
+  Particles& P = s.particles;
   const std::size_t n = P.size();
-  const int cells = s.grid.x.cells;
-  plan.num_strips = (cells + plan.strip_cells - 1) / plan.strip_cells;
-  plan.strip_of.resize(n);
+  const int cx = s.grid.x.cells, cy = s.grid.y.cells, width = plan.strip_cells;
+  plan.num_strips = (cx + width - 1) / width;
+  const double ox = s.grid.x.origin, oy = s.grid.y.origin;
+  const double inv_hx = 1.0 / s.grid.x.h, inv_hy = 1.0 / s.grid.y.h;
+  // Bucket (strip, row): strip-major, so every strip is one contiguous particle range.
+  auto bucket_of = [&](std::size_t p) {
+    const int col = std::clamp(int(std::floor((P.x[p] - ox) * inv_hx)), 0, cx - 1);
+    const int row = std::clamp(int(std::floor((P.y[p] - oy) * inv_hy)), 0, cy - 1);
+    return std::size_t(col / width) * std::size_t(cy) + std::size_t(row);
+  };
+  const std::size_t buckets = std::size_t(plan.num_strips) * std::size_t(cy);
+  plan.bucket.assign(buckets + 1, 0);
+  for (std::size_t p = 0; p < n; ++p) ++plan.bucket[bucket_of(p) + 1];
+  for (std::size_t k = 0; k < buckets; ++k) plan.bucket[k + 1] += plan.bucket[k];
+  plan.strip_begin.resize(std::size_t(plan.num_strips) + 1);
+  for (int k = 0; k <= plan.num_strips; ++k)
+    plan.strip_begin[std::size_t(k)] = plan.bucket[std::size_t(k) * std::size_t(cy)];
+  // Stable counting sort: particles keep their previous relative order inside a bucket.
   plan.order.resize(n);
-  plan.strip_begin.assign(std::size_t(plan.num_strips) + 1, 0);
-  const double inv_h = 1.0 / s.grid.x.h;
-  for (std::size_t p = 0; p < n; ++p) {
-    int cell = int(std::floor((P.x[p] - s.grid.x.origin) * inv_h));
-    cell = std::clamp(cell, 0, cells - 1);
-    const std::uint32_t strip = std::uint32_t(cell / plan.strip_cells);
-    plan.strip_of[p] = strip;
-    ++plan.strip_begin[strip + 1];
-  }
-  for (int k = 0; k < plan.num_strips; ++k) plan.strip_begin[k + 1] += plan.strip_begin[k];
-  // Stable counting sort; strip_begin[k] is used as the fill cursor and then restored.
-  for (std::size_t p = 0; p < n; ++p) plan.order[plan.strip_begin[plan.strip_of[p]]++] = std::uint32_t(p);
-  for (int k = plan.num_strips; k > 0; --k) plan.strip_begin[k] = plan.strip_begin[k - 1];
-  plan.strip_begin[0] = 0;
+  for (std::size_t p = 0; p < n; ++p) plan.order[plan.bucket[bucket_of(p)]++] = std::uint32_t(p);
+  P.permute(plan.order, plan.scratch);
+  plan.valid = true;
+  plan.sorted_step = s.step;
 }
+
+void build_scatter_plan(State& s) {
+  const ScatterPlan& plan = s.plan;
+  if (!plan.valid || s.step - plan.sorted_step >= plan.sort_interval) sort_particles(s);
+}
+
+namespace {
+
+template <bool kWithForce>
+void scatter_mass_momentum_force(State& s) {
+  GridFields& G = s.fields;
+  const Particles& P = s.particles;
+  const std::size_t nx = std::size_t(s.grid.nodes_x());
+  double* mass = G.mass.data();
+  double* mom_x = G.mom_x.data();
+  double* mom_y = G.mom_y.data();
+  double* fx = G.force_x.data();
+  double* fy = G.force_y.data();
+  for_each_strip_coloured(s.plan, [&](std::size_t begin, std::size_t end) {
+    for_each_in_batches(s, begin, end, [&](std::size_t p, int k, const StencilBatch& B) {
+      const double m = P.mass[p], mvx = m * P.vx[p], mvy = m * P.vy[p], V = P.volume[p];
+      const double vsxx = V * P.sxx[p], vsyy = V * P.syy[p], vsxy = V * P.sxy[p];
+      for (int b = 0; b < 3; ++b) {
+        const std::size_t row = B.base[k] + std::size_t(b) * nx;
+        const double wy = B.sy[b][k], gy_b = B.dsy[b][k];
+        for (int a = 0; a < 3; ++a) {
+          const std::size_t n = row + std::size_t(a);
+          const double w = B.sx[a][k] * wy;
+          mass[n] += w * m;
+          mom_x[n] += w * mvx;
+          mom_y[n] += w * mvy;
+          if constexpr (kWithForce) {
+            // SPEC E4: f_i = -sum_p V_p sigma_p . grad S_ip
+            const double gx = B.dsx[a][k] * wy, gy = B.sx[a][k] * gy_b;
+            fx[n] -= vsxx * gx + vsxy * gy;
+            fy[n] -= vsxy * gx + vsyy * gy;
+          }
+        }
+      }
+    });
+  });
+}
+
+}  // namespace
 
 void particles_to_grid(State& s, bool with_force) {
   GridFields& G = s.fields;
@@ -117,35 +205,10 @@ void particles_to_grid(State& s, bool with_force) {
   std::fill(G.mom_y.begin(), G.mom_y.end(), 0.0);
   std::fill(G.force_x.begin(), G.force_x.end(), 0.0);
   std::fill(G.force_y.begin(), G.force_y.end(), 0.0);
-  const Particles& P = s.particles;
-  const std::size_t nx = std::size_t(s.grid.nodes_x());
-  double* mass = G.mass.data();
-  double* mom_x = G.mom_x.data();
-  double* mom_y = G.mom_y.data();
-  double* fx = G.force_x.data();
-  double* fy = G.force_y.data();
-  for_each_particle_coloured(s.plan, [&](std::size_t p) {
-    ParticleStencil ps;
-    particle_stencil(s, p, ps);
-    const double m = P.mass[p], mvx = m * P.vx[p], mvy = m * P.vy[p], V = P.volume[p];
-    const double sxx = P.sxx[p], syy = P.syy[p], sxy = P.sxy[p];
-    for (int b = 0; b < 3; ++b) {
-      const std::size_t row = ps.base + std::size_t(b) * nx;
-      for (int a = 0; a < 3; ++a) {
-        const std::size_t n = row + std::size_t(a);
-        const double w = ps.sx.s[a] * ps.sy.s[b];
-        mass[n] += w * m;
-        mom_x[n] += w * mvx;
-        mom_y[n] += w * mvy;
-        if (with_force) {
-          // SPEC E4: f_i = -sum_p V_p sigma_p . grad S_ip
-          const double gx = ps.sx.ds[a] * ps.sy.s[b], gy = ps.sx.s[a] * ps.sy.ds[b];
-          fx[n] -= V * (sxx * gx + sxy * gy);
-          fy[n] -= V * (sxy * gx + syy * gy);
-        }
-      }
-    }
-  });
+  if (with_force)
+    scatter_mass_momentum_force<true>(s);
+  else
+    scatter_mass_momentum_force<false>(s);
 }
 
 void particles_to_grid_force(State& s) {
@@ -156,18 +219,18 @@ void particles_to_grid_force(State& s) {
   const std::size_t nx = std::size_t(s.grid.nodes_x());
   double* fx = G.force_x.data();
   double* fy = G.force_y.data();
-  for_each_particle_coloured(s.plan, [&](std::size_t p) {
-    ParticleStencil ps;
-    particle_stencil(s, p, ps);
-    const double V = P.volume[p], sxx = P.sxx[p], syy = P.syy[p], sxy = P.sxy[p];
-    for (int b = 0; b < 3; ++b) {
-      const std::size_t row = ps.base + std::size_t(b) * nx;
-      for (int a = 0; a < 3; ++a) {
-        const double gx = ps.sx.ds[a] * ps.sy.s[b], gy = ps.sx.s[a] * ps.sy.ds[b];
-        fx[row + a] -= V * (sxx * gx + sxy * gy);
-        fy[row + a] -= V * (sxy * gx + syy * gy);
+  for_each_strip_coloured(s.plan, [&](std::size_t begin, std::size_t end) {
+    for_each_in_batches(s, begin, end, [&](std::size_t p, int k, const StencilBatch& B) {
+      const double V = P.volume[p], sxx = P.sxx[p], syy = P.syy[p], sxy = P.sxy[p];
+      for (int b = 0; b < 3; ++b) {
+        const std::size_t row = B.base[k] + std::size_t(b) * nx;
+        for (int a = 0; a < 3; ++a) {
+          const double gx = B.dsx[a][k] * B.sy[b][k], gy = B.sx[a][k] * B.dsy[b][k];
+          fx[row + a] -= V * (sxx * gx + sxy * gy);
+          fy[row + a] -= V * (sxy * gx + syy * gy);
+        }
       }
-    }
+    });
   });
 }
 
@@ -226,10 +289,12 @@ void apply_velocity_bcs(State& s) {
   }
 }
 
-void update_particle_velocity_and_remap(State& s) {
+namespace {
+
+// kPureFlip: flip == 1, so the PIC part (the gathered velocity) is not needed.
+template <bool kPureFlip>
+void velocity_update_and_remap(State& s) {
   GridFields& G = s.fields;
-  std::fill(G.remap_x.begin(), G.remap_x.end(), 0.0);
-  std::fill(G.remap_y.begin(), G.remap_y.end(), 0.0);
   Particles& P = s.particles;
   const std::size_t nx = std::size_t(s.grid.nodes_x());
   const double flip = s.flip;
@@ -239,35 +304,55 @@ void update_particle_velocity_and_remap(State& s) {
   const double* dvel_y = G.dvel_y.data();
   double* rx = G.remap_x.data();
   double* ry = G.remap_y.data();
-  for_each_particle_coloured(s.plan, [&](std::size_t p) {
-    ParticleStencil ps;
-    particle_stencil(s, p, ps);
-    double pic_x = 0, pic_y = 0, dvx = 0, dvy = 0;
-    for (int b = 0; b < 3; ++b) {
-      const std::size_t row = ps.base + std::size_t(b) * nx;
-      for (int a = 0; a < 3; ++a) {
-        const double w = ps.sx.s[a] * ps.sy.s[b];
-        pic_x += w * vel_x[row + a];
-        pic_y += w * vel_y[row + a];
-        dvx += w * dvel_x[row + a];
-        dvy += w * dvel_y[row + a];
+  for_each_strip_coloured(s.plan, [&](std::size_t begin, std::size_t end) {
+    for_each_in_batches(s, begin, end, [&](std::size_t p, int k, const StencilBatch& B) {
+      double pic_x = 0, pic_y = 0, dvx = 0, dvy = 0;
+      for (int b = 0; b < 3; ++b) {
+        const std::size_t row = B.base[k] + std::size_t(b) * nx;
+        for (int a = 0; a < 3; ++a) {
+          const double w = B.sx[a][k] * B.sy[b][k];
+          if constexpr (!kPureFlip) {
+            pic_x += w * vel_x[row + a];
+            pic_y += w * vel_y[row + a];
+          }
+          dvx += w * dvel_x[row + a];
+          dvy += w * dvel_y[row + a];
+        }
       }
-    }
-    // FLIP/PIC blend of the particle velocity update.
-    const double vx = flip * (P.vx[p] + dvx) + (1.0 - flip) * pic_x;
-    const double vy = flip * (P.vy[p] + dvy) + (1.0 - flip) * pic_y;
-    P.vx[p] = vx;
-    P.vy[p] = vy;
-    const double m = P.mass[p];
-    for (int b = 0; b < 3; ++b) {
-      const std::size_t row = ps.base + std::size_t(b) * nx;
-      for (int a = 0; a < 3; ++a) {
-        const double w = ps.sx.s[a] * ps.sy.s[b] * m;
-        rx[row + a] += w * vx;
-        ry[row + a] += w * vy;
+      // FLIP/PIC blend of the particle velocity update.
+      double vx, vy;
+      if constexpr (kPureFlip) {
+        vx = P.vx[p] + dvx;
+        vy = P.vy[p] + dvy;
+      } else {
+        vx = flip * (P.vx[p] + dvx) + (1.0 - flip) * pic_x;
+        vy = flip * (P.vy[p] + dvy) + (1.0 - flip) * pic_y;
       }
-    }
+      P.vx[p] = vx;
+      P.vy[p] = vy;
+      const double m = P.mass[p], mvx = m * vx, mvy = m * vy;
+      for (int b = 0; b < 3; ++b) {
+        const std::size_t row = B.base[k] + std::size_t(b) * nx;
+        for (int a = 0; a < 3; ++a) {
+          const double w = B.sx[a][k] * B.sy[b][k];
+          rx[row + a] += w * mvx;
+          ry[row + a] += w * mvy;
+        }
+      }
+    });
   });
+}
+
+}  // namespace
+
+void update_particle_velocity_and_remap(State& s) {
+  GridFields& G = s.fields;
+  std::fill(G.remap_x.begin(), G.remap_x.end(), 0.0);
+  std::fill(G.remap_y.begin(), G.remap_y.end(), 0.0);
+  if (s.flip == 1.0)
+    velocity_update_and_remap<true>(s);
+  else
+    velocity_update_and_remap<false>(s);
 }
 
 void remapped_grid_velocity(State& s) {
@@ -292,7 +377,6 @@ void grid_to_particles(State& s, const double* gvx, const double* gvy, G2PMode m
   Particles& P = s.particles;
   const GridFields& G = s.fields;
   const std::size_t nx = std::size_t(s.grid.nodes_x());
-  const long n = long(P.size());
   const double dt = s.dt, flip = s.flip;
   const bool do_velocity =
       mode == G2PMode::stress_velocity_and_move || mode == G2PMode::velocity_and_move;
@@ -303,63 +387,73 @@ void grid_to_particles(State& s, const double* gvx, const double* gvy, G2PMode m
   const double xhi = s.grid.x.node(s.grid.x.cells) - 0.5 * s.grid.x.h;
   const double ylo = s.grid.y.node(0) + 0.5 * s.grid.y.h;
   const double yhi = s.grid.y.node(s.grid.y.cells) - 0.5 * s.grid.y.h;
+  const double ox = s.grid.x.origin, inv_hx = 1.0 / s.grid.x.h;
+  const ScatterPlan& plan = s.plan;
+  const int width = plan.strip_cells;
   std::size_t bad = kNone;
-#pragma omp parallel for schedule(static) reduction(min : bad)
-  for (long pl = 0; pl < n; ++pl) {
-    const std::size_t p = std::size_t(pl);
-    ParticleStencil ps;
-    particle_stencil(s, p, ps);
-    double L00 = 0, L01 = 0, L10 = 0, L11 = 0;  // velocity gradient L_ij = dv_i/dx_j
-    double pic_x = 0, pic_y = 0, dvx = 0, dvy = 0, mvx = 0, mvy = 0;
-    for (int b = 0; b < 3; ++b) {
-      const std::size_t row = ps.base + std::size_t(b) * nx;
-      for (int a = 0; a < 3; ++a) {
-        const std::size_t i = row + std::size_t(a);
-        const double w = ps.sx.s[a] * ps.sy.s[b];
-        if (do_stress) {
-          const double gx = ps.sx.ds[a] * ps.sy.s[b], gy = ps.sx.s[a] * ps.sy.ds[b];
-          L00 += gvx[i] * gx;
-          L01 += gvx[i] * gy;
-          L10 += gvy[i] * gx;
-          L11 += gvy[i] * gy;
-        }
-        if (do_velocity) {
-          pic_x += w * G.vel_x[i];
-          pic_y += w * G.vel_y[i];
-          dvx += w * G.dvel_x[i];
-          dvy += w * G.dvel_y[i];
-        }
-        if (do_move) {
-          mvx += w * G.vel_x[i];
-          mvy += w * G.vel_y[i];
+  bool drifted = false;
+#pragma omp parallel for schedule(dynamic, 1) reduction(min : bad) reduction(|| : drifted)
+  for (int strip = 0; strip < plan.num_strips; ++strip) {
+    // Drift tolerance of the scatter plan: one cell column either side of the strip.
+    const double col_lo = double(strip * width - 1), col_hi = double(strip * width + width);
+    const std::size_t end = plan.strip_begin[std::size_t(strip) + 1];
+    for_each_in_batches(s, plan.strip_begin[std::size_t(strip)], end, [&](std::size_t p, int k,
+                                                                          const StencilBatch& B) {
+      double L00 = 0, L01 = 0, L10 = 0, L11 = 0;  // velocity gradient L_ij = dv_i/dx_j
+      double pic_x = 0, pic_y = 0, dvx = 0, dvy = 0, mvx = 0, mvy = 0;
+      for (int b = 0; b < 3; ++b) {
+        const std::size_t row = B.base[k] + std::size_t(b) * nx;
+        for (int a = 0; a < 3; ++a) {
+          const std::size_t i = row + std::size_t(a);
+          const double w = B.sx[a][k] * B.sy[b][k];
+          if (do_stress) {
+            const double gx = B.dsx[a][k] * B.sy[b][k], gy = B.sx[a][k] * B.dsy[b][k];
+            L00 += gvx[i] * gx;
+            L01 += gvx[i] * gy;
+            L10 += gvy[i] * gx;
+            L11 += gvy[i] * gy;
+          }
+          if (do_velocity) {
+            pic_x += w * G.vel_x[i];
+            pic_y += w * G.vel_y[i];
+            dvx += w * G.dvel_x[i];
+            dvy += w * G.dvel_y[i];
+          }
+          if (do_move) {
+            mvx += w * G.vel_x[i];
+            mvy += w * G.vel_y[i];
+          }
         }
       }
-    }
-    if (do_velocity) {
-      P.vx[p] = flip * (P.vx[p] + dvx) + (1.0 - flip) * pic_x;
-      P.vy[p] = flip * (P.vy[p] + dvy) + (1.0 - flip) * pic_y;
-    }
-    if (do_stress) {
-      // SPEC E5: eps_dot = sym(L), sigma_dot = C : eps_dot (small strain, plane mode in C).
-      const ElasticStiffness& C = s.stiffness[P.material[p]];
-      const double dexx = L00 * dt, deyy = L11 * dt, dexy = 0.5 * (L01 + L10) * dt;
-      P.exx[p] += dexx;
-      P.eyy[p] += deyy;
-      P.exy[p] += dexy;
-      P.sxx[p] += C.c11 * dexx + C.c12 * deyy;
-      P.syy[p] += C.c12 * dexx + C.c11 * deyy;
-      P.sxy[p] += 2.0 * C.mu * dexy;
-      P.szz[p] += C.cz * (dexx + deyy);
-      P.volume[p] = P.volume0[p] * (1.0 + P.exx[p] + P.eyy[p]);
-    }
-    if (do_move) {
-      P.x[p] += dt * mvx;
-      P.y[p] += dt * mvy;
-    }
-    const bool finite = std::isfinite(P.vx[p] + P.vy[p] + P.sxx[p] + P.syy[p] + P.sxy[p]);
-    const bool inside = P.x[p] > xlo && P.x[p] < xhi && P.y[p] > ylo && P.y[p] < yhi;
-    if (!finite || !inside) bad = std::min(bad, p);
+      if (do_velocity) {
+        P.vx[p] = flip * (P.vx[p] + dvx) + (1.0 - flip) * pic_x;
+        P.vy[p] = flip * (P.vy[p] + dvy) + (1.0 - flip) * pic_y;
+      }
+      if (do_stress) {
+        // SPEC E5: eps_dot = sym(L), sigma_dot = C : eps_dot (small strain, plane mode in C).
+        const ElasticStiffness& C = s.stiffness[P.material[p]];
+        const double dexx = L00 * dt, deyy = L11 * dt, dexy = 0.5 * (L01 + L10) * dt;
+        P.exx[p] += dexx;
+        P.eyy[p] += deyy;
+        P.exy[p] += dexy;
+        P.sxx[p] += C.c11 * dexx + C.c12 * deyy;
+        P.syy[p] += C.c12 * dexx + C.c11 * deyy;
+        P.sxy[p] += 2.0 * C.mu * dexy;
+        P.szz[p] += C.cz * (dexx + deyy);
+        P.volume[p] = P.volume0[p] * (1.0 + P.exx[p] + P.eyy[p]);
+      }
+      if (do_move) {
+        P.x[p] += dt * mvx;
+        P.y[p] += dt * mvy;
+        const double col = std::floor((P.x[p] - ox) * inv_hx);
+        if (col < col_lo || col > col_hi) drifted = true;
+      }
+      const bool finite = std::isfinite(P.vx[p] + P.vy[p] + P.sxx[p] + P.syy[p] + P.sxy[p]);
+      const bool inside = P.x[p] > xlo && P.x[p] < xhi && P.y[p] > ylo && P.y[p] < yhi;
+      if (!finite || !inside) bad = std::min(bad, p);
+    });
   }
+  if (drifted) s.plan.valid = false;
   if (bad != kNone) throw SimulationError(diagnose_bad_particles(s, xlo, xhi, ylo, yhi));
 }
 

@@ -44,13 +44,14 @@ CaseSummary summarize(const Case& c) {
     s.particles += n;
   }
   s.fields = int(c.bodies.size());
-  // 11 nodal arrays per field (grid/grid.hpp) + particle arrays + plan (order + strip_of).
+  // 11 nodal arrays per field (grid/grid.hpp) + particle arrays + sort scratch (order, one
+  // double array for the permutation).
   std::size_t interface_bytes = 0;
   for (const InterfaceSpec& is : c.interfaces)
     interface_bytes += std::size_t(is.segments) * (4 * 4 * sizeof(double) + 4 + 4 * sizeof(double)) +
                        std::size_t(is.segments + 1) * 8 * sizeof(double);
   s.memory_bytes = interface_bytes + std::size_t(s.nodes) * std::size_t(s.fields) * 11 * sizeof(double) +
-                   std::size_t(s.particles) * (Particles::bytes_per_particle() + 8);
+                   std::size_t(s.particles) * (Particles::bytes_per_particle() + 12);
   return s;
 }
 
