@@ -2,9 +2,18 @@
 // The `rupture` command line:
 //   rupture check CASE.toml [--set key=value ...]   validate and print derived quantities
 //   rupture run   CASE.toml -o DIR [--set key=value ...] [--quiet]
+//   rupture plot  DIR [--compare DIR2 ...] [--labels A B ...]   figures into DIR/figures/
+//                 (python/rupture_plot.py with Debian's /usr/bin/python3: numpy, matplotlib,
+//                 h5py; RUPTURE_PYTHON overrides the interpreter)
 // Exit codes: 0 success, 1 bad input, 2 the run went unstable, 3 I/O or other failure.
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
+#include <cerrno>
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
@@ -51,6 +60,47 @@ void print_check(const std::string& path, const Case& c) {
   fmt::print("memory_estimate_mib={:.1f}\n", double(s.memory_bytes) / (1024.0 * 1024.0));
 }
 
+std::string plot_script(const char* argv0) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path exe = fs::canonical("/proc/self/exe", ec);
+  const fs::path dir = ec ? fs::path(argv0).parent_path() : exe.parent_path();
+  for (const fs::path& p : {dir / "rupture_plot.py", dir / "../share/rupture/rupture_plot.py",
+                            fs::path(RUPTURE_PLOT_SCRIPT_SOURCE)})
+    if (fs::exists(p)) return p.string();
+  return {};
+}
+
+// Replaces this process by the plotting script; returns only on failure.
+int run_plot(const char* argv0, const std::string& dir, const std::vector<std::string>& compare,
+             const std::vector<std::string>& labels) {
+  const std::string script = plot_script(argv0);
+  if (script.empty()) {
+    fmt::print(stderr, "error: rupture_plot.py not found next to the executable nor at {}\n",
+               RUPTURE_PLOT_SCRIPT_SOURCE);
+    return 3;
+  }
+  const char* env = std::getenv("RUPTURE_PYTHON");
+  const std::string python = env && *env ? env
+                             : std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3"
+                                                                           : "python3";
+  std::vector<std::string> args{python, script, dir};
+  if (!compare.empty()) {
+    args.push_back("--compare");
+    args.insert(args.end(), compare.begin(), compare.end());
+  }
+  if (!labels.empty()) {
+    args.push_back("--labels");
+    args.insert(args.end(), labels.begin(), labels.end());
+  }
+  std::vector<char*> cargs;
+  for (std::string& a : args) cargs.push_back(a.data());
+  cargs.push_back(nullptr);
+  execvp(cargs[0], cargs.data());
+  fmt::print(stderr, "error: cannot start '{}': {}\n", python, std::strerror(errno));
+  return 3;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -70,7 +120,16 @@ int main(int argc, char** argv) {
   run->add_option("--set", overrides, "override an input key: dotted.key=value");
   run->add_flag("-q,--quiet", quiet, "no progress line");
 
+  std::string plot_dir;
+  std::vector<std::string> compare, labels;
+  auto* plot = app.add_subcommand("plot", "write the figures of a finished run into DIR/figures/");
+  plot->add_option("dir", plot_dir, "run directory")->required()->check(CLI::ExistingDirectory);
+  plot->add_option("--compare", compare, "more run directories to overlay on crack_tip.png")
+      ->check(CLI::ExistingDirectory);
+  plot->add_option("--labels", labels, "legend labels, one per run");
+
   CLI11_PARSE(app, argc, argv);
+  if (plot->parsed()) return run_plot(argv[0], plot_dir, compare, labels);
 
   try {
     const Case c = load_case(case_path, overrides);

@@ -1,0 +1,197 @@
+#!/usr/bin/python3
+"""Figures of a rupture run (called by `rupture plot DIR`; needs numpy, matplotlib, h5py).
+
+Reads what `rupture run` wrote in DIR and writes PNGs to DIR/figures/:
+  crack_tip.png         tip position and E11 speed vs time, with c_R, c_S, sqrt(2) c_S, c_D
+  tau_max_fringes.png   tau_max = (sigma_1 - sigma_2)/2 around the crack tip (SPEC E13,
+                        the paper's Fig. 7 look: banded contours read like isochromatics)
+  cohesive_profiles.png tangential and normal cohesive tractions and nodal forces along the
+                        interface at several output times (the paper's Fig. 12)
+With --compare DIR2 [DIR3 ...], crack_tip.png overlays the tip histories of every run (grid
+or parameter studies), labelled by --labels or the directory names.
+Every figure is written to a temporary name and renamed, so none is ever half-written.
+"""
+import argparse
+import csv
+import glob
+import json
+import math
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+
+def read_csv(path):
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    if not rows:
+        return {}
+    return {k: np.array([float(r[k]) for r in rows]) for k in rows[0]}
+
+
+def save(fig, path):
+    tmp = path + ".tmp.png"
+    fig.savefig(tmp, dpi=130, bbox_inches="tight")
+    plt.close(fig)
+    os.replace(tmp, path)
+    print(f"figure={path}")
+
+
+def wave_speeds(run):
+    """c_D, c_S, c_R of the first material (m/s), from run.json."""
+    speeds = next(iter(run["wave_speeds"].values()))
+    return speeds["dilatational"], speeds["shear"], speeds["rayleigh"]
+
+
+def plot_crack_tip(dirs, labels, out):
+    fig, (ax_x, ax_v) = plt.subplots(2, 1, figsize=(7, 7.5), sharex=True)
+    c_d = c_s = c_r = None
+    for d, label in zip(dirs, labels):
+        with open(os.path.join(d, "run.json")) as f:
+            run = json.load(f)
+        c_d, c_s, c_r = wave_speeds(run)
+        tip = read_csv(os.path.join(d, "crack_tip.csv"))
+        if not tip:
+            continue
+        t_us = 1e6 * tip["time"]
+        ax_x.plot(t_us, 1e3 * tip["tip_x"], label=label)
+        ax_v.plot(t_us, tip["speed"], label=label)
+    ax_x.set_ylabel("crack-tip position x (mm)")
+    ax_x.grid(alpha=0.3)
+    if len(dirs) > 1:
+        ax_x.legend(fontsize=8)
+    if c_d is not None:
+        for value, name, style in [(c_r, "$c_R$", ":"), (c_s, "$c_S$", "--"),
+                                   (math.sqrt(2.0) * c_s, r"$\sqrt{2}\,c_S$", "-."),
+                                   (c_d, "$c_D$", "-")]:
+            ax_v.axhline(value, color="k", lw=0.8, ls=style)
+            ax_v.text(ax_v.get_xlim()[0], value, f" {name} = {value:.0f} m/s", va="bottom",
+                      fontsize=8)
+        ax_v.set_ylim(0, 1.1 * c_d)
+    ax_v.set_xlabel("time (µs)")
+    ax_v.set_ylabel("crack-tip speed (m/s, 31-point fit E11)")
+    ax_v.grid(alpha=0.3)
+    fig.suptitle("Crack-tip history")
+    save(fig, out)
+
+
+def snapshot_files(d):
+    return sorted(glob.glob(os.path.join(d, "snapshots", "particles_*.h5")))
+
+
+def tip_at(tip, t):
+    if not tip:
+        return None
+    return float(np.interp(t, tip["time"], tip["tip_x"]))
+
+
+def plot_fringes(d, out, max_panels=4):
+    import h5py
+
+    files = snapshot_files(d)
+    if not files:
+        print("note: no snapshots in DIR/snapshots; tau_max_fringes.png skipped")
+        return
+    tip = read_csv(os.path.join(d, "crack_tip.csv"))
+    # The latest snapshots show the running crack: take up to max_panels, evenly spread over
+    # the second half of the run.
+    half = files[len(files) // 2:] or files
+    pick = [half[int(round(i))] for i in np.linspace(0, len(half) - 1, min(max_panels, len(half)))]
+    pick = list(dict.fromkeys(pick))
+    fig, axes = plt.subplots(1, len(pick), figsize=(4.8 * len(pick), 4.6), squeeze=False)
+    fig.subplots_adjust(wspace=0.45)
+    for ax, path in zip(axes[0], pick):
+        with h5py.File(path, "r") as h:
+            pos = h["position"][:]
+            tau = h["tau_max"][:]
+            t = float(h.attrs["time"])
+        x_tip = tip_at(tip, t)
+        x, y = pos[:, 0], pos[:, 1]
+        if x_tip is not None:
+            window = (x > x_tip - 0.025) & (x < x_tip + 0.015) & (np.abs(y) < 0.02)
+            if window.sum() > 100:
+                x, y, tau = x[window], y[window], tau[window]
+        # Particle values on a regular image (mean per pixel) at about the particle spacing.
+        n = len(x)
+        span_x, span_y = x.max() - x.min(), y.max() - y.min()
+        spacing = math.sqrt(max(span_x * span_y, 1e-30) / max(n, 1))
+        nx = max(8, min(600, int(span_x / spacing)))
+        ny = max(8, min(600, int(span_y / spacing)))
+        total, xe, ye = np.histogram2d(x, y, bins=(nx, ny), weights=tau)
+        count, _, _ = np.histogram2d(x, y, bins=(xe, ye))
+        with np.errstate(invalid="ignore", divide="ignore"):
+            image = np.where(count > 0, total / count, np.nan) / 1e6
+        levels = np.linspace(0, np.nanpercentile(image, 99.5), 14)
+        xc, yc = 0.5 * (xe[1:] + xe[:-1]), 0.5 * (ye[1:] + ye[:-1])
+        cs = ax.contourf(1e3 * xc, 1e3 * yc, image.T, levels=levels, cmap="gray_r", extend="max")
+        ax.contour(1e3 * xc, 1e3 * yc, image.T, levels=levels, colors="k", linewidths=0.3)
+        if x_tip is not None:
+            ax.plot([1e3 * x_tip], [0.0], "r^", ms=6)
+        ax.set_aspect("equal")
+        ax.set_title(f"t = {1e6 * t:.2f} µs", fontsize=10)
+        ax.set_xlabel("x (mm)")
+        fig.colorbar(cs, ax=ax, shrink=0.7, label=r"$\tau_{max}$ (MPa)")
+    axes[0][0].set_ylabel("y (mm)")
+    fig.suptitle(r"$\tau_{max} = (\sigma_1-\sigma_2)/2$ around the crack tip (red: tip, E10)")
+    save(fig, out)
+
+
+def plot_profiles(d, out, max_curves=4):
+    files = sorted(glob.glob(os.path.join(d, "interface", "*.csv")))
+    if not files:
+        print("note: no DIR/interface/*.csv; cohesive_profiles.png skipped")
+        return
+    pick = [files[int(round(i))] for i in np.linspace(len(files) // 2, len(files) - 1,
+                                                      min(max_curves, len(files)))]
+    pick = list(dict.fromkeys(pick))
+    fig, axes = plt.subplots(2, 2, figsize=(11, 7), sharex=True)
+    for path in pick:
+        p = read_csv(path)
+        if not p:
+            continue
+        label = f"t = {1e6 * p['time'][0]:.2f} µs"
+        x = 1e3 * p["x"]
+        axes[0][0].plot(x, p["traction_t"] / 1e6, label=label)
+        axes[0][1].plot(x, p["traction_n"] / 1e6, label=label)
+        axes[1][0].plot(x, p["force_x"], label=label)
+        axes[1][1].plot(x, p["force_y"], label=label)
+    axes[0][0].set_ylabel("tangential traction $T_t$ (MPa)")
+    axes[0][1].set_ylabel("normal traction $T_n$ (MPa)")
+    axes[1][0].set_ylabel("nodal cohesive force $f_x$ (N/m)")
+    axes[1][1].set_ylabel("nodal cohesive force $f_y$ (N/m)")
+    for ax in axes.flat:
+        ax.grid(alpha=0.3)
+    for ax in axes[1]:
+        ax.set_xlabel("x along the interface (mm)")
+    axes[0][0].legend(fontsize=8)
+    fig.suptitle("Cohesive tractions and nodal forces along the interface")
+    save(fig, out)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
+    ap.add_argument("dir", help="run directory written by `rupture run`")
+    ap.add_argument("--compare", nargs="*", default=[], help="more run directories to overlay")
+    ap.add_argument("--labels", nargs="*", default=None, help="legend labels, one per run")
+    args = ap.parse_args()
+    dirs = [args.dir] + list(args.compare)
+    for d in dirs:
+        if not os.path.isfile(os.path.join(d, "run.json")):
+            sys.exit(f"error: '{d}' has no run.json: not a finished rupture run directory")
+    labels = args.labels if args.labels else [os.path.basename(os.path.normpath(d)) for d in dirs]
+    if len(labels) != len(dirs):
+        sys.exit(f"error: --labels has {len(labels)} entries for {len(dirs)} runs")
+    fig_dir = os.path.join(args.dir, "figures")
+    os.makedirs(fig_dir, exist_ok=True)
+    plot_crack_tip(dirs, labels, os.path.join(fig_dir, "crack_tip.png"))
+    plot_fringes(args.dir, os.path.join(fig_dir, "tau_max_fringes.png"))
+    plot_profiles(args.dir, os.path.join(fig_dir, "cohesive_profiles.png"))
+
+
+if __name__ == "__main__":
+    main()
