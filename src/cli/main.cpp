@@ -154,6 +154,7 @@ int main(int argc, char** argv) {
       fmt::print("crack.daughter_crack_time={:.6e}\n", k.daughter_time);
       fmt::print("crack.final_tip={:.6e}\n", k.final_tip);
       fmt::print("crack.final_cohesive_zone_length={:.6e}\n", k.final_cohesive_zone);
+      fmt::print("crack.final_traction_zone_length={:.6e}\n", k.final_traction_zone);
       fmt::print("crack.regime={}\n", k.regime);
     }
     fmt::print("output={}\n", out_dir);

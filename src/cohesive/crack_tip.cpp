@@ -43,6 +43,19 @@ void CrackTracker::sample(const CohesiveInterface& c, double t) {
     if (std::hypot(c.jump_normal(k), c.jump_tangential(k)) >= soft) zone_end = c.x0[k];
   }
   s.cohesive_zone = zone_end - s.tip;
+  const XuNeedleman& law = c.spec.law;
+  double loaded_end = s.tip;
+  for (std::size_t k = any ? tip_node + 1 : 0; k < c.num_nodes(); ++k) {
+    if (c.node_crack_time[k] >= 0.0) break;  // a daughter crack ends the contiguous zone
+    // Softening nodes belong to the zone whatever their (decaying) traction; ahead of them,
+    // the zone goes on while the rising-branch traction stays above the fraction.
+    const double dn = c.jump_normal(k), dt = c.jump_tangential(k);
+    const CohesiveTraction T = law.traction(dn, dt);
+    const double load = std::max(std::fabs(T.tangential) / law.tau_max, T.normal / law.sigma_max);
+    if (std::hypot(dn, dt) < soft && load < kTractionZoneFraction) break;
+    loaded_end = c.x0[k];
+  }
+  s.traction_zone = loaded_end - s.tip;
   samples_.push_back(std::move(s));
 }
 
@@ -64,6 +77,7 @@ CrackSummary CrackTracker::summarize(const CohesiveInterface& c, double c_s, dou
   if (samples_.empty()) return r;
   r.final_tip = samples_.back().tip;
   r.final_cohesive_zone = samples_.back().cohesive_zone;
+  r.final_traction_zone = samples_.back().traction_zone;
   const std::vector<double> v = speeds();
   for (std::size_t k = 0; k < v.size(); ++k) {
     if (std::isnan(v[k])) continue;
@@ -98,14 +112,15 @@ void CrackTracker::write(const std::string& dir, double c_r, double c_s) const {
   const std::vector<double> v = speeds();
   std::string tip =
       "time,tip_x,speed,speed_over_cR,speed_over_cS,stretches,cohesive_zone_length,"
-      "leading_stretch_begin,leading_stretch_end\n";
+      "leading_stretch_begin,leading_stretch_end,traction_zone_length\n";
   std::string stretches = "time,index,x_begin,x_end\n";
   for (std::size_t k = 0; k < samples_.size(); ++k) {
     const CrackSample& s = samples_[k];
     const bool has = !s.stretch_begin.empty();
-    tip += fmt::format("{:.9e},{:.9e},{:.6e},{:.6e},{:.6e},{},{:.6e},{:.9e},{:.9e}\n", s.time, s.tip,
-                       v[k], v[k] / c_r, v[k] / c_s, s.stretch_begin.size(), s.cohesive_zone,
-                       has ? s.stretch_begin.back() : NAN, has ? s.stretch_end.back() : NAN);
+    tip += fmt::format("{:.9e},{:.9e},{:.6e},{:.6e},{:.6e},{},{:.6e},{:.9e},{:.9e},{:.6e}\n", s.time,
+                       s.tip, v[k], v[k] / c_r, v[k] / c_s, s.stretch_begin.size(), s.cohesive_zone,
+                       has ? s.stretch_begin.back() : NAN, has ? s.stretch_end.back() : NAN,
+                       s.traction_zone);
     for (std::size_t i = 0; i < s.stretch_begin.size(); ++i)
       stretches += fmt::format("{:.9e},{},{:.9e},{:.9e}\n", s.time, i, s.stretch_begin[i], s.stretch_end[i]);
   }

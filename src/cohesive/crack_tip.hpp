@@ -20,6 +20,8 @@ struct CrackSample {
   double time = 0.0;
   double tip = 0.0;                  // tip position x (interface start if not initiated), m
   double cohesive_zone = 0.0;        // length ahead of the tip past the peak-traction opening, m
+  double traction_zone = 0.0;        // length ahead of the tip still carrying >= 10 % of the
+                                     // peak traction (kTractionZoneFraction), m
   std::vector<double> stretch_begin, stretch_end;  // separated stretches, m
 };
 
@@ -32,12 +34,19 @@ struct CrackSummary {
   double daughter_time = -1.0;       // first sample with a separated stretch ahead of the main one
   double final_tip = 0.0;            // m
   double final_cohesive_zone = 0.0;  // m
+  double final_traction_zone = 0.0;  // m
   std::string regime = "none";       // none | sub-Rayleigh | intersonic | supersonic
 };
 
 class CrackTracker {
  public:
   static constexpr int kWindow = 31;  // E11
+  // Two cohesive-zone lengths, both measured from the tip over the contiguous intact nodes
+  // ahead of it: `cohesive_zone` ends at the last node past the peak-shear opening
+  // (softening: the process zone proper); `traction_zone` goes on past it while the traction
+  // is at least this fraction of the peak (|T_t| / tau_max or T_n / sigma_max): the loaded
+  // zone a traction profile shows, as in the paper's Fig. 12.
+  static constexpr double kTractionZoneFraction = 0.1;
 
   void sample(const CohesiveInterface& c, double t);
   const std::vector<CrackSample>& samples() const { return samples_; }

@@ -61,6 +61,7 @@ std::string run_json(const Case& c, const CaseSummary& s, const RunRecord& r) {
                      {"daughter_crack_time", cs.daughter_time},
                      {"final_tip", cs.final_tip},
                      {"final_cohesive_zone_length", cs.final_cohesive_zone},
+                     {"final_traction_zone_length", cs.final_traction_zone},
                      {"regime", cs.regime}};
       if (k == 0) {
         t.insert("crack", ct);

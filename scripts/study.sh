@@ -1,0 +1,66 @@
+#!/usr/bin/env bash
+# Parameter studies of the reference problem (examples/rosakis1999.toml), cropped to
+# x <= 75 mm, -60 <= y <= 40 mm (no reflection reaches the interface before about 30 us),
+# each run into runs/study/<name>, then a table of the crack figures from run.json.
+#   scripts/study.sh grid  [END]   V = 30 m/s at h = 0.5, 0.25, 0.125 mm (END default 19.2e-6)
+#   scripts/study.sh sweep [H] [END]  V = 5, 9.2, 9.5, 10, 20, 30 m/s at H (default 0.125e-3)
+#   scripts/study.sh table DIR...     print the table for finished runs
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bin=./build/release/bin/rupture
+crop=(--set grid.min=[0.0,-0.06] --set grid.max=[0.075,0.04] --set bodies.upper.max=[0.075,0.04]
+      --set bodies.lower.min=[0.0,-0.06] --set bodies.lower.max=[0.075,0.0]
+      --set interface.weak_plane.bonded_to=0.075 --set output.snapshot_interval=0
+      --set output.interface_interval=0)
+
+table() {
+  /usr/bin/python3 - "$@" <<'PY'
+import json, sys, csv
+import numpy as np
+print(f"{'run':<22}{'h (mm)':>8}{'V (m/s)':>9}{'steps':>7}{'particles':>11}{'wall (s)':>10}"
+      f"{'init (us)':>10}{'jump (us)':>10}{'sust (m/s)':>11}{'/c_S':>6}{'tip@17.6':>10}"
+      f"{'zone (mm)':>10}{'loaded':>8}{'E err':>10}  regime")
+for d in sys.argv[1:]:
+    try:
+        r = json.load(open(f"{d}/run.json"))
+    except OSError:
+        continue
+    c = r["crack"]
+    cs = next(iter(r["wave_speeds"].values()))["shear"]
+    rows = list(csv.DictReader(open(f"{d}/crack_tip.csv")))
+    t = np.array([float(x["time"]) for x in rows]); x = np.array([float(x["tip_x"]) for x in rows])
+    tip = np.interp(17.6e-6, t, x) if t[-1] >= 17.6e-6 else float("nan")
+    zone = np.array([float(x["cohesive_zone_length"]) for x in rows])
+    z176 = np.interp(17.6e-6, t, zone) if t[-1] >= 17.6e-6 else float("nan")
+    loaded = float("nan")
+    if "traction_zone_length" in rows[0] and t[-1] >= 17.6e-6:
+        loaded = np.interp(17.6e-6, t, np.array([float(x["traction_zone_length"]) for x in rows]))
+    h = r["input"]["grid"]["cell_size"]; v = r["input"]["boundary"]["impact"]["velocity"]
+    print(f"{d.rstrip('/').split('/')[-1]:<22}{1e3*h:>8.4g}{v:>9.3g}{r['steps']:>7}{r['particles']:>11}"
+          f"{r['wall_seconds']:>10.1f}{1e6*c['initiation_time']:>10.3f}{1e6*c['intersonic_time']:>10.3f}"
+          f"{c['sustained_speed']:>11.0f}{c['sustained_speed']/cs:>6.2f}{1e3*tip:>10.2f}{1e3*z176:>10.2f}{1e3*loaded:>8.2f}"
+          f"{r['energy_balance_error']:>10.2e}  {c['regime']}")
+PY
+}
+
+case "${1:-}" in
+  grid)
+    end=${2:-19.2e-6}; dirs=()
+    for h in 0.5e-3 0.25e-3 0.125e-3; do
+      d=runs/study/grid_h$h; dirs+=("$d")
+      $bin run examples/rosakis1999.toml -o "$d" --quiet "${crop[@]}" --set grid.cell_size=$h \
+        --set time.end=$end | grep -E "^(wall_seconds|crack.sustained_speed|status)="
+    done
+    table "${dirs[@]}" ;;
+  sweep)
+    h=${2:-0.125e-3}; end=${3:-19.2e-6}; dirs=()
+    for v in 5 9.2 9.5 10 20 30; do
+      d=runs/study/sweep_v${v}_h$h; dirs+=("$d")
+      $bin run examples/rosakis1999.toml -o "$d" --quiet "${crop[@]}" --set grid.cell_size=$h \
+        --set boundary.impact.velocity=$v --set time.end=$end \
+        | grep -E "^(wall_seconds|crack.sustained_speed|status)="
+    done
+    table "${dirs[@]}" ;;
+  table) shift; table "$@" ;;
+  *) sed -n 2,8p "$0"; exit 1 ;;
+esac

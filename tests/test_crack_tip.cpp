@@ -1,0 +1,101 @@
+// Tests of cohesive/crack_tip: the E10 tip, separated stretches (a daughter crack), the two
+// cohesive-zone lengths, the E11 speed and the sustained speed, on prescribed jump fields
+// whose answers are known in closed form.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "cohesive/crack_tip.hpp"
+
+using namespace rupture;
+
+namespace {
+
+// 100 segments of 0.1 mm on [0, 10 mm], tau_max = sigma_max = 24 MPa, delta_t = 1 um.
+CohesiveInterface line() {
+  InterfaceSpec spec;
+  spec.start = 0.0;
+  spec.end = 0.01;
+  spec.segments = 100;
+  spec.law.sigma_max = spec.law.tau_max = 24e6;
+  spec.law.delta_n = 0.4e-6;
+  spec.law.delta_t = 1e-6;
+  return make_interface(spec);
+}
+
+// Tangential opening at which the shear traction of a pure-shear jump is `fraction` of
+// tau_max on the rising branch (T_t is proportional to x exp(-x^2), x = Delta_t / delta_t,
+// with the peak at x = 1/sqrt 2). Bisection: a few lines, no tolerance games.
+double rising_opening(const XuNeedleman& law, double fraction) {
+  double lo = 0.0, hi = law.delta_t / std::sqrt(2.0);
+  for (int i = 0; i < 200; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (std::fabs(law.traction(0.0, mid).tangential) < fraction * law.tau_max ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+}  // namespace
+
+TEST(CrackTip, tip_stretches_and_zones_of_a_prescribed_jump_field) {
+  CohesiveInterface c = line();
+  const XuNeedleman& law = c.spec.law;
+  // Nodes 0..30 cracked (tip at 3.0 mm); 31..35 softening (past the peak opening, node 31
+  // nearly unloaded, as next to a real tip); 36..45
+  // rising but loaded above 10 % of tau_max; 46..49 below 10 %; a daughter crack 60..64.
+  const double above = rising_opening(law, 0.2), below = rising_opening(law, 0.05);
+  for (std::size_t k = 0; k < c.num_nodes(); ++k) {
+    double jump = 0.0;
+    if (k <= 30 || (k >= 60 && k <= 64)) c.node_crack_time[k] = 1e-6, jump = 6e-6;
+    else if (k == 31) jump = 3e-6;  // far down the softening branch: T_t = 1e-3 tau_max
+    else if (k <= 35) jump = 1e-6;  // past delta_t / sqrt 2 (softening; T_t = 0.86 tau_max)
+    else if (k <= 45) jump = above;
+    else if (k <= 49) jump = below;
+    c.ux_up[k] = 0.5 * jump, c.ux_lo[k] = -0.5 * jump;
+  }
+  CrackTracker tracker;
+  tracker.sample(c, 2e-6);
+  const CrackSample& s = tracker.samples().back();
+  EXPECT_NEAR(s.tip, 6.4e-3, 1e-12) << "E10: the farthest cracked node, the daughter's tip";
+  ASSERT_EQ(s.stretch_begin.size(), 2u);
+  EXPECT_NEAR(s.stretch_end[0], 3.0e-3, 1e-12);
+  EXPECT_NEAR(s.stretch_begin[1], 6.0e-3, 1e-12);
+  // The zones are measured ahead of the daughter's tip: nothing is loaded there.
+  EXPECT_NEAR(s.traction_zone, 0.0, 1e-12);
+
+  // Without the daughter: tip at 3.0 mm, softening zone to 3.5 mm, loaded zone to 4.5 mm.
+  for (std::size_t k = 60; k <= 64; ++k) c.node_crack_time[k] = -1.0, c.ux_up[k] = c.ux_lo[k] = 0.0;
+  tracker.sample(c, 3e-6);
+  const CrackSample& m = tracker.samples().back();
+  EXPECT_NEAR(m.tip, 3.0e-3, 1e-12);
+  EXPECT_EQ(m.stretch_begin.size(), 1u);
+  EXPECT_NEAR(m.cohesive_zone, 0.5e-3, 1e-12);
+  EXPECT_NEAR(m.traction_zone, 1.5e-3, 1e-12);
+}
+
+TEST(CrackTip, speeds_of_a_tip_moving_at_constant_speed_are_exact) {
+  CohesiveInterface c = line();
+  CrackTracker tracker;
+  const double v = 2000.0, dt = 2e-8;
+  for (int n = 0; n < 200; ++n) {
+    const double t = n * dt;
+    // Tip at the node nearest to v t (nodes every 0.1 mm): a staircase whose mean slope is v.
+    const long tip = std::lround(v * t / 1e-4);
+    for (long k = 0; k <= tip && k < long(c.num_nodes()); ++k)
+      if (c.node_crack_time[std::size_t(k)] < 0.0) c.node_crack_time[std::size_t(k)] = t;
+    tracker.sample(c, t);
+  }
+  const std::vector<double> speeds = tracker.speeds();
+  double mean = 0.0;
+  int count = 0;
+  for (double s : speeds)
+    if (!std::isnan(s)) mean += s, ++count;
+  mean /= count;
+  EXPECT_EQ(count, 200 - 30) << "the centred 31-point window fits 170 of 200 samples";
+  EXPECT_NEAR(mean, v, 0.02 * v) << "E11 speed of a staircase with mean slope v";
+  const CrackSummary sum = tracker.summarize(c, 1247.9, 2534.5, 2e-6);
+  EXPECT_NEAR(sum.sustained_speed, v, 0.02 * v);
+  EXPECT_EQ(sum.regime, "intersonic");
+  EXPECT_NEAR(sum.initiation_time, 0.0, 1e-15);
+  EXPECT_GT(sum.intersonic_time, 0.0);
+}
