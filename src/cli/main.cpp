@@ -144,6 +144,7 @@ int main(int argc, char** argv) {
     fmt::print("simulated_time={:.6e}\n", r.simulated_time);
     fmt::print("wall_seconds={:.3f}\n", r.wall_seconds);
     fmt::print("particle_updates_per_second={:.4e}\n", r.particle_updates_per_second);
+    fmt::print("cohesive_seconds={:.3f}\n", r.cohesive_seconds);
     fmt::print("energy_balance_error={:.4e}\n", r.energy_balance_error);
     if (!r.cracks.empty()) {
       const CrackSummary& k = r.cracks.front();

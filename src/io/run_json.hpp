@@ -21,6 +21,7 @@ struct RunRecord {
   long steps = 0;                 // steps taken
   double simulated_time = 0.0;    // s
   double wall_seconds = 0.0;
+  double cohesive_seconds = 0.0;  // part of wall_seconds spent in the cohesive phases
   double particle_updates_per_second = 0.0;
   int threads = 1;
   double kinetic_energy = 0.0, strain_energy = 0.0, external_work = 0.0;

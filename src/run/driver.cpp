@@ -163,6 +163,7 @@ RunResult run_case(const Case& c, const RunOptions& options) {
   result.particle_updates_per_second =
       wall > 0 ? double(s.particles.size()) * double(s.step) / wall : 0.0;
   result.energy_balance_error = last.relative_error();
+  result.cohesive_seconds = s.cohesive_seconds;
   for (std::size_t k = 0; k < cracks.size(); ++k)
     result.cracks.push_back(cracks[k].summarize(s.interfaces[k], crack_speeds[k].shear,
                                                 crack_speeds[k].dilatational));
@@ -171,6 +172,7 @@ RunResult run_case(const Case& c, const RunOptions& options) {
   record.simulated_time = s.time;
   record.wall_seconds = wall;
   record.particle_updates_per_second = result.particle_updates_per_second;
+  record.cohesive_seconds = s.cohesive_seconds;
   record.kinetic_energy = last.kinetic;
   record.strain_energy = last.strain;
   record.external_work = last.external_work;

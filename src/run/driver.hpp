@@ -28,6 +28,7 @@ struct RunResult {
   double simulated_time = 0.0;         // s
   double wall_seconds = 0.0;           // s
   double particle_updates_per_second = 0.0;
+  double cohesive_seconds = 0.0;       // wall time in the cohesive phases, s
   double energy_balance_error = 0.0;   // relative, last history sample
   std::vector<CrackSummary> cracks;    // one per cohesive interface
 };

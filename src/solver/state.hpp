@@ -62,6 +62,7 @@ struct State {
   long step = 0;
   double mass_floor = 0.0;  // nodes lighter than this are treated as empty, kg
 
+  double cohesive_seconds = 0.0;  // wall time spent in the cohesive phases so far, s
   double external_work = 0.0;  // work of the prescribed velocities so far, J (per unit thickness)
   double initial_energy = 0.0; // kinetic + strain energy at t = 0, J
 };

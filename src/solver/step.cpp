@@ -4,6 +4,7 @@
 #include "solver/step.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <fmt/format.h>
 #include <limits>
@@ -29,22 +30,33 @@ struct StencilBatch {
   std::size_t base[kBatch];
 };
 
-// One axis for n <= kBatch particles: the stencil rule of grid/grid.hpp (stencil()).
+// One axis for n <= kBatch particles: the stencil rule of grid/grid.hpp (stencil()), with
+// the weights of gimp_uniform_node written out over plain arrays so the loop vectorizes.
 inline void axis_stencils(const Axis& ax, const double* __restrict xp, const double* __restrict lp,
-                          int n, double (*__restrict w)[kBatch], double (*__restrict dw)[kBatch],
+                          int n, double (&w)[3][kBatch], double (&dw)[3][kBatch],
                           int* __restrict first) {
   const double inv_h = 1.0 / ax.h, origin = ax.origin;
+  double* __restrict w0 = w[0];
+  double* __restrict w1 = w[1];
+  double* __restrict w2 = w[2];
+  double* __restrict d0 = dw[0];
+  double* __restrict d1 = dw[1];
+  double* __restrict d2 = dw[2];
+  double fl[kBatch];
 #pragma omp simd
   for (int k = 0; k < n; ++k) {
     const double xi = (xp[k] - origin) * inv_h;
-    const double cell = std::floor(xi);
+    // xi > 0 for every particle (the grid keeps its ghost cells around them: checked after each
+    // move), so truncation is floor; unlike std::floor it vectorizes without -ffast-math.
+    const double cell = double(int(xi));
     const double f = (xi - cell < 0.5) ? cell - 1.0 : cell;
-    first[k] = int(f);
+    fl[k] = f;
     const double u = xi - f, l = lp[k] * inv_h, inv_2l = 0.5 / l;
-    gimp_uniform_node(u, l, inv_2l, inv_h, w[0][k], dw[0][k]);
-    gimp_uniform_node(u - 1.0, l, inv_2l, inv_h, w[1][k], dw[1][k]);
-    gimp_uniform_node(u - 2.0, l, inv_2l, inv_h, w[2][k], dw[2][k]);
+    gimp_uniform_node(u, l, inv_2l, inv_h, w0[k], d0[k]);
+    gimp_uniform_node(u - 1.0, l, inv_2l, inv_h, w1[k], d1[k]);
+    gimp_uniform_node(u - 2.0, l, inv_2l, inv_h, w2[k], d2[k]);
   }
+  for (int k = 0; k < n; ++k) first[k] = int(fl[k]);
 }
 
 inline void batch_stencils(const State& s, std::size_t p0, int n, StencilBatch& B) {
@@ -69,14 +81,14 @@ inline void for_each_in_batches(const State& s, std::size_t begin, std::size_t e
   }
 }
 
-// Runs body(begin, end) over the particle range of every strip, strips of one colour in
-// parallel (see ScatterPlan).
+// Runs body(strip, begin, end) over the particle range of every strip, strips of one colour
+// in parallel (see ScatterPlan).
 template <class Body>
 void for_each_strip_coloured(const ScatterPlan& plan, Body&& body) {
   for (int colour = 0; colour < 2; ++colour) {
 #pragma omp parallel for schedule(dynamic, 1)
     for (int strip = colour; strip < plan.num_strips; strip += 2)
-      body(plan.strip_begin[std::size_t(strip)], plan.strip_begin[std::size_t(strip) + 1]);
+      body(strip, plan.strip_begin[std::size_t(strip)], plan.strip_begin[std::size_t(strip) + 1]);
   }
 }
 
@@ -161,38 +173,101 @@ void build_scatter_plan(State& s) {
 
 namespace {
 
+// The P2G scatter of one strip goes first into a small node-major tile (one 8-lane vector per
+// node: mass, momentum x/y, force x/y), so each particle-node pair is three vector FMAs instead
+// of five scalar read-modify-writes on five arrays; the tile is then added to the grid arrays.
+// The tile spans the strip's node columns (with the one-column drift tolerance) and, per
+// field, the node rows its particles touch.
+using Lane8 = double __attribute__((vector_size(64)));
+
+struct StripTile {
+  int col0 = 0, cols = 0;          // first node column, number of columns
+  std::vector<int> row0, rows;     // per field: first node row, number of rows (0: absent)
+  std::vector<std::size_t> start;  // per field: offset of its first node in `nodes`
+  std::vector<Lane8> nodes;
+};
+
 template <bool kWithForce>
 void scatter_mass_momentum_force(State& s) {
   GridFields& G = s.fields;
   const Particles& P = s.particles;
-  const std::size_t nx = std::size_t(s.grid.nodes_x());
-  double* mass = G.mass.data();
-  double* mom_x = G.mom_x.data();
-  double* mom_y = G.mom_y.data();
-  double* fx = G.force_x.data();
-  double* fy = G.force_y.data();
-  for_each_strip_coloured(s.plan, [&](std::size_t begin, std::size_t end) {
+  const int nxi = s.grid.nodes_x(), nyi = s.grid.nodes_y();
+  const std::size_t nx = std::size_t(nxi);
+  const int width = s.plan.strip_cells, fields = G.num_fields;
+  const double oy = s.grid.y.origin, inv_hy = 1.0 / s.grid.y.h;
+  for_each_strip_coloured(s.plan, [&](int strip, std::size_t begin, std::size_t end) {
+    if (begin == end) return;
+    thread_local StripTile T;
+    T.col0 = strip * width - 2;
+    T.cols = width + 5;
+    // Node rows per field: a particle in cell row r touches node rows r-1 .. r+2.
+    T.row0.assign(std::size_t(fields), std::numeric_limits<int>::max());
+    std::vector<int>& last = T.rows;
+    last.assign(std::size_t(fields), std::numeric_limits<int>::min());
+    for (std::size_t p = begin; p < end; ++p) {
+      const int r = int(std::floor((P.y[p] - oy) * inv_hy));
+      const std::size_t f = P.field[p];
+      T.row0[f] = std::min(T.row0[f], r - 1);
+      last[f] = std::max(last[f], r + 2);
+    }
+    T.start.assign(std::size_t(fields) + 1, 0);
+    for (std::size_t f = 0; f < std::size_t(fields); ++f) {
+      const int rows = last[f] >= T.row0[f] ? last[f] - T.row0[f] + 1 : 0;
+      last[f] = rows;  // `rows` from here on
+      T.start[f + 1] = T.start[f] + std::size_t(rows) * std::size_t(T.cols);
+    }
+    if (T.nodes.size() < T.start.back()) T.nodes.resize(T.start.back());
+    std::fill(T.nodes.begin(), T.nodes.begin() + std::ptrdiff_t(T.start.back()), Lane8{});
+    Lane8* tile = T.nodes.data();
+    const std::size_t cols = std::size_t(T.cols);
     for_each_in_batches(s, begin, end, [&](std::size_t p, int k, const StencilBatch& B) {
-      const double m = P.mass[p], mvx = m * P.vx[p], mvy = m * P.vy[p], V = P.volume[p];
+      const double m = P.mass[p], V = P.volume[p];
+      const Lane8 A = {m, m * P.vx[p], m * P.vy[p], 0, 0, 0, 0, 0};
       const double vsxx = V * P.sxx[p], vsyy = V * P.syy[p], vsxy = V * P.sxy[p];
+      // SPEC E4: f_i = -sum_p V_p sigma_p . grad S_ip
+      const Lane8 Fx = {0, 0, 0, -vsxx, -vsxy, 0, 0, 0};
+      const Lane8 Fy = {0, 0, 0, -vsxy, -vsyy, 0, 0, 0};
+      // Tile position of the particle's first node, recovered from its grid base index.
+      const std::size_t f = P.field[p];
+      const std::size_t local = B.base[k] - G.offset(int(f));
+      const int gx0 = int(local % nx), gy0 = int(local / nx);
+      Lane8* t0 = tile + T.start[f] + std::size_t(gy0 - T.row0[f]) * cols + std::size_t(gx0 - T.col0);
       for (int b = 0; b < 3; ++b) {
-        const std::size_t row = B.base[k] + std::size_t(b) * nx;
+        Lane8* t = t0 + std::size_t(b) * cols;
         const double wy = B.sy[b][k], gy_b = B.dsy[b][k];
         for (int a = 0; a < 3; ++a) {
-          const std::size_t n = row + std::size_t(a);
           const double w = B.sx[a][k] * wy;
-          mass[n] += w * m;
-          mom_x[n] += w * mvx;
-          mom_y[n] += w * mvy;
           if constexpr (kWithForce) {
-            // SPEC E4: f_i = -sum_p V_p sigma_p . grad S_ip
-            const double gx = B.dsx[a][k] * wy, gy = B.sx[a][k] * gy_b;
-            fx[n] -= vsxx * gx + vsxy * gy;
-            fy[n] -= vsxy * gx + vsyy * gy;
+            t[a] += w * A + (B.dsx[a][k] * wy) * Fx + (B.sx[a][k] * gy_b) * Fy;
+          } else {
+            t[a] += w * A;
           }
         }
       }
     });
+    // Add the tile to the grid (strips of one colour never share a node: no race).
+    for (std::size_t f = 0; f < std::size_t(fields); ++f) {
+      const int rows = last[f];
+      for (int r = 0; r < rows; ++r) {
+        const int gy = T.row0[f] + r;
+        if (gy < 0 || gy >= nyi) continue;
+        const Lane8* t = tile + T.start[f] + std::size_t(r) * cols;
+        const std::size_t row = G.offset(int(f)) + std::size_t(gy) * nx;
+        for (int c = 0; c < T.cols; ++c) {
+          const int gx = T.col0 + c;
+          if (gx < 0 || gx >= nxi) continue;
+          const std::size_t n = row + std::size_t(gx);
+          const Lane8 v = t[c];
+          G.mass[n] += v[0];
+          G.mom_x[n] += v[1];
+          G.mom_y[n] += v[2];
+          if constexpr (kWithForce) {
+            G.force_x[n] += v[3];
+            G.force_y[n] += v[4];
+          }
+        }
+      }
+    }
   });
 }
 
@@ -219,7 +294,7 @@ void particles_to_grid_force(State& s) {
   const std::size_t nx = std::size_t(s.grid.nodes_x());
   double* fx = G.force_x.data();
   double* fy = G.force_y.data();
-  for_each_strip_coloured(s.plan, [&](std::size_t begin, std::size_t end) {
+  for_each_strip_coloured(s.plan, [&](int, std::size_t begin, std::size_t end) {
     for_each_in_batches(s, begin, end, [&](std::size_t p, int k, const StencilBatch& B) {
       const double V = P.volume[p], sxx = P.sxx[p], syy = P.syy[p], sxy = P.sxy[p];
       for (int b = 0; b < 3; ++b) {
@@ -304,7 +379,7 @@ void velocity_update_and_remap(State& s) {
   const double* dvel_y = G.dvel_y.data();
   double* rx = G.remap_x.data();
   double* ry = G.remap_y.data();
-  for_each_strip_coloured(s.plan, [&](std::size_t begin, std::size_t end) {
+  for_each_strip_coloured(s.plan, [&](int, std::size_t begin, std::size_t end) {
     for_each_in_batches(s, begin, end, [&](std::size_t p, int k, const StencilBatch& B) {
       double pic_x = 0, pic_y = 0, dvx = 0, dvy = 0;
       for (int b = 0; b < 3; ++b) {
@@ -373,15 +448,19 @@ void remapped_grid_velocity(State& s) {
   }
 }
 
-void grid_to_particles(State& s, const double* gvx, const double* gvy, G2PMode mode) {
+namespace {
+
+// One specialization per G2PMode, so the node loop carries no mode tests.
+template <G2PMode kMode>
+void grid_to_particles_impl(State& s, const double* gvx, const double* gvy) {
   Particles& P = s.particles;
   const GridFields& G = s.fields;
   const std::size_t nx = std::size_t(s.grid.nodes_x());
   const double dt = s.dt, flip = s.flip;
-  const bool do_velocity =
-      mode == G2PMode::stress_velocity_and_move || mode == G2PMode::velocity_and_move;
-  const bool do_stress = mode != G2PMode::velocity_and_move;
-  const bool do_move = mode != G2PMode::stress_only;
+  constexpr bool do_velocity =
+      kMode == G2PMode::stress_velocity_and_move || kMode == G2PMode::velocity_and_move;
+  constexpr bool do_stress = kMode != G2PMode::velocity_and_move;
+  constexpr bool do_move = kMode != G2PMode::stress_only;
   // Particles must keep their whole 3-node stencil inside the grid.
   const double xlo = s.grid.x.node(0) + 0.5 * s.grid.x.h;
   const double xhi = s.grid.x.node(s.grid.x.cells) - 0.5 * s.grid.x.h;
@@ -406,30 +485,30 @@ void grid_to_particles(State& s, const double* gvx, const double* gvy, G2PMode m
         for (int a = 0; a < 3; ++a) {
           const std::size_t i = row + std::size_t(a);
           const double w = B.sx[a][k] * B.sy[b][k];
-          if (do_stress) {
+          if constexpr (do_stress) {
             const double gx = B.dsx[a][k] * B.sy[b][k], gy = B.sx[a][k] * B.dsy[b][k];
             L00 += gvx[i] * gx;
             L01 += gvx[i] * gy;
             L10 += gvy[i] * gx;
             L11 += gvy[i] * gy;
           }
-          if (do_velocity) {
+          if constexpr (do_velocity) {
             pic_x += w * G.vel_x[i];
             pic_y += w * G.vel_y[i];
             dvx += w * G.dvel_x[i];
             dvy += w * G.dvel_y[i];
           }
-          if (do_move) {
+          if constexpr (do_move) {
             mvx += w * G.vel_x[i];
             mvy += w * G.vel_y[i];
           }
         }
       }
-      if (do_velocity) {
+      if constexpr (do_velocity) {
         P.vx[p] = flip * (P.vx[p] + dvx) + (1.0 - flip) * pic_x;
         P.vy[p] = flip * (P.vy[p] + dvy) + (1.0 - flip) * pic_y;
       }
-      if (do_stress) {
+      if constexpr (do_stress) {
         // SPEC E5: eps_dot = sym(L), sigma_dot = C : eps_dot (small strain, plane mode in C).
         const ElasticStiffness& C = s.stiffness[P.material[p]];
         const double dexx = L00 * dt, deyy = L11 * dt, dexy = 0.5 * (L01 + L10) * dt;
@@ -442,7 +521,7 @@ void grid_to_particles(State& s, const double* gvx, const double* gvy, G2PMode m
         P.szz[p] += C.cz * (dexx + deyy);
         P.volume[p] = P.volume0[p] * (1.0 + P.exx[p] + P.eyy[p]);
       }
-      if (do_move) {
+      if constexpr (do_move) {
         P.x[p] += dt * mvx;
         P.y[p] += dt * mvy;
         const double col = std::floor((P.x[p] - ox) * inv_hx);
@@ -457,26 +536,65 @@ void grid_to_particles(State& s, const double* gvx, const double* gvy, G2PMode m
   if (bad != kNone) throw SimulationError(diagnose_bad_particles(s, xlo, xhi, ylo, yhi));
 }
 
+}  // namespace
+
+void grid_to_particles(State& s, const double* gvx, const double* gvy, G2PMode mode) {
+  switch (mode) {
+    case G2PMode::stress_and_move:
+      return grid_to_particles_impl<G2PMode::stress_and_move>(s, gvx, gvy);
+    case G2PMode::stress_velocity_and_move:
+      return grid_to_particles_impl<G2PMode::stress_velocity_and_move>(s, gvx, gvy);
+    case G2PMode::stress_only:
+      return grid_to_particles_impl<G2PMode::stress_only>(s, gvx, gvy);
+    case G2PMode::velocity_and_move:
+      return grid_to_particles_impl<G2PMode::velocity_and_move>(s, gvx, gvy);
+  }
+}
+
+namespace {
+// Wall time of the cohesive phases (forces, ties, interface advance), for the run record.
+class CohesiveTimer {
+ public:
+  explicit CohesiveTimer(State& s) : s_(s), t0_(std::chrono::steady_clock::now()) {}
+  ~CohesiveTimer() {
+    s_.cohesive_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
+  }
+  CohesiveTimer(const CohesiveTimer&) = delete;
+  CohesiveTimer& operator=(const CohesiveTimer&) = delete;
+
+ private:
+  State& s_;
+  std::chrono::steady_clock::time_point t0_;
+};
+
+void cohesive_forces_and_ties(State& s) {
+  if (s.interfaces.empty()) return;
+  CohesiveTimer timer(s);
+  add_cohesive_forces(s);  // E7-E9
+  tie_bonded_nodes(s, TieWhat::mass_momentum);
+  tie_bonded_nodes(s, TieWhat::force);
+}
+}  // namespace
+
 void step(State& s) {
   build_scatter_plan(s);
   GridFields& G = s.fields;
   switch (s.scheme) {
     case Scheme::MUSL:
       particles_to_grid(s, true);           // E4, per velocity field
-      add_cohesive_forces(s);               // E7-E9
-      tie_bonded_nodes(s, TieWhat::mass_momentum);
-      tie_bonded_nodes(s, TieWhat::force);
+      cohesive_forces_and_ties(s);          // E7-E9, bonded stretch
       integrate_grid(s);                    // E4 momentum update + E2 velocity BCs
       update_particle_velocity_and_remap(s);
-      tie_bonded_nodes(s, TieWhat::remapped_momentum);
+      if (!s.interfaces.empty()) {
+        CohesiveTimer timer(s);
+        tie_bonded_nodes(s, TieWhat::remapped_momentum);
+      }
       remapped_grid_velocity(s);
       grid_to_particles(s, G.remap_x.data(), G.remap_y.data(), G2PMode::stress_and_move);  // E5
       break;
     case Scheme::USL:
       particles_to_grid(s, true);
-      add_cohesive_forces(s);
-      tie_bonded_nodes(s, TieWhat::mass_momentum);
-      tie_bonded_nodes(s, TieWhat::force);
+      cohesive_forces_and_ties(s);
       integrate_grid(s);
       grid_to_particles(s, G.vel_x.data(), G.vel_y.data(), G2PMode::stress_velocity_and_move);
       break;
@@ -494,7 +612,10 @@ void step(State& s) {
   }
   s.time += s.dt;
   ++s.step;
-  advance_interfaces(s);  // face nodes follow their fields; jumps and tractions at t^{n+1}
+  if (!s.interfaces.empty()) {
+    CohesiveTimer timer(s);
+    advance_interfaces(s);  // face nodes follow their fields; jumps and tractions at t^{n+1}
+  }
 }
 
 }  // namespace rupture
