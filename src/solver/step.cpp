@@ -173,52 +173,88 @@ void build_scatter_plan(State& s) {
 
 namespace {
 
-// The P2G scatter of one strip goes first into a small node-major tile (one 8-lane vector per
-// node: mass, momentum x/y, force x/y), so each particle-node pair is three vector FMAs instead
-// of five scalar read-modify-writes on five arrays; the tile is then added to the grid arrays.
-// The tile spans the strip's node columns (with the one-column drift tolerance) and, per
-// field, the node rows its particles touch.
+// Strip tiles. Each particle loop works on one strip at a time through a small node-major
+// tile that holds, per node, the few values the loop needs packed in one vector (Lane4/Lane8):
+// a particle-node pair is then one to three vector FMAs instead of several scalar loads or
+// read-modify-writes on separate arrays. Gathers pack the tile from the grid arrays first;
+// scatters add the tile to the grid arrays after. A tile spans the strip's node columns (with
+// the one-column drift tolerance of ScatterPlan) and, per field, the node rows its particles
+// touch.
 using Lane8 = double __attribute__((vector_size(64)));
+using Lane4 = double __attribute__((vector_size(32)));
 
-struct StripTile {
+struct TileLayout {
   int col0 = 0, cols = 0;          // first node column, number of columns
   std::vector<int> row0, rows;     // per field: first node row, number of rows (0: absent)
-  std::vector<std::size_t> start;  // per field: offset of its first node in `nodes`
-  std::vector<Lane8> nodes;
+  std::vector<std::size_t> start;  // per field: offset of its first node in the tile
+  std::size_t size() const { return start.back(); }
+  // Tile index of the node with grid index `base` (field offset included) of field f.
+  std::size_t index(const State& s, std::size_t f, std::size_t base) const {
+    const std::size_t nx = std::size_t(s.grid.nodes_x());
+    const std::size_t local = base - s.fields.offset(int(f));
+    const int gx = int(local % nx), gy = int(local / nx);
+    return start[f] + std::size_t(gy - row0[f]) * std::size_t(cols) + std::size_t(gx - col0);
+  }
 };
+
+void tile_layout(const State& s, int strip, std::size_t begin, std::size_t end, TileLayout& T) {
+  const Particles& P = s.particles;
+  const int fields = s.fields.num_fields;
+  const double oy = s.grid.y.origin, inv_hy = 1.0 / s.grid.y.h;
+  T.col0 = strip * s.plan.strip_cells - 2;
+  T.cols = s.plan.strip_cells + 5;
+  // Node rows per field: a particle in cell row r touches node rows r-1 .. r+2.
+  T.row0.assign(std::size_t(fields), std::numeric_limits<int>::max());
+  T.rows.assign(std::size_t(fields), std::numeric_limits<int>::min());  // last row, then count
+  for (std::size_t p = begin; p < end; ++p) {
+    const int r = int((P.y[p] - oy) * inv_hy);  // xi > 0: truncation is floor
+    const std::size_t f = P.field[p];
+    T.row0[f] = std::min(T.row0[f], r - 1);
+    T.rows[f] = std::max(T.rows[f], r + 2);
+  }
+  T.start.assign(std::size_t(fields) + 1, 0);
+  for (std::size_t f = 0; f < std::size_t(fields); ++f) {
+    T.rows[f] = T.rows[f] >= T.row0[f] ? T.rows[f] - T.row0[f] + 1 : 0;
+    T.start[f + 1] = T.start[f] + std::size_t(T.rows[f]) * std::size_t(T.cols);
+  }
+}
+
+// Calls visit(tile_index, grid_index) for every tile node that lies inside the grid.
+template <class Visit>
+void for_each_tile_node(const State& s, const TileLayout& T, Visit&& visit) {
+  const int nxi = s.grid.nodes_x(), nyi = s.grid.nodes_y();
+  const std::size_t nx = std::size_t(nxi);
+  for (std::size_t f = 0; f < T.rows.size(); ++f) {
+    for (int r = 0; r < T.rows[f]; ++r) {
+      const int gy = T.row0[f] + r;
+      if (gy < 0 || gy >= nyi) continue;
+      const std::size_t t = T.start[f] + std::size_t(r) * std::size_t(T.cols);
+      const std::size_t row = s.fields.offset(int(f)) + std::size_t(gy) * nx;
+      for (int c = 0; c < T.cols; ++c) {
+        const int gx = T.col0 + c;
+        if (gx >= 0 && gx < nxi) visit(t + std::size_t(c), row + std::size_t(gx));
+      }
+    }
+  }
+}
+
+template <class Lane>
+Lane* tile_buffer(std::vector<Lane>& buffer, std::size_t size, bool zero) {
+  if (buffer.size() < size) buffer.resize(size);
+  if (zero) std::fill(buffer.begin(), buffer.begin() + std::ptrdiff_t(size), Lane{});
+  return buffer.data();
+}
 
 template <bool kWithForce>
 void scatter_mass_momentum_force(State& s) {
   GridFields& G = s.fields;
   const Particles& P = s.particles;
-  const int nxi = s.grid.nodes_x(), nyi = s.grid.nodes_y();
-  const std::size_t nx = std::size_t(nxi);
-  const int width = s.plan.strip_cells, fields = G.num_fields;
-  const double oy = s.grid.y.origin, inv_hy = 1.0 / s.grid.y.h;
   for_each_strip_coloured(s.plan, [&](int strip, std::size_t begin, std::size_t end) {
     if (begin == end) return;
-    thread_local StripTile T;
-    T.col0 = strip * width - 2;
-    T.cols = width + 5;
-    // Node rows per field: a particle in cell row r touches node rows r-1 .. r+2.
-    T.row0.assign(std::size_t(fields), std::numeric_limits<int>::max());
-    std::vector<int>& last = T.rows;
-    last.assign(std::size_t(fields), std::numeric_limits<int>::min());
-    for (std::size_t p = begin; p < end; ++p) {
-      const int r = int(std::floor((P.y[p] - oy) * inv_hy));
-      const std::size_t f = P.field[p];
-      T.row0[f] = std::min(T.row0[f], r - 1);
-      last[f] = std::max(last[f], r + 2);
-    }
-    T.start.assign(std::size_t(fields) + 1, 0);
-    for (std::size_t f = 0; f < std::size_t(fields); ++f) {
-      const int rows = last[f] >= T.row0[f] ? last[f] - T.row0[f] + 1 : 0;
-      last[f] = rows;  // `rows` from here on
-      T.start[f + 1] = T.start[f] + std::size_t(rows) * std::size_t(T.cols);
-    }
-    if (T.nodes.size() < T.start.back()) T.nodes.resize(T.start.back());
-    std::fill(T.nodes.begin(), T.nodes.begin() + std::ptrdiff_t(T.start.back()), Lane8{});
-    Lane8* tile = T.nodes.data();
+    thread_local TileLayout T;
+    thread_local std::vector<Lane8> buffer;
+    tile_layout(s, strip, begin, end, T);
+    Lane8* tile = tile_buffer(buffer, T.size(), true);
     const std::size_t cols = std::size_t(T.cols);
     for_each_in_batches(s, begin, end, [&](std::size_t p, int k, const StencilBatch& B) {
       const double m = P.mass[p], V = P.volume[p];
@@ -227,47 +263,30 @@ void scatter_mass_momentum_force(State& s) {
       // SPEC E4: f_i = -sum_p V_p sigma_p . grad S_ip
       const Lane8 Fx = {0, 0, 0, -vsxx, -vsxy, 0, 0, 0};
       const Lane8 Fy = {0, 0, 0, -vsxy, -vsyy, 0, 0, 0};
-      // Tile position of the particle's first node, recovered from its grid base index.
-      const std::size_t f = P.field[p];
-      const std::size_t local = B.base[k] - G.offset(int(f));
-      const int gx0 = int(local % nx), gy0 = int(local / nx);
-      Lane8* t0 = tile + T.start[f] + std::size_t(gy0 - T.row0[f]) * cols + std::size_t(gx0 - T.col0);
+      Lane8* t0 = tile + T.index(s, P.field[p], B.base[k]);
       for (int b = 0; b < 3; ++b) {
         Lane8* t = t0 + std::size_t(b) * cols;
         const double wy = B.sy[b][k], gy_b = B.dsy[b][k];
         for (int a = 0; a < 3; ++a) {
-          const double w = B.sx[a][k] * wy;
           if constexpr (kWithForce) {
-            t[a] += w * A + (B.dsx[a][k] * wy) * Fx + (B.sx[a][k] * gy_b) * Fy;
+            t[a] += (B.sx[a][k] * wy) * A + (B.dsx[a][k] * wy) * Fx + (B.sx[a][k] * gy_b) * Fy;
           } else {
-            t[a] += w * A;
+            t[a] += (B.sx[a][k] * wy) * A;
           }
         }
       }
     });
-    // Add the tile to the grid (strips of one colour never share a node: no race).
-    for (std::size_t f = 0; f < std::size_t(fields); ++f) {
-      const int rows = last[f];
-      for (int r = 0; r < rows; ++r) {
-        const int gy = T.row0[f] + r;
-        if (gy < 0 || gy >= nyi) continue;
-        const Lane8* t = tile + T.start[f] + std::size_t(r) * cols;
-        const std::size_t row = G.offset(int(f)) + std::size_t(gy) * nx;
-        for (int c = 0; c < T.cols; ++c) {
-          const int gx = T.col0 + c;
-          if (gx < 0 || gx >= nxi) continue;
-          const std::size_t n = row + std::size_t(gx);
-          const Lane8 v = t[c];
-          G.mass[n] += v[0];
-          G.mom_x[n] += v[1];
-          G.mom_y[n] += v[2];
-          if constexpr (kWithForce) {
-            G.force_x[n] += v[3];
-            G.force_y[n] += v[4];
-          }
-        }
+    // Strips of one colour never share a node: no race.
+    for_each_tile_node(s, T, [&](std::size_t t, std::size_t n) {
+      const Lane8 v = tile[t];
+      G.mass[n] += v[0];
+      G.mom_x[n] += v[1];
+      G.mom_y[n] += v[2];
+      if constexpr (kWithForce) {
+        G.force_x[n] += v[3];
+        G.force_y[n] += v[4];
       }
-    }
+    });
   });
 }
 
@@ -367,53 +386,47 @@ void apply_velocity_bcs(State& s) {
 namespace {
 
 // kPureFlip: flip == 1, so the PIC part (the gathered velocity) is not needed.
+// kPureFlip: flip == 1, so the PIC part (the gathered velocity) is not needed.
 template <bool kPureFlip>
 void velocity_update_and_remap(State& s) {
   GridFields& G = s.fields;
   Particles& P = s.particles;
-  const std::size_t nx = std::size_t(s.grid.nodes_x());
   const double flip = s.flip;
-  const double* vel_x = G.vel_x.data();
-  const double* vel_y = G.vel_y.data();
-  const double* dvel_x = G.dvel_x.data();
-  const double* dvel_y = G.dvel_y.data();
-  double* rx = G.remap_x.data();
-  double* ry = G.remap_y.data();
-  for_each_strip_coloured(s.plan, [&](int, std::size_t begin, std::size_t end) {
+  for_each_strip_coloured(s.plan, [&](int strip, std::size_t begin, std::size_t end) {
+    if (begin == end) return;
+    thread_local TileLayout T;
+    thread_local std::vector<Lane4> gather_buffer, scatter_buffer;
+    tile_layout(s, strip, begin, end, T);
+    Lane4* in = tile_buffer(gather_buffer, T.size(), false);
+    Lane4* out = tile_buffer(scatter_buffer, T.size(), true);
+    for_each_tile_node(s, T, [&](std::size_t t, std::size_t n) {
+      in[t] = Lane4{G.dvel_x[n], G.dvel_y[n], G.vel_x[n], G.vel_y[n]};
+    });
+    const std::size_t cols = std::size_t(T.cols);
     for_each_in_batches(s, begin, end, [&](std::size_t p, int k, const StencilBatch& B) {
-      double pic_x = 0, pic_y = 0, dvx = 0, dvy = 0;
-      for (int b = 0; b < 3; ++b) {
-        const std::size_t row = B.base[k] + std::size_t(b) * nx;
-        for (int a = 0; a < 3; ++a) {
-          const double w = B.sx[a][k] * B.sy[b][k];
-          if constexpr (!kPureFlip) {
-            pic_x += w * vel_x[row + a];
-            pic_y += w * vel_y[row + a];
-          }
-          dvx += w * dvel_x[row + a];
-          dvy += w * dvel_y[row + a];
-        }
-      }
+      const std::size_t t0 = T.index(s, P.field[p], B.base[k]);
+      Lane4 acc = {0, 0, 0, 0};  // dv x, dv y, v x, v y
+      for (int b = 0; b < 3; ++b)
+        for (int a = 0; a < 3; ++a) acc += (B.sx[a][k] * B.sy[b][k]) * in[t0 + std::size_t(b) * cols + std::size_t(a)];
       // FLIP/PIC blend of the particle velocity update.
       double vx, vy;
       if constexpr (kPureFlip) {
-        vx = P.vx[p] + dvx;
-        vy = P.vy[p] + dvy;
+        vx = P.vx[p] + acc[0];
+        vy = P.vy[p] + acc[1];
       } else {
-        vx = flip * (P.vx[p] + dvx) + (1.0 - flip) * pic_x;
-        vy = flip * (P.vy[p] + dvy) + (1.0 - flip) * pic_y;
+        vx = flip * (P.vx[p] + acc[0]) + (1.0 - flip) * acc[2];
+        vy = flip * (P.vy[p] + acc[1]) + (1.0 - flip) * acc[3];
       }
       P.vx[p] = vx;
       P.vy[p] = vy;
-      const double m = P.mass[p], mvx = m * vx, mvy = m * vy;
-      for (int b = 0; b < 3; ++b) {
-        const std::size_t row = B.base[k] + std::size_t(b) * nx;
-        for (int a = 0; a < 3; ++a) {
-          const double w = B.sx[a][k] * B.sy[b][k];
-          rx[row + a] += w * mvx;
-          ry[row + a] += w * mvy;
-        }
-      }
+      const double m = P.mass[p];
+      const Lane4 mv = {m * vx, m * vy, 0, 0};
+      for (int b = 0; b < 3; ++b)
+        for (int a = 0; a < 3; ++a) out[t0 + std::size_t(b) * cols + std::size_t(a)] += (B.sx[a][k] * B.sy[b][k]) * mv;
+    });
+    for_each_tile_node(s, T, [&](std::size_t t, std::size_t n) {
+      G.remap_x[n] += out[t][0];
+      G.remap_y[n] += out[t][1];
     });
   });
 }
