@@ -2,9 +2,14 @@
 # Parameter studies of the reference problem (examples/rosakis1999.toml), cropped to
 # x <= 75 mm, -60 <= y <= 40 mm (no reflection reaches the interface before about 30 us),
 # each run into runs/study/<name>, then a table of the crack figures from run.json.
-#   scripts/study.sh grid  [END]   V = 30 m/s at h = 0.5, 0.25, 0.125 mm (END default 19.2e-6)
-#   scripts/study.sh sweep [H] [END]  V = 5, 9.2, 9.5, 10, 20, 30 m/s at H (default 0.125e-3)
-#   scripts/study.sh table DIR...     print the table for finished runs
+# Grids are uniform (grid.coarse_cell_size = 0) unless stated.
+#   scripts/study.sh grid  [H...]      V = 30 m/s to 19.2 us at each H (default 0.5, 0.25, 0.125 mm)
+#   scripts/study.sh sweep [H]         V = 5, 9.2, 9.5, 10 m/s to 26 us and 20, 30 m/s to 19.2 us
+#                                      (the weak plane ends at 50 mm: fast cracks reach it by
+#                                      26 us), at H (default 0.125e-3)
+#   scripts/study.sh refined H [full]  V = 30 m/s on the example's refined grid, finest H,
+#                                      cropped (or the full plate with `full`)
+#   scripts/study.sh table DIR...      print the table for finished runs
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=./build/release/bin/rupture
@@ -12,6 +17,7 @@ crop=(--set grid.min=[0.0,-0.06] --set grid.max=[0.075,0.04] --set bodies.upper.
       --set bodies.lower.min=[0.0,-0.06] --set bodies.lower.max=[0.075,0.0]
       --set interface.weak_plane.bonded_to=0.075 --set output.snapshot_interval=0
       --set output.interface_interval=0)
+uniform=(--set grid.coarse_cell_size=0)
 
 table() {
   /usr/bin/python3 - "$@" <<'PY'
@@ -45,22 +51,31 @@ PY
 
 case "${1:-}" in
   grid)
-    end=${2:-19.2e-6}; dirs=()
-    for h in 0.5e-3 0.25e-3 0.125e-3; do
+    shift; hs=("$@"); [ ${#hs[@]} -gt 0 ] || hs=(0.5e-3 0.25e-3 0.125e-3); dirs=()
+    for h in "${hs[@]}"; do
       d=runs/study/grid_h$h; dirs+=("$d")
-      $bin run examples/rosakis1999.toml -o "$d" --quiet "${crop[@]}" --set grid.cell_size=$h \
-        --set time.end=$end | grep -E "^(wall_seconds|crack.sustained_speed|status)="
+      $bin run examples/rosakis1999.toml -o "$d" --quiet "${crop[@]}" "${uniform[@]}" \
+        --set grid.cell_size=$h | grep -E "^(wall_seconds|crack.sustained_speed|status)="
     done
     table "${dirs[@]}" ;;
   sweep)
-    h=${2:-0.125e-3}; end=${3:-19.2e-6}; dirs=()
+    h=${2:-0.125e-3}; dirs=()
     for v in 5 9.2 9.5 10 20 30; do
+      end=26e-6; [ "$v" = 20 ] || [ "$v" = 30 ] && end=19.2e-6
       d=runs/study/sweep_v${v}_h$h; dirs+=("$d")
-      $bin run examples/rosakis1999.toml -o "$d" --quiet "${crop[@]}" --set grid.cell_size=$h \
-        --set boundary.impact.velocity=$v --set time.end=$end \
+      [ -f "$d/run.json" ] && grep -q '"status" : "completed"' "$d/run.json" && continue
+      $bin run examples/rosakis1999.toml -o "$d" --quiet "${crop[@]}" "${uniform[@]}" \
+        --set grid.cell_size=$h --set boundary.impact.velocity=$v --set time.end=$end \
         | grep -E "^(wall_seconds|crack.sustained_speed|status)="
     done
     table "${dirs[@]}" ;;
+  refined)
+    h=${2:?finest cell size}; d=runs/study/refined_h$h${3:+_$3}
+    if [ "${3:-}" = full ]; then extra=(--set output.snapshot_interval=0 --set output.interface_interval=0)
+    else extra=("${crop[@]}"); fi
+    $bin run examples/rosakis1999.toml -o "$d" --quiet "${extra[@]}" --set grid.cell_size=$h \
+      | grep -E "^(particles|steps|wall_seconds|crack.sustained_speed|status)="
+    table "$d" ;;
   table) shift; table "$@" ;;
-  *) sed -n 2,8p "$0"; exit 1 ;;
+  *) sed -n 2,14p "$0"; exit 1 ;;
 esac

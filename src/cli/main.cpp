@@ -53,6 +53,13 @@ void print_check(const std::string& path, const Case& c) {
         is.start, is.end, 1e6 * is.law.delta_t, is.law.phi_n(), is.law.phi_t(),
         is.bonded ? fmt::format("; bonded on [{:g}, {:g}] m", is.bonded_from, is.bonded_to) : "");
   }
+  if (c.grid.refined()) {
+    fmt::print("refined grid: {} levels, level 0 = {:g} m, finest = {:g} m; smallest cell {:g} m\n",
+               s.level_sizes.size(), c.grid.coarse_cell_size, c.grid.cell_size, s.min_cell_size);
+    for (std::size_t L = 0; L < s.level_sizes.size(); ++L)
+      fmt::print("level {} ({:g} m): cells_level_{}={} particles_level_{}={}\n", L, s.level_sizes[L],
+                 L, s.cells_per_level[L], L, s.particles_per_level[L]);
+  }
   fmt::print("cells={}\n", s.cells);
   fmt::print("nodes={}\n", s.nodes);
   fmt::print("particles={}\n", s.particles);

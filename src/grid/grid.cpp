@@ -2,6 +2,7 @@
 #include "grid/grid.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fmt/format.h>
 
@@ -26,6 +27,100 @@ Grid make_uniform_grid(const double min[2], const double max[2], double h) {
     axes[d]->h = h;
     axes[d]->cells = int(cells) + 2 * g.ghost;
     axes[d]->origin = min[d] - g.ghost * h;
+    g.domain_min[d] = min[d];
+    g.domain_max[d] = max[d];
+  }
+  return g;
+}
+
+double Axis::min_width() const {
+  if (!graded()) return h;
+  double w = INFINITY;
+  for (int c = 0; c < cells; ++c) w = std::min(w, width(c));
+  return w;
+}
+
+namespace {
+
+// Cell widths of one graded axis, in units of the finest size (powers of two).
+std::vector<long> graded_widths(long units, long coarse, const std::vector<std::array<long, 3>>& boxes) {
+  // Size asked for at every unit: the smallest box size covering it, coarse elsewhere.
+  std::vector<long> want(std::size_t(units), coarse);
+  for (const auto& b : boxes)
+    for (long k = std::max(0L, b[0]); k < std::min(units, b[1]); ++k)
+      want[std::size_t(k)] = std::min(want[std::size_t(k)], b[2]);
+  // Greedy: the largest power-of-two cell aligned to its own size that no finer wish
+  // overlaps.
+  std::vector<long> w;
+  for (long k = 0; k < units;) {
+    long size = coarse;
+    while (size > 1) {
+      bool ok = k % size == 0 && k + size <= units;
+      for (long u = k; ok && u < k + size; ++u) ok = want[std::size_t(u)] >= size;
+      if (ok) break;
+      size /= 2;
+    }
+    w.push_back(size);
+    k += size;
+  }
+  // Grade: split any cell more than twice as wide as a neighbour (halves stay aligned).
+  for (bool changed = true; changed;) {
+    changed = false;
+    std::vector<long> next;
+    for (std::size_t i = 0; i < w.size(); ++i) {
+      const long left = i > 0 ? w[i - 1] : w[i], right = i + 1 < w.size() ? w[i + 1] : w[i];
+      if (w[i] > 2 * std::min(left, right)) {
+        next.push_back(w[i] / 2);
+        next.push_back(w[i] / 2);
+        changed = true;
+      } else {
+        next.push_back(w[i]);
+      }
+    }
+    w.swap(next);
+  }
+  return w;
+}
+
+}  // namespace
+
+Grid make_graded_grid(const double min[2], const double max[2], double coarse, double finest,
+                      const std::vector<RefineBox>& boxes) {
+  Grid g;
+  const char* names[2] = {"x", "y"};
+  Axis* axes[2] = {&g.x, &g.y};
+  const long coarse_units = std::lround(coarse / finest);
+  for (int d = 0; d < 2; ++d) {
+    const double n = (max[d] - min[d]) / finest;
+    const long units = std::lround(n);
+    if (units < 1 || std::fabs(n - double(units)) > 1e-6 * std::max(1.0, n))
+      throw InputError(fmt::format(
+          "grid.cell_size = {:g}: the domain extent along {} ({:g} m) must be a whole number of "
+          "finest cells; {:g} does not qualify", finest, names[d], max[d] - min[d], n));
+    std::vector<std::array<long, 3>> spans;
+    for (const RefineBox& b : boxes) {
+      const long size = std::max(1L, std::lround(b.size / finest));
+      spans.push_back({long(std::floor((b.min[d] - min[d]) / finest + 1e-9)),
+                       long(std::ceil((b.max[d] - min[d]) / finest - 1e-9)), size});
+    }
+    std::vector<long> w = graded_widths(units, coarse_units, spans);
+    // Ghost cells as wide as the edge cells.
+    const long lo = w.front(), hi = w.back();
+    w.insert(w.begin(), {lo, lo});
+    w.push_back(hi);
+    w.push_back(hi);
+    Axis& a = *axes[d];
+    a.h = finest;
+    a.cells = int(w.size());
+    a.origin = min[d] - double(2 * lo) * finest;
+    a.coord.resize(w.size() + 1);
+    long unit = 0;
+    for (std::size_t c = 0; c < w.size(); ++c) {
+      a.coord[c] = a.origin + double(unit) * finest;
+      for (long u = 0; u < w[c]; ++u) a.cell_of_unit.push_back(int(c));
+      unit += w[c];
+    }
+    a.coord.back() = a.origin + double(unit) * finest;
     g.domain_min[d] = min[d];
     g.domain_max[d] = max[d];
   }

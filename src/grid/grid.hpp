@@ -13,15 +13,31 @@
 
 namespace rupture {
 
-// Nodes along one direction. Only uniform spacing is wired into the time step now; the
-// node coordinates are explicit so a graded axis can replace it (SPEC §5).
+// Nodes along one direction: uniform (spacing h) or graded (SPEC §5: cell sizes that are
+// power-of-two multiples of the finest size h, changing by at most a factor 2 from one cell to
+// the next, every cell boundary on a multiple of h from the origin). A graded axis stores its
+// node coordinates and, per unit interval of length h, the cell that contains it, so locating
+// a point stays O(1).
 struct Axis {
   double origin = 0.0;  // coordinate of node 0 (a ghost node), m
-  double h = 0.0;       // cell size, m
+  double h = 0.0;       // uniform: the cell size; graded: the finest cell size (the unit), m
   int cells = 0;        // number of cells, ghosts included
+  std::vector<double> coord;      // graded only: node coordinates, m (cells + 1)
+  std::vector<int> cell_of_unit;  // graded only: cell holding [origin + k h, origin + (k+1) h)
 
+  bool graded() const { return !coord.empty(); }
   int nodes() const { return cells + 1; }
-  double node(int i) const { return origin + h * i; }
+  double node(int i) const { return graded() ? coord[std::size_t(i)] : origin + h * i; }
+  double width(int c) const { return graded() ? coord[std::size_t(c) + 1] - coord[std::size_t(c)] : h; }
+  // Index of the cell containing x (floor); points outside give an out-of-range index
+  // (uniform) or the nearest end cell (graded).
+  int cell_of(double x) const {
+    const double u = std::floor((x - origin) / h);
+    if (!graded()) return int(u);
+    const double last = double(cell_of_unit.size()) - 1.0;
+    return cell_of_unit[std::size_t(u < 0.0 ? 0.0 : (u > last ? last : u))];
+  }
+  double min_width() const;
 };
 
 // 3-node stencil of a particle along one axis (uGIMP with lp <= h/2 touches at most 3 nodes).
@@ -31,9 +47,32 @@ struct Stencil1D {
   double ds[3];  // d weight / d x_p, 1/m
 };
 
-// The particle at xp with half-width lp (<= h/2) touches nodes first..first+2 (SPEC E3).
-// Nodes i0-1..i0+1 if xp lies in the left half of cell i0, else i0..i0+2.
+// The particle at xp with half-width lp (<= half the width of the cells it overlaps) touches
+// nodes first..first+2 (SPEC E3). Uniform: nodes i0-1..i0+1 if xp lies in the left half of
+// cell i0, else i0..i0+2. Graded: first is the cell holding the particle's left edge xp - lp
+// (its box overlaps at most two cells; the third weight may be zero).
 inline void stencil(const Axis& a, double xp, double lp, Stencil1D& st) {
+  if (a.graded()) {
+    const int first = a.cell_of(xp - lp);
+    st.first = first;
+    // Inside a region of equal cells (all but the transitions) the uniform form applies.
+    const double h = a.width(first);
+    const double tol = 1e-9 * h;  // widths come from node differences: equal to round-off
+    if (first > 0 && first + 2 < a.cells && std::fabs(a.width(first - 1) - h) < tol &&
+        std::fabs(a.width(first + 1) - h) < tol && std::fabs(a.width(first + 2) - h) < tol) {
+      const double inv_h = 1.0 / h;
+      gimp_uniform_stencil((xp - a.node(first)) * inv_h, lp * inv_h, inv_h, st.s, st.ds);
+      return;
+    }
+    for (int k = 0; k < 3; ++k) {
+      const int i = first + k;
+      const double hl = a.width(i > 0 ? i - 1 : 0), hr = a.width(i < a.cells ? i : a.cells - 1);
+      const Weight1D w = gimp_graded(xp - a.node(i), hl, hr, lp);
+      st.s[k] = w.s;
+      st.ds[k] = w.ds;
+    }
+    return;
+  }
   const double inv_h = 1.0 / a.h;
   const double xi = (xp - a.origin) * inv_h;
   const double cell = std::floor(xi);
@@ -54,12 +93,27 @@ struct Grid {
   std::size_t node_index(int i, int j) const { return std::size_t(j) * nodes_x() + i; }
   int physical_cells_x() const { return x.cells - 2 * ghost; }
   int physical_cells_y() const { return y.cells - 2 * ghost; }
-  double cell_size() const { return x.h; }
+  double cell_size() const { return x.h; }  // uniform: h; graded: the finest size
+  bool graded() const { return x.graded() || y.graded(); }
 };
 
 // Uniform grid over [min, max] with cell size h plus the ghost cells on each side.
 // Throws InputError if the extent is not a whole number of cells (within 1e-6 h).
 Grid make_uniform_grid(const double min[2], const double max[2], double h);
+
+// A refinement box (SPEC §5): cells inside it along each axis are at most `size` wide.
+struct RefineBox {
+  double min[2]{}, max[2]{};  // m
+  double size = 0.0;          // cell size asked for inside the box, m
+};
+
+// Graded tensor-product grid over [min, max]: along each axis, the cell size at a point is
+// the smallest size of the boxes whose extent along that axis covers it, `coarse` elsewhere;
+// sizes are powers of two times `finest`, aligned to their own size from min, and graded so
+// that neighbouring cells differ by at most a factor 2. Two ghost cells (the size of the edge
+// cell) on each side. Throws InputError if an extent is not a whole number of `finest`.
+Grid make_graded_grid(const double min[2], const double max[2], double coarse, double finest,
+                      const std::vector<RefineBox>& boxes);
 
 // Per-field nodal arrays, field-major. See solver/ for when each array is valid.
 struct GridFields {

@@ -2,11 +2,13 @@
 // A validated simulation case: everything the solver needs, in SI units, produced only by
 // io/case_toml (which owns all input validation). Plain data; no behaviour.
 #pragma once
+#include <algorithm>
 #include <string>
 #include <vector>
 
 #include "bc/velocity_bc.hpp"
 #include "cohesive/interface.hpp"
+#include "grid/grid.hpp"
 #include "material/elastic.hpp"
 
 namespace rupture {
@@ -21,10 +23,27 @@ struct BodySpec {
   int field = 0;                // velocity field: one per body
 };
 
+// Mesh refinement (SPEC §5) as nested boxes with a level each, level 0 being the whole plate
+// at coarse_cell_size and each level halving the size: level L has cells of
+// max(coarse_cell_size / 2^L, cell_size). cell_size is the finest size, so changing it alone
+// adds or drops the deepest levels.
+struct RefineLevel {
+  std::string name;
+  double min[2]{}, max[2]{};  // m
+  int level = 1;
+};
+
 struct GridSpec {
   double min[2]{}, max[2]{};     // physical domain, m
-  double cell_size = 0.0;        // h, m
-  int particles_per_cell = 2;    // per direction (2 -> 2x2, SPEC §2)
+  double cell_size = 0.0;        // h: the uniform cell size, or the finest one when refined, m
+  double coarse_cell_size = 0.0; // level-0 size when refined (0: uniform grid), m
+  std::vector<RefineLevel> refine;
+  int particles_per_cell = 2;    // per direction (2 -> 2x2, SPEC §2), on every level
+
+  bool refined() const { return coarse_cell_size > 0.0; }
+  double level_size(int level) const {  // m
+    return std::max(coarse_cell_size / double(1L << level), cell_size);
+  }
 };
 
 struct TimeSpec {
@@ -69,5 +88,8 @@ struct Case {
 };
 
 const char* scheme_name(Scheme s);
+
+// The background grid a case asks for: uniform, or graded from its refinement levels.
+Grid build_grid(const GridSpec& g);
 
 }  // namespace rupture

@@ -233,7 +233,8 @@ Case build_case(const toml::table& root) {
   }
 
   {
-    Section g = top.table("grid", true, {"min", "max", "cell_size", "particles_per_cell"});
+    Section g = top.table("grid", true, {"min", "max", "cell_size", "particles_per_cell",
+                                          "coarse_cell_size", "refine"});
     g.pair("min", c.grid.min, true);
     g.pair("max", c.grid.max, true);
     for (int d = 0; d < 2; ++d) {
@@ -254,6 +255,43 @@ Case build_case(const toml::table& root) {
     const double cells = (c.grid.max[0] - c.grid.min[0]) * (c.grid.max[1] - c.grid.min[1]) /
                          (c.grid.cell_size * c.grid.cell_size);
     if (cells > 2e9) fail(g.key("cell_size"), c.grid.cell_size, fmt::format("gives {:.3g} cells; at most 2e9", cells));
+    // coarse_cell_size = 0 turns refinement off (a uniform grid; refine boxes are ignored).
+    if (g.has("coarse_cell_size") && g.number("coarse_cell_size") != 0.0) {
+      const double h0 = g.number("coarse_cell_size");
+      const double ratio = h0 / c.grid.cell_size;
+      const long r = std::lround(ratio);
+      if (!(h0 > 0) || r < 1 || std::fabs(ratio - double(r)) > 1e-6 * ratio || (r & (r - 1)) != 0)
+        fail(g.key("coarse_cell_size"), h0,
+             fmt::format("must be grid.cell_size ({:g} m) times a power of two (1, 2, 4, ...)",
+                         c.grid.cell_size));
+      c.grid.coarse_cell_size = h0;
+    }
+    Section refine = g.table("refine", false);
+    if (!refine.raw().empty() && !g.has("coarse_cell_size"))
+      fail(g.key("refine"), "(present)", "needs grid.coarse_cell_size, the level-0 cell size");
+    for (const auto& [k, v] : refine.raw()) {
+      if (!c.grid.refined()) break;
+      const std::string name(k.str());
+      Section r = refine.table(name, true, {"min", "max", "level"});
+      RefineLevel L;
+      L.name = name;
+      r.pair("min", L.min, true);
+      r.pair("max", L.max, true);
+      const long level = r.integer("level", -1);
+      if (level < 1 || level > 20) fail(r.key("level"), double(level), "must lie in [1, 20]");
+      L.level = int(level);
+      for (int d = 0; d < 2; ++d) {
+        if (!(L.max[d] > L.min[d]))
+          fail(r.key("max"), fmt::format("[{:g}, {:g}]", L.max[0], L.max[1]),
+               fmt::format("must exceed {} in both components", r.key("min")));
+        if (!whole_cells(L.min[d] - c.grid.min[d], c.grid.cell_size) ||
+            !whole_cells(L.max[d] - c.grid.min[d], c.grid.cell_size))
+          fail(r.key("min"), fmt::format("[{:g}, {:g}]..[{:g}, {:g}]", L.min[0], L.min[1], L.max[0], L.max[1]),
+               fmt::format("box edges must lie on multiples of grid.cell_size = {:g} m from grid.min",
+                           c.grid.cell_size));
+      }
+      c.grid.refine.push_back(L);
+    }
     const long ppc = g.integer("particles_per_cell", 2);
     if (ppc < 1 || ppc > 8) fail(g.key("particles_per_cell"), double(ppc), "must lie in [1, 8] (per direction)");
     c.grid.particles_per_cell = int(ppc);
@@ -467,6 +505,24 @@ Case build_case(const toml::table& root) {
     if (c.output.interface_interval < 0) fail(o.key("interface_interval"), c.output.interface_interval, "must be >= 0 (s; 0 = none)");
   }
 
+  if (c.grid.refined()) {
+    // Bodies fill whole cells of the graded grid: their edges must be grid lines.
+    const Grid grid = build_grid(c.grid);
+    const Axis* axes[2] = {&grid.x, &grid.y};
+    for (const BodySpec& b : c.bodies)
+      for (int d = 0; d < 2; ++d)
+        for (const double v : {b.min[d], b.max[d]}) {
+          const Axis& a = *axes[d];
+          const int k = a.cell_of(v);
+          const double lo = a.node(k), hi = a.node(k + 1), tol = 1e-9 * a.h;
+          if (std::fabs(v - lo) > tol && std::fabs(v - hi) > tol)
+            fail("bodies." + b.name + (v == b.min[d] ? ".min" : ".max"), v,
+                 fmt::format("with grid refinement, body edges must lie on grid lines; along {} "
+                             "the nearest are {:g} and {:g} m (cells of {:g} m there)",
+                             d == 0 ? "x" : "y", lo, hi, hi - lo));
+        }
+  }
+
   std::ostringstream echo;
   echo << toml::toml_formatter{root};
   c.input_toml = echo.str();
@@ -482,6 +538,14 @@ const char* scheme_name(Scheme s) {
     case Scheme::MUSL: return "MUSL";
   }
   return "?";
+}
+
+Grid build_grid(const GridSpec& g) {
+  if (!g.refined()) return make_uniform_grid(g.min, g.max, g.cell_size);
+  std::vector<RefineBox> boxes;
+  for (const RefineLevel& L : g.refine)
+    boxes.push_back({{L.min[0], L.min[1]}, {L.max[0], L.max[1]}, g.level_size(L.level)});
+  return make_graded_grid(g.min, g.max, g.coarse_cell_size, g.cell_size, boxes);
 }
 
 Case parse_case(const std::string& toml_text, const std::vector<std::string>& overrides,

@@ -24,6 +24,11 @@ struct PointStencil {
 };
 
 inline PointStencil point_stencil(const Grid& g, double x, double y) {
+  if (g.graded()) {
+    const int i = g.x.cell_of(x), j = g.y.cell_of(y);
+    const double ax = (x - g.x.node(i)) / g.x.width(i), ay = (y - g.y.node(j)) / g.y.width(j);
+    return {g.node_index(i, j), {1.0 - ax, ax}, {1.0 - ay, ay}};
+  }
   const double fx = (x - g.x.origin) / g.x.h, fy = (y - g.y.origin) / g.y.h;
   const int i = int(std::floor(fx)), j = int(std::floor(fy));
   const double ax = fx - i, ay = fy - j;
@@ -137,7 +142,10 @@ void add_cohesive_forces(State& s) {
 std::vector<std::size_t> bonded_nodes(const Grid& g, const InterfaceSpec& spec) {
   std::vector<std::size_t> out;
   if (!spec.bonded) return out;
-  const int j = int(std::lround((spec.y - g.y.origin) / g.y.h));
+  // The node row on the interface line (validated to be a grid line).
+  int j = 0;
+  for (int k = 1; k < g.nodes_y(); ++k)
+    if (std::fabs(g.y.node(k) - spec.y) < std::fabs(g.y.node(j) - spec.y)) j = k;
   const double tol = 1e-9 * g.x.h;
   for (int i = 0; i < g.nodes_x(); ++i) {
     const double x = g.x.node(i);

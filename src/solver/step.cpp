@@ -35,6 +35,15 @@ struct StencilBatch {
 inline void axis_stencils(const Axis& ax, const double* __restrict xp, const double* __restrict lp,
                           int n, double (&w)[3][kBatch], double (&dw)[3][kBatch],
                           int* __restrict first) {
+  if (ax.graded()) {  // SPEC E3 on a graded axis: scalar, through grid/grid.hpp stencil()
+    for (int k = 0; k < n; ++k) {
+      Stencil1D st;
+      stencil(ax, xp[k], lp[k], st);
+      first[k] = st.first;
+      for (int j = 0; j < 3; ++j) w[j][k] = st.s[j], dw[j][k] = st.ds[j];
+    }
+    return;
+  }
   const double inv_h = 1.0 / ax.h, origin = ax.origin;
   double* __restrict w0 = w[0];
   double* __restrict w1 = w[1];
@@ -143,12 +152,10 @@ void sort_particles(State& s) {
   const std::size_t n = P.size();
   const int cx = s.grid.x.cells, cy = s.grid.y.cells, width = plan.strip_cells;
   plan.num_strips = (cx + width - 1) / width;
-  const double ox = s.grid.x.origin, oy = s.grid.y.origin;
-  const double inv_hx = 1.0 / s.grid.x.h, inv_hy = 1.0 / s.grid.y.h;
   // Bucket (strip, row): strip-major, so every strip is one contiguous particle range.
   auto bucket_of = [&](std::size_t p) {
-    const int col = std::clamp(int(std::floor((P.x[p] - ox) * inv_hx)), 0, cx - 1);
-    const int row = std::clamp(int(std::floor((P.y[p] - oy) * inv_hy)), 0, cy - 1);
+    const int col = std::clamp(s.grid.x.cell_of(P.x[p]), 0, cx - 1);
+    const int row = std::clamp(s.grid.y.cell_of(P.y[p]), 0, cy - 1);
     return std::size_t(col / width) * std::size_t(cy) + std::size_t(row);
   };
   const std::size_t buckets = std::size_t(plan.num_strips) * std::size_t(cy);
@@ -201,13 +208,14 @@ void tile_layout(const State& s, int strip, std::size_t begin, std::size_t end, 
   const Particles& P = s.particles;
   const int fields = s.fields.num_fields;
   const double oy = s.grid.y.origin, inv_hy = 1.0 / s.grid.y.h;
+  const bool graded = s.grid.y.graded();
   T.col0 = strip * s.plan.strip_cells - 2;
   T.cols = s.plan.strip_cells + 5;
   // Node rows per field: a particle in cell row r touches node rows r-1 .. r+2.
   T.row0.assign(std::size_t(fields), std::numeric_limits<int>::max());
   T.rows.assign(std::size_t(fields), std::numeric_limits<int>::min());  // last row, then count
   for (std::size_t p = begin; p < end; ++p) {
-    const int r = int((P.y[p] - oy) * inv_hy);  // xi > 0: truncation is floor
+    const int r = graded ? s.grid.y.cell_of(P.y[p]) : int((P.y[p] - oy) * inv_hy);  // > 0: trunc = floor
     const std::size_t f = P.field[p];
     T.row0[f] = std::min(T.row0[f], r - 1);
     T.rows[f] = std::max(T.rows[f], r + 2);
@@ -475,11 +483,12 @@ void grid_to_particles_impl(State& s, const double* gvx, const double* gvy) {
   constexpr bool do_stress = kMode != G2PMode::velocity_and_move;
   constexpr bool do_move = kMode != G2PMode::stress_only;
   // Particles must keep their whole 3-node stencil inside the grid.
-  const double xlo = s.grid.x.node(0) + 0.5 * s.grid.x.h;
-  const double xhi = s.grid.x.node(s.grid.x.cells) - 0.5 * s.grid.x.h;
-  const double ylo = s.grid.y.node(0) + 0.5 * s.grid.y.h;
-  const double yhi = s.grid.y.node(s.grid.y.cells) - 0.5 * s.grid.y.h;
-  const double ox = s.grid.x.origin, inv_hx = 1.0 / s.grid.x.h;
+  const Axis& ax = s.grid.x;
+  const Axis& ay = s.grid.y;
+  const double xlo = ax.node(0) + 0.5 * ax.width(0);
+  const double xhi = ax.node(ax.cells) - 0.5 * ax.width(ax.cells - 1);
+  const double ylo = ay.node(0) + 0.5 * ay.width(0);
+  const double yhi = ay.node(ay.cells) - 0.5 * ay.width(ay.cells - 1);
   const ScatterPlan& plan = s.plan;
   const int width = plan.strip_cells;
   std::size_t bad = kNone;
@@ -537,8 +546,10 @@ void grid_to_particles_impl(State& s, const double* gvx, const double* gvy) {
       if constexpr (do_move) {
         P.x[p] += dt * mvx;
         P.y[p] += dt * mvy;
-        const double col = std::floor((P.x[p] - ox) * inv_hx);
-        if (col < col_lo || col > col_hi) drifted = true;
+        if (std::isfinite(P.x[p])) {  // a non-finite particle is diagnosed below
+          const double col = double(ax.cell_of(P.x[p]));
+          if (col < col_lo || col > col_hi) drifted = true;
+        }
       }
       const bool finite = std::isfinite(P.vx[p] + P.vy[p] + P.sxx[p] + P.syy[p] + P.sxy[p]);
       const bool inside = P.x[p] > xlo && P.x[p] < xhi && P.y[p] > ylo && P.y[p] < yhi;

@@ -16,11 +16,15 @@ CaseSummary summarize(const Case& c) {
     s.speeds.push_back(wave_speeds(m, c.plane));
     max_cd = std::max(max_cd, s.speeds.back().dilatational);
   }
-  const double h = c.grid.cell_size;
+  // The grid is cheap to build (two axes); its smallest cell sets the CFL step.
+  const Grid grid = build_grid(c.grid);
+  const double h = std::min(grid.x.min_width(), grid.y.min_width());
+  s.min_cell_size = h;
   s.dt_cfl = c.time.cfl * h / max_cd;
   s.dt = s.dt_cfl;
   // SPEC E6: two face nodes of mass m = rho h^2/2 (interface row, per field) joined by a
   // spring k = K h, K the law's initial stiffness or the penalty if larger: dt < 2/sqrt(2k/m).
+  // h is the finest cell size: the interface lies in the finest level (smaller h, smaller dt).
   for (const InterfaceSpec& is : c.interfaces) {
     const double rho = std::min(c.materials[c.bodies[is.upper_field].material].density,
                                 c.materials[c.bodies[is.lower_field].material].density);
@@ -31,17 +35,56 @@ CaseSummary summarize(const Case& c) {
   }
   if (s.dt_cohesive > 0) s.dt = std::min(s.dt, c.time.cohesive_safety * s.dt_cohesive);
   s.steps = long(std::ceil(c.time.end / s.dt - 1e-9));
-  const long cx = std::lround((c.grid.max[0] - c.grid.min[0]) / h);
-  const long cy = std::lround((c.grid.max[1] - c.grid.min[1]) / h);
-  s.cells = cx * cy;
-  const long ghost = Grid{}.ghost;
-  s.nodes = (cx + 2 * ghost + 1) * (cy + 2 * ghost + 1);
   const long ppc = c.grid.particles_per_cell;
-  for (const BodySpec& b : c.bodies) {
-    const long n = std::lround((b.max[0] - b.min[0]) / h) * std::lround((b.max[1] - b.min[1]) / h) *
-                   ppc * ppc;
-    s.particles_per_body.push_back(n);
-    s.particles += n;
+  const int levels = c.grid.refined()
+                         ? int(std::lround(std::log2(c.grid.coarse_cell_size / c.grid.cell_size))) + 1
+                         : 1;
+  s.cells_per_level.assign(std::size_t(levels), 0);
+  s.particles_per_level.assign(std::size_t(levels), 0);
+  for (int L = 0; L < levels; ++L)
+    s.level_sizes.push_back(c.grid.refined() ? c.grid.level_size(L) : c.grid.cell_size);
+  auto level_of = [&](double hx, double hy) {
+    if (!c.grid.refined()) return 0;
+    const int L = int(std::lround(std::log2(c.grid.coarse_cell_size / std::min(hx, hy))));
+    return std::clamp(L, 0, levels - 1);
+  };
+  s.nodes = long(grid.num_nodes());
+  if (!c.grid.refined()) {
+    const long cx = std::lround((c.grid.max[0] - c.grid.min[0]) / h);
+    const long cy = std::lround((c.grid.max[1] - c.grid.min[1]) / h);
+    s.cells = cx * cy;
+    s.cells_per_level[0] = s.cells;
+    for (const BodySpec& b : c.bodies) {
+      const long n = std::lround((b.max[0] - b.min[0]) / h) * std::lround((b.max[1] - b.min[1]) / h) *
+                     ppc * ppc;
+      s.particles_per_body.push_back(n);
+      s.particles += n;
+    }
+    s.particles_per_level[0] = s.particles;
+  } else {
+    // Physical cells, and particles of each body (ppc x ppc per cell it covers).
+    const double tol = 1e-9 * grid.x.h;
+    s.cells = 0;
+    for (int j = grid.ghost; j < grid.y.cells - grid.ghost; ++j)
+      for (int i = grid.ghost; i < grid.x.cells - grid.ghost; ++i) {
+        ++s.cells;
+        ++s.cells_per_level[std::size_t(level_of(grid.x.width(i), grid.y.width(j)))];
+      }
+    for (const BodySpec& b : c.bodies) {
+      long n = 0;
+      for (int j = 0; j < grid.y.cells; ++j) {
+        const double yc = grid.y.node(j) + 0.5 * grid.y.width(j);
+        if (yc < b.min[1] - tol || yc > b.max[1] + tol) continue;
+        for (int i = 0; i < grid.x.cells; ++i) {
+          const double xc = grid.x.node(i) + 0.5 * grid.x.width(i);
+          if (xc < b.min[0] - tol || xc > b.max[0] + tol) continue;
+          n += ppc * ppc;
+          s.particles_per_level[std::size_t(level_of(grid.x.width(i), grid.y.width(j)))] += ppc * ppc;
+        }
+      }
+      s.particles_per_body.push_back(n);
+      s.particles += n;
+    }
   }
   s.fields = int(c.bodies.size());
   // 11 nodal arrays per field (grid/grid.hpp) + particle arrays + sort scratch (order, one

@@ -22,6 +22,11 @@ struct CaseSummary {
   std::vector<long> particles_per_body;
   long particles = 0;
   int fields = 0;
+  // Refined grids (SPEC §5): cells and particles per level. A cell's level is that of its
+  // smaller side, log2(coarse_cell_size / min(hx, hy)); uniform grids have one level.
+  std::vector<long> cells_per_level, particles_per_level;
+  std::vector<double> level_sizes;  // m
+  double min_cell_size = 0.0;       // m
   std::size_t memory_bytes = 0;    // particles + per-field grid arrays + scatter plan
 };
 
