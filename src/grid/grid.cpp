@@ -121,6 +121,9 @@ Grid make_graded_grid(const double min[2], const double max[2], double coarse, d
       unit += w[c];
     }
     a.coord.back() = a.origin + double(unit) * finest;
+    a.uniform_from.assign(w.size(), 0);
+    for (std::size_t c = 1; c + 2 < w.size(); ++c)
+      a.uniform_from[c] = w[c - 1] == w[c] && w[c + 1] == w[c] && w[c + 2] == w[c];
     g.domain_min[d] = min[d];
     g.domain_max[d] = max[d];
   }

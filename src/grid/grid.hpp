@@ -24,6 +24,9 @@ struct Axis {
   int cells = 0;        // number of cells, ghosts included
   std::vector<double> coord;      // graded only: node coordinates, m (cells + 1)
   std::vector<int> cell_of_unit;  // graded only: cell holding [origin + k h, origin + (k+1) h)
+  // graded only: 1 where cells c-1 .. c+2 are equal, so a stencil starting at node c sees a
+  // uniform axis and the uniform (SIMD) form of the weights applies
+  std::vector<unsigned char> uniform_from;
 
   bool graded() const { return !coord.empty(); }
   int nodes() const { return cells + 1; }
