@@ -35,6 +35,12 @@ struct StencilBatch {
 inline void axis_stencils(const Axis& ax, const double* __restrict xp, const double* __restrict lp,
                           int n, double (&w)[3][kBatch], double (&dw)[3][kBatch],
                           int* __restrict first) {
+  double* __restrict w0 = w[0];
+  double* __restrict w1 = w[1];
+  double* __restrict w2 = w[2];
+  double* __restrict d0 = dw[0];
+  double* __restrict d1 = dw[1];
+  double* __restrict d2 = dw[2];
   if (ax.graded()) {
     // Graded axis (SPEC E3): the first node and its local cell size per particle (a table
     // lookup), then the uniform form, vectorized, for every particle; the few whose stencil
@@ -48,12 +54,6 @@ inline void axis_stencils(const Axis& ax, const double* __restrict xp, const dou
       inv_hl[k] = 1.0 / ax.width(c);
       straddles |= !ax.uniform_from[std::size_t(c)];
     }
-    double* __restrict w0 = w[0];
-    double* __restrict w1 = w[1];
-    double* __restrict w2 = w[2];
-    double* __restrict d0 = dw[0];
-    double* __restrict d1 = dw[1];
-    double* __restrict d2 = dw[2];
 #pragma omp simd
     for (int k = 0; k < n; ++k) {
       const double u = (xp[k] - x0[k]) * inv_hl[k], l = lp[k] * inv_hl[k], inv_2l = 0.5 / l;
@@ -71,12 +71,6 @@ inline void axis_stencils(const Axis& ax, const double* __restrict xp, const dou
     return;
   }
   const double inv_h = 1.0 / ax.h, origin = ax.origin;
-  double* __restrict w0 = w[0];
-  double* __restrict w1 = w[1];
-  double* __restrict w2 = w[2];
-  double* __restrict d0 = dw[0];
-  double* __restrict d1 = dw[1];
-  double* __restrict d2 = dw[2];
   double fl[kBatch];
 #pragma omp simd
   for (int k = 0; k < n; ++k) {
