@@ -4,6 +4,7 @@
 //   trapezoid: V = V1 t/tr (0 <= t < tr); V1 (tr <= t <= tr+tp);
 //              V1 [1 - (t - tr - tp)/ts] (tr+tp < t < tr+tp+ts); 0 afterwards.
 // (The paper prints the ramp-down with t - tp; SPEC E2 corrects it so V is continuous.)
+// displacement(t) is the exact integral of V from 0 to t (m): how far a driven edge has moved.
 #pragma once
 
 namespace rupture {
@@ -24,6 +25,19 @@ struct TimeFunction {
     if (t <= t_end_plateau) return value;
     if (t < t_end_plateau + fall_time) return value * (1.0 - (t - t_end_plateau) / fall_time);
     return 0.0;
+  }
+
+  // Integral of V over [0, t], m (0 for t <= 0).
+  double displacement(double t) const {
+    if (t <= 0.0) return 0.0;
+    if (kind == Kind::constant) return value * t;
+    const double tr = rise_time, tp = plateau_time, ts = fall_time;
+    if (t < tr) return 0.5 * value * t * t / tr;
+    double u = 0.5 * value * tr;
+    if (t <= tr + tp) return u + value * (t - tr);
+    u += value * tp;
+    const double s = t < tr + tp + ts ? t - tr - tp : ts;  // time spent on the ramp down
+    return u + value * (s - 0.5 * s * s / ts);
   }
 };
 

@@ -2,8 +2,16 @@
 // Prescribed-velocity boundary conditions on grid nodes (SPEC E2). A condition names an edge
 // of the physical domain, a coordinate range along it, one velocity component and the velocity
 // fields (bodies) it acts on. Everything else is traction-free (nothing to do in MPM).
-// resolve_nodes() turns conditions into a flat list of (field, node, component) entries once,
-// so the time step applies them with a plain loop.
+//
+// The grid is fixed but the material is not: an edge driven along its normal moves by
+// u(t) = integral of V, and after u exceeds about one cell the nodes of the initial edge line
+// carry no mass and would no longer load anything (the impact pulse would be cut short at fine
+// grids). A condition normal to its edge therefore follows the edge (follow_edge, default on):
+// it acts on the grid line nearest to the edge's current position and on every line outside it
+// (the region a rigid piston pushing the edge occupies; nodes there with mass only see the tails
+// of the edge particles). A tangential condition stays on the initial edge line.
+// resolve_nodes() turns conditions into a flat list of (field, node, component) entries, so the
+// time step applies them with a plain loop; it is rebuilt only when a driven line changes.
 #pragma once
 #include <cstddef>
 #include <string>
@@ -23,6 +31,12 @@ struct VelocityBC {
   int component = 0;            // 0: v_x, 1: v_y
   std::vector<int> fields;      // fields it acts on; empty = every field
   TimeFunction velocity;        // m/s
+  bool follow_edge = true;      // a normal condition acts where the edge is now (see above)
+
+  bool normal() const {
+    return component == ((edge == Edge::left || edge == Edge::right) ? 0 : 1);
+  }
+  bool moves() const { return follow_edge && normal(); }
 };
 
 struct NodeBC {
@@ -32,7 +46,22 @@ struct NodeBC {
   int condition;  // index into the VelocityBC list (for the time function)
 };
 
-// Nodes on the edge whose coordinate along it lies in [from, to] (with a 1e-9 h tolerance).
+// Index of the grid line (a node column for left/right edges, a node row for bottom/top) nearest
+// to the edge of condition bc at time t: the initial edge line, moved by the velocity's
+// displacement when bc.moves(). Clamped to the grid.
+int edge_line(const VelocityBC& bc, const Grid& grid, double t);
+
+// Sets lines[c] = edge_line(bcs[c], grid, t) for every condition (resizing lines if needed);
+// returns true if any entry changed.
+bool update_edge_lines(const std::vector<VelocityBC>& bcs, const Grid& grid, double t,
+                       std::vector<int>& lines);
+
+// Nodes of condition c whose coordinate along the edge lies in [from, to] (with a 1e-9 h
+// tolerance), on the line lines[c] and, for a condition that moves, every line outside it.
+std::vector<NodeBC> resolve_nodes(const std::vector<VelocityBC>& bcs, const Grid& grid,
+                                  int num_fields, const std::vector<int>& lines);
+
+// The nodes at time 0 (the initial edge lines).
 std::vector<NodeBC> resolve_nodes(const std::vector<VelocityBC>& bcs, const Grid& grid,
                                   int num_fields);
 

@@ -75,6 +75,13 @@ class Section {
     return long(*n->value<std::int64_t>());
   }
 
+  bool boolean(const std::string& k, bool fallback) {
+    const toml::node* n = node(k);
+    if (!n) return fallback;
+    if (!n->is_boolean()) fail(key(k), show(*n), "must be true or false");
+    return *n->value<bool>();
+  }
+
   std::string string(const std::string& k, const std::string& fallback,
                      const std::vector<std::string>& allowed = {}) {
     const toml::node* n = node(k);
@@ -375,7 +382,7 @@ Case build_case(const toml::table& root) {
     Section bcs = top.table("boundary", false);
     for (const auto& [k, v] : bcs.raw()) {
       const std::string name(k.str());
-      Section b = bcs.table(name, true, {"edge", "from", "to", "component", "bodies", "function", "velocity", "rise_time", "plateau_time", "fall_time"});
+      Section b = bcs.table(name, true, {"edge", "from", "to", "component", "bodies", "function", "velocity", "rise_time", "plateau_time", "fall_time", "follow_edge"});
       VelocityBC bc;
       bc.name = name;
       const std::string edge = b.string("edge", "", {"left", "right", "bottom", "top"});
@@ -414,6 +421,10 @@ Case build_case(const toml::table& root) {
         for (const char* key : {"rise_time", "plateau_time", "fall_time"})
           if (b.has(key)) fail(b.key(key), show(*b.node(key)), "only allowed with function = \"trapezoid\"");
       }
+      bc.follow_edge = b.boolean("follow_edge", true);
+      if (b.has("follow_edge") && !bc.normal())
+        fail(b.key("follow_edge"), show(*b.node("follow_edge")),
+             fmt::format("only applies to the velocity component normal to the {} edge ({})", edge, vertical ? "x" : "y"));
       c.boundary.push_back(bc);
     }
   }

@@ -64,7 +64,8 @@ State make_state(const Case& c) {
                      std::uint8_t(b.material), b.velocity);
   }
   s.boundary = c.boundary;
-  s.bc_nodes = resolve_nodes(s.boundary, s.grid, num_fields);
+  update_edge_lines(s.boundary, s.grid, 0.0, s.bc_lines);
+  s.bc_nodes = resolve_nodes(s.boundary, s.grid, num_fields, s.bc_lines);
 
   const CaseSummary summary = summarize(c);
   s.limits.cfl_dt = summary.dt_cfl;

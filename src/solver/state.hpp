@@ -50,6 +50,7 @@ struct State {
   std::vector<ElasticStiffness> stiffness;  // per material
   std::vector<VelocityBC> boundary;
   std::vector<NodeBC> bc_nodes;
+  std::vector<int> bc_lines;  // per condition: the grid line its edge is on now (bc/velocity_bc)
   ScatterPlan plan;
   std::vector<CohesiveInterface> interfaces;
   std::vector<std::vector<std::size_t>> bonded;  // per interface: tied grid nodes (row y0)

@@ -622,6 +622,9 @@ void cohesive_forces_and_ties(State& s) {
 
 void step(State& s) {
   build_scatter_plan(s);
+  // A driven edge that has moved onto another grid line takes its condition with it (E2).
+  if (update_edge_lines(s.boundary, s.grid, s.time, s.bc_lines))
+    s.bc_nodes = resolve_nodes(s.boundary, s.grid, s.fields.num_fields, s.bc_lines);
   GridFields& G = s.fields;
   switch (s.scheme) {
     case Scheme::MUSL:
