@@ -99,3 +99,27 @@ TEST(CrackTip, speeds_of_a_tip_moving_at_constant_speed_are_exact) {
   EXPECT_NEAR(sum.initiation_time, 0.0, 1e-15);
   EXPECT_GT(sum.intersonic_time, 0.0);
 }
+
+// A tip that runs into the end of the cohesive line stops there (the halves are bonded beyond):
+// the tracker records when it got there, and a sustained speed over a window after that time
+// measures the arrest, which is why time.stop_at_interface_end exists.
+TEST(CrackTip, reaching_the_end_of_the_cohesive_line_is_recorded) {
+  CohesiveInterface c = line();  // [0, 10 mm]
+  CrackTracker tracker(0.25e-3);
+  const double v = 2000.0, dt = 2e-8;
+  for (int n = 0; n < 400; ++n) {  // 8 us: the tip gets to 10 mm at 5 us
+    const double t = n * dt;
+    const long tip = std::lround(v * t / 1e-4);
+    for (long k = 0; k <= tip && k < long(c.num_nodes()); ++k)
+      if (c.node_crack_time[std::size_t(k)] < 0.0) c.node_crack_time[std::size_t(k)] = t;
+    tracker.sample(c, t);
+  }
+  // Tip >= 9.75 mm: node 98 cracks once v t >= 9.75 mm, at t = 4.875 us: the sample at 4.88 us.
+  EXPECT_NEAR(tracker.end_reached_time(), 4.88e-6, 1e-12);
+  const CrackSummary arrested = tracker.summarize(c, 1247.9, 2534.5, 2e-6);
+  EXPECT_NEAR(arrested.end_reached_time, 4.88e-6, 1e-12);
+  EXPECT_LT(arrested.sustained_speed, 0.01 * v) << "a window after the arrival sees no motion";
+  CrackTracker never;
+  never.sample(c, 0.0);
+  EXPECT_LT(CrackTracker(0.0).end_reached_time(), 0.0);
+}

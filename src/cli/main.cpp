@@ -147,6 +147,7 @@ int main(int argc, char** argv) {
     print_check(case_path, c);
     const RunResult r = run_case(c, RunOptions{out_dir, !quiet});
     fmt::print("status={}\n", r.ok ? "completed" : "failed");
+    fmt::print("stop_reason={}\n", r.stop_reason);
     fmt::print("steps={}\n", r.steps);
     fmt::print("simulated_time={:.6e}\n", r.simulated_time);
     fmt::print("wall_seconds={:.3f}\n", r.wall_seconds);
@@ -163,6 +164,7 @@ int main(int argc, char** argv) {
       fmt::print("crack.final_tip={:.6e}\n", k.final_tip);
       fmt::print("crack.final_cohesive_zone_length={:.6e}\n", k.final_cohesive_zone);
       fmt::print("crack.final_traction_zone_length={:.6e}\n", k.final_traction_zone);
+      fmt::print("crack.end_reached_time={:.6e}\n", k.end_reached_time);
       fmt::print("crack.regime={}\n", k.regime);
     }
     fmt::print("output={}\n", out_dir);

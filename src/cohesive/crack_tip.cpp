@@ -56,6 +56,7 @@ void CrackTracker::sample(const CohesiveInterface& c, double t) {
     loaded_end = c.x0[k];
   }
   s.traction_zone = loaded_end - s.tip;
+  if (end_reached_time_ < 0.0 && any && s.tip >= c.spec.end - end_tolerance_) end_reached_time_ = t;
   samples_.push_back(std::move(s));
 }
 
@@ -78,6 +79,7 @@ CrackSummary CrackTracker::summarize(const CohesiveInterface& c, double c_s, dou
   r.final_tip = samples_.back().tip;
   r.final_cohesive_zone = samples_.back().cohesive_zone;
   r.final_traction_zone = samples_.back().traction_zone;
+  r.end_reached_time = end_reached_time_;
   const std::vector<double> v = speeds();
   for (std::size_t k = 0; k < v.size(); ++k) {
     if (std::isnan(v[k])) continue;

@@ -6,7 +6,9 @@
 //    the main tip shows up as a second stretch;
 //  - speed (E11): slope of a least-squares line through 31 consecutive tip positions (centred);
 //  - summary: initiation time, sustained speed (least-squares slope over the last 4 us),
-//    peak speed, first time above c_S, first daughter crack, regime.
+//    peak speed, first time above c_S, first daughter crack, regime, and the time the tip
+//    reached the end of the cohesive line (beyond it the halves are bonded and the crack stops:
+//    a sustained speed measured across that time measures the arrest).
 // Units: s, m, m/s.
 #pragma once
 #include <string>
@@ -35,6 +37,8 @@ struct CrackSummary {
   double final_tip = 0.0;            // m
   double final_cohesive_zone = 0.0;  // m
   double final_traction_zone = 0.0;  // m
+  double end_reached_time = -1.0;    // first sample with the tip within end_tolerance of the
+                                     // cohesive line's end, s (-1: never)
   std::string regime = "none";       // none | sub-Rayleigh | intersonic | supersonic
 };
 
@@ -48,8 +52,14 @@ class CrackTracker {
   // zone a traction profile shows, as in the paper's Fig. 12.
   static constexpr double kTractionZoneFraction = 0.1;
 
+  // end_tolerance: how close to the end of the cohesive line the tip counts as having reached
+  // it, m. The last nodes before a bonded grid node cannot open fully, so the driver passes two
+  // grid cells there.
+  explicit CrackTracker(double end_tolerance = 0.0) : end_tolerance_(end_tolerance) {}
+
   void sample(const CohesiveInterface& c, double t);
   const std::vector<CrackSample>& samples() const { return samples_; }
+  double end_reached_time() const { return end_reached_time_; }
   // E11 speed at each sample (NaN where the centred window does not fit).
   std::vector<double> speeds() const;
   CrackSummary summarize(const CohesiveInterface& c, double c_s, double c_d,
@@ -59,6 +69,8 @@ class CrackTracker {
 
  private:
   std::vector<CrackSample> samples_;
+  double end_tolerance_ = 0.0;
+  double end_reached_time_ = -1.0;
 };
 
 // Least-squares slope of y(t) (E11).

@@ -357,7 +357,7 @@ Case build_case(const toml::table& root) {
   }
 
   {
-    Section t = top.table("time", true, {"end", "cfl", "cohesive_safety"});
+    Section t = top.table("time", true, {"end", "cfl", "cohesive_safety", "stop_at_interface_end"});
     c.time.end = t.number("end");
     if (c.time.end <= 0) fail(t.key("end"), c.time.end, "must be > 0 (s)");
     c.time.cfl = t.number("cfl", 0.4);
@@ -365,6 +365,7 @@ Case build_case(const toml::table& root) {
     c.time.cohesive_safety = t.number("cohesive_safety", 0.2);
     if (!(c.time.cohesive_safety > 0 && c.time.cohesive_safety <= 1))
       fail(t.key("cohesive_safety"), c.time.cohesive_safety, "must lie in (0, 1]");
+    c.time.stop_at_interface_end = t.boolean("stop_at_interface_end", false);
   }
 
   {

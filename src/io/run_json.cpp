@@ -17,6 +17,7 @@ std::string run_json(const Case& c, const CaseSummary& s, const RunRecord& r) {
   t.insert("title", c.title);
   t.insert("status", r.status);
   t.insert("message", r.message);
+  t.insert("stop_reason", r.stop_reason);
   t.insert("dt", s.dt);
   t.insert("dt_cfl_limit", s.dt_cfl);
   t.insert("steps", r.steps);
@@ -63,6 +64,7 @@ std::string run_json(const Case& c, const CaseSummary& s, const RunRecord& r) {
                      {"final_tip", cs.final_tip},
                      {"final_cohesive_zone_length", cs.final_cohesive_zone},
                      {"final_traction_zone_length", cs.final_traction_zone},
+                     {"end_reached_time", cs.end_reached_time},
                      {"regime", cs.regime}};
       if (k == 0) {
         t.insert("crack", ct);

@@ -18,6 +18,8 @@ namespace rupture {
 struct RunRecord {
   std::string status = "running";
   std::string message;
+  // "end_time", "crack_reached_interface_end" (time.stop_at_interface_end) or "failed"
+  std::string stop_reason;
   long steps = 0;                 // steps taken
   double simulated_time = 0.0;    // s
   double wall_seconds = 0.0;

@@ -84,7 +84,12 @@ RunResult run_case(const Case& c, const RunOptions& options) {
   if (c.output.snapshot_interval > 0)
     snapshots = std::make_unique<SnapshotWriter>(
         dir, s.particles, c.output.has_snapshot_region ? c.output.snapshot_region : nullptr);
-  std::vector<CrackTracker> cracks(s.interfaces.size());
+  std::vector<CrackTracker> cracks;
+  for (const CohesiveInterface& ci : s.interfaces) {
+    const Axis& ax = s.grid.x;
+    const int cell = std::clamp(ax.cell_of(ci.spec.end), 0, ax.cells - 1);
+    cracks.emplace_back(2.0 * ax.width(cell));  // two cells at the end of the cohesive line
+  }
   // Crack speeds are reported against the speeds of the lower body's material.
   std::vector<WaveSpeeds> crack_speeds;
   for (const InterfaceSpec& is : c.interfaces)
@@ -125,6 +130,20 @@ RunResult run_case(const Case& c, const RunOptions& options) {
         for (std::size_t k = 0; k < cracks.size(); ++k) cracks[k].sample(s.interfaces[k], s.time);
         crack.advance(s.time, eps);
       }
+      bool crack_at_end = false;
+      if (c.time.stop_at_interface_end)
+        for (const CrackTracker& ct : cracks) crack_at_end = crack_at_end || ct.end_reached_time() >= 0.0;
+      if (crack_at_end && !last) {
+        // Close the record at this time: final samples of every output.
+        for (std::size_t k = 0; k < cracks.size(); ++k)
+          if (cracks[k].samples().back().time < s.time) cracks[k].sample(s.interfaces[k], s.time);
+        history.samples.push_back(sample(s));
+        check_energy(s, history.samples.back());
+        if (prof.interval > 0) write_interfaces();
+        if (snapshots) snapshots->write(s.particles, s.time, s.step);
+        record.stop_reason = result.stop_reason = "crack_reached_interface_end";
+        break;
+      }
       if (hist.due(s.time, eps) || last) {
         history.samples.push_back(sample(s));
         check_energy(s, history.samples.back());
@@ -145,12 +164,14 @@ RunResult run_case(const Case& c, const RunOptions& options) {
     progress.finish(s.step, s.time);
     result.ok = true;
     record.status = "completed";
+    if (record.stop_reason.empty()) record.stop_reason = result.stop_reason = "end_time";
   } catch (const SimulationError& e) {
     progress.finish(s.step, s.time);
     result.ok = false;
     result.message = e.what();
     record.status = "failed";
     record.message = e.what();
+    record.stop_reason = result.stop_reason = "failed";
   }
   const double wall = progress.elapsed();
   history.write(dir + "/history.csv");

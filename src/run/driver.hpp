@@ -24,6 +24,7 @@ struct RunOptions {
 struct RunResult {
   bool ok = false;
   std::string message;  // diagnosis when !ok
+  std::string stop_reason;  // see RunRecord::stop_reason
   long steps = 0;
   double simulated_time = 0.0;         // s
   double wall_seconds = 0.0;           // s
