@@ -4,9 +4,13 @@
 # each run into runs/study/<name>, then a table of the crack figures from run.json.
 # Grids are uniform (grid.coarse_cell_size = 0) unless stated.
 #   scripts/study.sh grid  [H...]      V = 30 m/s to 19.2 us at each H (default 0.5, 0.25, 0.125 mm)
-#   scripts/study.sh sweep [H]         V = 5, 9.2, 9.5, 10 m/s to 26 us and 20, 30 m/s to 19.2 us
-#                                      (the weak plane ends at 50 mm: fast cracks reach it by
-#                                      26 us), at H (default 0.125e-3)
+#   scripts/study.sh sweep [H [GRID [V...]]]
+#                                      V = 5, 9.2, 9.5, 10, 20, 30 m/s (or the V given) to 30 us,
+#                                      each stopping once its crack reaches the end of the weak
+#                                      plane at 50 mm (time.stop_at_interface_end), so the
+#                                      sustained speed is that of the running crack; at H
+#                                      (default 0.125e-3) on GRID = uniform (default) or refined
+#                                      (the example's graded grid with finest cell H)
 #   scripts/study.sh refined H [full]  V = 30 m/s on the example's refined grid, finest H,
 #                                      cropped (or the full plate with `full`)
 #   scripts/study.sh table DIR...      print the table for finished runs
@@ -23,7 +27,7 @@ table() {
   /usr/bin/python3 - "$@" <<'PY'
 import json, sys, csv
 import numpy as np
-print(f"{'run':<22}{'h (mm)':>8}{'V (m/s)':>9}{'steps':>7}{'particles':>11}{'wall (s)':>10}"
+print(f"{'run':<30}{'h (mm)':>8}{'V (m/s)':>9}{'t end':>7}{'steps':>7}{'particles':>11}{'wall (s)':>10}"
       f"{'init (us)':>10}{'jump (us)':>10}{'sust (m/s)':>11}{'/c_S':>6}{'tip@17.6':>10}"
       f"{'zone (mm)':>10}{'loaded':>8}{'E err':>10}  regime")
 for d in sys.argv[1:]:
@@ -42,7 +46,7 @@ for d in sys.argv[1:]:
     if "traction_zone_length" in rows[0] and t[-1] >= 17.6e-6:
         loaded = np.interp(17.6e-6, t, np.array([float(x["traction_zone_length"]) for x in rows]))
     h = r["input"]["grid"]["cell_size"]; v = r["input"]["boundary"]["impact"]["velocity"]
-    print(f"{d.rstrip('/').split('/')[-1]:<22}{1e3*h:>8.4g}{v:>9.3g}{r['steps']:>7}{r['particles']:>11}"
+    print(f"{d.rstrip('/').split('/')[-1]:<30}{1e3*h:>8.4g}{v:>9.3g}{1e6*r['simulated_time']:>7.2f}{r['steps']:>7}{r['particles']:>11}"
           f"{r['wall_seconds']:>10.1f}{1e6*c['initiation_time']:>10.3f}{1e6*c['intersonic_time']:>10.3f}"
           f"{c['sustained_speed']:>11.0f}{c['sustained_speed']/cs:>6.2f}{1e3*tip:>10.2f}{1e3*z176:>10.2f}{1e3*loaded:>8.2f}"
           f"{r['energy_balance_error']:>10.2e}  {c['regime']}")
@@ -59,14 +63,18 @@ case "${1:-}" in
     done
     table "${dirs[@]}" ;;
   sweep)
-    h=${2:-0.125e-3}; dirs=()
-    for v in 5 9.2 9.5 10 20 30; do
-      end=26e-6; [ "$v" = 20 ] || [ "$v" = 30 ] && end=19.2e-6
-      d=runs/study/sweep_v${v}_h$h; dirs+=("$d")
+    h=${2:-0.125e-3}; kind=${3:-uniform}; shift $(( $# < 3 ? $# : 3 )); vs=("$@")
+    [ ${#vs[@]} -gt 0 ] || vs=(5 9.2 9.5 10 20 30)
+    case $kind in uniform) grid=("${uniform[@]}"); tag=;; refined) grid=(); tag=_refined;;
+      *) echo "GRID must be uniform or refined, not $kind" >&2; exit 1;; esac
+    dirs=()
+    for v in "${vs[@]}"; do
+      d=runs/study/sweep_v${v}_h$h$tag; dirs+=("$d")
       [ -f "$d/run.json" ] && grep -q '"status" : "completed"' "$d/run.json" && continue
-      $bin run examples/rosakis1999.toml -o "$d" --quiet "${crop[@]}" "${uniform[@]}" \
-        --set grid.cell_size=$h --set boundary.impact.velocity=$v --set time.end=$end \
-        | grep -E "^(wall_seconds|crack.sustained_speed|status)="
+      $bin run examples/rosakis1999.toml -o "$d" --quiet "${crop[@]}" ${grid[@]+"${grid[@]}"} \
+        --set grid.cell_size=$h --set boundary.impact.velocity=$v --set time.end=30e-6 \
+        --set time.stop_at_interface_end=true \
+        | grep -E "^(wall_seconds|crack.sustained_speed|status|stop_reason)="
     done
     table "${dirs[@]}" ;;
   refined)

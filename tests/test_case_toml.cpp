@@ -93,6 +93,10 @@ TEST(CaseToml, every_bad_input_is_reported_with_key_value_and_rule) {
       {"grid max below min", "max = [0.01, 0.002]\ncell_size", "max = [-0.01, 0.002]\ncell_size", "", {"grid.max", "must exceed"}},
       {"bad --set form", "", "", "grid.cell_size", {"--set", "dotted.key=value"}},
       {"--set into a value", "", "", "grid.cell_size.x=1", {"grid.cell_size", "non-table"}},
+      {"negative margin", "", "", "grid.margin=-1e-3", {"grid.margin", "-0.001", "[0, half"}},
+      {"follow_edge on a tangential bc", "component = \"x\"", "component = \"y\"\nfollow_edge = true", "", {"boundary.push.follow_edge", "normal to the left edge"}},
+      {"follow_edge not a bool", "component = \"x\"", "component = \"x\"\nfollow_edge = 1", "", {"boundary.push.follow_edge", "true or false"}},
+      {"stop flag not a bool", "cfl = 0.4", "cfl = 0.4\nstop_at_interface_end = \"yes\"", "", {"time.stop_at_interface_end", "true or false"}},
       {"negative snapshot interval", "history_interval = 0.1e-6", "history_interval = 0.1e-6\nsnapshot_interval = -1.0", "", {"output.snapshot_interval", ">= 0"}},
   };
   EXPECT_GE(cases.size(), 15u);
@@ -106,6 +110,19 @@ TEST(CaseToml, every_bad_input_is_reported_with_key_value_and_rule) {
     for (const std::string& s : b.expect)
       EXPECT_NE(msg.find(s), std::string::npos) << b.name << ": '" << s << "' not in: " << msg;
   }
+}
+
+// Free surfaces need room to move outward: the ghost margin defaults to the largest prescribed
+// displacement over the run (here 1 m/s for 2 us = 2 um: 1 extra cell of 0.5 mm), or is given.
+TEST(CaseToml, ghost_margin_covers_the_prescribed_displacement) {
+  const Case c = parse_case(test::strip_case_toml(), {"boundary.push.velocity=-300"});
+  EXPECT_NEAR(c.grid.margin, 300.0 * 2e-6, 1e-12);  // 0.6 mm
+  const Grid g = build_grid(c.grid);
+  EXPECT_EQ(g.ghost, 2 + 2);                         // ceil(0.6 / 0.5) more cells
+  EXPECT_NEAR(g.x.node(0), -4 * 0.5e-3, 1e-15);
+  EXPECT_EQ(g.physical_cells_x(), 20);
+  const Case given = parse_case(test::strip_case_toml(), {"grid.margin=0"});
+  EXPECT_EQ(build_grid(given.grid).ghost, 2);
 }
 
 TEST(CaseToml, syntax_error_gives_line_and_column) {

@@ -62,6 +62,8 @@ void print_check(const std::string& path, const Case& c) {
   }
   fmt::print("cells={}\n", s.cells);
   fmt::print("nodes={}\n", s.nodes);
+  fmt::print("ghost_cells={} (margin {:.3g} mm for free surfaces to move into)\n", s.ghost_cells,
+             1e3 * c.grid.margin);
   fmt::print("particles={}\n", s.particles);
   fmt::print("steps={}\n", s.steps);
   fmt::print("memory_estimate_mib={:.1f}\n", double(s.memory_bytes) / (1024.0 * 1024.0));

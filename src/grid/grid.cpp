@@ -10,8 +10,13 @@
 
 namespace rupture {
 
-Grid make_uniform_grid(const double min[2], const double max[2], double h) {
+int ghost_cells(double margin, double w) {
+  return 2 + (margin > 0.0 ? int(std::ceil(margin / w - 1e-9)) : 0);
+}
+
+Grid make_uniform_grid(const double min[2], const double max[2], double h, double margin) {
   Grid g;
+  g.ghost = ghost_cells(margin, h);
   const char* names[2] = {"x", "y"};
   Axis* axes[2] = {&g.x, &g.y};
   for (int d = 0; d < 2; ++d) {
@@ -85,11 +90,12 @@ std::vector<long> graded_widths(long units, long coarse, const std::vector<std::
 }  // namespace
 
 Grid make_graded_grid(const double min[2], const double max[2], double coarse, double finest,
-                      const std::vector<RefineBox>& boxes) {
+                      const std::vector<RefineBox>& boxes, double margin) {
   Grid g;
   const char* names[2] = {"x", "y"};
   Axis* axes[2] = {&g.x, &g.y};
   const long coarse_units = std::lround(coarse / finest);
+  std::vector<long> widths[2];
   for (int d = 0; d < 2; ++d) {
     const double n = (max[d] - min[d]) / finest;
     const long units = std::lround(n);
@@ -103,16 +109,20 @@ Grid make_graded_grid(const double min[2], const double max[2], double coarse, d
       spans.push_back({long(std::floor((b.min[d] - min[d]) / finest + 1e-9)),
                        long(std::ceil((b.max[d] - min[d]) / finest - 1e-9)), size});
     }
-    std::vector<long> w = graded_widths(units, coarse_units, spans);
+    widths[d] = graded_widths(units, coarse_units, spans);
+    for (long e : {widths[d].front(), widths[d].back()})
+      g.ghost = std::max(g.ghost, ghost_cells(margin, double(e) * finest));
+  }
+  for (int d = 0; d < 2; ++d) {
+    std::vector<long>& w = widths[d];
     // Ghost cells as wide as the edge cells.
     const long lo = w.front(), hi = w.back();
-    w.insert(w.begin(), {lo, lo});
-    w.push_back(hi);
-    w.push_back(hi);
+    w.insert(w.begin(), std::size_t(g.ghost), lo);
+    w.insert(w.end(), std::size_t(g.ghost), hi);
     Axis& a = *axes[d];
     a.h = finest;
     a.cells = int(w.size());
-    a.origin = min[d] - double(2 * lo) * finest;
+    a.origin = min[d] - double(g.ghost * lo) * finest;
     a.coord.resize(w.size() + 1);
     long unit = 0;
     for (std::size_t c = 0; c < w.size(); ++c) {

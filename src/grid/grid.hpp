@@ -1,7 +1,8 @@
 // rupture/grid/grid.hpp
 // Background grid geometry and the per-velocity-field nodal arrays (SI: m, kg, kg m/s, N, m/s).
 // The grid is a tensor product of two Axis objects; nodes are numbered row by row
-// (n = j * nodes_x + i). Two ghost cells surround the physical domain so particles on a free
+// (n = j * nodes_x + i). Ghost cells (two, or more: see make_uniform_grid) surround the physical
+// domain so particles on a free
 // edge can bulge outward without leaving the grid. Nodal data are stored field-major: the
 // arrays of field f occupy [f * num_nodes, (f + 1) * num_nodes), contiguous per field.
 #pragma once
@@ -100,9 +101,13 @@ struct Grid {
   bool graded() const { return x.graded() || y.graded(); }
 };
 
-// Uniform grid over [min, max] with cell size h plus the ghost cells on each side.
+// Uniform grid over [min, max] with cell size h plus the ghost cells on each side: two, plus
+// enough to cover `margin` (m), the distance a free surface may move outward during the run.
 // Throws InputError if the extent is not a whole number of cells (within 1e-6 h).
-Grid make_uniform_grid(const double min[2], const double max[2], double h);
+Grid make_uniform_grid(const double min[2], const double max[2], double h, double margin = 0.0);
+
+// Ghost cells of width w that hold a margin: 2 + ceil(margin / w).
+int ghost_cells(double margin, double w);
 
 // A refinement box (SPEC §5): cells inside it along each axis are at most `size` wide.
 struct RefineBox {
@@ -113,10 +118,11 @@ struct RefineBox {
 // Graded tensor-product grid over [min, max]: along each axis, the cell size at a point is
 // the smallest size of the boxes whose extent along that axis covers it, `coarse` elsewhere;
 // sizes are powers of two times `finest`, aligned to their own size from min, and graded so
-// that neighbouring cells differ by at most a factor 2. Two ghost cells (the size of the edge
-// cell) on each side. Throws InputError if an extent is not a whole number of `finest`.
+// that neighbouring cells differ by at most a factor 2. Ghost cells the size of the edge cells
+// on each side, ghost_cells(margin, that size) of them (the largest count over the four edges,
+// so Grid::ghost is one number). Throws InputError if an extent is not a whole number of `finest`.
 Grid make_graded_grid(const double min[2], const double max[2], double coarse, double finest,
-                      const std::vector<RefineBox>& boxes);
+                      const std::vector<RefineBox>& boxes, double margin = 0.0);
 
 // Per-field nodal arrays, field-major. See solver/ for when each array is valid.
 struct GridFields {

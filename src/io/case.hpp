@@ -39,6 +39,12 @@ struct GridSpec {
   double coarse_cell_size = 0.0; // level-0 size when refined (0: uniform grid), m
   std::vector<RefineLevel> refine;
   int particles_per_cell = 2;    // per direction (2 -> 2x2, SPEC §2), on every level
+  // Width of the empty band of ghost cells around the domain that free surfaces may bulge
+  // into, beyond the two ghost cells every grid has, m. Unless given (grid.margin), the largest
+  // displacement over the run of any prescribed velocity or body velocity: a surface driven
+  // by those moves by about as much (the reference problem's crop bottom moved 0.2 mm while
+  // its driven edge moved 0.45 mm, more than two 0.125 mm ghost cells hold).
+  double margin = 0.0;
 
   bool refined() const { return coarse_cell_size > 0.0; }
   double level_size(int level) const {  // m

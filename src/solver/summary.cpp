@@ -49,6 +49,7 @@ CaseSummary summarize(const Case& c) {
     return std::clamp(L, 0, levels - 1);
   };
   s.nodes = long(grid.num_nodes());
+  s.ghost_cells = grid.ghost;
   if (!c.grid.refined()) {
     const long cx = std::lround((c.grid.max[0] - c.grid.min[0]) / h);
     const long cy = std::lround((c.grid.max[1] - c.grid.min[1]) / h);

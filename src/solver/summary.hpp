@@ -19,6 +19,7 @@ struct CaseSummary {
   long steps = 0;                  // ceil(end / dt)
   long cells = 0;                  // physical cells
   long nodes = 0;                  // grid nodes, ghosts included
+  int ghost_cells = 2;             // ghost cells on each side (grid.margin)
   std::vector<long> particles_per_body;
   long particles = 0;
   int fields = 0;

@@ -62,6 +62,33 @@ TEST(Refinement, graded_axes_are_aligned_powers_of_two_graded_by_two) {
   EXPECT_NEAR(g.y.width(g.y.cell_of(0.005)), 0.25e-3, 1e-12);
 }
 
+// Ghost cells, as wide as the edge cells, hold the margin beyond the two every grid has: here
+// the x edges are 2 mm cells and the y edges 1 mm (graded down towards the box), so a 4.5 mm
+// margin needs 2 + ceil(4.5 / 1) = 7 ghost cells (one count for the whole grid).
+TEST(Refinement, ghost_cells_hold_the_margin) {
+  const double min[2] = {0.0, 0.0}, max[2] = {0.04, 0.01};
+  const std::vector<RefineBox> boxes = {{{0.01, 0.002}, {0.03, 0.008}, 0.5e-3}};
+  const Grid plain = make_graded_grid(min, max, 2e-3, 0.5e-3, boxes);
+  const Grid wide = make_graded_grid(min, max, 2e-3, 0.5e-3, boxes, 4.5e-3);
+  EXPECT_EQ(plain.ghost, 2);
+  EXPECT_NEAR(wide.x.width(wide.ghost), 2e-3, 1e-15);
+  EXPECT_NEAR(wide.y.width(wide.ghost), 1e-3, 1e-15);
+  EXPECT_EQ(wide.ghost, 7);
+  for (const Grid* g : {&plain, &wide})
+    for (const Axis* a : {&g->x, &g->y}) {
+      const int first = g->ghost, last = a->cells - g->ghost;  // physical edge nodes
+      EXPECT_NEAR(a->node(first), 0.0, 1e-15);
+      EXPECT_NEAR(a->node(last), a == &g->x ? 0.04 : 0.01, 1e-15);
+      for (int c = 0; c < g->ghost; ++c) {  // ghosts as wide as the edge cells
+        EXPECT_NEAR(a->width(c), a->width(first), 1e-15);
+        EXPECT_NEAR(a->width(last + c), a->width(last - 1), 1e-15);
+      }
+      if (g == &wide) {
+        EXPECT_GE(a->node(first) - a->node(0), 4.5e-3 + 2 * a->width(first) - 1e-12);
+      }
+    }
+}
+
 TEST(Refinement, weights_partition_unity_and_match_quadrature_across_every_transition) {
   const Grid g = two_level_boxes();
   const Axis& a = g.x;
