@@ -30,6 +30,8 @@ import numpy as np
 print(f"{'run':<30}{'h (mm)':>8}{'V (m/s)':>9}{'t end':>7}{'steps':>7}{'particles':>11}{'wall (s)':>10}"
       f"{'init (us)':>10}{'jump (us)':>10}{'sust (m/s)':>11}{'/c_S':>6}{'tip@17.6':>10}"
       f"{'zone (mm)':>10}{'loaded':>8}{'E err':>10}  regime")
+def us(t):  # a time in us, or "-" for never (-1)
+    return f"{1e6*t:.3f}" if t >= 0 else "-"
 for d in sys.argv[1:]:
     try:
         r = json.load(open(f"{d}/run.json"))
@@ -47,7 +49,7 @@ for d in sys.argv[1:]:
         loaded = np.interp(17.6e-6, t, np.array([float(x["traction_zone_length"]) for x in rows]))
     h = r["input"]["grid"]["cell_size"]; v = r["input"]["boundary"]["impact"]["velocity"]
     print(f"{d.rstrip('/').split('/')[-1]:<30}{1e3*h:>8.4g}{v:>9.3g}{1e6*r['simulated_time']:>7.2f}{r['steps']:>7}{r['particles']:>11}"
-          f"{r['wall_seconds']:>10.1f}{1e6*c['initiation_time']:>10.3f}{1e6*c['intersonic_time']:>10.3f}"
+          f"{r['wall_seconds']:>10.1f}{us(c['initiation_time']):>10}{us(c['intersonic_time']):>10}"
           f"{c['sustained_speed']:>11.0f}{c['sustained_speed']/cs:>6.2f}{1e3*tip:>10.2f}{1e3*z176:>10.2f}{1e3*loaded:>8.2f}"
           f"{r['energy_balance_error']:>10.2e}  {c['regime']}")
 PY
