@@ -123,6 +123,9 @@ TEST(CaseToml, ghost_margin_covers_the_prescribed_displacement) {
   EXPECT_EQ(g.physical_cells_x(), 20);
   const Case given = parse_case(test::strip_case_toml(), {"grid.margin=0"});
   EXPECT_EQ(build_grid(given.grid).ghost, 2);
+  // A long run at constant velocity: the automatic margin stops at half the larger extent.
+  const Case capped = parse_case(test::strip_case_toml(), {"time.end=10.0"});
+  EXPECT_NEAR(capped.grid.margin, 0.005, 1e-15);
 }
 
 TEST(CaseToml, syntax_error_gives_line_and_column) {

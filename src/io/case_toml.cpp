@@ -440,7 +440,9 @@ Case build_case(const toml::table& root) {
     for (const VelocityBC& bc : c.boundary)
       for (int k = 1; k <= 1000; ++k) m = std::max(m, std::fabs(bc.velocity.displacement(c.time.end * k / 1000.0)));
     for (const BodySpec& b : c.bodies) m = std::max(m, std::hypot(b.velocity[0], b.velocity[1]) * c.time.end);
-    c.grid.margin = m;
+    // Capped like an explicit grid.margin: a long run with a constant velocity would otherwise
+    // ask for an unbounded grid; a surface moving farther is caught as "particle left the grid".
+    c.grid.margin = std::min(m, 0.5 * std::max(c.grid.max[0] - c.grid.min[0], c.grid.max[1] - c.grid.min[1]));
   }
 
   {
