@@ -9,9 +9,11 @@ namespace rupture {
 namespace {
 bool vertical(Edge e) { return e == Edge::left || e == Edge::right; }
 
-// Index of the initial edge line, and +1 if the body lies towards larger indices from it.
-int initial_line(const VelocityBC& bc, const Grid& grid, int& inward) {
-  inward = (bc.edge == Edge::left || bc.edge == Edge::bottom) ? 1 : -1;
+// The body lies towards larger line indices from a left or bottom edge.
+bool inward_is_up(Edge e) { return e == Edge::left || e == Edge::bottom; }
+
+// Index of the initial edge line.
+int initial_line(const VelocityBC& bc, const Grid& grid) {
   switch (bc.edge) {
     case Edge::left: return grid.ghost;
     case Edge::right: return grid.x.cells - grid.ghost;
@@ -23,8 +25,7 @@ int initial_line(const VelocityBC& bc, const Grid& grid, int& inward) {
 }  // namespace
 
 int edge_line(const VelocityBC& bc, const Grid& grid, double t) {
-  int inward = 1;
-  const int line0 = initial_line(bc, grid, inward);
+  const int line0 = initial_line(bc, grid);
   if (!bc.moves()) return line0;
   const Axis& across = vertical(bc.edge) ? grid.x : grid.y;
   const double pos = across.node(line0) + bc.velocity.displacement(t);
@@ -56,12 +57,11 @@ std::vector<NodeBC> resolve_nodes(const std::vector<VelocityBC>& bcs, const Grid
     const bool vert = vertical(bc.edge);
     const Axis& along = vert ? grid.y : grid.x;
     const Axis& across = vert ? grid.x : grid.y;
-    int inward = 1;
-    initial_line(bc, grid, inward);
     const int line = lines[c];
     // Lines outside the current edge line lie in the piston's region (moving conditions only).
-    const int first = !bc.moves() ? line : (inward > 0 ? 0 : line);
-    const int last = !bc.moves() ? line : (inward > 0 ? line : across.nodes() - 1);
+    const bool up = inward_is_up(bc.edge);
+    const int first = !bc.moves() ? line : (up ? 0 : line);
+    const int last = !bc.moves() ? line : (up ? line : across.nodes() - 1);
     std::vector<int> fields = bc.fields;
     if (fields.empty())
       for (int f = 0; f < num_fields; ++f) fields.push_back(f);

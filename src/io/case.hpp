@@ -47,6 +47,7 @@ struct GridSpec {
   double margin = 0.0;
 
   bool refined() const { return coarse_cell_size > 0.0; }
+  double max_margin() const { return 0.5 * std::max(max[0] - min[0], max[1] - min[1]); }  // m
   double level_size(int level) const {  // m
     return std::max(coarse_cell_size / double(1L << level), cell_size);
   }

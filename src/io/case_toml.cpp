@@ -300,7 +300,7 @@ Case build_case(const toml::table& root) {
       c.grid.refine.push_back(L);
     }
     c.grid.margin = g.number("margin", -1.0);  // < 0: automatic, set once the loads are known
-    if (g.has("margin") && !(c.grid.margin >= 0 && c.grid.margin <= 0.5 * std::max(c.grid.max[0] - c.grid.min[0], c.grid.max[1] - c.grid.min[1])))
+    if (g.has("margin") && !(c.grid.margin >= 0 && c.grid.margin <= c.grid.max_margin()))
       fail(g.key("margin"), c.grid.margin, "must lie in [0, half the larger domain extent] (m)");
     const long ppc = g.integer("particles_per_cell", 2);
     if (ppc < 1 || ppc > 8) fail(g.key("particles_per_cell"), double(ppc), "must lie in [1, 8] (per direction)");
@@ -442,7 +442,7 @@ Case build_case(const toml::table& root) {
     for (const BodySpec& b : c.bodies) m = std::max(m, std::hypot(b.velocity[0], b.velocity[1]) * c.time.end);
     // Capped like an explicit grid.margin: a long run with a constant velocity would otherwise
     // ask for an unbounded grid; a surface moving farther is caught as "particle left the grid".
-    c.grid.margin = std::min(m, 0.5 * std::max(c.grid.max[0] - c.grid.min[0], c.grid.max[1] - c.grid.min[1]));
+    c.grid.margin = std::min(m, c.grid.max_margin());
   }
 
   {
