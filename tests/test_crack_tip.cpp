@@ -11,6 +11,9 @@ using namespace rupture;
 
 namespace {
 
+// Homalite's wave speeds (SPEC §1), m/s.
+const WaveSpeeds kHomalite{2534.5, 1247.9, 1165.0, 1164.0};
+
 // 100 segments of 0.1 mm on [0, 10 mm], tau_max = sigma_max = 24 MPa, delta_t = 1 um.
 CohesiveInterface line() {
   InterfaceSpec spec;
@@ -93,7 +96,7 @@ TEST(CrackTip, speeds_of_a_tip_moving_at_constant_speed_are_exact) {
   mean /= count;
   EXPECT_EQ(count, 200 - 30) << "the centred 31-point window fits 170 of 200 samples";
   EXPECT_NEAR(mean, v, 0.02 * v) << "E11 speed of a staircase with mean slope v";
-  const CrackSummary sum = tracker.summarize(c, 1247.9, 2534.5, 2e-6);
+  const CrackSummary sum = tracker.summarize(c, kHomalite, 2e-6);
   EXPECT_NEAR(sum.sustained_speed, v, 0.02 * v);
   EXPECT_EQ(sum.regime, "intersonic");
   EXPECT_NEAR(sum.initiation_time, 0.0, 1e-15);
@@ -116,7 +119,7 @@ TEST(CrackTip, reaching_the_end_of_the_cohesive_line_is_recorded) {
   }
   // Tip >= 9.75 mm: node 98 cracks once v t >= 9.75 mm, at t = 4.875 us: the sample at 4.88 us.
   EXPECT_NEAR(tracker.end_reached_time(), 4.88e-6, 1e-12);
-  const CrackSummary arrested = tracker.summarize(c, 1247.9, 2534.5, 2e-6);
+  const CrackSummary arrested = tracker.summarize(c, kHomalite, 2e-6);
   EXPECT_NEAR(arrested.end_reached_time, 4.88e-6, 1e-12);
   EXPECT_LT(arrested.sustained_speed, 0.01 * v) << "a window after the arrival sees no motion";
   CrackTracker never;

@@ -108,3 +108,47 @@ TEST(XuNeedleman, traction_is_the_gradient_of_the_potential) {
   }
   EXPECT_NEAR(law.potential(0, 0), 0.0, 1e-12);
 }
+
+// The closed-form tangent (used by the E6 step bound) is the derivative of the traction:
+// central differences agree to 1e-6 of the stiffness scale, on both sides of the penalty kink,
+// for q = 1 and for a q != 1, r != 0 law (every term of E7).
+TEST(XuNeedleman, tangent_matches_finite_differences_of_the_traction) {
+  for (const double q : {1.0, 0.5}) {
+    XuNeedleman law = spec_law();
+    law.q = q;
+    law.r = q == 1.0 ? 0.0 : 0.3;
+    const double scale = law.initial_stiffness();
+    for (const double xn : {-1.5, -0.2, 0.3, 1.0, 2.5})
+      for (const double xt : {-1.2, 0.0, 0.4, 0.9, 2.0}) {
+        const double dn = xn * law.delta_n, dt = xt * law.delta_t;
+        const double e = 1e-6 * law.delta_n;
+        const CohesiveTangent K = law.tangent(dn, dt);
+        const CohesiveTraction pn = law.traction(dn + e, dt), mn = law.traction(dn - e, dt);
+        const CohesiveTraction pt = law.traction(dn, dt + e), mt = law.traction(dn, dt - e);
+        EXPECT_NEAR(K.nn, (pn.normal - mn.normal) / (2 * e), 1e-6 * scale) << xn << " " << xt;
+        EXPECT_NEAR(K.nt, (pt.normal - mt.normal) / (2 * e), 1e-6 * scale) << xn << " " << xt;
+        EXPECT_NEAR(K.nt, (pn.tangential - mn.tangential) / (2 * e), 1e-6 * scale) << "symmetry";
+        EXPECT_NEAR(K.tt, (pt.tangential - mt.tangential) / (2 * e), 1e-6 * scale) << xn << " " << xt;
+      }
+  }
+}
+
+// SPEC E6 and E8: at zero opening the normal stiffness is e sigma_max / delta_n on the open
+// side and twice that on the compressed side (law + penalty, k_pen = 1); the tangential one is
+// 2 phi_t / delta_t^2 = tau_max / delta_n for the SPEC's q = 1 parameters. The step bound takes
+// the compressed side for a face at rest.
+TEST(XuNeedleman, stiffness_at_rest_includes_the_penalty) {
+  const XuNeedleman law = spec_law();
+  const double k0 = std::exp(1.0) * law.sigma_max / law.delta_n;
+  EXPECT_NEAR(law.tangent(0.0, 0.0).nn, k0, 1e-9 * k0);
+  EXPECT_NEAR(law.tangent(-1e-15, 0.0).nn, 2.0 * k0, 1e-6 * k0);
+  EXPECT_NEAR(law.tangent(0.0, 0.0).tt, law.tau_max / law.delta_n, 1e-9 * k0);
+  EXPECT_NEAR(law.stability_stiffness(0.0, 0.0), 2.0 * k0, 1e-6 * k0);
+  // Compression stiffens the exponential law: (1 - xn) e^{-xn} + k_pen at xn = -1.
+  EXPECT_NEAR(law.stability_stiffness(-law.delta_n, 0.0), k0 * (2.0 * std::exp(1.0) + 1.0), 1e-6 * k0);
+  // Opening in shear lowers it: at Dt = delta_t the normal stiffness is k0 e^{-1}, the shear
+  // one negative (softening), the coupling zero at Dn = 0.
+  const CohesiveTangent soft = law.tangent(0.0, law.delta_t);
+  EXPECT_LT(soft.tt, 0.0);
+  EXPECT_NEAR(soft.max_eigenvalue(), k0 * std::exp(-1.0), 1e-9 * k0);
+}

@@ -43,6 +43,7 @@ void print_check(const std::string& path, const Case& c) {
                s.particles_per_body[b]);
   fmt::print("dt={:.6e}\n", s.dt);
   fmt::print("dt_cfl_limit={:.6e}\n", s.dt_cfl);
+  fmt::print("dt_bulk_limit={:.6e}\n", s.dt_bulk);
   if (s.dt_cohesive > 0) fmt::print("dt_cohesive_limit={:.6e}\n", s.dt_cohesive);
   for (std::size_t k = 0; k < c.interfaces.size(); ++k) {
     const InterfaceSpec& is = c.interfaces[k];
@@ -156,6 +157,7 @@ int main(int argc, char** argv) {
     fmt::print("particle_updates_per_second={:.4e}\n", r.particle_updates_per_second);
     fmt::print("cohesive_seconds={:.3f}\n", r.cohesive_seconds);
     fmt::print("energy_balance_error={:.4e}\n", r.energy_balance_error);
+    fmt::print("energy_balance_error_final={:.4e}\n", r.energy_balance_error_final);
     if (!r.cracks.empty()) {
       const CrackSummary& k = r.cracks.front();
       fmt::print("crack.initiation_time={:.6e}\n", k.initiation_time);

@@ -26,8 +26,9 @@ void CrackTracker::sample(const CohesiveInterface& c, double t) {
   bool in_stretch = false;
   std::size_t tip_node = 0;
   bool any = false;
+  auto cracked_by = [&](std::size_t k) { return c.node_crack_time[k] >= 0.0 && c.node_crack_time[k] <= t; };
   for (std::size_t k = 0; k < c.num_nodes(); ++k) {
-    const bool cracked = c.node_crack_time[k] >= 0.0;
+    const bool cracked = cracked_by(k);
     if (cracked && !in_stretch) s.stretch_begin.push_back(c.x0[k]);
     if (!cracked && in_stretch) s.stretch_end.push_back(c.x0[k - 1]);
     if (cracked) s.tip = c.x0[k], tip_node = k, any = true;
@@ -39,14 +40,14 @@ void CrackTracker::sample(const CohesiveInterface& c, double t) {
   const double soft = c.spec.law.delta_t / std::sqrt(2.0);
   double zone_end = s.tip;
   for (std::size_t k = any ? tip_node + 1 : 0; k < c.num_nodes(); ++k) {
-    if (c.node_crack_time[k] >= 0.0) continue;
+    if (cracked_by(k)) continue;
     if (std::hypot(c.jump_normal(k), c.jump_tangential(k)) >= soft) zone_end = c.x0[k];
   }
   s.cohesive_zone = zone_end - s.tip;
   const XuNeedleman& law = c.spec.law;
   double loaded_end = s.tip;
   for (std::size_t k = any ? tip_node + 1 : 0; k < c.num_nodes(); ++k) {
-    if (c.node_crack_time[k] >= 0.0) break;  // a daughter crack ends the contiguous zone
+    if (cracked_by(k)) break;  // a daughter crack ends the contiguous zone
     // Softening nodes belong to the zone whatever their (decaying) traction; ahead of them,
     // the zone goes on while the rising-branch traction stays above the fraction.
     const double dn = c.jump_normal(k), dt = c.jump_tangential(k);
@@ -69,8 +70,17 @@ std::vector<double> CrackTracker::speeds() const {
   return v;
 }
 
-CrackSummary CrackTracker::summarize(const CohesiveInterface& c, double c_s, double c_d,
+std::string crack_regime(double speed, const WaveSpeeds& w) {
+  if (!(speed >= 1e-3 * w.shear)) return "none";
+  if (speed < w.rayleigh) return "sub-Rayleigh";
+  if (speed < w.shear) return "Rayleigh-to-shear";
+  if (speed < w.dilatational) return "intersonic";
+  return "supersonic";
+}
+
+CrackSummary CrackTracker::summarize(const CohesiveInterface& c, const WaveSpeeds& waves,
                                      double window) const {
+  const double c_s = waves.shear;
   CrackSummary r;
   for (double tc : c.node_crack_time)
     if (tc >= 0.0 && (r.initiation_time < 0.0 || tc < r.initiation_time)) r.initiation_time = tc;
@@ -98,15 +108,7 @@ CrackSummary CrackTracker::summarize(const CohesiveInterface& c, double c_s, dou
     if (s.time >= t_end - window - 1e-15) t.push_back(s.time), x.push_back(s.tip);
   r.sustained_speed = t.size() >= 2 ? least_squares_slope(t.data(), x.data(), t.size()) : 0.0;
   if (!std::isfinite(r.sustained_speed)) r.sustained_speed = 0.0;
-  if (!r.initiated || r.sustained_speed < 1e-3 * c_s) {
-    r.regime = "none";
-  } else if (r.sustained_speed < c_s) {
-    r.regime = "sub-Rayleigh";
-  } else if (r.sustained_speed < c_d) {
-    r.regime = "intersonic";
-  } else {
-    r.regime = "supersonic";
-  }
+  r.regime = r.initiated ? crack_regime(r.sustained_speed, waves) : "none";
   return r;
 }
 

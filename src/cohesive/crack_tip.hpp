@@ -5,8 +5,13 @@
 //  - every separated stretch (run of cracked nodes) is recorded, so a daughter crack ahead of
 //    the main tip shows up as a second stretch;
 //  - speed (E11): slope of a least-squares line through 31 consecutive tip positions (centred);
+//  - samples are taken at exact multiples of the sampling interval whatever the time step:
+//    a node's crack time is interpolated inside the step where its jump crossed the criterion,
+//    and the tip at time T is the farthest node cracked by T (so the E11 window is exactly 31
+//    intervals);
 //  - summary: initiation time, sustained speed (least-squares slope over the last 4 us),
-//    peak speed, first time above c_S, first daughter crack, regime, and the time the tip
+//    peak speed, first time above c_S, first daughter crack, regime (sub-Rayleigh,
+//    Rayleigh-to-shear, intersonic, supersonic: SPEC §6), and the time the tip
 //    reached the end of the cohesive line (beyond it the halves are bonded and the crack stops:
 //    a sustained speed measured across that time measures the arrest).
 // Units: s, m, m/s.
@@ -15,6 +20,7 @@
 #include <vector>
 
 #include "cohesive/interface.hpp"
+#include "material/elastic.hpp"
 
 namespace rupture {
 
@@ -39,7 +45,9 @@ struct CrackSummary {
   double final_traction_zone = 0.0;  // m
   double end_reached_time = -1.0;    // first sample with the tip within end_tolerance of the
                                      // cohesive line's end, s (-1: never)
-  std::string regime = "none";       // none | sub-Rayleigh | intersonic | supersonic
+  // none | sub-Rayleigh (v < c_R) | Rayleigh-to-shear (c_R <= v < c_S: SPEC §6 says no crack
+  // sustains it, so a run showing it says so) | intersonic (c_S <= v < c_D) | supersonic
+  std::string regime = "none";
 };
 
 class CrackTracker {
@@ -57,12 +65,14 @@ class CrackTracker {
   // grid cells there.
   explicit CrackTracker(double end_tolerance = 0.0) : end_tolerance_(end_tolerance) {}
 
+  // Records the crack at time t <= the interface's current time: nodes cracked by t (their
+  // interpolated crack times) make the tip and stretches; zone lengths use the current jumps.
   void sample(const CohesiveInterface& c, double t);
   const std::vector<CrackSample>& samples() const { return samples_; }
   double end_reached_time() const { return end_reached_time_; }
   // E11 speed at each sample (NaN where the centred window does not fit).
   std::vector<double> speeds() const;
-  CrackSummary summarize(const CohesiveInterface& c, double c_s, double c_d,
+  CrackSummary summarize(const CohesiveInterface& c, const WaveSpeeds& waves,
                          double window = 4e-6) const;
   // DIR/crack_tip.csv and DIR/crack_stretches.csv (rewritten atomically).
   void write(const std::string& dir, double c_r, double c_s) const;
@@ -72,6 +82,9 @@ class CrackTracker {
   double end_tolerance_ = 0.0;
   double end_reached_time_ = -1.0;
 };
+
+// Regime of a crack running at `speed` (SPEC §6); "none" below 1e-3 c_S.
+std::string crack_regime(double speed, const WaveSpeeds& w);
 
 // Least-squares slope of y(t) (E11).
 double least_squares_slope(const double* t, const double* y, std::size_t n);

@@ -26,6 +26,15 @@ struct InterfaceSpec {
   double bonded_from = 0.0, bonded_to = 0.0;  // m
 };
 
+// A face point's grid stencil (solver/cohesive_step.cpp): it moves with, and loads, its own
+// field's four nodes around it with weights c (bilinear weight x nodal mass, normalized; all
+// zero where its field has no mass). Computed once per step, after the bonded tie, and used by
+// both the force spread and the face motion, so the two are transposes of each other.
+struct FaceStencil {
+  std::size_t node[4];  // grid index, field offset included
+  double c[4];
+};
+
 struct CohesiveInterface {
   static constexpr int kGauss = 4;  // Gauss points per segment (E9)
   InterfaceSpec spec;
@@ -33,11 +42,24 @@ struct CohesiveInterface {
   std::vector<double> ux_up, uy_up;        // upper-face displacement, m
   std::vector<double> ux_lo, uy_lo;        // lower-face displacement, m
   std::vector<double> fx_node, fy_node;    // cohesive force on the upper face node, N/m
-  std::vector<double> node_crack_time;     // time the node's jump reached the criterion (or -1)
+  std::vector<double> node_crack_time;     // time the node's jump reached the criterion (or -1),
+                                           // interpolated inside the step where it crossed, s
   std::vector<double> gp_dn, gp_dt;        // jump at each Gauss point (segment-major), m
   std::vector<double> gp_tn, gp_tt;        // traction at each Gauss point, Pa
   std::vector<std::uint8_t> gp_separated;  // irreversible separation flags
   std::vector<double> seg_fa_x, seg_fa_y, seg_fb_x, seg_fb_y;  // per-segment end forces (scratch)
+  // Tributary tangent stiffness of each node at its current openings, N/m^2 per unit
+  // thickness (sum over the Gauss points of its segments of weight x N x the law's largest
+  // tangent eigenvalue): the cohesive part of the step bound (solver/time_step.hpp).
+  std::vector<double> stiffness_node;
+  std::vector<double> seg_ka, seg_kb;    // per-segment end stiffnesses (scratch)
+  std::vector<FaceStencil> face_up, face_lo;  // this step's face stencils (derived, not state)
+  std::vector<double> jump_before;       // |jump| at the start of the step (scratch), m
+  // Instability watch (solver/cohesive_step.cpp): the last step's jump increment per node, m,
+  // for how many steps in a row the increment has reversed and grown, and its size when that
+  // run of steps began, m.
+  std::vector<double> last_increment_n, last_increment_t, streak_base;
+  std::vector<std::int32_t> reversal_streak;
   double work = 0.0;  // work done on the interface by the bodies so far, J/m (stored + dissipated)
 
   std::size_t num_nodes() const { return x0.size(); }

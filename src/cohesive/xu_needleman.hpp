@@ -5,13 +5,26 @@
 // components; the interface applies -T^ to the upper face and +T^ to the lower face.
 // Contract: delta_n, delta_t > 0; r != 1; everything finite.
 #pragma once
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace rupture {
 
 struct CohesiveTraction {
   double normal;      // T^n, Pa
   double tangential;  // T^t, Pa
+};
+
+// The law's tangent stiffness dT^/dDelta (Pa/m), symmetric (T^ is the gradient of phi).
+struct CohesiveTangent {
+  double nn, nt, tt;  // dTn/dDn, dTn/dDt = dTt/dDn, dTt/dDt
+  // Largest eigenvalue, or 0 where the law softens in every direction (no stiffness to
+  // destabilise the explicit step).
+  double max_eigenvalue() const {
+    const double mean = 0.5 * (nn + tt), half = 0.5 * (nn - tt);
+    return std::max(0.0, mean + std::sqrt(half * half + nt * nt));
+  }
 };
 
 struct XuNeedleman {
@@ -39,6 +52,30 @@ struct XuNeedleman {
     T.tangential = (pn / delta_n) * (2.0 * delta_n / delta_t) * xt * (q + (r - q) / (r - 1.0) * xn) * en * et;
     if (dn < 0.0) T.normal += penalty_stiffness() * dn;
     return T;
+  }
+
+  // dT^/dDelta of E7 (+ E8 for dn < 0), differentiated in closed form.
+  CohesiveTangent tangent(double dn, double dt) const {
+    const double pn = phi_n();
+    const double xn = dn / delta_n, xt = dt / delta_t;
+    const double en = std::exp(-xn), et = std::exp(-xt * xt);
+    const double a = (1.0 - q) / (r - 1.0), b = (r - q) / (r - 1.0);
+    CohesiveTangent K;
+    K.nn = pn / (delta_n * delta_n) * en * (et * (1.0 - xn) - a * (1.0 - et) * (1.0 + r - xn));
+    K.nt = 2.0 * pn / (delta_n * delta_t) * xt * en * et * (b - q - b * xn);
+    K.tt = 2.0 * pn / (delta_t * delta_t) * (q + b * xn) * en * et * (1.0 - 2.0 * xt * xt);
+    if (dn < 0.0) K.nn += penalty_stiffness();
+    return K;
+  }
+
+  // The stiffness that bounds the explicit step at this opening (SPEC E6, docs/time_step.md):
+  // the largest tangent eigenvalue, taken also on the compressed side of Dn = 0 when the face
+  // is open or just closed, since the penalty (E8) switches on there and a step's round-off
+  // moves a closed face across the kink.
+  double stability_stiffness(double dn, double dt) const {
+    const double here = tangent(dn, dt).max_eigenvalue();
+    if (dn < 0.0) return here;
+    return std::max(here, tangent(-std::numeric_limits<double>::denorm_min(), dt).max_eigenvalue());
   }
 
   // The potential phi(dn, dt) whose gradient is the traction (J/m^2), penalty included:

@@ -1,6 +1,7 @@
 // rupture/io/history.cpp
 #include "io/history.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
 
@@ -11,6 +12,14 @@ namespace rupture {
 double EnergySample::relative_error() const {
   const double scale = initial + std::fabs(external_work);
   return scale > 0.0 ? std::fabs(balance()) / scale : 0.0;
+}
+
+double History::max_relative_error(double after) const {
+  double worst = 0.0;
+  bool any = false;
+  for (const EnergySample& e : samples)
+    if (e.time >= after) worst = std::max(worst, e.relative_error()), any = true;
+  return any || samples.empty() ? worst : samples.back().relative_error();
 }
 
 std::string History::csv() const {

@@ -23,6 +23,9 @@ struct EnergySample {
 struct History {
   std::vector<EnergySample> samples;
   std::string csv() const;
+  // Largest relative_error() of the samples at or after time `after` (s); the last sample's
+  // if none is that late.
+  double max_relative_error(double after) const;
   void write(const std::string& path) const;
 };
 

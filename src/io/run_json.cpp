@@ -49,7 +49,11 @@ std::string run_json(const Case& c, const CaseSummary& s, const RunRecord& r) {
                                  {"strain", finite(r.strain_energy)},
                                  {"external_work", finite(r.external_work)}});
   t.insert("energy_balance_error", finite(r.energy_balance_error));
+  t.insert("energy_balance_error_final", finite(r.energy_balance_error_final));
+  t.insert("dt_bulk_limit", s.dt_bulk);
   t.insert("dt_cohesive_limit", s.dt_cohesive);
+  if (std::isfinite(r.min_cohesive_dt)) t.insert("dt_cohesive_limit_min", r.min_cohesive_dt);
+  t.insert("cohesive_safety", c.time.cohesive_safety);
   if (!r.cracks.empty()) {
     toml::array all;
     for (std::size_t k = 0; k < r.cracks.size(); ++k) {

@@ -7,6 +7,7 @@
 // plus version, status ("running" | "completed" | "failed"), message, input (the merged input
 // echo), and derived quantities. Rewritten atomically whenever it changes.
 #pragma once
+#include <cmath>
 #include <string>
 
 #include "cohesive/crack_tip.hpp"
@@ -27,7 +28,9 @@ struct RunRecord {
   double particle_updates_per_second = 0.0;
   int threads = 1;
   double kinetic_energy = 0.0, strain_energy = 0.0, external_work = 0.0;
-  double energy_balance_error = 0.0;
+  double energy_balance_error = 0.0;        // largest |error| after the first microsecond
+  double energy_balance_error_final = 0.0;  // at the last history sample
+  double min_cohesive_dt = INFINITY;        // smallest per-step cohesive limit of the run, s
   double cohesive_stored = 0.0, cohesive_dissipated = 0.0;
   std::vector<CrackSummary> cracks;  // one per interface
 };

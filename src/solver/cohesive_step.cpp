@@ -42,11 +42,6 @@ inline PointStencil point_stencil(const Grid& g, double x, double y) {
 // neither receives a force it cannot carry nor lends the face its huge f/m velocity. With
 // plain bilinear weights, a face drifting a nanometre across its node row picked up such
 // nodes and blew up within a few steps. Power is consistent: sum_i f c_i . v_i = f . v_face.
-struct FaceStencil {
-  std::size_t node[4];
-  double c[4];  // all zero when the face's field has no mass there
-};
-
 inline FaceStencil face_stencil(const State& s, std::size_t field_offset, double x, double y) {
   const PointStencil p = point_stencil(s.grid, x, y);
   const std::size_t nx = std::size_t(s.grid.nodes_x());
@@ -72,7 +67,7 @@ inline bool face_inside(const Grid& g, double x, double y) {
 
 }  // namespace
 
-void evaluate_interface(CohesiveInterface& c, double t) {
+void evaluate_interface(CohesiveInterface& c, double t, double t_before) {
   const XuNeedleman& law = c.spec.law;
   const double crit = c.separation_opening();
   const long nseg = long(c.num_segments());
@@ -83,17 +78,18 @@ void evaluate_interface(CohesiveInterface& c, double t) {
     const double half = 0.5 * (c.x0[s + 1] - c.x0[s]);
     const double dn_a = c.jump_normal(s), dn_b = c.jump_normal(s + 1);
     const double dt_a = c.jump_tangential(s), dt_b = c.jump_tangential(s + 1);
-    double fa_n = 0, fa_t = 0, fb_n = 0, fb_t = 0;
+    double fa_n = 0, fa_t = 0, fb_n = 0, fb_t = 0, ka = 0, kb = 0;
     for (int g = 0; g < kG; ++g) {
       const std::size_t i = s * kG + std::size_t(g);
       const double Na = 0.5 * (1.0 - kXi[g]), Nb = 0.5 * (1.0 + kXi[g]);
       const double dn = Na * dn_a + Nb * dn_b, dt = Na * dt_a + Nb * dt_b;  // linear jump
-      double tn = 0.0, tt = 0.0;
+      double tn = 0.0, tt = 0.0, k = 0.0;
       if (!c.gp_separated[i] && std::hypot(dn, dt) >= crit) c.gp_separated[i] = 1;
       if (!c.gp_separated[i]) {
         const CohesiveTraction T = law.traction(dn, dt);
         tn = T.normal;
         tt = T.tangential;
+        k = law.stability_stiffness(dn, dt);  // E6 bound (solver/time_step.hpp)
       }
       // Work of the tractions over the step, trapezoidal in time (E14).
       const double jw = kW[g] * half;
@@ -101,7 +97,9 @@ void evaluate_interface(CohesiveInterface& c, double t) {
       c.gp_dn[i] = dn, c.gp_dt[i] = dt, c.gp_tn[i] = tn, c.gp_tt[i] = tt;
       fa_n += jw * Na * tn, fa_t += jw * Na * tt;
       fb_n += jw * Nb * tn, fb_t += jw * Nb * tt;
+      ka += jw * Na * k, kb += jw * Nb * k;
     }
+    c.seg_ka[s] = ka, c.seg_kb[s] = kb;
     // Force on the upper face: -T^ (t = +x, n = +y; rotation neglected, SPEC §3).
     c.seg_fa_x[s] = -fa_t, c.seg_fa_y[s] = -fa_n;
     c.seg_fb_x[s] = -fb_t, c.seg_fb_y[s] = -fb_n;
@@ -111,26 +109,60 @@ void evaluate_interface(CohesiveInterface& c, double t) {
 #pragma omp parallel for schedule(static)
   for (long kl = 0; kl < nn; ++kl) {
     const std::size_t k = std::size_t(kl);
-    double fx = 0, fy = 0;
-    if (k > 0) fx += c.seg_fb_x[k - 1], fy += c.seg_fb_y[k - 1];
-    if (k + 1 < c.num_nodes()) fx += c.seg_fa_x[k], fy += c.seg_fa_y[k];
-    c.fx_node[k] = fx, c.fy_node[k] = fy;
-    if (c.node_crack_time[k] < 0.0 && std::hypot(c.jump_normal(k), c.jump_tangential(k)) >= crit)
-      c.node_crack_time[k] = t;
+    double fx = 0, fy = 0, stiff = 0;
+    if (k > 0) fx += c.seg_fb_x[k - 1], fy += c.seg_fb_y[k - 1], stiff += c.seg_kb[k - 1];
+    if (k + 1 < c.num_nodes()) fx += c.seg_fa_x[k], fy += c.seg_fa_y[k], stiff += c.seg_ka[k];
+    c.fx_node[k] = fx, c.fy_node[k] = fy, c.stiffness_node[k] = stiff;
+    const double jump = std::hypot(c.jump_normal(k), c.jump_tangential(k));
+    if (c.node_crack_time[k] < 0.0 && jump >= crit) {
+      // Linear in time between the step's ends: the E10 tip is then sampled at exact times.
+      const double before = c.jump_before[k];
+      const double f = before < crit && jump > before ? (crit - before) / (jump - before) : 1.0;
+      c.node_crack_time[k] = t_before + f * (t - t_before);
+    }
+  }
+}
+
+void update_face_stencils(State& s) {
+  for (CohesiveInterface& c : s.interfaces) {
+    const std::size_t up = s.fields.offset(c.spec.upper_field), lo = s.fields.offset(c.spec.lower_field);
+    const long n = long(c.num_nodes());
+    c.face_up.resize(c.num_nodes());
+    c.face_lo.resize(c.num_nodes());
+    long bad = n;
+#pragma omp parallel for schedule(static) reduction(min : bad)
+    for (long kl = 0; kl < n; ++kl) {
+      const std::size_t k = std::size_t(kl);
+      const double xa = c.x0[k] + c.ux_up[k], ya = c.spec.y + c.uy_up[k];
+      const double xb = c.x0[k] + c.ux_lo[k], yb = c.spec.y + c.uy_lo[k];
+      if (!face_inside(s.grid, xa, ya) || !face_inside(s.grid, xb, yb)) {
+        bad = std::min(bad, kl);
+        continue;
+      }
+      c.face_up[k] = face_stencil(s, up, xa, ya);
+      c.face_lo[k] = face_stencil(s, lo, xb, yb);
+    }
+    if (bad < n) {
+      const std::size_t k = std::size_t(bad);
+      throw SimulationError(fmt::format(
+          "unstable: cohesive interface at y = {:.6g} m, node {} (x0 = {:.6g} m) has a face at a non-finite "
+          "position or outside the grid at step {}, t = {:.6g} s: upper face displacement ({:.4g}, "
+          "{:.4g}) m, lower ({:.4g}, {:.4g}) m; reduce time.cohesive_safety or time.cfl",
+          c.spec.y, k, c.x0[k], s.step, s.time, c.ux_up[k], c.uy_up[k], c.ux_lo[k], c.uy_lo[k]));
+    }
   }
 }
 
 void add_cohesive_forces(State& s) {
   GridFields& G = s.fields;
   for (CohesiveInterface& c : s.interfaces) {
-    const std::size_t up = G.offset(c.spec.upper_field), lo = G.offset(c.spec.lower_field);
     // Serial: ~15 face nodes share each grid node; this loop is O(interface nodes), tiny
     // next to the particle loops, and its fixed order keeps results thread-count independent.
     for (std::size_t k = 0; k < c.num_nodes(); ++k) {
       const double fx = c.fx_node[k], fy = c.fy_node[k];
       if (fx == 0.0 && fy == 0.0) continue;
-      const FaceStencil a = face_stencil(s, up, c.x0[k] + c.ux_up[k], c.spec.y + c.uy_up[k]);
-      const FaceStencil b = face_stencil(s, lo, c.x0[k] + c.ux_lo[k], c.spec.y + c.uy_lo[k]);
+      const FaceStencil& a = c.face_up[k];
+      const FaceStencil& b = c.face_lo[k];
       for (int q = 0; q < 4; ++q) {
         G.force_x[a.node[q]] += a.c[q] * fx, G.force_y[a.node[q]] += a.c[q] * fy;  // upper: -T^
         G.force_x[b.node[q]] -= b.c[q] * fx, G.force_y[b.node[q]] -= b.c[q] * fy;  // lower: +T^
@@ -174,41 +206,71 @@ void tie_bonded_nodes(State& s, TieWhat what) {
   }
 }
 
+namespace {
+
+// A face pair driven past its stability limit oscillates at the step's own period: with
+// omega dt > 2 the central-difference multiplier is real and below -1 (mu + 1/mu = 2 -
+// omega^2 dt^2), so its jump increment reverses sign every step and grows by |mu| each time.
+// Resolved physics never does that (a cohesive zone spans many steps, and a stable mode has
+// |mu| = 1), so a run of reversals, each larger than the last, that has grown the increment a
+// thousandfold is taken as the instability, once the increment matters (a thousandth of
+// delta_n a step), which is long before the jump reaches the separation criterion.
+constexpr int kUnstableStreak = 4;
+constexpr double kUnstableGrowth = 1e3;
+constexpr double kUnstableIncrement = 1e-3;  // x delta_n
+
+[[noreturn]] void throw_cohesive_oscillation(const State& s, const CohesiveInterface& c, std::size_t k) {
+  throw SimulationError(fmt::format(
+      "unstable: cohesive interface at y = {:.6g} m oscillates at node {} (x0 = {:.6g} m): its jump "
+      "increment reversed sign and grew for {} steps in a row, {:.3g} times over, to ({:.3g}, {:.3g}) m "
+      "per step (normal, tangential), at step {}, t = {:.6g} s, with dt = {:.4g} s against a cohesive "
+      "stability limit of {:.4g} s; the step is too long for the interface stiffness (reduce "
+      "time.cohesive_safety or time.cfl)",
+      c.spec.y, k, c.x0[k], c.reversal_streak[k],
+      std::hypot(c.last_increment_n[k], c.last_increment_t[k]) / c.streak_base[k], c.last_increment_n[k],
+      c.last_increment_t[k], s.step, s.time, s.dt, s.limits.cohesive_dt));
+}
+
+}  // namespace
+
 void advance_interfaces(State& s) {
   const GridFields& G = s.fields;
   const double dt = s.dt;
   for (CohesiveInterface& c : s.interfaces) {
-    const std::size_t up = G.offset(c.spec.upper_field), lo = G.offset(c.spec.lower_field);
     const long n = long(c.num_nodes());
-    long bad = n;
-#pragma omp parallel for schedule(static) reduction(min : bad)
+    const double floor = kUnstableIncrement * c.spec.law.delta_n;
+    long unstable = n;
+#pragma omp parallel for schedule(static) reduction(min : unstable)
     for (long kl = 0; kl < n; ++kl) {
       const std::size_t k = std::size_t(kl);
-      if (!face_inside(s.grid, c.x0[k] + c.ux_up[k], c.spec.y + c.uy_up[k]) ||
-          !face_inside(s.grid, c.x0[k] + c.ux_lo[k], c.spec.y + c.uy_lo[k])) {
-        bad = std::min(bad, kl);
-        continue;
-      }
-      // Each face moves with its own field's t^{n+1} grid velocity (the particles' velocity).
-      const FaceStencil a = face_stencil(s, up, c.x0[k] + c.ux_up[k], c.spec.y + c.uy_up[k]);
-      const FaceStencil b = face_stencil(s, lo, c.x0[k] + c.ux_lo[k], c.spec.y + c.uy_lo[k]);
+      // Each face moves with its own field's t^{n+1} grid velocity (the particles' velocity),
+      // through the stencil its force was spread with (update_face_stencils).
+      const FaceStencil& a = c.face_up[k];
+      const FaceStencil& b = c.face_lo[k];
       double vax = 0, vay = 0, vbx = 0, vby = 0;
       for (int q = 0; q < 4; ++q) {
         vax += a.c[q] * G.vel_x[a.node[q]], vay += a.c[q] * G.vel_y[a.node[q]];
         vbx += b.c[q] * G.vel_x[b.node[q]], vby += b.c[q] * G.vel_y[b.node[q]];
       }
+      c.jump_before[k] = std::hypot(c.jump_normal(k), c.jump_tangential(k));
       c.ux_up[k] += dt * vax, c.uy_up[k] += dt * vay;
       c.ux_lo[k] += dt * vbx, c.uy_lo[k] += dt * vby;
+      // Instability watch on the intact part (an opened crack moves freely).
+      const double inc_n = dt * (vay - vby), inc_t = dt * (vax - vbx);
+      const double last_n = c.last_increment_n[k], last_t = c.last_increment_t[k];
+      const double size = std::hypot(inc_n, inc_t), last = std::hypot(last_n, last_t);
+      const bool reverses = inc_n * last_n + inc_t * last_t < 0.0;
+      if (reverses && size > last && c.node_crack_time[k] < 0.0) {
+        if (c.reversal_streak[k]++ == 0) c.streak_base[k] = last;
+      } else {
+        c.reversal_streak[k] = 0;
+      }
+      c.last_increment_n[k] = inc_n, c.last_increment_t[k] = inc_t;
+      if (c.reversal_streak[k] >= kUnstableStreak && size > floor && size > kUnstableGrowth * c.streak_base[k])
+        unstable = std::min(unstable, kl);
     }
-    if (bad < n) {
-      const std::size_t k = std::size_t(bad);
-      throw SimulationError(fmt::format(
-          "unstable: cohesive interface at y = {:.6g} m, node {} (x0 = {:.6g} m) has a face at a non-finite "
-          "position or outside the grid at step {}, t = {:.6g} s: upper face displacement ({:.4g}, "
-          "{:.4g}) m, lower ({:.4g}, {:.4g}) m; reduce time.cohesive_safety or time.cfl",
-          c.spec.y, k, c.x0[k], s.step, s.time, c.ux_up[k], c.uy_up[k], c.ux_lo[k], c.uy_lo[k]));
-    }
-    evaluate_interface(c, s.time);
+    if (unstable < n) throw_cohesive_oscillation(s, c, std::size_t(unstable));
+    evaluate_interface(c, s.time, s.time - dt);
   }
 }
 

@@ -1,5 +1,7 @@
 // rupture/solver/cohesive_step.hpp
 // The cohesive phases of the time step (SPEC E7-E9) and the tie of bonded interface stretches.
+//   update_face_stencils: each face node's stencil on its field (after the bonded tie, with
+//                        this step's nodal masses), used by both phases below;
 //   add_cohesive_forces: nodal cohesive forces of every interface onto its two fields' grid
 //                        forces (upper face -T^, lower face +T^), before the momentum update;
 //   tie_bonded_nodes:    where the halves are bonded, the two fields share mass, momentum and
@@ -13,11 +15,14 @@ namespace rupture {
 
 enum class TieWhat { mass_momentum, force, remapped_momentum };
 
+void update_face_stencils(State& s);
 void add_cohesive_forces(State& s);
 void tie_bonded_nodes(State& s, TieWhat what);
 void advance_interfaces(State& s);
-// Jumps -> Gauss-point tractions, separation, nodal forces and cohesive work at time t.
-void evaluate_interface(CohesiveInterface& c, double t);
+// Jumps -> Gauss-point tractions, separation, nodal forces and cohesive work at time t; the
+// step began at t_before (node crack times are interpolated in [t_before, t] from
+// c.jump_before).
+void evaluate_interface(CohesiveInterface& c, double t, double t_before);
 // Grid nodes on the interface row within the bonded range (computed once at setup).
 std::vector<std::size_t> bonded_nodes(const Grid& g, const InterfaceSpec& spec);
 

@@ -69,12 +69,15 @@ State make_state(const Case& c) {
 
   const CaseSummary summary = summarize(c);
   s.limits.cfl_dt = summary.dt_cfl;
+  s.limits.bulk_eigen_bound = summary.bulk_eigen_bound;
   s.limits.cohesive_dt = summary.dt_cohesive > 0 ? summary.dt_cohesive : INFINITY;
   s.limits.dt = summary.dt;
   s.dt = s.limits.dt;
+  s.cohesive_safety = c.time.cohesive_safety;
 
   for (const InterfaceSpec& is : c.interfaces) {
     s.interfaces.push_back(make_interface(is));
+    evaluate_interface(s.interfaces.back(), 0.0, 0.0);  // tractions and stiffnesses at rest
     s.bonded.push_back(bonded_nodes(s.grid, is));
   }
   s.scheme = c.solver.scheme;

@@ -4,6 +4,7 @@
 // step() (solver/step.hpp) advances it by one time step. SI units throughout.
 #pragma once
 #include <cstddef>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -39,8 +40,11 @@ struct ScatterPlan {
 
 struct StepLimits {
   double cfl_dt = 0.0;       // cfl * h / max c_D, s (SPEC E6)
-  double cohesive_dt = 0.0;  // cohesive stability limit 2/sqrt(2k/m), s (SPEC E6; inf if none)
-  double dt = 0.0;           // step used, s
+  double bulk_eigen_bound = 0.0;  // lambda_bulk of solver/time_step.hpp, 1/s^2
+  double cohesive_dt = 0.0;  // this step's stability limit 2/sqrt(lambda_bulk + lambda_coh), s
+                             // (SPEC E6, solver/time_step.hpp; inf without interfaces)
+  double min_cohesive_dt = INFINITY;  // smallest cohesive_dt of the run so far, s
+  double dt = 0.0;           // step at t = 0, s
 };
 
 struct State {
@@ -58,7 +62,10 @@ struct State {
   Scheme scheme = Scheme::MUSL;
   double flip = 1.0;
   StepLimits limits;
-  double dt = 0.0;       // s
+  double dt = 0.0;       // this step's, set by choose_time_step (solver/time_step.hpp), s
+  double dt_cap = INFINITY;     // no step goes past this much time (the driver: time to the end), s
+  double forced_dt = 0.0;       // > 0: a fixed step that bypasses E6 (tests of instability only), s
+  double cohesive_safety = 0.2; // dt <= safety x the cohesive limit (time.cohesive_safety)
   double time = 0.0;     // s
   long step = 0;
   double mass_floor = 0.0;  // nodes lighter than this are treated as empty, kg

@@ -11,6 +11,7 @@
 
 #include "core/errors.hpp"
 #include "solver/cohesive_step.hpp"
+#include "solver/time_step.hpp"
 
 namespace rupture {
 namespace {
@@ -611,11 +612,21 @@ class CohesiveTimer {
   std::chrono::steady_clock::time_point t0_;
 };
 
+// After the mass scatter: the bonded stretch becomes one body (shared mass and momentum),
+// then the face stencils see this step's masses, and the step follows from them (E6).
+void tie_stencils_and_time_step(State& s) {
+  if (!s.interfaces.empty()) {
+    CohesiveTimer timer(s);
+    tie_bonded_nodes(s, TieWhat::mass_momentum);
+    update_face_stencils(s);
+  }
+  choose_time_step(s);
+}
+
 void cohesive_forces_and_ties(State& s) {
   if (s.interfaces.empty()) return;
   CohesiveTimer timer(s);
   add_cohesive_forces(s);  // E7-E9
-  tie_bonded_nodes(s, TieWhat::mass_momentum);
   tie_bonded_nodes(s, TieWhat::force);
 }
 }  // namespace
@@ -629,6 +640,7 @@ void step(State& s) {
   switch (s.scheme) {
     case Scheme::MUSL:
       particles_to_grid(s, true);           // E4, per velocity field
+      tie_stencils_and_time_step(s);        // bonded stretch, face stencils, dt (E6)
       cohesive_forces_and_ties(s);          // E7-E9, bonded stretch
       integrate_grid(s);                    // E4 momentum update + E2 velocity BCs
       update_particle_velocity_and_remap(s);
@@ -641,18 +653,18 @@ void step(State& s) {
       break;
     case Scheme::USL:
       particles_to_grid(s, true);
+      tie_stencils_and_time_step(s);
       cohesive_forces_and_ties(s);
       integrate_grid(s);
       grid_to_particles(s, G.vel_x.data(), G.vel_y.data(), G2PMode::stress_velocity_and_move);
       break;
     case Scheme::USF:
       particles_to_grid(s, false);
-      tie_bonded_nodes(s, TieWhat::mass_momentum);
+      tie_stencils_and_time_step(s);
       grid_velocity_from_momentum(s, s.time);
       grid_to_particles(s, G.remap_x.data(), G.remap_y.data(), G2PMode::stress_only);
       particles_to_grid_force(s);
-      add_cohesive_forces(s);
-      tie_bonded_nodes(s, TieWhat::force);
+      cohesive_forces_and_ties(s);
       integrate_grid(s);
       grid_to_particles(s, G.vel_x.data(), G.vel_y.data(), G2PMode::velocity_and_move);
       break;

@@ -1,11 +1,14 @@
 // rupture/solver/step.hpp
 // One explicit GIMP time step (SPEC E4-E6) and its phases, each a free function over the
 // State's plain arrays. step() runs the phases in the order of the chosen update scheme:
-//   MUSL: P2G -> cohesive forces + bonded tie -> integrate + BCs -> G2P (velocity) + re-map
-//         -> stress (re-mapped v) and move -> advance interfaces
-//   USL : P2G -> cohesive + tie -> integrate + BCs -> G2P (velocity, stress from v^{n+1}, move)
-//   USF : P2G (mass, momentum) -> stress (v^n) -> P2G force -> cohesive + tie -> integrate
-//         -> G2P (velocity, move)
+//   MUSL: P2G -> tie, face stencils, dt -> cohesive forces -> integrate + BCs -> G2P (velocity)
+//         + re-map -> stress (re-mapped v) and move -> advance interfaces
+//   USL : P2G -> tie, stencils, dt -> cohesive -> integrate + BCs -> G2P (velocity, stress from
+//         v^{n+1}, move)
+//   USF : P2G (mass, momentum) -> tie, stencils, dt -> stress (v^n) -> P2G force -> cohesive
+//         -> integrate -> G2P (velocity, move)
+// The step dt is chosen inside step() once the nodal masses are known (solver/time_step.hpp),
+// never longer than s.dt_cap.
 // (cohesive phases: solver/cohesive_step.hpp)
 // Throws SimulationError (what, where, when) on a non-finite particle or one leaving the grid.
 #pragma once

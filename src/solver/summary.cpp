@@ -6,6 +6,7 @@
 
 #include "grid/grid.hpp"
 #include "particles/particles.hpp"
+#include "solver/time_step.hpp"
 
 namespace rupture {
 
@@ -22,20 +23,26 @@ CaseSummary summarize(const Case& c) {
   s.min_cell_size = h;
   s.dt_cfl = c.time.cfl * h / max_cd;
   s.dt = s.dt_cfl;
-  // SPEC E6: two face nodes of mass m = rho h^2/2 (interface row, per field) joined by a
-  // spring k = K h, K the law's initial stiffness or the penalty if larger: dt < 2/sqrt(2k/m).
-  // h is the finest cell size: the interface lies in the finest level (smaller h, smaller dt).
+  // SPEC E6 as derived in solver/time_step.hpp. Bulk: the Gershgorin bound of uGIMP for each
+  // material at the smallest cell. Cohesive, at rest: every face node sits on its row, so its
+  // stencil holds the row's nodes of mass m = rho h^2 / 2 (per field) and the row sum is
+  // (2 / m) k h with k the law's stiffness at rest, penalty included (a node carries a length
+  // h of interface). The run recomputes both terms every step from the actual state.
+  const int ppc = c.grid.particles_per_cell;
+  for (const ElasticMaterial& m : c.materials)
+    s.bulk_eigen_bound = std::max(s.bulk_eigen_bound, bulk_eigen_bound(stiffness(m, c.plane), m.density, ppc, h));
+  s.dt_bulk = 2.0 / std::sqrt(s.bulk_eigen_bound);
   for (const InterfaceSpec& is : c.interfaces) {
     const double rho = std::min(c.materials[c.bodies[is.upper_field].material].density,
                                 c.materials[c.bodies[is.lower_field].material].density);
-    const double k = std::max(is.law.initial_stiffness(), is.law.penalty_stiffness()) * h;
+    const double k = is.law.stability_stiffness(0.0, 0.0) * h;
     const double m = 0.5 * rho * h * h;
-    const double limit = 2.0 / std::sqrt(2.0 * k / m);
+    const double limit = 2.0 / std::sqrt(s.bulk_eigen_bound + 2.0 * k / m);
     s.dt_cohesive = s.dt_cohesive > 0 ? std::min(s.dt_cohesive, limit) : limit;
   }
   if (s.dt_cohesive > 0) s.dt = std::min(s.dt, c.time.cohesive_safety * s.dt_cohesive);
   s.steps = long(std::ceil(c.time.end / s.dt - 1e-9));
-  const long ppc = c.grid.particles_per_cell;
+  const long ppcl = ppc;
   const int levels = c.grid.refined()
                          ? int(std::lround(std::log2(c.grid.coarse_cell_size / c.grid.cell_size))) + 1
                          : 1;
@@ -57,7 +64,7 @@ CaseSummary summarize(const Case& c) {
     s.cells_per_level[0] = s.cells;
     for (const BodySpec& b : c.bodies) {
       const long n = std::lround((b.max[0] - b.min[0]) / h) * std::lround((b.max[1] - b.min[1]) / h) *
-                     ppc * ppc;
+                     ppcl * ppcl;
       s.particles_per_body.push_back(n);
       s.particles += n;
     }
@@ -79,8 +86,8 @@ CaseSummary summarize(const Case& c) {
         for (int i = 0; i < grid.x.cells; ++i) {
           const double xc = grid.x.node(i) + 0.5 * grid.x.width(i);
           if (xc < b.min[0] - tol || xc > b.max[0] + tol) continue;
-          n += ppc * ppc;
-          s.particles_per_level[std::size_t(level_of(grid.x.width(i), grid.y.width(j)))] += ppc * ppc;
+          n += ppcl * ppcl;
+          s.particles_per_level[std::size_t(level_of(grid.x.width(i), grid.y.width(j)))] += ppcl * ppcl;
         }
       }
       s.particles_per_body.push_back(n);

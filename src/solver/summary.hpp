@@ -14,7 +14,10 @@ namespace rupture {
 struct CaseSummary {
   std::vector<WaveSpeeds> speeds;  // per material
   double dt_cfl = 0.0;             // cfl * h / max c_D, s
-  double dt_cohesive = 0.0;        // cohesive stability limit, s (0 = no interface)
+  double dt_cohesive = 0.0;        // stability limit with the interfaces at rest, s (0 = none):
+                                   // 2 / sqrt(lambda_bulk + lambda_cohesive), solver/time_step.hpp
+  double bulk_eigen_bound = 0.0;   // lambda_bulk, 1/s^2
+  double dt_bulk = 0.0;            // 2 / sqrt(lambda_bulk): the bulk's own bound, s
   double dt = 0.0;                 // step used, s
   long steps = 0;                  // ceil(end / dt)
   long cells = 0;                  // physical cells
