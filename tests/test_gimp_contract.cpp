@@ -2,9 +2,8 @@
 // may overlap at most two cells per axis. The exact test on an axis, and its check at every
 // re-sort: a coarse particle driven into a 4x finer region is stopped with a diagnosis naming
 // it and the cell; one driven into a 2x finer region is not.
-#include <gtest/gtest.h>
-
 #include <fmt/format.h>
+#include <gtest/gtest.h>
 
 #include <string>
 
@@ -67,7 +66,8 @@ TEST(GimpContract, box_may_overlap_two_cells_but_not_three) {
   // ... but anywhere else among them it does not: 2 l_p > w.
   EXPECT_TRUE(stencil_overflows(a, 0.0086, lp));
   // A particle of a 0.5 mm cell (l_p = 0.125 mm) fits anywhere: 2 l_p <= 0.25 mm.
-  for (double x = 0.0060; x < 0.0120; x += 0.0137e-3) EXPECT_FALSE(stencil_overflows(a, x, 0.125e-3)) << x;
+  for (double x = 0.0060; x < 0.0120; x += 0.0137e-3)
+    EXPECT_FALSE(stencil_overflows(a, x, 0.125e-3)) << x;
   // The vectorized count agrees with the one-particle test.
   std::vector<double> xs, ls;
   int expected = 0;
@@ -96,7 +96,8 @@ TEST(GimpContract, coarse_particle_driven_into_4x_finer_region_stops_with_a_diag
       // Records when a particle first breaks the contract (the check only runs at re-sorts).
       if (first_breach < 0)
         for (std::size_t p = 0; p < s.particles.size(); ++p)
-          if (stencil_overflows(s.grid.x, s.particles.x[p], s.particles.half_x[p])) first_breach = s.step;
+          if (stencil_overflows(s.grid.x, s.particles.x[p], s.particles.half_x[p]))
+            first_breach = s.step;
       step(s);
     }
   } catch (const SimulationError& e) {
@@ -104,7 +105,8 @@ TEST(GimpContract, coarse_particle_driven_into_4x_finer_region_stops_with_a_diag
   }
   ASSERT_FALSE(message.empty()) << "no SimulationError by t = " << s.time;
   ASSERT_GE(first_breach, 0);
-  std::printf("first breach at step %ld, stopped at step %ld:\n%s\n", first_breach, s.step, message.c_str());
+  std::printf("first breach at step %ld, stopped at step %ld:\n%s\n", first_breach, s.step,
+              message.c_str());
   EXPECT_LE(s.step - first_breach, s.plan.sort_interval) << "detected at the next re-sort";
   // The sort threw before permuting: the first breaking particle is still in place.
   std::size_t p = 0;
@@ -125,4 +127,18 @@ TEST(GimpContract, coarse_particle_driven_into_2x_finer_region_runs) {
   double lead = 0.0;
   for (double x : s.particles.x) lead = std::max(lead, x);
   EXPECT_GT(lead, 0.0095) << "the block got well into the refined region (from 8 mm)";
+}
+
+// Debug builds (NDEBUG undefined) check every stencil against its tile: a particle far too
+// wide for its cells, here bypassing the re-sort check, stops at an assertion instead of
+// writing outside the tile. Release builds carry no such check (and skip this test).
+TEST(GimpContractDeathTest, debug_build_stops_a_stencil_outside_its_tile) {
+#ifdef NDEBUG
+  GTEST_SKIP() << "assertions are compiled out (NDEBUG)";
+#else
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  State s = make_state(moving_block(2));
+  s.particles.half_x[0] = 2.5e-3;  // 2.5 cells of 1 mm either side: five nodes along x
+  EXPECT_DEATH(particles_to_grid(s, true), "outside the tile");
+#endif
 }

@@ -1,9 +1,10 @@
 // rupture/io/case_checks.cpp
 #include "io/case_checks.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 
 #include "core/errors.hpp"
 #include "solver/summary.hpp"
@@ -13,10 +14,14 @@ namespace {
 
 const char* edge_name(Edge e) {
   switch (e) {
-    case Edge::left: return "left";
-    case Edge::right: return "right";
-    case Edge::bottom: return "bottom";
-    case Edge::top: return "top";
+    case Edge::left:
+      return "left";
+    case Edge::right:
+      return "right";
+    case Edge::bottom:
+      return "bottom";
+    case Edge::top:
+      return "top";
   }
   return "?";
 }
@@ -25,15 +30,18 @@ const char* edge_name(Edge e) {
 // plateau_time = 1.5e-05, fall_time = 1e-06)".
 std::string describe(const VelocityBC& bc) {
   const TimeFunction& f = bc.velocity;
-  if (f.kind == TimeFunction::Kind::constant) return fmt::format("velocity = {:g} (constant)", f.value);
-  return fmt::format("velocity = {:g} (trapezoid: rise_time = {:g}, plateau_time = {:g}, fall_time = {:g})",
-                     f.value, f.rise_time, f.plateau_time, f.fall_time);
+  if (f.kind == TimeFunction::Kind::constant)
+    return fmt::format("velocity = {:g} (constant)", f.value);
+  return fmt::format(
+      "velocity = {:g} (trapezoid: rise_time = {:g}, plateau_time = {:g}, fall_time = {:g})",
+      f.value, f.rise_time, f.plateau_time, f.fall_time);
 }
 
 bool same_function(const TimeFunction& a, const TimeFunction& b) {
   return a.kind == b.kind && a.value == b.value &&
          (a.kind == TimeFunction::Kind::constant ||
-          (a.rise_time == b.rise_time && a.plateau_time == b.plateau_time && a.fall_time == b.fall_time));
+          (a.rise_time == b.rise_time && a.plateau_time == b.plateau_time &&
+           a.fall_time == b.fall_time));
 }
 
 // Bodies (by name) both conditions act on; an empty field list means every body.
@@ -62,19 +70,22 @@ void check_boundary_conflicts(Case& c) {
       if (hi < lo - tol) continue;
       if (hi - lo <= tol) {  // ranges meet at a point: shared only if a node lies there
         const int k = along.cell_of(lo);
-        if (std::fabs(along.node(k) - lo) > tol && std::fabs(along.node(k + 1) - lo) > tol) continue;
+        if (std::fabs(along.node(k) - lo) > tol && std::fabs(along.node(k + 1) - lo) > tol)
+          continue;
       }
       const std::vector<std::string> bodies = shared_bodies(c, a, b);
       if (bodies.empty()) continue;
       std::string names;
       for (const std::string& n : bodies) names += (names.empty() ? "" : ", ") + n;
-      const std::string where = fmt::format(
-          "v_{} on the {} edge for {} {}, {} in [{:g}, {:g}] m", a.component == 0 ? "x" : "y",
-          edge_name(a.edge), bodies.size() > 1 ? "bodies" : "body", names, vertical ? "y" : "x", lo, hi);
+      const std::string where =
+          fmt::format("v_{} on the {} edge for {} {}, {} in [{:g}, {:g}] m",
+                      a.component == 0 ? "x" : "y", edge_name(a.edge),
+                      bodies.size() > 1 ? "bodies" : "body", names, vertical ? "y" : "x", lo, hi);
       if (same_function(a.velocity, b.velocity)) {
-        c.warnings.push_back(fmt::format("boundary.{} and boundary.{} both prescribe {} with the same {}: "
-                                         "redundant (one of them is enough)",
-                                         a.name, b.name, where, describe(a)));
+        c.warnings.push_back(
+            fmt::format("boundary.{} and boundary.{} both prescribe {} with the same {}: "
+                        "redundant (one of them is enough)",
+                        a.name, b.name, where, describe(a)));
         continue;
       }
       throw InputError(fmt::format(
@@ -93,10 +104,11 @@ void warn_touching_bodies(Case& c) {
   for (std::size_t i = 0; i < c.bodies.size(); ++i)
     for (std::size_t j = i + 1; j < c.bodies.size(); ++j) {
       const BodySpec &a = c.bodies[i], &b = c.bodies[j];
-      const bool joined = std::any_of(c.interfaces.begin(), c.interfaces.end(), [&](const InterfaceSpec& s) {
-        return (s.upper_field == a.field && s.lower_field == b.field) ||
-               (s.upper_field == b.field && s.lower_field == a.field);
-      });
+      const bool joined =
+          std::any_of(c.interfaces.begin(), c.interfaces.end(), [&](const InterfaceSpec& s) {
+            return (s.upper_field == a.field && s.lower_field == b.field) ||
+                   (s.upper_field == b.field && s.lower_field == a.field);
+          });
       if (joined) continue;
       for (int d = 0; d < 2; ++d) {  // contact across a line of constant coordinate d
         const int e = 1 - d;
