@@ -61,8 +61,9 @@ bool stencil_overflows(const Axis& a, double x, double lp) {
 
 std::size_t count_stencil_overflows(const Axis& a, const double* x, const double* lp, std::size_t n) {
   if (!a.graded()) return 0;
-  // cell_of and node written out over plain arrays, so the loop vectorizes (gathers).
-  const double origin = a.origin, inv_h = 1.0 / a.h, tol = kContractTolerance * a.h;
+  // cell_of and node written out over plain arrays, so the loop vectorizes (gathers); the same
+  // arithmetic as cell_of, so the count agrees with stencil_overflows to the last bit.
+  const double origin = a.origin, h = a.h, tol = kContractTolerance * a.h;
   const double last_unit = double(a.cell_of_unit.size()) - 1.0;
   const int* cell_of_unit = a.cell_of_unit.data();
   const double* coord = a.coord.data();
@@ -70,7 +71,7 @@ std::size_t count_stencil_overflows(const Axis& a, const double* x, const double
   std::size_t count = 0;
 #pragma omp parallel for simd reduction(+ : count)
   for (std::size_t p = 0; p < n; ++p) {
-    const double u = std::clamp(std::floor((x[p] - lp[p] - origin) * inv_h), 0.0, last_unit);
+    const double u = std::clamp(std::floor((x[p] - lp[p] - origin) / h), 0.0, last_unit);
     const int last = std::min(cell_of_unit[std::size_t(u)] + 2, cells);
     count += x[p] + lp[p] > coord[last] + tol ? 1 : 0;
   }

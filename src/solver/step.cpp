@@ -180,7 +180,8 @@ void check_gimp_contract(const State& s) {
     const Axis& a = *axes[d];
     if (count_stencil_overflows(a, pos[d], half[d], P.size()) == 0) continue;
     std::size_t p = 0;
-    while (!stencil_overflows(a, pos[d][p], half[d][p])) ++p;
+    while (p < P.size() && !stencil_overflows(a, pos[d][p], half[d][p])) ++p;
+    if (p == P.size()) continue;  // cannot happen: both tests share their arithmetic
     const double lp = half[d][p], lo = pos[d][p] - lp, hi = pos[d][p] + lp;
     int cell = a.cell_of(lo) + 1;  // the narrowest cell wholly inside the box
     for (int c = cell; c + 1 <= a.cells && a.node(c + 1) <= hi; ++c)
