@@ -140,3 +140,79 @@ TEST(CaseToml, overlapping_bodies_are_rejected) {
   const std::string msg = error_of(text);
   EXPECT_NE(msg.find("overlaps"), std::string::npos) << msg;
 }
+
+namespace {
+
+// The strip case with one more [boundary.NAME] table on `edge` (extra lines appended).
+std::string with_condition(const std::string& name, const std::string& lines) {
+  return replace(test::strip_case_toml(), "[output]", "[boundary." + name + "]\n" + lines + "\n[output]");
+}
+
+bool any_warning_has(const Case& c, const std::string& text) {
+  for (const std::string& w : c.warnings)
+    if (w.find(text) != std::string::npos) return true;
+  return false;
+}
+
+}  // namespace
+
+TEST(CaseToml, conflicting_velocity_conditions_on_shared_nodes_are_rejected) {
+  // boundary.push: v_x = 1 on the whole left edge (y in [0, 2] mm), nodes every 0.5 mm.
+  const std::string msg = error_of(with_condition("pull", "edge = \"left\"\ncomponent = \"x\"\nfrom = 0.001\nvelocity = -2.0"));
+  for (const char* s : {"'boundary.push'", "'boundary.pull'", "v_x on the left edge", "y in [0.001, 0.002] m",
+                        "boundary.push: velocity = 1 (constant)", "boundary.pull: velocity = -2 (constant)",
+                        "disjoint"})
+    EXPECT_NE(msg.find(s), std::string::npos) << "missing '" << s << "' in: " << msg;
+  // Same value, other time function: still two values on one node.
+  EXPECT_NE(error_of(with_condition("ramp", "edge = \"left\"\ncomponent = \"x\"\nfunction = \"trapezoid\"\n"
+                                            "velocity = 1.0\nrise_time = 1e-7\nplateau_time = 1e-6\nfall_time = 1e-7"))
+                .find("trapezoid: rise_time = 1e-07"),
+            std::string::npos);
+  // Ranges meeting on a node (y = 1 mm) share it ...
+  const std::string push_low = "boundary.push.to=0.001";
+  EXPECT_NE(error_of(with_condition("pull", "edge = \"left\"\ncomponent = \"x\"\nfrom = 0.001\nvelocity = -2.0"), {push_low}),
+            "");
+  // ... between nodes they do not; nor do other components, edges or disjoint ranges.
+  EXPECT_EQ(error_of(with_condition("pull", "edge = \"left\"\ncomponent = \"x\"\nfrom = 0.00125\nvelocity = -2.0"),
+                     {"boundary.push.to=0.00125"}), "");
+  EXPECT_EQ(error_of(with_condition("slide", "edge = \"left\"\ncomponent = \"y\"\nvelocity = -2.0")), "");
+  EXPECT_EQ(error_of(with_condition("pull", "edge = \"right\"\ncomponent = \"x\"\nvelocity = -2.0")), "");
+}
+
+TEST(CaseToml, identical_conditions_on_shared_nodes_are_redundant_not_wrong) {
+  const Case c = parse_case(with_condition("again", "edge = \"left\"\ncomponent = \"x\"\nto = 0.001\nvelocity = 1.0"));
+  ASSERT_EQ(c.warnings.size(), 1u);
+  EXPECT_NE(c.warnings[0].find("boundary.again and boundary.push"), std::string::npos) << c.warnings[0];
+  EXPECT_NE(c.warnings[0].find("redundant"), std::string::npos) << c.warnings[0];
+}
+
+TEST(CaseToml, touching_bodies_without_an_interface_are_warned_about) {
+  EXPECT_TRUE(parse_case(test::strip_case_toml()).warnings.empty());
+  // The strip cut in two at x = 5 mm: two velocity fields meeting along x = 0.005, y in [0, 2] mm.
+  const std::vector<std::string> cut = {"bodies.strip.max=[0.005, 0.002]", "bodies.right.material=homalite",
+                                        "bodies.right.min=[0.005, 0.0]", "bodies.right.max=[0.01, 0.002]"};
+  const Case c = parse_case(test::strip_case_toml(), cut);
+  ASSERT_EQ(c.warnings.size(), 1u);
+  for (const char* s : {"bodies.right and bodies.strip", "x = 0.005 m, y in [0, 0.002] m", "no [interface]",
+                        "pass through each other"})
+    EXPECT_NE(c.warnings[0].find(s), std::string::npos) << "missing '" << s << "' in: " << c.warnings[0];
+  // Meeting at a corner only, or apart: nothing to say.
+  const Case corner = parse_case(test::strip_case_toml(),
+                                 {"bodies.strip.max=[0.005, 0.001]", "bodies.right.material=homalite",
+                                  "bodies.right.min=[0.005, 0.001]", "bodies.right.max=[0.01, 0.002]"});
+  EXPECT_TRUE(corner.warnings.empty()) << corner.warnings.front();
+  // The reference problem's halves touch along y = 0 but are joined by the weak plane (a
+  // cohesive interface from the notch tip on, bonded beyond its end; the notch itself is the
+  // pre-crack): no warning. Its upper body is the second field: the pair matches either way.
+  const Case reference = load_case(std::string(RUPTURE_SOURCE_DIR) + "/examples/rosakis1999.toml");
+  EXPECT_TRUE(reference.warnings.empty()) << reference.warnings.front();
+}
+
+TEST(CaseToml, a_run_of_more_than_ten_million_steps_is_warned_about) {
+  // dt = 0.4 x 0.5 mm / c_D = 7.9e-8 s: 1 s is 1.27e7 steps, 0.5 s 6.3e6.
+  EXPECT_TRUE(parse_case(test::strip_case_toml(), {"time.end=0.5"}).warnings.empty());
+  const Case c = parse_case(test::strip_case_toml(), {"time.end=1.0"});
+  ASSERT_EQ(c.warnings.size(), 1u);
+  EXPECT_TRUE(any_warning_has(c, "12672353 time steps")) << c.warnings[0];
+  EXPECT_TRUE(any_warning_has(c, "more than 1e7")) << c.warnings[0];
+}

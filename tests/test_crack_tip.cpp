@@ -122,7 +122,19 @@ TEST(CrackTip, reaching_the_end_of_the_cohesive_line_is_recorded) {
   const CrackSummary arrested = tracker.summarize(c, kHomalite, 2e-6);
   EXPECT_NEAR(arrested.end_reached_time, 4.88e-6, 1e-12);
   EXPECT_LT(arrested.sustained_speed, 0.01 * v) << "a window after the arrival sees no motion";
-  CrackTracker never;
-  never.sample(c, 0.0);
-  EXPECT_LT(CrackTracker(0.0).end_reached_time(), 0.0);
+
+  // A tip that stops short of the tolerance is never recorded; the same tracker records the
+  // sample where it gets within it.
+  CohesiveInterface short_of_end = line();
+  for (std::size_t k = 0; k <= 97; ++k) short_of_end.node_crack_time[k] = 0.0;  // tip 9.7 mm
+  CrackTracker approaching(0.25e-3);
+  approaching.sample(short_of_end, 1e-6);
+  EXPECT_LT(approaching.end_reached_time(), 0.0) << "tip 9.7 mm, end 10 mm, tolerance 0.25 mm";
+  short_of_end.node_crack_time[98] = 2e-6;  // tip 9.8 mm
+  approaching.sample(short_of_end, 2e-6);
+  EXPECT_DOUBLE_EQ(approaching.end_reached_time(), 2e-6);
+  // An intact line's "tip" is its start: however wide the tolerance, nothing reached the end.
+  CrackTracker intact(0.02);
+  intact.sample(line(), 1e-6);
+  EXPECT_LT(intact.end_reached_time(), 0.0) << "no crack, so no arrival";
 }

@@ -143,6 +143,7 @@ int main(int argc, char** argv) {
 
   try {
     const Case c = load_case(case_path, overrides);
+    for (const std::string& w : c.warnings) fmt::print(stderr, "warning: {}\n", w);
     if (check->parsed()) {
       print_check(case_path, c);
       return 0;

@@ -47,6 +47,39 @@ double Axis::min_width() const {
 
 namespace {
 
+// Round-off allowance of the contract test: a box that reaches x_{first+2} within it puts a
+// weight of order (1e-9)^2 on a fourth node.
+constexpr double kContractTolerance = 1e-9;
+
+}  // namespace
+
+bool stencil_overflows(const Axis& a, double x, double lp) {
+  if (!a.graded()) return false;
+  const int last = std::min(a.cell_of(x - lp) + 2, a.cells);  // no node beyond the last
+  return x + lp > a.node(last) + kContractTolerance * a.h;
+}
+
+std::size_t count_stencil_overflows(const Axis& a, const double* x, const double* lp, std::size_t n) {
+  if (!a.graded()) return 0;
+  // cell_of and node written out over plain arrays, so the loop vectorizes (gathers); the same
+  // arithmetic as cell_of, so the count agrees with stencil_overflows to the last bit.
+  const double origin = a.origin, h = a.h, tol = kContractTolerance * a.h;
+  const double last_unit = double(a.cell_of_unit.size()) - 1.0;
+  const int* cell_of_unit = a.cell_of_unit.data();
+  const double* coord = a.coord.data();
+  const int cells = a.cells;
+  std::size_t count = 0;
+#pragma omp parallel for simd reduction(+ : count)
+  for (std::size_t p = 0; p < n; ++p) {
+    const double u = std::clamp(std::floor((x[p] - lp[p] - origin) / h), 0.0, last_unit);
+    const int last = std::min(cell_of_unit[std::size_t(u)] + 2, cells);
+    count += x[p] + lp[p] > coord[last] + tol ? 1 : 0;
+  }
+  return count;
+}
+
+namespace {
+
 // Cell widths of one graded axis, in units of the finest size (powers of two).
 std::vector<long> graded_widths(long units, long coarse, const std::vector<std::array<long, 3>>& boxes) {
   // Size asked for at every unit: the smallest box size covering it, coarse elsewhere.

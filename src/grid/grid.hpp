@@ -85,6 +85,24 @@ inline void stencil(const Axis& a, double xp, double lp, Stencil1D& st) {
   gimp_uniform_stencil(xi - double(first), lp * inv_h, inv_h, st.s, st.ds);
 }
 
+// The GIMP stencil contract along one graded axis (SPEC E3, graded form). stencil() takes the
+// nodes first .. first + 2 with first = the cell holding the box's left edge x - lp, i.e. the
+// nodes of cells first and first + 1. The weights are complete (partition of unity, and no
+// write past the tile rows and columns that solver/step.cpp reserves) exactly when the box
+// [x - lp, x + lp] overlaps at most those two cells:
+//     x + lp <= x_{first+2}   <=>   2 lp <= (x_{first+1} - (x - lp)) + w_{first+1},
+// that is, no cell lies wholly inside the box. Since 0 < x_{first+1} - (x - lp) <= w_first,
+// lp <= w/2 for every cell the box overlaps (SPEC §2's lp <= h/2) is sufficient wherever the
+// particle sits, and 2 lp > w_{first+1} breaks it somewhere in that cell. A uniform axis with
+// lp <= h/2 always holds it. On a graded axis particles keep the half-width of the cell they
+// were made in (uGIMP), so one that moves from cells of width w into cells narrower than w/2
+// (ppc = 2: lp = w/4 against a cell of w/4, a 4x finer region) breaks it.
+// Returns how many of the n particles break the contract along this axis (0 on a uniform
+// axis); a cheap, vectorizable loop, run at every re-sort.
+std::size_t count_stencil_overflows(const Axis& a, const double* x, const double* lp, std::size_t n);
+// Whether the particle at x with half-width lp breaks it (the test above, one particle).
+bool stencil_overflows(const Axis& a, double x, double lp);
+
 struct Grid {
   Axis x, y;
   int ghost = 2;           // ghost cells on each side

@@ -95,6 +95,7 @@ struct Case {
   std::vector<std::string> interface_names;
   OutputSpec output;
   std::string input_toml;  // the merged input (file + --set) as TOML, echoed into run.json
+  std::vector<std::string> warnings;  // legal but suspicious input (io/case_checks), for stderr
 };
 
 const char* scheme_name(Scheme s);

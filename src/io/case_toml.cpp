@@ -10,6 +10,7 @@
 #include <toml++/toml.h>
 
 #include "core/errors.hpp"
+#include "io/case_checks.hpp"
 
 namespace rupture {
 namespace {
@@ -549,6 +550,8 @@ Case build_case(const toml::table& root) {
                              d == 0 ? "x" : "y", lo, hi, hi - lo));
         }
   }
+
+  check_case_consistency(c);
 
   std::ostringstream echo;
   echo << toml::toml_formatter{root};

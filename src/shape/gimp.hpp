@@ -4,7 +4,8 @@
 //  - gimp_uniform: closed form for a uniform axis of spacing h (the hot path);
 //  - gimp_graded: any node with left/right cell sizes hL, hR (graded tensor-product grids).
 // Both return S_ip and dS_ip/dx_p for one axis; 2D weights are products (S(dx)S(dy)).
-// Contract: lp > 0, lp <= min(h)/2; the partition of unity holds for any such lp.
+// Contract: lp > 0, lp <= min(h)/2; the partition of unity holds for any such lp. (On a graded
+// axis the exact condition for a complete 3-node stencil is in grid/grid.hpp.)
 #pragma once
 #include <algorithm>
 #include <cmath>

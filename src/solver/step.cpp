@@ -4,6 +4,7 @@
 #include "solver/step.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <chrono>
 #include <cmath>
 #include <fmt/format.h>
@@ -95,9 +96,12 @@ inline void batch_stencils(const State& s, std::size_t p0, int n, StencilBatch& 
   axis_stencils(s.grid.x, P.x.data() + p0, P.half_x.data() + p0, n, B.sx, B.dsx, fx);
   axis_stencils(s.grid.y, P.y.data() + p0, P.half_y.data() + p0, n, B.sy, B.dsy, fy);
   const std::size_t nx = std::size_t(s.grid.nodes_x()), nn = s.fields.num_nodes;
-  for (int k = 0; k < n; ++k)
+  for (int k = 0; k < n; ++k) {
+    // Debug builds: the 3 x 3 stencil lies in the grid (the gathers index it directly).
+    assert(fx[k] >= 0 && fx[k] + 2 < s.grid.nodes_x() && fy[k] >= 0 && fy[k] + 2 < s.grid.nodes_y());
     B.base[k] = std::size_t(P.field[p0 + std::size_t(k)]) * nn + std::size_t(fy[k]) * nx +
                 std::size_t(fx[k]);
+  }
 }
 
 // Runs body(p, k, B) for particles [begin, end), batch by batch (k: index in the batch B).
@@ -165,9 +169,46 @@ std::string diagnose_bad_particles(const State& s, double xlo, double xhi, doubl
       outside, where, xlo, xhi, ylo, yhi);
 }
 
+// The GIMP contract of grid/grid.hpp (count_stencil_overflows), checked at every re-sort on a
+// graded grid: a particle breaking it would silently lose a node of its weights.
+void check_gimp_contract(const State& s) {
+  if (!s.grid.graded()) return;
+  const Particles& P = s.particles;
+  const Axis* axes[2] = {&s.grid.x, &s.grid.y};
+  const double* pos[2] = {P.x.data(), P.y.data()};
+  const double* half[2] = {P.half_x.data(), P.half_y.data()};
+  for (int d = 0; d < 2; ++d) {
+    const Axis& a = *axes[d];
+    if (count_stencil_overflows(a, pos[d], half[d], P.size()) == 0) continue;
+    std::size_t p = 0;
+    while (p < P.size() && !stencil_overflows(a, pos[d][p], half[d][p])) ++p;
+    if (p == P.size()) continue;  // cannot happen: both tests share their arithmetic
+    const double lp = half[d][p], lo = pos[d][p] - lp, hi = pos[d][p] + lp;
+    int cell = a.cell_of(lo) + 1;  // the narrowest cell wholly inside the box
+    for (int c = cell; c + 1 <= a.cells && a.node(c + 1) <= hi; ++c)
+      if (a.width(c) < a.width(cell)) cell = c;
+    const char* name = d == 0 ? "x" : "y";
+    const int col = d == 0 ? cell : s.grid.x.cell_of(P.x[p]);
+    const int row = d == 1 ? cell : s.grid.y.cell_of(P.y[p]);
+    throw SimulationError(fmt::format(
+        "GIMP contract broken at step {}, t = {:.6g} s: particle {} (field {}) at (x, y) = "
+        "({:.6g}, {:.6g}) m with half-widths (l_x, l_y) = ({:.4g}, {:.4g}) m spans, along {}, "
+        "[{:.6g}, {:.6g}] m, which holds cell (column {}, row {}) of width {:.4g} m whole: its "
+        "3-node stencil (SPEC E3) loses a node: the box may overlap at most two cells, so 2 l_p "
+        "must not exceed the width of a cell it reaches. A particle keeps the size of the cell "
+        "it was made in (l_p = a quarter of it at 2 x 2 per cell), so this one came from cells "
+        "more than twice as wide. Move the refinement-box transition further from moving "
+        "material (larger [grid.refine] boxes, so that material stays in cells at most 2x "
+        "finer than where it started), or refine where it starts as well",
+        s.step, s.time, P.id[p], int(P.field[p]), P.x[p], P.y[p], P.half_x[p], P.half_y[p],
+        name, lo, hi, col, row, a.width(cell)));
+  }
+}
+
 }  // namespace
 
 void sort_particles(State& s) {
+  check_gimp_contract(s);
   ScatterPlan& plan = s.plan;
   Particles& P = s.particles;
   const std::size_t n = P.size();
@@ -216,12 +257,19 @@ struct TileLayout {
   std::vector<int> row0, rows;     // per field: first node row, number of rows (0: absent)
   std::vector<std::size_t> start;  // per field: offset of its first node in the tile
   std::size_t size() const { return start.back(); }
-  // Tile index of the node with grid index `base` (field offset included) of field f.
+  // Tile index of the node with grid index `base` (field offset included) of field f: the
+  // first node of a particle's 3 x 3 stencil. Debug builds check that the whole stencil lies
+  // in the tile; a particle breaking the GIMP contract (grid/grid.hpp) could write outside it.
   std::size_t index(const State& s, std::size_t f, std::size_t base) const {
     const std::size_t nx = std::size_t(s.grid.nodes_x());
+    assert(f < rows.size() && base >= s.fields.offset(int(f)));
     const std::size_t local = base - s.fields.offset(int(f));
     const int gx = int(local % nx), gy = int(local / nx);
-    return start[f] + std::size_t(gy - row0[f]) * std::size_t(cols) + std::size_t(gx - col0);
+    assert(gy >= row0[f] && gy + 2 < row0[f] + rows[f] && "stencil rows outside the tile");
+    assert(gx >= col0 && gx + 2 < col0 + cols && "stencil columns outside the tile");
+    const std::size_t t = start[f] + std::size_t(gy - row0[f]) * std::size_t(cols) + std::size_t(gx - col0);
+    assert(t + 2 * std::size_t(cols) + 2 < size());
+    return t;
   }
 };
 

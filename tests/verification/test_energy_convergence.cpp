@@ -63,18 +63,27 @@ double standing_wave_error(double h) {
 
 }  // namespace
 
-TEST(Convergence, standing_wave_error_falls_at_least_first_order) {
+// uGIMP on a smooth solution converges at about 3/2 (the weight gradients jump where the
+// particle box meets a node, which costs the second order of linear FEM). Measured here:
+// rates 1.37, 1.48, 1.51 between successive grids, 1.45 overall (errors 4.87e-2 ... 2.38e-3).
+// The errors are deterministic (no dependence on threads, see below), so the margins below
+// (0.07 for each rate, 0.05 overall) only allow for round-off and compiler differences and for
+// small changes of the time step; a loss of 0.1 in order would mean a real loss of accuracy
+// (7 % larger error per halving of h).
+TEST(Convergence, standing_wave_error_falls_at_three_halves_order) {
   const std::vector<double> hs = {1e-3, 0.5e-3, 0.25e-3, 0.125e-3};
+  const std::vector<double> measured = {1.37, 1.48, 1.51};  // rate between hs[k-1] and hs[k]
   std::vector<double> err;
   for (double h : hs) err.push_back(standing_wave_error(h));
   for (std::size_t k = 1; k < hs.size(); ++k) {
     const double rate = std::log(err[k - 1] / err[k]) / std::log(hs[k - 1] / hs[k]);
     std::printf("h = %.4g mm: error %.3e, rate %.2f\n", hs[k] * 1e3, err[k], rate);
-    EXPECT_GE(rate, 1.0) << "between h = " << hs[k - 1] << " and " << hs[k];
+    EXPECT_GE(rate, measured[k - 1] - 0.07) << "between h = " << hs[k - 1] << " and " << hs[k]
+                                            << " (measured " << measured[k - 1] << ", margin 0.07)";
   }
   const double overall = std::log(err.front() / err.back()) / std::log(hs.front() / hs.back());
   std::printf("standing wave: observed order %.2f (errors %.3e ... %.3e)\n", overall, err.front(), err.back());
-  EXPECT_GE(overall, 1.0);
+  EXPECT_GE(overall, 1.45 - 0.05) << "observed order (measured 1.45, margin 0.05)";
 }
 
 TEST(Threads, results_do_not_depend_on_the_thread_count) {

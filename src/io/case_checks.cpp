@@ -1,0 +1,152 @@
+// rupture/io/case_checks.cpp
+#include "io/case_checks.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/errors.hpp"
+#include "solver/summary.hpp"
+
+namespace rupture {
+namespace {
+
+const char* edge_name(Edge e) {
+  switch (e) {
+    case Edge::left:
+      return "left";
+    case Edge::right:
+      return "right";
+    case Edge::bottom:
+      return "bottom";
+    case Edge::top:
+      return "top";
+  }
+  return "?";
+}
+
+// The time function as the input states it, e.g. "velocity = 10 (trapezoid: rise_time = 1e-07,
+// plateau_time = 1.5e-05, fall_time = 1e-06)".
+std::string describe(const VelocityBC& bc) {
+  const TimeFunction& f = bc.velocity;
+  if (f.kind == TimeFunction::Kind::constant)
+    return fmt::format("velocity = {:g} (constant)", f.value);
+  return fmt::format(
+      "velocity = {:g} (trapezoid: rise_time = {:g}, plateau_time = {:g}, fall_time = {:g})",
+      f.value, f.rise_time, f.plateau_time, f.fall_time);
+}
+
+bool same_function(const TimeFunction& a, const TimeFunction& b) {
+  return a.kind == b.kind && a.value == b.value &&
+         (a.kind == TimeFunction::Kind::constant ||
+          (a.rise_time == b.rise_time && a.plateau_time == b.plateau_time &&
+           a.fall_time == b.fall_time));
+}
+
+// Bodies (by name) both conditions act on; an empty field list means every body.
+std::vector<std::string> shared_bodies(const Case& c, const VelocityBC& a, const VelocityBC& b) {
+  std::vector<std::string> names;
+  for (const BodySpec& body : c.bodies) {
+    auto acts = [&](const VelocityBC& bc) {
+      return bc.fields.empty() || std::count(bc.fields.begin(), bc.fields.end(), body.field) > 0;
+    };
+    if (acts(a) && acts(b)) names.push_back(body.name);
+  }
+  return names;
+}
+
+// SPEC E2: a node takes one prescribed value per component. resolve_nodes() applies the
+// conditions in input order, so of two that disagree the later one would silently win.
+void check_boundary_conflicts(Case& c) {
+  const Grid grid = build_grid(c.grid);
+  for (std::size_t i = 0; i < c.boundary.size(); ++i)
+    for (std::size_t j = i + 1; j < c.boundary.size(); ++j) {
+      const VelocityBC &a = c.boundary[i], &b = c.boundary[j];
+      if (a.edge != b.edge || a.component != b.component) continue;
+      const bool vertical = a.edge == Edge::left || a.edge == Edge::right;
+      const Axis& along = vertical ? grid.y : grid.x;
+      const double lo = std::max(a.from, b.from), hi = std::min(a.to, b.to), tol = 1e-9 * along.h;
+      if (hi < lo - tol) continue;
+      if (hi - lo <= tol) {  // ranges meet at a point: shared only if a node lies there
+        const int k = along.cell_of(lo);
+        if (std::fabs(along.node(k) - lo) > tol && std::fabs(along.node(k + 1) - lo) > tol)
+          continue;
+      }
+      const std::vector<std::string> bodies = shared_bodies(c, a, b);
+      if (bodies.empty()) continue;
+      std::string names;
+      for (const std::string& n : bodies) names += (names.empty() ? "" : ", ") + n;
+      const std::string where =
+          fmt::format("v_{} on the {} edge for {} {}, {} in [{:g}, {:g}] m",
+                      a.component == 0 ? "x" : "y", edge_name(a.edge),
+                      bodies.size() > 1 ? "bodies" : "body", names, vertical ? "y" : "x", lo, hi);
+      if (same_function(a.velocity, b.velocity)) {
+        c.warnings.push_back(
+            fmt::format("boundary.{} and boundary.{} both prescribe {} with the same {}: "
+                        "redundant (one of them is enough)",
+                        a.name, b.name, where, describe(a)));
+        continue;
+      }
+      throw InputError(fmt::format(
+          "input keys 'boundary.{}' and 'boundary.{}' both prescribe {}, with different values: "
+          "boundary.{}: {}; boundary.{}: {}. A node takes one prescribed velocity per component: "
+          "give both the same function and values, or make their from/to ranges, edges or bodies "
+          "disjoint",
+          a.name, b.name, where, a.name, describe(a), b.name, describe(b)));
+    }
+}
+
+// Two bodies are two velocity fields (SPEC §3): they interact only through a cohesive
+// interface. Touching along a segment without one, they pass through each other.
+void warn_touching_bodies(Case& c) {
+  const double tol = 1e-9 * c.grid.cell_size;
+  for (std::size_t i = 0; i < c.bodies.size(); ++i)
+    for (std::size_t j = i + 1; j < c.bodies.size(); ++j) {
+      const BodySpec &a = c.bodies[i], &b = c.bodies[j];
+      const bool joined =
+          std::any_of(c.interfaces.begin(), c.interfaces.end(), [&](const InterfaceSpec& s) {
+            return (s.upper_field == a.field && s.lower_field == b.field) ||
+                   (s.upper_field == b.field && s.lower_field == a.field);
+          });
+      if (joined) continue;
+      for (int d = 0; d < 2; ++d) {  // contact across a line of constant coordinate d
+        const int e = 1 - d;
+        const double lo = std::max(a.min[e], b.min[e]), hi = std::min(a.max[e], b.max[e]);
+        if (hi - lo <= tol) continue;
+        const bool a_below = std::fabs(a.max[d] - b.min[d]) <= tol;
+        if (a_below || std::fabs(b.max[d] - a.min[d]) <= tol) {
+          const double line = a_below ? a.max[d] : a.min[d];
+          c.warnings.push_back(fmt::format(
+              "bodies.{} and bodies.{} touch along {} = {:g} m, {} in [{:g}, {:g}] m, but no "
+              "[interface] joins them: each body is its own velocity field, so they will pass "
+              "through each other. Join them with an [interface.NAME] (upper_body, lower_body; "
+              "bonded_to ties a stretch), or make them one body",
+              a.name, b.name, d == 0 ? "x" : "y", line, e == 0 ? "x" : "y", lo, hi));
+        }
+      }
+    }
+}
+
+constexpr long kManySteps = 10000000;
+
+void warn_long_run(Case& c) {
+  const CaseSummary s = summarize(c);
+  if (s.steps <= kManySteps) return;
+  c.warnings.push_back(fmt::format(
+      "the run takes {} time steps (more than 1e7): time.end = {:g} s at dt = {:.4g} s ({}); "
+      "check time.end and grid.cell_size",
+      s.steps, c.time.end, s.dt,
+      s.dt < s.dt_cfl ? "the cohesive stability limit x time.cohesive_safety, SPEC E6"
+                      : "time.cfl x the smallest cell / c_D, SPEC E6"));
+}
+
+}  // namespace
+
+void check_case_consistency(Case& c) {
+  check_boundary_conflicts(c);
+  warn_touching_bodies(c);
+  warn_long_run(c);
+}
+
+}  // namespace rupture

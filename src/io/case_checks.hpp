@@ -1,0 +1,17 @@
+// rupture/io/case_checks.hpp
+// Consistency checks across the tables of a parsed Case, run by io/case_toml before any work:
+//  - two boundary conditions prescribing the same velocity component on shared nodes (same
+//    edge, overlapping ranges, a body in common) with different time functions: InputError
+//    naming both keys, their values and what is allowed (identical ones: a warning);
+//  - bodies that touch along a segment of nonzero length with no [interface] between them:
+//    a warning (each body is its own velocity field, so they pass through each other);
+//  - a run of more than 1e7 time steps: a warning.
+// Warnings are appended to Case::warnings; the CLI prints them as `warning: ...` on stderr.
+#pragma once
+#include "io/case.hpp"
+
+namespace rupture {
+
+void check_case_consistency(Case& c);
+
+}  // namespace rupture
