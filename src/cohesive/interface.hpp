@@ -26,6 +26,8 @@ struct InterfaceSpec {
   double bonded_from = 0.0, bonded_to = 0.0;  // m
 };
 
+// Every member must also be written in io/checkpoint.cpp (restart is bitwise), except `spec`,
+// which is rebuilt from the case.
 struct CohesiveInterface {
   static constexpr int kGauss = 4;  // Gauss points per segment (E9)
   InterfaceSpec spec;
