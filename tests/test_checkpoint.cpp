@@ -18,11 +18,12 @@ namespace {
 
 // The reference problem, cropped and coarse (1 mm, uniform): 30000 particles, 12000 segments.
 Case small_rosakis() {
-  return load_case(std::string(RUPTURE_SOURCE_DIR) + "/examples/rosakis1999.toml",
-                   {"grid.min=[0.0,-0.06]", "grid.max=[0.075,0.04]", "bodies.upper.max=[0.075,0.04]",
-                    "bodies.lower.min=[0.0,-0.06]", "bodies.lower.max=[0.075,0.0]",
-                    "interface.weak_plane.bonded_to=0.075", "grid.cell_size=1e-3",
-                    "grid.coarse_cell_size=0", "boundary.impact.velocity=60"});
+  return load_case(
+      std::string(RUPTURE_SOURCE_DIR) + "/examples/rosakis1999.toml",
+      {"grid.min=[0.0,-0.06]", "grid.max=[0.075,0.04]", "bodies.upper.max=[0.075,0.04]",
+       "bodies.lower.min=[0.0,-0.06]", "bodies.lower.max=[0.075,0.0]",
+       "interface.weak_plane.bonded_to=0.075", "grid.cell_size=1e-3", "grid.coarse_cell_size=0",
+       "boundary.impact.velocity=60"});
 }
 
 std::string scratch_dir(const char* name) {
@@ -45,11 +46,13 @@ void advance(RunContext& r, int steps) {
     r.history.samples.push_back(EnergySample{r.s.time, kinetic_energy(r.s.particles),
                                              strain_energy(r.s.particles), r.s.external_work,
                                              r.s.initial_energy});
-    for (std::size_t i = 0; i < r.cracks.size(); ++i) r.cracks[i].sample(r.s.interfaces[i], r.s.time);
+    for (std::size_t i = 0; i < r.cracks.size(); ++i)
+      r.cracks[i].sample(r.s.interfaces[i], r.s.time);
   }
 }
 
-template <class T> bool bitwise_equal(const std::vector<T>& a, const std::vector<T>& b) {
+template <class T>
+bool bitwise_equal(const std::vector<T>& a, const std::vector<T>& b) {
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
 }
 
@@ -78,13 +81,15 @@ TEST(Checkpoint, round_trip_is_bitwise_and_the_run_continues_bitwise) {
   EXPECT_EQ(checkpoint_bytes(kSource, b), bytes) << "re-written checkpoint differs";
   const Particles &pa = a.s.particles, &pb = b.s.particles;
   EXPECT_TRUE(bitwise_equal(pa.id, pb.id)) << "particle order";
-  EXPECT_TRUE(bitwise_equal(pa.x, pb.x) && bitwise_equal(pa.vy, pb.vy) && bitwise_equal(pa.sxy, pb.sxy) &&
-              bitwise_equal(pa.exy, pb.exy) && bitwise_equal(pa.volume, pb.volume));
+  EXPECT_TRUE(bitwise_equal(pa.x, pb.x) && bitwise_equal(pa.vy, pb.vy) &&
+              bitwise_equal(pa.sxy, pb.sxy) && bitwise_equal(pa.exy, pb.exy) &&
+              bitwise_equal(pa.volume, pb.volume));
   EXPECT_TRUE(bitwise_equal(a.s.plan.strip_begin, b.s.plan.strip_begin));
   EXPECT_EQ(a.s.plan.sorted_step, b.s.plan.sorted_step);
   const CohesiveInterface &ia = a.s.interfaces[0], &ib = b.s.interfaces[0];
   EXPECT_TRUE(bitwise_equal(ia.gp_dn, ib.gp_dn) && bitwise_equal(ia.gp_tt, ib.gp_tt) &&
-              bitwise_equal(ia.gp_separated, ib.gp_separated) && bitwise_equal(ia.ux_up, ib.ux_up) &&
+              bitwise_equal(ia.gp_separated, ib.gp_separated) &&
+              bitwise_equal(ia.ux_up, ib.ux_up) &&
               bitwise_equal(ia.node_crack_time, ib.node_crack_time));
   EXPECT_EQ(ia.work, ib.work);
   EXPECT_EQ(ib.spec.segments, 12000) << "the spec comes from the case, kept";
@@ -153,8 +158,8 @@ TEST(Checkpoint, truncated_corrupt_foreign_and_other_case_files_are_refused) {
   m = restore_error(other_version, c);
   EXPECT_NE(m.find("format version 99"), std::string::npos) << m;
   // A checkpoint of another case (another particle count) does not restore into this one.
-  const Case bigger = parse_case(test::strip_case_toml(), {"grid.max=[0.02,0.002]",
-                                                           "bodies.strip.max=[0.02,0.002]"});
+  const Case bigger = parse_case(test::strip_case_toml(),
+                                 {"grid.max=[0.02,0.002]", "bodies.strip.max=[0.02,0.002]"});
   m = restore_error(bytes, bigger);
   EXPECT_NE(m.find("does not belong to this case"), std::string::npos) << m;
   // A missing file says how checkpoints are made.

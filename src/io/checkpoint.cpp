@@ -4,11 +4,12 @@
 // CrackTracker, SnapshotWriter or RunContext that evolves during a run needs one line here.
 #include "io/checkpoint.hpp"
 
+#include <fmt/format.h>
+
 #include <cerrno>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
-#include <fmt/format.h>
 #include <fstream>
 #include <sstream>
 #include <type_traits>
@@ -44,33 +45,59 @@ constexpr std::uint32_t kByteOrderMark = 0x01020304u;
 
 // ---- What a checkpoint holds: one line per member ----
 
-template <class A> void fields(A& a, Particles& p);
-template <class A> void fields(A& a, ScatterPlan& p);
-template <class A> void fields(A& a, NodeBC& b);
-template <class A> void fields(A& a, StepLimits& l);
-template <class A> void fields(A& a, CohesiveInterface& c);
-template <class A> void fields(A& a, State& s);
-template <class A> void fields(A& a, EnergySample& e);
-template <class A> void fields(A& a, CrackSample& c);
-template <class A> void fields(A& a, CrackTracker& t) { CheckpointAccess::fields(a, t); }
-template <class A> void fields(A& a, SnapshotWriter& w) { CheckpointAccess::fields(a, w); }
-template <class A> void fields(A& a, Schedule& s);
-template <class A> void fields(A& a, RunContext& c);
-template <class A> void fields(A& a, CaseSource& c);
+template <class A>
+void fields(A& a, Particles& p);
+template <class A>
+void fields(A& a, ScatterPlan& p);
+template <class A>
+void fields(A& a, NodeBC& b);
+template <class A>
+void fields(A& a, StepLimits& l);
+template <class A>
+void fields(A& a, CohesiveInterface& c);
+template <class A>
+void fields(A& a, State& s);
+template <class A>
+void fields(A& a, EnergySample& e);
+template <class A>
+void fields(A& a, CrackSample& c);
+template <class A>
+void fields(A& a, CrackTracker& t) {
+  CheckpointAccess::fields(a, t);
+}
+template <class A>
+void fields(A& a, SnapshotWriter& w) {
+  CheckpointAccess::fields(a, w);
+}
+template <class A>
+void fields(A& a, Schedule& s);
+template <class A>
+void fields(A& a, RunContext& c);
+template <class A>
+void fields(A& a, CaseSource& c);
 
 // ---- The archive: named, typed entries ----
 
-template <class T> struct is_vector : std::false_type {};
-template <class T> struct is_vector<std::vector<T>> : std::true_type {};
+template <class T>
+struct is_vector : std::false_type {};
+template <class T>
+struct is_vector<std::vector<T>> : std::true_type {};
 
-template <class T> constexpr char type_code() {
-  if constexpr (std::is_enum_v<T>) return type_code<std::underlying_type_t<T>>();
-  else if constexpr (std::is_same_v<T, bool>) return 'b';
-  else if constexpr (std::is_floating_point_v<T>) return 'f';
-  else if constexpr (std::is_signed_v<T>) return 'i';
-  else return 'u';
+template <class T>
+constexpr char type_code() {
+  if constexpr (std::is_enum_v<T>)
+    return type_code<std::underlying_type_t<T>>();
+  else if constexpr (std::is_same_v<T, bool>)
+    return 'b';
+  else if constexpr (std::is_floating_point_v<T>)
+    return 'f';
+  else if constexpr (std::is_signed_v<T>)
+    return 'i';
+  else
+    return 'u';
 }
-template <class T> constexpr bool is_plain = std::is_arithmetic_v<T> || std::is_enum_v<T>;
+template <class T>
+constexpr bool is_plain = std::is_arithmetic_v<T> || std::is_enum_v<T>;
 
 // Entry kinds: scalar, vector of scalars, text, list (of texts or groups), group (a struct).
 enum Kind : char { kScalar = 's', kVector = 'v', kText = 't', kList = 'l', kGroup = 'g' };
@@ -96,9 +123,13 @@ class Writer {
     return std::move(out);
   }
   // A value that is not restored but must agree (sizes derived from the case).
-  template <class T> void same(const char* name, T value) { (*this)(name, value); }
+  template <class T>
+  void same(const char* name, T value) {
+    (*this)(name, value);
+  }
 
-  template <class T> void operator()(const char* name, const T& v) {
+  template <class T>
+  void operator()(const char* name, const T& v) {
     if constexpr (is_plain<T>) {
       header(name, kScalar, type_code<T>(), sizeof(T), 1);
       raw(&v, sizeof v);
@@ -123,7 +154,10 @@ class Writer {
 
  private:
   void raw(const void* p, std::size_t n) { out.append(static_cast<const char*>(p), n); }
-  template <class T> void pod(const T& v) { raw(&v, sizeof v); }
+  template <class T>
+  void pod(const T& v) {
+    raw(&v, sizeof v);
+  }
   void header(const char* name, char kind, char type, std::size_t size, std::uint64_t count) {
     const auto len = std::uint32_t(std::strlen(name));
     pod(len);
@@ -148,34 +182,39 @@ class Reader {
     std::memcpy(&version, bytes.data() + sizeof kMagic, sizeof version);
     std::memcpy(&mark, bytes.data() + sizeof kMagic + sizeof version, sizeof mark);
     if (mark != kByteOrderMark)
-      throw InputError(fmt::format("checkpoint '{}' was written on a machine of another byte order",
-                                   origin_));
+      throw InputError(
+          fmt::format("checkpoint '{}' was written on a machine of another byte order", origin_));
     if (version != std::uint32_t(kCheckpointVersion))
-      throw InputError(fmt::format("checkpoint '{}' has format version {}; this rupture reads "
-                                   "version {}",
-                                   origin_, version, kCheckpointVersion));
+      throw InputError(
+          fmt::format("checkpoint '{}' has format version {}; this rupture reads "
+                      "version {}",
+                      origin_, version, kCheckpointVersion));
     const std::size_t body = bytes.size() - sizeof(std::uint64_t);
     std::uint64_t sum = 0;
     std::memcpy(&sum, bytes.data() + body, sizeof sum);
     if (sum != fnv1a(bytes.data(), body))
-      throw InputError(fmt::format("checkpoint '{}' is truncated or corrupt (checksum mismatch, "
-                                   "{} bytes)",
-                                   origin_, bytes.size()));
+      throw InputError(
+          fmt::format("checkpoint '{}' is truncated or corrupt (checksum mismatch, "
+                      "{} bytes)",
+                      origin_, bytes.size()));
     p_ = bytes.data() + head;
     left_ = body - head;
   }
   bool at_end() const { return left_ == 0; }
 
-  template <class T> void same(const char* name, T expected) {
+  template <class T>
+  void same(const char* name, T expected) {
     T stored{};
     (*this)(name, stored);
     if (stored != expected)
-      throw InputError(fmt::format("checkpoint '{}' does not belong to this case: {} = {} there, "
-                                   "{} here",
-                                   origin_, name, stored, expected));
+      throw InputError(
+          fmt::format("checkpoint '{}' does not belong to this case: {} = {} there, "
+                      "{} here",
+                      origin_, name, stored, expected));
   }
 
-  template <class T> void operator()(const char* name, T& v) {
+  template <class T>
+  void operator()(const char* name, T& v) {
     if constexpr (is_plain<T>) {
       expect(name, kScalar, type_code<T>(), sizeof(T));
       raw(&v, sizeof v);
@@ -194,7 +233,8 @@ class Reader {
       } else {
         const std::uint64_t n = expect(name, kList, std::is_same_v<E, std::string> ? 't' : 'g', 0);
         need(n);  // every item takes at least a byte
-        v.resize(std::size_t(n));  // existing items keep what is not stored (CohesiveInterface::spec)
+        v.resize(
+            std::size_t(n));  // existing items keep what is not stored (CohesiveInterface::spec)
         for (E& e : v) (*this)("item", e);
       }
     } else {
@@ -214,7 +254,8 @@ class Reader {
     std::memcpy(dst, p_, n);
     p_ += n, left_ -= n;
   }
-  template <class T> T pod() {
+  template <class T>
+  T pod() {
     T v{};
     raw(&v, sizeof v);
     return v;
@@ -228,10 +269,10 @@ class Reader {
     const auto s = pod<std::uint8_t>();
     const auto count = pod<std::uint64_t>();
     if (found != name || k != kind || t != type || s != size)
-      throw InputError(fmt::format(
-          "checkpoint '{}' does not match this version of rupture: expected entry '{}' "
-          "({}{}{}), found '{}' ({}{}{})",
-          origin_, name, kind, type, size, found, k, t, int(s)));
+      throw InputError(
+          fmt::format("checkpoint '{}' does not match this version of rupture: expected entry '{}' "
+                      "({}{}{}), found '{}' ({}{}{})",
+                      origin_, name, kind, type, size, found, k, t, int(s)));
     return count;
   }
   std::string origin_;
@@ -239,7 +280,8 @@ class Reader {
   std::size_t left_ = 0;
 };
 
-template <class A> void fields(A& a, Particles& p) {
+template <class A>
+void fields(A& a, Particles& p) {
   a("x", p.x);
   a("y", p.y);
   a("vx", p.vx);
@@ -263,7 +305,8 @@ template <class A> void fields(A& a, Particles& p) {
 
 // The particle order and the strips it was sorted into fix the summation order: both stored.
 // order, bucket, scratch are scratch of the sort.
-template <class A> void fields(A& a, ScatterPlan& p) {
+template <class A>
+void fields(A& a, ScatterPlan& p) {
   a("strip_cells", p.strip_cells);
   a("sort_interval", p.sort_interval);
   a("num_strips", p.num_strips);
@@ -272,21 +315,24 @@ template <class A> void fields(A& a, ScatterPlan& p) {
   a("strip_begin", p.strip_begin);
 }
 
-template <class A> void fields(A& a, NodeBC& b) {
+template <class A>
+void fields(A& a, NodeBC& b) {
   a("field", b.field);
   a("node", b.node);
   a("component", b.component);
   a("condition", b.condition);
 }
 
-template <class A> void fields(A& a, StepLimits& l) {
+template <class A>
+void fields(A& a, StepLimits& l) {
   a("cfl_dt", l.cfl_dt);
   a("cohesive_dt", l.cohesive_dt);
   a("dt", l.dt);
 }
 
 // `spec` comes from the case.
-template <class A> void fields(A& a, CohesiveInterface& c) {
+template <class A>
+void fields(A& a, CohesiveInterface& c) {
   a("x0", c.x0);
   a("ux_up", c.ux_up);
   a("uy_up", c.uy_up);
@@ -309,7 +355,8 @@ template <class A> void fields(A& a, CohesiveInterface& c) {
 
 // Rebuilt from the case by make_state() and not stored: grid, stiffness, boundary, bonded.
 // Not stored, per-step scratch: fields (every grid array is recomputed in each step).
-template <class A> void fields(A& a, State& s) {
+template <class A>
+void fields(A& a, State& s) {
   a.same("grid.nodes_x", s.grid.nodes_x());
   a.same("grid.nodes_y", s.grid.nodes_y());
   a.same("fields", s.fields.num_fields);
@@ -332,7 +379,8 @@ template <class A> void fields(A& a, State& s) {
   a("initial_energy", s.initial_energy);
 }
 
-template <class A> void fields(A& a, EnergySample& e) {
+template <class A>
+void fields(A& a, EnergySample& e) {
   a("time", e.time);
   a("kinetic", e.kinetic);
   a("strain", e.strain);
@@ -342,7 +390,8 @@ template <class A> void fields(A& a, EnergySample& e) {
   a("cohesive_dissipated", e.cohesive_dissipated);
 }
 
-template <class A> void fields(A& a, CrackSample& c) {
+template <class A>
+void fields(A& a, CrackSample& c) {
   a("time", c.time);
   a("tip", c.tip);
   a("cohesive_zone", c.cohesive_zone);
@@ -351,12 +400,14 @@ template <class A> void fields(A& a, CrackSample& c) {
   a("stretch_end", c.stretch_end);
 }
 
-template <class A> void fields(A& a, Schedule& s) {
+template <class A>
+void fields(A& a, Schedule& s) {
   a("interval", s.interval);
   a("next", s.next);
 }
 
-template <class A> void fields(A& a, RunContext& c) {
+template <class A>
+void fields(A& a, RunContext& c) {
   a("state", c.s);
   a("history", c.history.samples);
   a.same("cracks.count", c.cracks.size());
@@ -374,7 +425,8 @@ template <class A> void fields(A& a, RunContext& c) {
   a("segments", c.segments);
 }
 
-template <class A> void fields(A& a, CaseSource& c) {
+template <class A>
+void fields(A& a, CaseSource& c) {
   a("text", c.text);
   a("origin", c.origin);
   a("overrides", c.overrides);
@@ -384,9 +436,10 @@ std::string read_all(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     if (errno == ENOENT)
-      throw InputError(fmt::format("no checkpoint at '{}' (a run writes one with "
-                                   "--checkpoint-interval, or when interrupted by SIGINT/SIGTERM)",
-                                   path));
+      throw InputError(
+          fmt::format("no checkpoint at '{}' (a run writes one with "
+                      "--checkpoint-interval, or when interrupted by SIGINT/SIGTERM)",
+                      path));
     throw_io_error("cannot read", path);
   }
   std::ostringstream buf;
@@ -397,7 +450,9 @@ std::string read_all(const std::string& path) {
 
 }  // namespace
 
-std::string checkpoint_path(const std::string& dir) { return dir + "/checkpoint/checkpoint.bin"; }
+std::string checkpoint_path(const std::string& dir) {
+  return dir + "/checkpoint/checkpoint.bin";
+}
 
 std::string checkpoint_bytes(const CaseSource& source, const RunContext& ctx) {
   Writer w;
@@ -412,15 +467,13 @@ void restore_checkpoint_bytes(const std::string& bytes, const std::string& origi
   CaseSource source;
   r("case", source);
   r("run", ctx);
-  if (!r.at_end())
-    throw InputError(fmt::format("checkpoint '{}' has data past its end", origin));
+  if (!r.at_end()) throw InputError(fmt::format("checkpoint '{}' has data past its end", origin));
 }
 
 void write_checkpoint(const std::string& dir, const CaseSource& source, const RunContext& ctx) {
   std::error_code ec;
   std::filesystem::create_directories(dir + "/checkpoint", ec);
-  if (ec)
-    throw IoError(fmt::format("cannot create '{}/checkpoint': {}", dir, ec.message()));
+  if (ec) throw IoError(fmt::format("cannot create '{}/checkpoint': {}", dir, ec.message()));
   write_file_atomic(checkpoint_path(dir), checkpoint_bytes(source, ctx));
 }
 

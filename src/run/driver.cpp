@@ -60,6 +60,10 @@ void check_energy(const State& s, const EnergySample& e) {
       s.step, s.time, mechanical, supplied, fastest, P.x[fastest], P.y[fastest], vmax));
 }
 
+double seconds_since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
 void stamp_heartbeat(RunRecord& r) {
   const auto now = std::chrono::system_clock::now();
   r.heartbeat_unix = std::chrono::duration<double>(now.time_since_epoch()).count();
@@ -238,11 +242,10 @@ RunResult run_case(const Case& c, const RunOptions& options) {
       progress.update(s.step, s.time);
       // Durable runs: record files, checkpoints, interruption (after the step's outputs).
       if (last) break;
-      if (!flushed && std::chrono::duration<double>(std::chrono::steady_clock::now() - last_flush)
-                              .count() >= kFlushSeconds)
-        flush();
+      if (!flushed && seconds_since(last_flush) >= kFlushSeconds) flush();
       caught_signal = interrupt_signal();
-      const bool stop = caught_signal != 0 || (options.stop_after_steps > 0 && s.step >= options.stop_after_steps);
+      const bool stop = caught_signal != 0 ||
+                        (options.stop_after_steps > 0 && s.step >= options.stop_after_steps);
       if (ctx.checkpoint.due(s.time, eps) || stop) {
         ctx.checkpoint.advance(s.time, eps);
         checkpoint();
@@ -259,7 +262,8 @@ RunResult run_case(const Case& c, const RunOptions& options) {
       record.message = result.message = fmt::format(
           "interrupted{} at step {}, t = {:.6e} s; checkpoint written; resume with: rupture "
           "resume {}",
-          caught_signal ? fmt::format(" by signal {}", caught_signal) : std::string(), s.step, s.time, dir);
+          caught_signal ? fmt::format(" by signal {}", caught_signal) : std::string(), s.step,
+          s.time, dir);
     } else {
       result.ok = true;
       result.outcome = Outcome::completed;

@@ -1,8 +1,9 @@
 // rupture/run/output_dir.cpp
 #include "run/output_dir.hpp"
 
-#include <filesystem>
 #include <fmt/format.h>
+
+#include <filesystem>
 
 #include "core/errors.hpp"
 
@@ -10,8 +11,9 @@ namespace rupture {
 
 const std::vector<std::string>& run_files() {
   static const std::vector<std::string> names{
-      "run.json",     "history.csv", "crack_tip.csv", "crack_stretches.csv", "particles.xdmf",
-      "snapshots",    "interface",   "checkpoint",    "figures"};
+      "run.json",       "history.csv", "crack_tip.csv", "crack_stretches.csv",
+      "particles.xdmf", "snapshots",   "interface",     "checkpoint",
+      "figures"};
   return names;
 }
 

@@ -38,13 +38,13 @@ struct CaseSource {
 struct RunContext {
   State s;
   History history;
-  std::vector<CrackTracker> cracks;            // one per interface
-  std::unique_ptr<SnapshotWriter> snapshots;   // null without snapshots
-  double eps = 0.0;                            // absorbs round-off in accumulated time, s
+  std::vector<CrackTracker> cracks;           // one per interface
+  std::unique_ptr<SnapshotWriter> snapshots;  // null without snapshots
+  double eps = 0.0;                           // absorbs round-off in accumulated time, s
   Schedule hist, snap, prof, crack, checkpoint;
-  int interface_files = 0;                     // interface/*.csv written so far
-  double wall_before = 0.0;                    // wall seconds of earlier segments (resumed runs)
-  int segments = 1;                            // 1 + number of resumptions
+  int interface_files = 0;   // interface/*.csv written so far
+  double wall_before = 0.0;  // wall seconds of earlier segments (resumed runs)
+  int segments = 1;          // 1 + number of resumptions
 };
 
 }  // namespace rupture
