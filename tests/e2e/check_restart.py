@@ -128,7 +128,7 @@ def main():
         resume_and_compare(rupture, ref, d, 2)
 
     elif mode == "sigterm":
-        proc = subprocess.Popen(base + ["--checkpoint-interval", "1e-6"], stdout=subprocess.PIPE,
+        proc = subprocess.Popen(base + ["--checkpoint-interval", "2e-6"], stdout=subprocess.PIPE,
                                 stderr=subprocess.PIPE, text=True)
         wait_for(os.path.join(d, "checkpoint", "checkpoint.bin"), proc)
         proc.send_signal(signal.SIGTERM)
@@ -145,7 +145,7 @@ def main():
         resume_and_compare(rupture, ref, d, 2)
 
     elif mode == "kill9":
-        proc = subprocess.Popen(base + ["--checkpoint-interval", "1e-6"], stdout=subprocess.DEVNULL,
+        proc = subprocess.Popen(base + ["--checkpoint-interval", "2e-6"], stdout=subprocess.DEVNULL,
                                 stderr=subprocess.DEVNULL)
         wait_for(os.path.join(d, "checkpoint", "checkpoint.bin"), proc)
         time.sleep(0.5)
