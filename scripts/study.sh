@@ -60,7 +60,7 @@ case "${1:-}" in
     shift; hs=("$@"); [ ${#hs[@]} -gt 0 ] || hs=(0.5e-3 0.25e-3 0.125e-3); dirs=()
     for h in "${hs[@]}"; do
       d=runs/study/grid_h$h; dirs+=("$d")
-      $bin run examples/rosakis1999.toml -o "$d" --quiet "${crop[@]}" "${uniform[@]}" \
+      $bin run examples/rosakis1999.toml -o "$d" --overwrite --quiet "${crop[@]}" "${uniform[@]}" \
         --set grid.cell_size=$h | grep -E "^(wall_seconds|crack.sustained_speed|status)="
     done
     table "${dirs[@]}" ;;
@@ -73,7 +73,7 @@ case "${1:-}" in
     for v in "${vs[@]}"; do
       d=runs/study/sweep_v${v}_h$h$tag; dirs+=("$d")
       [ -f "$d/run.json" ] && grep -q '"status" : "completed"' "$d/run.json" && continue
-      $bin run examples/rosakis1999.toml -o "$d" --quiet "${crop[@]}" ${grid[@]+"${grid[@]}"} \
+      $bin run examples/rosakis1999.toml -o "$d" --overwrite --quiet "${crop[@]}" ${grid[@]+"${grid[@]}"} \
         --set grid.cell_size=$h --set boundary.impact.velocity=$v --set time.end=30e-6 \
         --set time.stop_at_interface_end=true \
         | grep -E "^(wall_seconds|crack.sustained_speed|status|stop_reason)="
@@ -83,7 +83,7 @@ case "${1:-}" in
     h=${2:?finest cell size}; d=runs/study/refined_h$h${3:+_$3}
     if [ "${3:-}" = full ]; then extra=(--set output.snapshot_interval=0 --set output.interface_interval=0)
     else extra=("${crop[@]}"); fi
-    $bin run examples/rosakis1999.toml -o "$d" --quiet "${extra[@]}" --set grid.cell_size=$h \
+    $bin run examples/rosakis1999.toml -o "$d" --overwrite --quiet "${extra[@]}" --set grid.cell_size=$h \
       | grep -E "^(particles|steps|wall_seconds|crack.sustained_speed|status)="
     table "$d" ;;
   table) shift; table "$@" ;;

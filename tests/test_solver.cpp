@@ -125,7 +125,10 @@ TEST(Driver, unstable_run_fails_with_diagnosis_and_keeps_complete_files) {
   const std::string dir = (std::filesystem::temp_directory_path() / "rupture_test_unstable").string();
   std::filesystem::remove_all(dir);
   const Case c = parse_case(test::strip_case_toml(), {"boundary.push.velocity=1e6"});
-  const RunResult r = run_case(c, RunOptions{dir, false});
+  RunOptions options;
+  options.output_dir = dir;
+  options.progress = false;
+  const RunResult r = run_case(c, options);
   EXPECT_FALSE(r.ok);
   EXPECT_NE(r.message.find("left the grid"), std::string::npos) << r.message;
   std::ifstream json(dir + "/run.json");

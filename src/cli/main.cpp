@@ -1,11 +1,16 @@
 // rupture/cli/main.cpp
 // The `rupture` command line:
 //   rupture check CASE.toml [--set key=value ...]   validate and print derived quantities
-//   rupture run   CASE.toml -o DIR [--set key=value ...] [--quiet]
+//   rupture run   CASE.toml -o DIR [--set key=value ...] [--quiet] [--checkpoint-interval T]
+//                 [--overwrite]
+//   rupture resume DIR [--quiet] [--checkpoint-interval T]   continue from DIR's last checkpoint
 //   rupture plot  DIR [--compare DIR2 ...] [--labels A B ...]   figures into DIR/figures/
 //                 (python/rupture_plot.py with Debian's /usr/bin/python3: numpy, matplotlib,
 //                 h5py; RUPTURE_PYTHON overrides the interpreter)
-// Exit codes: 0 success, 1 bad input, 2 the run went unstable, 3 I/O or other failure.
+// Exit codes: 0 success, 1 bad input (also: an output directory holding another run without
+// --overwrite, no usable checkpoint to resume), 2 the run went unstable, 3 I/O failure (the
+// message names the file and the operating system's reason) or other failure, 4 interrupted by
+// SIGINT/SIGTERM after writing a checkpoint (the message says how to resume).
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
@@ -15,9 +20,12 @@
 #include <cstring>
 #include <filesystem>
 #include <fmt/format.h>
+#include <fstream>
+#include <sstream>
 
 #include "core/errors.hpp"
 #include "io/case_toml.hpp"
+#include "io/checkpoint.hpp"
 #include "run/driver.hpp"
 #include "solver/summary.hpp"
 
@@ -111,6 +119,25 @@ int run_plot(const char* argv0, const std::string& dir, const std::vector<std::s
   return 3;
 }
 
+CaseSource read_case_source(const std::string& path, const std::vector<std::string>& overrides) {
+  std::ifstream in(path);
+  if (!in) throw InputError(fmt::format("cannot read case file '{}'", path));
+  std::stringstream buf;
+  buf << in.rdbuf();
+  return CaseSource{buf.str(), path, overrides};
+}
+
+int exit_code(Outcome o) {
+  switch (o) {
+    case Outcome::completed: return 0;
+    case Outcome::unstable: return 2;
+    case Outcome::interrupted: return 4;
+    case Outcome::io_error:
+    case Outcome::error: return 3;
+  }
+  return 3;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -129,6 +156,24 @@ int main(int argc, char** argv) {
   run->add_option("-o,--output", out_dir, "output directory")->required();
   run->add_option("--set", overrides, "override an input key: dotted.key=value");
   run->add_flag("-q,--quiet", quiet, "no progress line");
+  double checkpoint_interval = 0.0;
+  long stop_after_steps = 0;
+  bool overwrite = false;
+  run->add_option("--checkpoint-interval", checkpoint_interval,
+                  "write a checkpoint every T seconds of simulated time (rupture resume DIR)")
+      ->check(CLI::NonNegativeNumber);
+  run->add_flag("--overwrite", overwrite, "delete another run's files in the output directory");
+  // Tests: stop after N steps as if interrupted (checkpoint written, exit code 4).
+  run->add_option("--stop-after-steps", stop_after_steps)->group("");
+
+  std::string resume_dir;
+  auto* resume = app.add_subcommand("resume", "continue a run from its last checkpoint");
+  resume->add_option("dir", resume_dir, "run directory")->required()->check(CLI::ExistingDirectory);
+  resume->add_flag("-q,--quiet", quiet, "no progress line");
+  resume->add_option("--checkpoint-interval", checkpoint_interval,
+                     "change the checkpoint interval (default: the run's)")
+      ->check(CLI::NonNegativeNumber);
+  resume->add_option("--stop-after-steps", stop_after_steps)->group("");
 
   std::string plot_dir;
   std::vector<std::string> compare, labels;
@@ -142,15 +187,34 @@ int main(int argc, char** argv) {
   if (plot->parsed()) return run_plot(argv[0], plot_dir, compare, labels);
 
   try {
-    const Case c = load_case(case_path, overrides);
-    for (const std::string& w : c.warnings) fmt::print(stderr, "warning: {}\n", w);
+    auto warn = [](const Case& c) {
+      for (const std::string& w : c.warnings) fmt::print(stderr, "warning: {}\n", w);
+    };
     if (check->parsed()) {
+      const Case c = load_case(case_path, overrides);
+      warn(c);
       print_check(case_path, c);
       return 0;
     }
-    print_check(case_path, c);
-    const RunResult r = run_case(c, RunOptions{out_dir, !quiet});
-    fmt::print("status={}\n", r.ok ? "completed" : "failed");
+    RunOptions options;
+    options.progress = !quiet;
+    options.checkpoint_interval = checkpoint_interval;
+    options.stop_after_steps = stop_after_steps;
+    if (resume->parsed()) {
+      out_dir = resume_dir;
+      options.resume = true;
+      options.source = read_checkpoint_source(checkpoint_path(resume_dir));
+      fmt::print("resuming run in {}\n", resume_dir);
+    } else {
+      options.source = read_case_source(case_path, overrides);
+      options.overwrite = overwrite;
+    }
+    options.output_dir = out_dir;
+    const Case c = parse_case(options.source.text, options.source.overrides, options.source.origin);
+    warn(c);
+    print_check(options.source.origin, c);
+    const RunResult r = run_case(c, options);
+    fmt::print("status={}\n", r.status);
     fmt::print("stop_reason={}\n", r.stop_reason);
     fmt::print("steps={}\n", r.steps);
     fmt::print("simulated_time={:.6e}\n", r.simulated_time);
@@ -173,11 +237,12 @@ int main(int argc, char** argv) {
       fmt::print("crack.regime={}\n", k.regime);
     }
     fmt::print("output={}\n", out_dir);
-    if (!r.ok) {
+    if (r.outcome == Outcome::interrupted) {
+      fmt::print(stderr, "{}\n", r.message);
+    } else if (!r.ok) {
       fmt::print(stderr, "error: {}\n", r.message);
-      return 2;
     }
-    return 0;
+    return exit_code(r.outcome);
   } catch (const InputError& e) {
     fmt::print(stderr, "error: {}\n", e.what());
     return 1;

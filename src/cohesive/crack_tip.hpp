@@ -24,6 +24,7 @@
 
 namespace rupture {
 
+// Every member must also be written in io/checkpoint.cpp (restart is bitwise).
 struct CrackSample {
   double time = 0.0;
   double tip = 0.0;                  // tip position x (interface start if not initiated), m
@@ -78,6 +79,7 @@ class CrackTracker {
   void write(const std::string& dir, double c_r, double c_s) const;
 
  private:
+  friend struct CheckpointAccess;  // every member below must also be written in io/checkpoint.cpp
   std::vector<CrackSample> samples_;
   double end_tolerance_ = 0.0;
   double end_reached_time_ = -1.0;

@@ -4,6 +4,8 @@
 //               the message names the key, the value and what is allowed.
 // SimulationError - the run became unphysical (NaN, particle off the grid, energy blow-up);
 //               the message says what, where and when.
+// IoError     - a file could not be written or read (full disk, permissions); the message names
+//               the file and the operating system's reason (strerror).
 #pragma once
 #include <stdexcept>
 #include <string>
@@ -15,6 +17,10 @@ struct InputError : std::runtime_error {
 };
 
 struct SimulationError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct IoError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 

@@ -18,6 +18,11 @@ std::string run_json(const Case& c, const CaseSummary& s, const RunRecord& r) {
   t.insert("status", r.status);
   t.insert("message", r.message);
   t.insert("stop_reason", r.stop_reason);
+  t.insert("heartbeat", r.heartbeat);
+  t.insert("heartbeat_unix", r.heartbeat_unix);
+  t.insert("checkpoint_time", r.checkpoint_time);
+  t.insert("checkpoint_step", r.checkpoint_step);
+  t.insert("segments", r.segments);
   t.insert("dt", s.dt);
   t.insert("dt_cfl_limit", s.dt_cfl);
   t.insert("steps", r.steps);

@@ -4,8 +4,11 @@
 //   energy_balance_error, and for the first cohesive interface crack.initiation_time,
 //   crack.sustained_speed, crack.peak_speed, crack.regime (as a nested "crack" object and,
 //   for tools that look up dotted names, as flat "crack.*" keys with the same values),
-// plus version, status ("running" | "completed" | "failed"), message, input (the merged input
-// echo), and derived quantities. Rewritten atomically whenever it changes.
+// plus version, status ("running" | "completed" | "failed" | "interrupted"), message, input (the
+// merged input echo), and derived quantities. While running it is rewritten every few seconds
+// with `heartbeat` (UTC, ISO 8601) and `heartbeat_unix` (s): a "running" record whose heartbeat
+// is old belongs to a run that was killed. `checkpoint_time`/`checkpoint_step` (-1: none) name
+// the last checkpoint, `segments` counts 1 + resumptions. Rewritten atomically.
 #pragma once
 #include <cmath>
 #include <string>
@@ -19,8 +22,14 @@ namespace rupture {
 struct RunRecord {
   std::string status = "running";
   std::string message;
-  // "end_time", "crack_reached_interface_end" (time.stop_at_interface_end) or "failed"
+  // "end_time", "crack_reached_interface_end" (time.stop_at_interface_end), "failed"
+  // (unstable), "io_error", "interrupted" or "error"
   std::string stop_reason;
+  std::string heartbeat;          // wall-clock time of this record, UTC ISO 8601
+  double heartbeat_unix = 0.0;    // the same, s since 1970
+  double checkpoint_time = -1.0;  // simulated time of the last checkpoint, s (-1: none)
+  long checkpoint_step = -1;
+  int segments = 1;               // 1 + number of resumptions
   long steps = 0;                 // steps taken
   double simulated_time = 0.0;    // s
   double wall_seconds = 0.0;

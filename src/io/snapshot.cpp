@@ -7,26 +7,56 @@
 #include <filesystem>
 #include <fmt/format.h>
 #include <hdf5.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
 #include <stdexcept>
 
+#include "core/errors.hpp"
 #include "io/atomic_file.hpp"
 
 namespace rupture {
 namespace {
 
-void check(herr_t status, const char* what, const std::string& file) {
-  if (status < 0) throw std::runtime_error(fmt::format("HDF5: {} failed for '{}'", what, file));
+// HDF5 reports the system call's failure through errno (sec2 driver); name it when set.
+[[noreturn]] void hdf5_failed(const std::string& what, const std::string& file) {
+  const int err = errno;
+  throw IoError(fmt::format("error while writing '{}' (HDF5: {}){}", file, what,
+                            err ? std::string(": ") + std::strerror(err) : std::string()));
 }
+
+void check(herr_t status, const char* what, const std::string& file) {
+  if (status < 0) hdf5_failed(what, file);
+}
+
+// Closes the file being written and removes it if the snapshot was not completed.
+struct OpenSnapshot {
+  hid_t file;
+  std::string tmp;
+  bool closed = false;
+  ~OpenSnapshot() {
+    if (closed) return;
+    const int err = errno;
+    H5Fclose(file);
+    ::unlink(tmp.c_str());
+    errno = err;
+  }
+};
 
 void write_dataset(hid_t file, const char* name, hid_t type, const void* data, hsize_t rows,
                    hsize_t cols, const std::string& path) {
   hsize_t dims[2] = {rows, cols};
   hid_t space = H5Screate_simple(cols == 1 ? 1 : 2, dims, nullptr);
   hid_t set = H5Dcreate2(file, name, type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-  if (set < 0) throw std::runtime_error(fmt::format("HDF5: cannot create {} in '{}'", name, path));
-  check(H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), "H5Dwrite", path);
-  H5Dclose(set);
+  if (set < 0) {
+    H5Sclose(space);
+    hdf5_failed(fmt::format("cannot create dataset {}", name), path);
+  }
+  const herr_t status = H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data);
+  const herr_t closed = H5Dclose(set);
   H5Sclose(space);
+  check(status < 0 ? status : closed, "H5Dwrite", path);
 }
 
 void write_scalar_attribute(hid_t file, const char* name, hid_t type, const void* value) {
@@ -42,6 +72,7 @@ void write_scalar_attribute(hid_t file, const char* name, hid_t type, const void
 SnapshotWriter::SnapshotWriter(std::string dir, const Particles& p, const double* region)
     : dir_(std::move(dir)) {
   std::filesystem::create_directories(std::filesystem::path(dir_) / "snapshots");
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // failures are reported by IoError (with errno)
   // Select by particle id (the solver re-sorts particles); slot_of_id_ gives each selected
   // particle its row in every snapshot, in id order, so rows are comparable across files.
   slot_of_id_.assign(p.size(), -1);
@@ -78,20 +109,28 @@ void SnapshotWriter::write(const Particles& p, double time, long step) {
   const std::string rel = fmt::format("snapshots/particles_{:06d}.h5", files_.size());
   const std::string path = dir_ + "/" + rel;
   const std::string tmp = path + ".tmp";
+  errno = 0;
   hid_t file = H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-  if (file < 0) throw std::runtime_error(fmt::format("HDF5: cannot create '{}'", tmp));
-  write_dataset(file, "position", H5T_NATIVE_DOUBLE, pos.data(), n, 3, path);
-  write_dataset(file, "velocity", H5T_NATIVE_DOUBLE, vel.data(), n, 3, path);
-  write_dataset(file, "sxx", H5T_NATIVE_DOUBLE, sxx.data(), n, 1, path);
-  write_dataset(file, "syy", H5T_NATIVE_DOUBLE, syy.data(), n, 1, path);
-  write_dataset(file, "sxy", H5T_NATIVE_DOUBLE, sxy.data(), n, 1, path);
-  write_dataset(file, "szz", H5T_NATIVE_DOUBLE, szz.data(), n, 1, path);
-  write_dataset(file, "tau_max", H5T_NATIVE_DOUBLE, tau.data(), n, 1, path);
-  write_dataset(file, "body", H5T_NATIVE_INT, body.data(), n, 1, path);
-  write_dataset(file, "id", H5T_NATIVE_INT, id.data(), n, 1, path);
+  if (file < 0) hdf5_failed("H5Fcreate", tmp);
+  OpenSnapshot guard{file, tmp};
+  write_dataset(file, "position", H5T_NATIVE_DOUBLE, pos.data(), n, 3, tmp);
+  write_dataset(file, "velocity", H5T_NATIVE_DOUBLE, vel.data(), n, 3, tmp);
+  write_dataset(file, "sxx", H5T_NATIVE_DOUBLE, sxx.data(), n, 1, tmp);
+  write_dataset(file, "syy", H5T_NATIVE_DOUBLE, syy.data(), n, 1, tmp);
+  write_dataset(file, "sxy", H5T_NATIVE_DOUBLE, sxy.data(), n, 1, tmp);
+  write_dataset(file, "szz", H5T_NATIVE_DOUBLE, szz.data(), n, 1, tmp);
+  write_dataset(file, "tau_max", H5T_NATIVE_DOUBLE, tau.data(), n, 1, tmp);
+  write_dataset(file, "body", H5T_NATIVE_INT, body.data(), n, 1, tmp);
+  write_dataset(file, "id", H5T_NATIVE_INT, id.data(), n, 1, tmp);
   write_scalar_attribute(file, "time", H5T_NATIVE_DOUBLE, &time);
   write_scalar_attribute(file, "step", H5T_NATIVE_LONG, &step);
-  check(H5Fclose(file), "H5Fclose", tmp);
+  guard.closed = true;
+  if (H5Fclose(file) < 0) {
+    const int err = errno;
+    ::unlink(tmp.c_str());
+    errno = err;
+    hdf5_failed("H5Fclose", tmp);
+  }
   commit_file(tmp, path);
   files_.push_back(rel);
   times_.push_back(time);

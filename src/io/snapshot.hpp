@@ -25,6 +25,7 @@ class SnapshotWriter {
   const std::vector<std::string>& files() const { return files_; }
 
  private:
+  friend struct CheckpointAccess;  // every member below must also be written in io/checkpoint.cpp
   void write_xdmf() const;
   std::string dir_;
   std::vector<std::int64_t> slot_of_id_;  // row of particle id in every file, -1: not written

@@ -2,7 +2,9 @@
 #include "run/driver.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <ctime>
 #include <filesystem>
 #include <fmt/format.h>
 #include <memory>
@@ -11,10 +13,13 @@
 #include "cohesive/crack_tip.hpp"
 #include "core/errors.hpp"
 #include "io/atomic_file.hpp"
+#include "io/checkpoint.hpp"
 #include "io/history.hpp"
 #include "io/interface_csv.hpp"
 #include "io/run_json.hpp"
 #include "io/snapshot.hpp"
+#include "run/interrupt.hpp"
+#include "run/output_dir.hpp"
 #include "run/progress.hpp"
 #include "solver/energy.hpp"
 #include "solver/state.hpp"
@@ -55,47 +60,83 @@ void check_energy(const State& s, const EnergySample& e) {
       s.step, s.time, mechanical, supplied, fastest, P.x[fastest], P.y[fastest], vmax));
 }
 
-// Fires at multiples of an interval of simulated time (never when the interval is 0).
-struct Schedule {
-  double interval, next;
-  long count = 1;  // next = count * interval: no round-off accumulates over a long run
-  explicit Schedule(double dt) : interval(dt), next(dt) {}
-  bool due(double t, double eps) const { return interval > 0 && t >= next - eps; }
-  void advance(double t, double eps) {
-    while (next <= t + eps) next = double(++count) * interval;
+double seconds_since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+void stamp_heartbeat(RunRecord& r) {
+  const auto now = std::chrono::system_clock::now();
+  r.heartbeat_unix = std::chrono::duration<double>(now.time_since_epoch()).count();
+  const std::time_t t = std::chrono::system_clock::to_time_t(now);
+  std::tm utc{};
+  gmtime_r(&t, &utc);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &utc);
+  r.heartbeat = buf;
+}
+
+// Sets up a run's context from the case: the initial state, one crack tracker per interface,
+// the snapshot writer and the output schedules. A fresh run starts from it; a resumed one
+// overwrites it with the checkpoint.
+void set_up(RunContext& r, const Case& c, const std::string& dir, double checkpoint_interval) {
+  r.s = make_state(c);
+  const State& s = r.s;
+  if (c.output.snapshot_interval > 0)
+    r.snapshots = std::make_unique<SnapshotWriter>(
+        dir, s.particles, c.output.has_snapshot_region ? c.output.snapshot_region : nullptr);
+  for (const CohesiveInterface& ci : s.interfaces) {
+    const Axis& ax = s.grid.x;
+    const int cell = std::clamp(ax.cell_of(ci.spec.end), 0, ax.cells - 1);
+    r.cracks.emplace_back(2.0 * ax.width(cell));  // two cells at the end of the cohesive line
   }
-};
+  r.eps = 1e-6 * s.dt;  // absorbs round-off in accumulated time
+  r.hist = Schedule(c.output.history_interval > 0 ? c.output.history_interval : s.dt);
+  r.snap = Schedule(c.output.snapshot_interval);
+  r.prof = Schedule(c.output.interface_interval);
+  r.crack = Schedule(c.output.crack_sample_interval);
+  r.checkpoint = Schedule(checkpoint_interval);
+}
 
 }  // namespace
 
 RunResult run_case(const Case& c, const RunOptions& options) {
   namespace fs = std::filesystem;
-  fs::create_directories(options.output_dir);
   const std::string dir = options.output_dir;
+  if (options.resume) {
+    fs::create_directories(dir);
+  } else {
+    prepare_output_dir(dir, options.overwrite);
+  }
   if (c.solver.threads > 0) omp_set_num_threads(c.solver.threads);
 
   const CaseSummary summary = summarize(c);
-  State s = make_state(c);
+  RunContext ctx;
+  set_up(ctx, c, dir, options.checkpoint_interval);
+  if (options.resume) {
+    read_checkpoint(checkpoint_path(dir), ctx);
+    ++ctx.segments;
+    Schedule& ck = ctx.checkpoint;
+    if (options.checkpoint_interval > 0 && options.checkpoint_interval != ck.interval) {
+      ck.interval = options.checkpoint_interval;
+      ck.next = (std::floor(ctx.s.time / ck.interval) + 1.0) * ck.interval;
+    }
+  }
+  State& s = ctx.s;
+  History& history = ctx.history;
+  std::unique_ptr<SnapshotWriter>& snapshots = ctx.snapshots;
+  std::vector<CrackTracker>& cracks = ctx.cracks;
   RunRecord record;
   record.threads = omp_get_max_threads();
+  record.segments = ctx.segments;
+  if (options.resume) record.checkpoint_time = s.time, record.checkpoint_step = s.step;
+  stamp_heartbeat(record);
   write_file_atomic(dir + "/run.json", run_json(c, summary, record));
 
-  History history;
-  std::unique_ptr<SnapshotWriter> snapshots;
-  if (c.output.snapshot_interval > 0)
-    snapshots = std::make_unique<SnapshotWriter>(
-        dir, s.particles, c.output.has_snapshot_region ? c.output.snapshot_region : nullptr);
-  std::vector<CrackTracker> cracks;
-  for (const CohesiveInterface& ci : s.interfaces) {
-    const Axis& ax = s.grid.x;
-    const int cell = std::clamp(ax.cell_of(ci.spec.end), 0, ax.cells - 1);
-    cracks.emplace_back(2.0 * ax.width(cell));  // two cells at the end of the cohesive line
-  }
   // Crack speeds are reported against the speeds of the lower body's material.
   std::vector<WaveSpeeds> crack_speeds;  // per interface
   for (const InterfaceSpec& is : c.interfaces)
     crack_speeds.push_back(summary.speeds[std::size_t(c.bodies[is.lower_field].material)]);
-  int interface_files = 0;
+  int& interface_files = ctx.interface_files;
   auto write_interfaces = [&]() {
     if (s.interfaces.empty()) return;
     fs::create_directories(dir + "/interface");
@@ -110,18 +151,57 @@ RunResult run_case(const Case& c, const RunOptions& options) {
     if (!cracks.empty()) cracks[0].write(dir, crack_speeds[0].rayleigh, crack_speeds[0].shear);
   };
 
-  history.samples.push_back(sample(s));
-  if (snapshots) snapshots->write(s.particles, s.time, s.step);
-  if (c.output.interface_interval > 0) write_interfaces();
-  for (std::size_t k = 0; k < cracks.size(); ++k) cracks[k].sample(s.interfaces[k], s.time);
+  if (!options.resume) {
+    history.samples.push_back(sample(s));
+    if (snapshots) snapshots->write(s.particles, s.time, s.step);
+    if (c.output.interface_interval > 0) write_interfaces();
+    for (std::size_t k = 0; k < cracks.size(); ++k) cracks[k].sample(s.interfaces[k], s.time);
+  }
 
-  const double eps = 1e-6 * s.dt;  // absorbs round-off in accumulated time
-  Schedule hist(c.output.history_interval > 0 ? c.output.history_interval : s.dt);
-  Schedule snap(c.output.snapshot_interval), prof(c.output.interface_interval);
-  Schedule crack(c.output.crack_sample_interval);
+  const double eps = ctx.eps;
+  Schedule &hist = ctx.hist, &snap = ctx.snap, &prof = ctx.prof, &crack = ctx.crack;
 
+  // The record files (history, crack tip, run.json "running" + heartbeat), every kFlushSeconds
+  // of wall time and at every snapshot; and checkpoints.
   Progress progress(summary.steps, c.time.end, c.output.progress_interval, options.progress);
+  auto fill_record = [&](RunRecord& r) {
+    const EnergySample& e = history.samples.back();
+    r.steps = s.step;
+    r.simulated_time = s.time;
+    r.wall_seconds = ctx.wall_before + progress.elapsed();
+    r.particle_updates_per_second =
+        r.wall_seconds > 0 ? double(s.particles.size()) * double(s.step) / r.wall_seconds : 0.0;
+    r.cohesive_seconds = s.cohesive_seconds;
+    r.kinetic_energy = e.kinetic;
+    r.strain_energy = e.strain;
+    r.external_work = e.external_work;
+    r.energy_balance_error = history.max_relative_error(1e-6);
+    r.energy_balance_error_final = e.relative_error();
+    r.min_cohesive_dt = s.limits.min_cohesive_dt;
+    r.cohesive_stored = e.cohesive_stored;
+    r.cohesive_dissipated = e.cohesive_dissipated;
+    stamp_heartbeat(r);
+  };
+  auto last_flush = std::chrono::steady_clock::now();
+  auto flush = [&]() {
+    history.write(dir + "/history.csv");
+    write_cracks();
+    fill_record(record);
+    write_file_atomic(dir + "/run.json", run_json(c, summary, record));
+    last_flush = std::chrono::steady_clock::now();
+  };
+  auto checkpoint = [&]() {
+    const double wall_before = ctx.wall_before;
+    ctx.wall_before += progress.elapsed();  // the checkpoint holds the wall time up to here
+    write_checkpoint(dir, options.source, ctx);
+    ctx.wall_before = wall_before;
+    record.checkpoint_time = s.time;
+    record.checkpoint_step = s.step;
+  };
+  InterruptGuard interrupt_guard;
   RunResult result;
+  std::string io_failure;  // what failed to be written (then the run stops)
+  int caught_signal = 0;
   try {
     while (s.time < c.time.end - eps) {
       s.dt_cap = c.time.end - s.time;  // land exactly on the end time
@@ -158,57 +238,100 @@ RunResult run_case(const Case& c, const RunOptions& options) {
         write_interfaces();
         prof.advance(s.time, eps);
       }
+      bool flushed = false;
       if (snapshots && (snap.due(s.time, eps) || last)) {
         snapshots->write(s.particles, s.time, s.step);
-        history.write(dir + "/history.csv");
-        write_cracks();
+        flush();
+        flushed = true;
         snap.advance(s.time, eps);
       }
       progress.update(s.step, s.time);
+      // Durable runs: record files, checkpoints, interruption (after the step's outputs).
+      if (last) break;
+      if (!flushed && seconds_since(last_flush) >= kFlushSeconds) flush();
+      caught_signal = interrupt_signal();
+      const bool stop = caught_signal != 0 ||
+                        (options.stop_after_steps > 0 && s.step >= options.stop_after_steps);
+      if (ctx.checkpoint.due(s.time, eps) || stop) {
+        ctx.checkpoint.advance(s.time, eps);
+        checkpoint();
+      }
+      if (stop) {
+        record.stop_reason = result.stop_reason = "interrupted";
+        break;
+      }
     }
     progress.finish(s.step, s.time);
-    result.ok = true;
-    record.status = "completed";
-    if (record.stop_reason.empty()) record.stop_reason = result.stop_reason = "end_time";
+    if (result.stop_reason == "interrupted") {
+      result.outcome = Outcome::interrupted;
+      record.status = "interrupted";
+      record.message = result.message = fmt::format(
+          "interrupted{} at step {}, t = {:.6e} s; checkpoint written; resume with: rupture "
+          "resume {}",
+          caught_signal ? fmt::format(" by signal {}", caught_signal) : std::string(), s.step,
+          s.time, dir);
+    } else {
+      result.ok = true;
+      result.outcome = Outcome::completed;
+      record.status = "completed";
+      if (record.stop_reason.empty()) record.stop_reason = result.stop_reason = "end_time";
+    }
   } catch (const SimulationError& e) {
     progress.finish(s.step, s.time);
-    result.ok = false;
+    result.outcome = Outcome::unstable;
     result.message = e.what();
     record.status = "failed";
     record.message = e.what();
     record.stop_reason = result.stop_reason = "failed";
+  } catch (const IoError& e) {
+    progress.finish(s.step, s.time);
+    io_failure = e.what();
+  } catch (const fs::filesystem_error& e) {
+    progress.finish(s.step, s.time);
+    io_failure = e.what();
   }
-  const double wall = progress.elapsed();
-  history.write(dir + "/history.csv");
-  write_cracks();
+  if (io_failure.empty()) {
+    try {
+      history.write(dir + "/history.csv");
+      write_cracks();
+    } catch (const IoError& e) {
+      io_failure = e.what();
+    }
+  }
+  if (!io_failure.empty()) {
+    result.ok = false;
+    result.outcome = Outcome::io_error;
+    result.message = record.message = io_failure;
+    record.status = "failed";
+    record.stop_reason = result.stop_reason = "io_error";
+  }
 
-  const EnergySample& last = history.samples.back();
+  fill_record(record);
+  const double wall = record.wall_seconds;
+  result.status = record.status;
   result.steps = s.step;
   result.simulated_time = s.time;
   result.wall_seconds = wall;
-  result.particle_updates_per_second =
-      wall > 0 ? double(s.particles.size()) * double(s.step) / wall : 0.0;
-  result.energy_balance_error = history.max_relative_error(1e-6);
-  result.energy_balance_error_final = last.relative_error();
+  result.particle_updates_per_second = record.particle_updates_per_second;
+  result.energy_balance_error = record.energy_balance_error;
+  result.energy_balance_error_final = record.energy_balance_error_final;
   result.cohesive_seconds = s.cohesive_seconds;
   for (std::size_t k = 0; k < cracks.size(); ++k)
     result.cracks.push_back(cracks[k].summarize(s.interfaces[k], crack_speeds[k]));
-
-  record.steps = s.step;
-  record.simulated_time = s.time;
-  record.wall_seconds = wall;
-  record.particle_updates_per_second = result.particle_updates_per_second;
-  record.cohesive_seconds = s.cohesive_seconds;
-  record.kinetic_energy = last.kinetic;
-  record.strain_energy = last.strain;
-  record.external_work = last.external_work;
-  record.energy_balance_error = result.energy_balance_error;
-  record.energy_balance_error_final = result.energy_balance_error_final;
-  record.min_cohesive_dt = s.limits.min_cohesive_dt;
-  record.cohesive_stored = last.cohesive_stored;
-  record.cohesive_dissipated = last.cohesive_dissipated;
   record.cracks = result.cracks;
-  write_file_atomic(dir + "/run.json", run_json(c, summary, record));
+  try {
+    write_file_atomic(dir + "/run.json", run_json(c, summary, record));
+  } catch (const IoError& e) {
+    if (result.outcome == Outcome::io_error) {
+      result.message += fmt::format("; run.json could not be updated either ({})", e.what());
+    } else {
+      result.ok = false;
+      result.outcome = Outcome::io_error;
+      result.status = "failed";
+      result.stop_reason = "io_error";
+      result.message = e.what();
+    }
+  }
   return result;
 }
 

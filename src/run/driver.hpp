@@ -5,7 +5,13 @@
 //   DIR/particles.xdmf + DIR/snapshots/*.h5   particle snapshots (io/snapshot.hpp)
 //   DIR/crack_tip.csv, DIR/crack_stretches.csv crack tip and separated stretches (E10, E11)
 //   DIR/interface/*.csv                       interface profiles (io/interface_csv.hpp)
+//   DIR/checkpoint/checkpoint.bin              last checkpoint (io/checkpoint.hpp)
 // An unstable run stops with status "failed" and a diagnosis; what was written stays valid.
+// While running, history.csv, the crack files and run.json (status "running", heartbeat) are
+// brought up to date every kFlushSeconds of wall time, so a killed run keeps its record up to
+// then. A failed write stops the run (status "failed", stop_reason "io_error", the operating
+// system's reason). SIGINT/SIGTERM stop it after the current step with a checkpoint (status
+// "interrupted"); run_case with RunOptions::resume continues from the checkpoint, bit for bit.
 #pragma once
 #include <string>
 
@@ -13,16 +19,29 @@
 
 #include "cohesive/crack_tip.hpp"
 #include "io/case.hpp"
+#include "run/run_context.hpp"
 
 namespace rupture {
+
+inline constexpr double kFlushSeconds = 2.0;  // wall time between updates of the record files
 
 struct RunOptions {
   std::string output_dir;
   bool progress = true;
+  bool overwrite = false;            // a fresh run deletes another run's files in output_dir
+  bool resume = false;               // continue from output_dir's checkpoint (same case)
+  double checkpoint_interval = 0.0;  // simulated s between checkpoints (0: none; on resume: keep)
+  long stop_after_steps = 0;         // tests: stop as if interrupted after this step (0: never)
+  CaseSource source;                 // kept in checkpoints, for `rupture resume`
 };
+
+// How a run ended; the CLI maps it to its exit code.
+enum class Outcome { completed, unstable, io_error, interrupted, error };
 
 struct RunResult {
   bool ok = false;
+  Outcome outcome = Outcome::error;
+  std::string status;       // as in run.json: completed | failed | interrupted
   std::string message;  // diagnosis when !ok
   std::string stop_reason;  // see RunRecord::stop_reason
   long steps = 0;

@@ -26,6 +26,7 @@ namespace rupture {
 // `sort_interval` steps or as soon as a particle drifts further (`valid` false). The
 // summation order at every node is fixed by the sort, so results do not depend on the
 // number of threads.
+// Every member must also be written in io/checkpoint.cpp, or be listed there as scratch.
 struct ScatterPlan {
   int strip_cells = 5;
   int sort_interval = 25;
@@ -38,6 +39,7 @@ struct ScatterPlan {
   std::vector<double> scratch;           // scratch for the permutation
 };
 
+// Every member must also be written in io/checkpoint.cpp.
 struct StepLimits {
   double cfl_dt = 0.0;       // cfl * h / max c_D, s (SPEC E6)
   double bulk_eigen_bound = 0.0;  // lambda_bulk of solver/time_step.hpp, 1/s^2
@@ -47,6 +49,8 @@ struct StepLimits {
   double dt = 0.0;           // step at t = 0, s
 };
 
+// Every member must also be written in io/checkpoint.cpp (restart is bitwise), or be listed
+// there as rebuilt from the case or per-step scratch.
 struct State {
   Grid grid;
   GridFields fields;

@@ -1,0 +1,502 @@
+// rupture/io/checkpoint.cpp
+// One short list per struct (`fields`) says what a checkpoint holds; the same list writes and
+// reads, so the two cannot drift apart. A member added to State, Particles, CohesiveInterface,
+// CrackTracker, SnapshotWriter or RunContext that evolves during a run needs one line here.
+#include "io/checkpoint.hpp"
+
+#include <fmt/format.h>
+
+#include <cerrno>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <type_traits>
+
+#include "core/errors.hpp"
+#include "io/atomic_file.hpp"
+
+namespace rupture {
+
+// Reaches the private members of CrackTracker and SnapshotWriter (friend of both).
+struct CheckpointAccess {
+  template <class A>
+  static void fields(A& a, CrackTracker& t) {
+    a("samples", t.samples_);
+    a("end_tolerance", t.end_tolerance_);
+    a("end_reached_time", t.end_reached_time_);
+  }
+  template <class A>
+  static void fields(A& a, SnapshotWriter& w) {
+    // dir_ is the run directory, given when the writer is made
+    a("slot_of_id", w.slot_of_id_);
+    a("selected", w.selected_);
+    a("files", w.files_);
+    a("times", w.times_);
+    a("counts", w.counts_);
+  }
+};
+
+namespace {
+
+constexpr char kMagic[8] = {'R', 'U', 'P', 'T', 'C', 'K', 'P', 'T'};
+constexpr std::uint32_t kByteOrderMark = 0x01020304u;
+
+// ---- What a checkpoint holds: one line per member ----
+
+template <class A>
+void fields(A& a, Particles& p);
+template <class A>
+void fields(A& a, ScatterPlan& p);
+template <class A>
+void fields(A& a, NodeBC& b);
+template <class A>
+void fields(A& a, StepLimits& l);
+template <class A>
+void fields(A& a, CohesiveInterface& c);
+template <class A>
+void fields(A& a, State& s);
+template <class A>
+void fields(A& a, EnergySample& e);
+template <class A>
+void fields(A& a, CrackSample& c);
+template <class A>
+void fields(A& a, CrackTracker& t) {
+  CheckpointAccess::fields(a, t);
+}
+template <class A>
+void fields(A& a, SnapshotWriter& w) {
+  CheckpointAccess::fields(a, w);
+}
+template <class A>
+void fields(A& a, Schedule& s);
+template <class A>
+void fields(A& a, RunContext& c);
+template <class A>
+void fields(A& a, CaseSource& c);
+
+// ---- The archive: named, typed entries ----
+
+template <class T>
+struct is_vector : std::false_type {};
+template <class T>
+struct is_vector<std::vector<T>> : std::true_type {};
+
+template <class T>
+constexpr char type_code() {
+  if constexpr (std::is_enum_v<T>)
+    return type_code<std::underlying_type_t<T>>();
+  else if constexpr (std::is_same_v<T, bool>)
+    return 'b';
+  else if constexpr (std::is_floating_point_v<T>)
+    return 'f';
+  else if constexpr (std::is_signed_v<T>)
+    return 'i';
+  else
+    return 'u';
+}
+template <class T>
+constexpr bool is_plain = std::is_arithmetic_v<T> || std::is_enum_v<T>;
+
+// Entry kinds: scalar, vector of scalars, text, list (of texts or groups), group (a struct).
+enum Kind : char { kScalar = 's', kVector = 'v', kText = 't', kList = 'l', kGroup = 'g' };
+
+std::uint64_t fnv1a(const char* p, std::size_t n) {
+  std::uint64_t h = 1469598103934665603ull;
+  for (std::size_t k = 0; k < n; ++k) h = (h ^ std::uint8_t(p[k])) * 1099511628211ull;
+  return h;
+}
+
+class Writer {
+ public:
+  static constexpr bool reading = false;
+  std::string out;
+
+  Writer() {
+    out.append(kMagic, sizeof kMagic);
+    pod(std::uint32_t(kCheckpointVersion));
+    pod(kByteOrderMark);
+  }
+  std::string finish() {
+    pod(fnv1a(out.data(), out.size()));
+    return std::move(out);
+  }
+  // A value that is not restored but must agree (sizes derived from the case).
+  template <class T>
+  void same(const char* name, T value) {
+    (*this)(name, value);
+  }
+
+  template <class T>
+  void operator()(const char* name, const T& v) {
+    if constexpr (is_plain<T>) {
+      header(name, kScalar, type_code<T>(), sizeof(T), 1);
+      raw(&v, sizeof v);
+    } else if constexpr (std::is_same_v<T, std::string>) {
+      header(name, kText, 'u', 1, v.size());
+      raw(v.data(), v.size());
+    } else if constexpr (is_vector<T>::value) {
+      using E = typename T::value_type;
+      static_assert(!std::is_same_v<E, bool>, "std::vector<bool> has no data(): use uint8_t");
+      if constexpr (is_plain<E>) {
+        header(name, kVector, type_code<E>(), sizeof(E), v.size());
+        raw(v.data(), v.size() * sizeof(E));
+      } else {
+        header(name, kList, std::is_same_v<E, std::string> ? 't' : 'g', 0, v.size());
+        for (const E& e : v) (*this)("item", e);
+      }
+    } else {
+      header(name, kGroup, 'g', 0, 0);
+      fields(*this, const_cast<T&>(v));  // the list is shared with Reader; nothing is changed
+    }
+  }
+
+ private:
+  void raw(const void* p, std::size_t n) { out.append(static_cast<const char*>(p), n); }
+  template <class T>
+  void pod(const T& v) {
+    raw(&v, sizeof v);
+  }
+  void header(const char* name, char kind, char type, std::size_t size, std::uint64_t count) {
+    const auto len = std::uint32_t(std::strlen(name));
+    pod(len);
+    raw(name, len);
+    pod(kind);
+    pod(type);
+    pod(std::uint8_t(size));
+    pod(count);
+  }
+};
+
+class Reader {
+ public:
+  static constexpr bool reading = true;
+
+  Reader(const std::string& bytes, std::string origin) : origin_(std::move(origin)) {
+    const std::size_t head = sizeof kMagic + 2 * sizeof(std::uint32_t);
+    if (bytes.size() < head + sizeof(std::uint64_t) ||
+        std::memcmp(bytes.data(), kMagic, sizeof kMagic) != 0)
+      throw InputError(fmt::format("'{}' is not a rupture checkpoint", origin_));
+    std::uint32_t version = 0, mark = 0;
+    std::memcpy(&version, bytes.data() + sizeof kMagic, sizeof version);
+    std::memcpy(&mark, bytes.data() + sizeof kMagic + sizeof version, sizeof mark);
+    if (mark != kByteOrderMark)
+      throw InputError(
+          fmt::format("checkpoint '{}' was written on a machine of another byte order", origin_));
+    if (version != std::uint32_t(kCheckpointVersion))
+      throw InputError(
+          fmt::format("checkpoint '{}' has format version {}; this rupture reads "
+                      "version {}",
+                      origin_, version, kCheckpointVersion));
+    const std::size_t body = bytes.size() - sizeof(std::uint64_t);
+    std::uint64_t sum = 0;
+    std::memcpy(&sum, bytes.data() + body, sizeof sum);
+    if (sum != fnv1a(bytes.data(), body))
+      throw InputError(
+          fmt::format("checkpoint '{}' is truncated or corrupt (checksum mismatch, "
+                      "{} bytes)",
+                      origin_, bytes.size()));
+    p_ = bytes.data() + head;
+    left_ = body - head;
+  }
+  bool at_end() const { return left_ == 0; }
+
+  template <class T>
+  void same(const char* name, T expected) {
+    T stored{};
+    (*this)(name, stored);
+    if (stored != expected)
+      throw InputError(
+          fmt::format("checkpoint '{}' does not belong to this case: {} = {} there, "
+                      "{} here",
+                      origin_, name, stored, expected));
+  }
+
+  template <class T>
+  void operator()(const char* name, T& v) {
+    if constexpr (is_plain<T>) {
+      expect(name, kScalar, type_code<T>(), sizeof(T));
+      raw(&v, sizeof v);
+    } else if constexpr (std::is_same_v<T, std::string>) {
+      const std::uint64_t n = expect(name, kText, 'u', 1);
+      need(n);
+      v.assign(p_, std::size_t(n));
+      p_ += n, left_ -= std::size_t(n);
+    } else if constexpr (is_vector<T>::value) {
+      using E = typename T::value_type;
+      if constexpr (is_plain<E>) {
+        const std::uint64_t n = expect(name, kVector, type_code<E>(), sizeof(E));
+        need(n * sizeof(E));
+        v.resize(std::size_t(n));
+        raw(v.data(), std::size_t(n) * sizeof(E));
+      } else {
+        const std::uint64_t n = expect(name, kList, std::is_same_v<E, std::string> ? 't' : 'g', 0);
+        need(n);  // every item takes at least a byte
+        v.resize(
+            std::size_t(n));  // existing items keep what is not stored (CohesiveInterface::spec)
+        for (E& e : v) (*this)("item", e);
+      }
+    } else {
+      expect(name, kGroup, 'g', 0);
+      fields(*this, v);
+    }
+  }
+
+ private:
+  void need(std::uint64_t n) const {
+    if (n > left_)
+      throw InputError(fmt::format("checkpoint '{}' is truncated (an entry of {} bytes, {} left)",
+                                   origin_, n, left_));
+  }
+  void raw(void* dst, std::size_t n) {
+    need(n);
+    std::memcpy(dst, p_, n);
+    p_ += n, left_ -= n;
+  }
+  template <class T>
+  T pod() {
+    T v{};
+    raw(&v, sizeof v);
+    return v;
+  }
+  std::uint64_t expect(const char* name, char kind, char type, std::size_t size) {
+    const auto len = pod<std::uint32_t>();
+    need(len);
+    const std::string found(p_, len);
+    p_ += len, left_ -= len;
+    const char k = pod<char>(), t = pod<char>();
+    const auto s = pod<std::uint8_t>();
+    const auto count = pod<std::uint64_t>();
+    if (found != name || k != kind || t != type || s != size)
+      throw InputError(
+          fmt::format("checkpoint '{}' does not match this version of rupture: expected entry '{}' "
+                      "({}{}{}), found '{}' ({}{}{})",
+                      origin_, name, kind, type, size, found, k, t, int(s)));
+    return count;
+  }
+  std::string origin_;
+  const char* p_ = nullptr;
+  std::size_t left_ = 0;
+};
+
+template <class A>
+void fields(A& a, Particles& p) {
+  a("x", p.x);
+  a("y", p.y);
+  a("vx", p.vx);
+  a("vy", p.vy);
+  a("mass", p.mass);
+  a("volume0", p.volume0);
+  a("volume", p.volume);
+  a("half_x", p.half_x);
+  a("half_y", p.half_y);
+  a("sxx", p.sxx);
+  a("syy", p.syy);
+  a("sxy", p.sxy);
+  a("szz", p.szz);
+  a("exx", p.exx);
+  a("eyy", p.eyy);
+  a("exy", p.exy);
+  a("field", p.field);
+  a("material", p.material);
+  a("id", p.id);
+}
+
+// The particle order and the strips it was sorted into fix the summation order: both stored.
+// order, bucket, scratch are scratch of the sort.
+template <class A>
+void fields(A& a, ScatterPlan& p) {
+  a("strip_cells", p.strip_cells);
+  a("sort_interval", p.sort_interval);
+  a("num_strips", p.num_strips);
+  a("sorted_step", p.sorted_step);
+  a("valid", p.valid);
+  a("strip_begin", p.strip_begin);
+}
+
+template <class A>
+void fields(A& a, NodeBC& b) {
+  a("field", b.field);
+  a("node", b.node);
+  a("component", b.component);
+  a("condition", b.condition);
+}
+
+template <class A>
+void fields(A& a, StepLimits& l) {
+  a("cfl_dt", l.cfl_dt);
+  a("bulk_eigen_bound", l.bulk_eigen_bound);
+  a("cohesive_dt", l.cohesive_dt);
+  a("min_cohesive_dt", l.min_cohesive_dt);
+  a("dt", l.dt);
+}
+
+// `spec` comes from the case; face_up/face_lo, jump_before, seg_ka/seg_kb are per-step
+// scratch, recomputed before they are read.
+template <class A>
+void fields(A& a, CohesiveInterface& c) {
+  a("x0", c.x0);
+  a("ux_up", c.ux_up);
+  a("uy_up", c.uy_up);
+  a("ux_lo", c.ux_lo);
+  a("uy_lo", c.uy_lo);
+  a("fx_node", c.fx_node);
+  a("fy_node", c.fy_node);
+  a("node_crack_time", c.node_crack_time);
+  a("gp_dn", c.gp_dn);
+  a("gp_dt", c.gp_dt);
+  a("gp_tn", c.gp_tn);
+  a("gp_tt", c.gp_tt);
+  a("gp_separated", c.gp_separated);
+  a("seg_fa_x", c.seg_fa_x);
+  a("seg_fa_y", c.seg_fa_y);
+  a("seg_fb_x", c.seg_fb_x);
+  a("seg_fb_y", c.seg_fb_y);
+  a("stiffness_node", c.stiffness_node);
+  a("last_increment_n", c.last_increment_n);
+  a("last_increment_t", c.last_increment_t);
+  a("streak_base", c.streak_base);
+  a("reversal_streak", c.reversal_streak);
+  a("work", c.work);
+}
+
+// Rebuilt from the case by make_state() and not stored: grid, stiffness, boundary, bonded,
+// cohesive_safety. Set by the driver before every step: dt_cap; tests only: forced_dt.
+// Not stored, per-step scratch: fields (every grid array is recomputed in each step).
+template <class A>
+void fields(A& a, State& s) {
+  a.same("grid.nodes_x", s.grid.nodes_x());
+  a.same("grid.nodes_y", s.grid.nodes_y());
+  a.same("fields", s.fields.num_fields);
+  a.same("particles.count", s.particles.size());
+  a.same("interfaces.count", s.interfaces.size());
+  a("particles", s.particles);
+  a("bc_nodes", s.bc_nodes);
+  a("bc_lines", s.bc_lines);
+  a("plan", s.plan);
+  a("interfaces", s.interfaces);
+  a("scheme", s.scheme);
+  a("flip", s.flip);
+  a("limits", s.limits);
+  a("dt", s.dt);
+  a("time", s.time);
+  a("step", s.step);
+  a("mass_floor", s.mass_floor);
+  a("cohesive_seconds", s.cohesive_seconds);
+  a("external_work", s.external_work);
+  a("initial_energy", s.initial_energy);
+}
+
+template <class A>
+void fields(A& a, EnergySample& e) {
+  a("time", e.time);
+  a("kinetic", e.kinetic);
+  a("strain", e.strain);
+  a("external_work", e.external_work);
+  a("initial", e.initial);
+  a("cohesive_stored", e.cohesive_stored);
+  a("cohesive_dissipated", e.cohesive_dissipated);
+}
+
+template <class A>
+void fields(A& a, CrackSample& c) {
+  a("time", c.time);
+  a("tip", c.tip);
+  a("cohesive_zone", c.cohesive_zone);
+  a("traction_zone", c.traction_zone);
+  a("stretch_begin", c.stretch_begin);
+  a("stretch_end", c.stretch_end);
+}
+
+template <class A>
+void fields(A& a, Schedule& s) {
+  a("interval", s.interval);
+  a("next", s.next);
+  a("count", s.count);
+}
+
+template <class A>
+void fields(A& a, RunContext& c) {
+  a("state", c.s);
+  a("history", c.history.samples);
+  a.same("cracks.count", c.cracks.size());
+  a("cracks", c.cracks);
+  a.same("snapshots", c.snapshots != nullptr);
+  if (c.snapshots) a("snapshot_writer", *c.snapshots);
+  a("eps", c.eps);
+  a("schedule.history", c.hist);
+  a("schedule.snapshot", c.snap);
+  a("schedule.interface", c.prof);
+  a("schedule.crack", c.crack);
+  a("schedule.checkpoint", c.checkpoint);
+  a("interface_files", c.interface_files);
+  a("wall_before", c.wall_before);
+  a("segments", c.segments);
+}
+
+template <class A>
+void fields(A& a, CaseSource& c) {
+  a("text", c.text);
+  a("origin", c.origin);
+  a("overrides", c.overrides);
+}
+
+std::string read_all(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    if (errno == ENOENT)
+      throw InputError(
+          fmt::format("no checkpoint at '{}' (a run writes one with "
+                      "--checkpoint-interval, or when interrupted by SIGINT/SIGTERM)",
+                      path));
+    throw_io_error("cannot read", path);
+  }
+  std::ostringstream buf;
+  buf << in.rdbuf();
+  if (in.bad()) throw_io_error("error while reading", path);
+  return buf.str();
+}
+
+}  // namespace
+
+std::string checkpoint_path(const std::string& dir) {
+  return dir + "/checkpoint/checkpoint.bin";
+}
+
+std::string checkpoint_bytes(const CaseSource& source, const RunContext& ctx) {
+  Writer w;
+  w("case", source);
+  w("run", ctx);
+  return w.finish();
+}
+
+void restore_checkpoint_bytes(const std::string& bytes, const std::string& origin,
+                              RunContext& ctx) {
+  Reader r(bytes, origin);
+  CaseSource source;
+  r("case", source);
+  r("run", ctx);
+  if (!r.at_end()) throw InputError(fmt::format("checkpoint '{}' has data past its end", origin));
+}
+
+void write_checkpoint(const std::string& dir, const CaseSource& source, const RunContext& ctx) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir + "/checkpoint", ec);
+  if (ec) throw IoError(fmt::format("cannot create '{}/checkpoint': {}", dir, ec.message()));
+  write_file_atomic(checkpoint_path(dir), checkpoint_bytes(source, ctx));
+}
+
+CaseSource read_checkpoint_source(const std::string& path) {
+  const std::string bytes = read_all(path);
+  Reader r(bytes, path);
+  CaseSource source;
+  r("case", source);
+  return source;
+}
+
+void read_checkpoint(const std::string& path, RunContext& ctx) {
+  restore_checkpoint_bytes(read_all(path), path, ctx);
+}
+
+}  // namespace rupture

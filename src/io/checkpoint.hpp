@@ -1,0 +1,37 @@
+// rupture/io/checkpoint.hpp
+// Checkpoints: DIR/checkpoint/checkpoint.bin holds a whole RunContext (run/run_context.hpp)
+// plus the case source, so `rupture resume DIR` continues a run bit for bit, also after kill -9.
+// Format (native byte order, checked): magic "RUPTCKPT", format version, byte-order mark, then
+// named entries (name, kind, element type and size, count, bytes), then an FNV-1a checksum of
+// everything before it. Reading checks every name, type and size in order, so a truncated,
+// corrupt or foreign file, or one from another layout, stops with a clear IoError/InputError.
+// Written atomically (tmp + fsync + rename): the previous checkpoint stays until the new one
+// is complete. What is derived from the case (grid, stiffnesses, boundary conditions, bonded
+// nodes) is rebuilt by make_state() and not written; per-step scratch (grid fields, the sort's
+// scratch arrays) neither.
+#pragma once
+#include <string>
+
+#include "run/run_context.hpp"
+
+namespace rupture {
+
+inline constexpr int kCheckpointVersion = 1;
+
+std::string checkpoint_path(const std::string& dir);  // DIR/checkpoint/checkpoint.bin
+
+// Writes the checkpoint of `ctx` for the case `source` into DIR/checkpoint/.
+void write_checkpoint(const std::string& dir, const CaseSource& source, const RunContext& ctx);
+
+// The case source stored in a checkpoint file.
+CaseSource read_checkpoint_source(const std::string& path);
+
+// Overwrites the evolving parts of `ctx` with the checkpoint's. `ctx` must have been set up
+// from the same case (make_state, trackers, snapshot writer); sizes are checked against it.
+void read_checkpoint(const std::string& path, RunContext& ctx);
+
+// The same as bytes (tests, and the file functions above).
+std::string checkpoint_bytes(const CaseSource& source, const RunContext& ctx);
+void restore_checkpoint_bytes(const std::string& bytes, const std::string& origin, RunContext& ctx);
+
+}  // namespace rupture

@@ -1,0 +1,45 @@
+// rupture/run/output_dir.cpp
+#include "run/output_dir.hpp"
+
+#include <fmt/format.h>
+
+#include <filesystem>
+
+#include "core/errors.hpp"
+
+namespace rupture {
+
+const std::vector<std::string>& run_files() {
+  static const std::vector<std::string> names{
+      "run.json",       "history.csv", "crack_tip.csv", "crack_stretches.csv",
+      "particles.xdmf", "snapshots",   "interface",     "checkpoint",
+      "figures"};
+  return names;
+}
+
+void prepare_output_dir(const std::string& dir, bool overwrite) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
+    throw InputError(fmt::format("output '{}' exists and is not a directory", dir));
+  std::vector<fs::path> found;
+  for (const std::string& name : run_files())
+    for (const std::string& entry : {name, name + ".tmp"})
+      if (fs::exists(fs::path(dir) / entry, ec)) found.push_back(fs::path(dir) / entry);
+  if (!found.empty() && !overwrite) {
+    std::string names;
+    for (const fs::path& p : found) names += (names.empty() ? "" : ", ") + p.filename().string();
+    throw InputError(fmt::format(
+        "output directory '{}' holds another run's files ({}); choose another directory, pass "
+        "--overwrite to delete them, or continue that run with: rupture resume {}",
+        dir, names, dir));
+  }
+  for (const fs::path& p : found) {
+    fs::remove_all(p, ec);
+    if (ec) throw IoError(fmt::format("cannot delete '{}': {}", p.string(), ec.message()));
+  }
+  fs::create_directories(dir, ec);
+  if (ec) throw IoError(fmt::format("cannot create directory '{}': {}", dir, ec.message()));
+}
+
+}  // namespace rupture

@@ -1,0 +1,51 @@
+// rupture/run/run_context.hpp
+// Everything a run carries from one time step to the next besides the Case: the solver state,
+// the crack trackers, the energy history, the output schedules and the snapshot writer. The
+// driver (run/driver.cpp) starts it fresh or from a checkpoint (io/checkpoint.hpp), which holds
+// all of it, so a resumed run continues bit for bit.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cohesive/crack_tip.hpp"
+#include "io/history.hpp"
+#include "io/snapshot.hpp"
+#include "solver/state.hpp"
+
+namespace rupture {
+
+// Fires at multiples of an interval of simulated time (never when the interval is 0).
+struct Schedule {
+  double interval = 0.0, next = 0.0;
+  long count = 1;  // next = count * interval: no round-off accumulates over a long run
+  Schedule() = default;
+  explicit Schedule(double dt) : interval(dt), next(dt) {}
+  bool due(double t, double eps) const { return interval > 0 && t >= next - eps; }
+  void advance(double t, double eps) {
+    while (next <= t + eps) next = double(++count) * interval;
+  }
+};
+
+// Where the case came from: `rupture resume` rebuilds the identical Case from it (the original
+// text and overrides, so no number goes through a print/parse round trip).
+struct CaseSource {
+  std::string text;                    // the case file as read
+  std::string origin;                  // its path when the run started (for messages)
+  std::vector<std::string> overrides;  // --set key=value, in order
+};
+
+// Every member must also be written in io/checkpoint.cpp (restart is bitwise).
+struct RunContext {
+  State s;
+  History history;
+  std::vector<CrackTracker> cracks;           // one per interface
+  std::unique_ptr<SnapshotWriter> snapshots;  // null without snapshots
+  double eps = 0.0;                           // absorbs round-off in accumulated time, s
+  Schedule hist, snap, prof, crack, checkpoint;
+  int interface_files = 0;   // interface/*.csv written so far
+  double wall_before = 0.0;  // wall seconds of earlier segments (resumed runs)
+  int segments = 1;          // 1 + number of resumptions
+};
+
+}  // namespace rupture

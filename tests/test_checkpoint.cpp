@@ -1,0 +1,172 @@
+// Checkpoints (io/checkpoint.hpp): a written and re-read RunContext is bitwise the same, the
+// run continues bitwise the same from it, and damaged or foreign files are refused clearly.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <filesystem>
+
+#include "core/errors.hpp"
+#include "io/case_toml.hpp"
+#include "io/checkpoint.hpp"
+#include "solver/energy.hpp"
+#include "solver/step.hpp"
+#include "support.hpp"
+
+using namespace rupture;
+
+namespace {
+
+// The reference problem, cropped and coarse (1 mm, uniform): 30000 particles, 12000 segments.
+Case small_rosakis() {
+  return load_case(
+      std::string(RUPTURE_SOURCE_DIR) + "/examples/rosakis1999.toml",
+      {"grid.min=[0.0,-0.06]", "grid.max=[0.075,0.04]", "bodies.upper.max=[0.075,0.04]",
+       "bodies.lower.min=[0.0,-0.06]", "bodies.lower.max=[0.075,0.0]",
+       "interface.weak_plane.bonded_to=0.075", "grid.cell_size=1e-3", "grid.coarse_cell_size=0",
+       "boundary.impact.velocity=60"});
+}
+
+std::string scratch_dir(const char* name) {
+  const auto d = std::filesystem::temp_directory_path() / name;
+  std::filesystem::remove_all(d);
+  return d.string();
+}
+
+// A context as the driver sets it up (trackers, snapshot writer), before any step.
+void set_up(RunContext& r, const Case& c, const std::string& dir) {
+  r.s = make_state(c);
+  for (std::size_t k = 0; k < r.s.interfaces.size(); ++k) r.cracks.emplace_back(2e-3);
+  r.snapshots = std::make_unique<SnapshotWriter>(dir, r.s.particles);
+}
+
+void advance(RunContext& r, int steps) {
+  for (int k = 0; k < steps; ++k) {
+    r.s.dt = r.s.limits.dt;
+    step(r.s);
+    r.history.samples.push_back(EnergySample{r.s.time, kinetic_energy(r.s.particles),
+                                             strain_energy(r.s.particles), r.s.external_work,
+                                             r.s.initial_energy});
+    for (std::size_t i = 0; i < r.cracks.size(); ++i)
+      r.cracks[i].sample(r.s.interfaces[i], r.s.time);
+  }
+}
+
+template <class T>
+bool bitwise_equal(const std::vector<T>& a, const std::vector<T>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
+}
+
+const CaseSource kSource{"title = \"x\"\n", "case.toml", {"time.end=1e-6", "grid.cell_size=1e-3"}};
+
+}  // namespace
+
+TEST(Checkpoint, round_trip_is_bitwise_and_the_run_continues_bitwise) {
+  const Case c = small_rosakis();
+  const std::string dir = scratch_dir("rupture_test_checkpoint");
+  RunContext a;
+  set_up(a, c, dir);
+  advance(a, 60);  // past a re-sort (every 25 steps): particle order differs from creation
+  a.hist = Schedule(1e-7);
+  a.hist.next = 3.3e-6;
+  a.checkpoint = Schedule(2e-6);
+  a.interface_files = 7;
+  a.eps = 1e-6 * a.s.limits.dt;
+  a.s.interfaces[0].gp_separated[5] = 1;  // a separated Gauss point survives the trip
+  a.s.interfaces[0].node_crack_time[3] = 1.5e-6;
+  const std::string bytes = checkpoint_bytes(kSource, a);
+
+  RunContext b;
+  set_up(b, c, dir);
+  restore_checkpoint_bytes(bytes, "test", b);
+  EXPECT_EQ(checkpoint_bytes(kSource, b), bytes) << "re-written checkpoint differs";
+  const Particles &pa = a.s.particles, &pb = b.s.particles;
+  EXPECT_TRUE(bitwise_equal(pa.id, pb.id)) << "particle order";
+  EXPECT_TRUE(bitwise_equal(pa.x, pb.x) && bitwise_equal(pa.vy, pb.vy) &&
+              bitwise_equal(pa.sxy, pb.sxy) && bitwise_equal(pa.exy, pb.exy) &&
+              bitwise_equal(pa.volume, pb.volume));
+  EXPECT_TRUE(bitwise_equal(a.s.plan.strip_begin, b.s.plan.strip_begin));
+  EXPECT_EQ(a.s.plan.sorted_step, b.s.plan.sorted_step);
+  const CohesiveInterface &ia = a.s.interfaces[0], &ib = b.s.interfaces[0];
+  EXPECT_TRUE(bitwise_equal(ia.gp_dn, ib.gp_dn) && bitwise_equal(ia.gp_tt, ib.gp_tt) &&
+              bitwise_equal(ia.gp_separated, ib.gp_separated) &&
+              bitwise_equal(ia.ux_up, ib.ux_up) &&
+              bitwise_equal(ia.node_crack_time, ib.node_crack_time));
+  EXPECT_EQ(ia.work, ib.work);
+  EXPECT_EQ(ib.spec.segments, 12000) << "the spec comes from the case, kept";
+  EXPECT_EQ(a.s.time, b.s.time);
+  EXPECT_EQ(a.s.step, b.s.step);
+  EXPECT_EQ(a.s.external_work, b.s.external_work);
+  EXPECT_EQ(b.history.samples.size(), 60u);
+  EXPECT_EQ(b.cracks[0].samples().size(), 60u);
+  EXPECT_EQ(b.hist.next, 3.3e-6);
+  EXPECT_EQ(b.interface_files, 7);
+
+  // Through a file: the case source comes back alone, the context as above.
+  write_checkpoint(dir, kSource, a);
+  const CaseSource src = read_checkpoint_source(checkpoint_path(dir));
+  EXPECT_EQ(src.text, kSource.text);
+  EXPECT_EQ(src.origin, kSource.origin);
+  EXPECT_EQ(src.overrides, kSource.overrides);
+  RunContext f;
+  set_up(f, c, dir);
+  read_checkpoint(checkpoint_path(dir), f);
+  EXPECT_EQ(checkpoint_bytes(kSource, f), bytes);
+
+  // Both go on 40 steps (another re-sort, the BC lines may move): still bitwise the same.
+  advance(a, 40);
+  advance(b, 40);
+  EXPECT_TRUE(bitwise_equal(a.s.particles.x, b.s.particles.x));
+  EXPECT_TRUE(bitwise_equal(a.s.particles.vx, b.s.particles.vx));
+  EXPECT_TRUE(bitwise_equal(a.s.particles.sxx, b.s.particles.sxx));
+  EXPECT_TRUE(bitwise_equal(a.s.interfaces[0].gp_tt, b.s.interfaces[0].gp_tt));
+  a.s.cohesive_seconds = b.s.cohesive_seconds = 0.0;  // wall time, not a result
+  EXPECT_EQ(checkpoint_bytes(kSource, a), checkpoint_bytes(kSource, b));
+}
+
+namespace {
+// The message of the InputError that restoring `bytes` into a context of case `c` raises.
+std::string restore_error(const std::string& bytes, const Case& c) {
+  RunContext r;
+  set_up(r, c, scratch_dir("rupture_test_checkpoint_bad"));
+  try {
+    restore_checkpoint_bytes(bytes, "ckpt.bin", r);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+}  // namespace
+
+TEST(Checkpoint, truncated_corrupt_foreign_and_other_case_files_are_refused) {
+  const Case c = parse_case(test::strip_case_toml());
+  RunContext a;
+  set_up(a, c, scratch_dir("rupture_test_checkpoint_strip"));
+  advance(a, 3);
+  const std::string bytes = checkpoint_bytes(kSource, a);
+  ASSERT_EQ(restore_error(bytes, c), "no error");
+
+  std::string m = restore_error(bytes.substr(0, bytes.size() / 2), c);
+  EXPECT_NE(m.find("truncated or corrupt"), std::string::npos) << m;
+  std::string flipped = bytes;
+  flipped[bytes.size() / 3] ^= 0x10;
+  m = restore_error(flipped, c);
+  EXPECT_NE(m.find("checksum"), std::string::npos) << m;
+  m = restore_error("title = \"a case file, not a checkpoint\"\n", c);
+  EXPECT_NE(m.find("not a rupture checkpoint"), std::string::npos) << m;
+  std::string other_version = bytes;
+  other_version[8] = char(99);
+  m = restore_error(other_version, c);
+  EXPECT_NE(m.find("format version 99"), std::string::npos) << m;
+  // A checkpoint of another case (another particle count) does not restore into this one.
+  const Case bigger = parse_case(test::strip_case_toml(),
+                                 {"grid.max=[0.02,0.002]", "bodies.strip.max=[0.02,0.002]"});
+  m = restore_error(bytes, bigger);
+  EXPECT_NE(m.find("does not belong to this case"), std::string::npos) << m;
+  // A missing file says how checkpoints are made.
+  try {
+    read_checkpoint_source(scratch_dir("rupture_test_checkpoint_none") + "/checkpoint.bin");
+    FAIL() << "no error for a missing checkpoint";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("--checkpoint-interval"), std::string::npos) << e.what();
+  }
+}
