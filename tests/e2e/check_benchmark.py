@@ -1,6 +1,9 @@
 #!/usr/bin/env python3
 """Benchmark regression (SPEC §6, V_imp = 30 m/s): initiation 10.4 +- 0.3 us, sustained speed
-2300 m/s +- 5 %, energy balance within 2 %, intersonic regime. Reads DIR/run.json."""
+2300 m/s +- 5 %, intersonic regime, energy balance (E14) within 0.5 % at the end and within 2 %
+over the whole history after the first microsecond (an offset of about 2 J/m appears during
+the 0.1 us rise of the impact, about three steps at the default safety; it is 0.9 % of the work
+put in at 1 us and fades to 0.2 % at the end: docs/time_step.md). Reads DIR/run.json."""
 import json
 import sys
 
@@ -16,7 +19,10 @@ for name, value, expected, tol in checks:
     ok &= good
     print(f"{name}: {value:.4g} (expected {expected} +- {tol:.3g}) {'ok' if good else 'FAIL'}")
 err = run["energy_balance_error"]
-print(f"energy_balance_error: {err:.3e} (limit 0.02) {'ok' if err < 0.02 else 'FAIL'}")
+final = run["energy_balance_error_final"]
+print(f"energy_balance_error (max after 1 us): {err:.3e} (limit 0.02) {'ok' if err < 0.02 else 'FAIL'}")
+print(f"energy_balance_error_final: {final:.3e} (limit 0.005) {'ok' if final < 0.005 else 'FAIL'}")
 print(f"crack.regime: {crack['regime']} (expected intersonic)")
-ok &= err < 0.02 and crack["regime"] == "intersonic" and run["crack.regime"] == crack["regime"]
+ok &= err < 0.02 and final < 0.005
+ok &= crack["regime"] == "intersonic" and run["crack.regime"] == crack["regime"]
 sys.exit(0 if ok else 1)

@@ -8,6 +8,7 @@
 #include <random>
 
 #include "io/case_toml.hpp"
+#include "solver/cohesive_step.hpp"
 #include "solver/state.hpp"
 #include "solver/step.hpp"
 #include "core/errors.hpp"
@@ -99,6 +100,41 @@ cohesive_safety = {}
 }
 
 }  // namespace
+
+// Momentum (E9): the cohesive forces put on the two fields sum to zero, node by node of the
+// interface and in total, to round-off, also next to a bonded stretch, where the faces' stencils
+// include tied nodes (both fields' mass). The halves slide past each other (upper at +1 m/s,
+// lower at -1 m/s) for 40 steps, then the cohesive phase of one more step is taken apart.
+TEST(TimeStep, cohesive_forces_on_the_two_fields_sum_to_zero_next_to_a_bonded_stretch) {
+  Case c = pulled_pair(0.5e-3, 0.9);
+  c.interfaces[0].end = 0.006;
+  c.interfaces[0].segments = 3000;
+  c.interfaces[0].bonded = true;
+  c.interfaces[0].bonded_from = 0.006;
+  c.interfaces[0].bonded_to = 0.008;
+  State s = make_state(c);
+  for (std::size_t p = 0; p < s.particles.size(); ++p) s.particles.vx[p] = s.particles.field[p] == 0 ? 1.0 : -1.0;
+  for (int n = 0; n < 40; ++n) step(s);
+  particles_to_grid(s, true);
+  tie_bonded_nodes(s, TieWhat::mass_momentum);
+  update_face_stencils(s);
+  GridFields& G = s.fields;
+  std::fill(G.force_x.begin(), G.force_x.end(), 0.0);
+  std::fill(G.force_y.begin(), G.force_y.end(), 0.0);
+  add_cohesive_forces(s);
+  double sum_x = 0, sum_y = 0, scale = 0;
+  for (std::size_t i = 0; i < G.force_x.size(); ++i)
+    sum_x += G.force_x[i], sum_y += G.force_y[i], scale += std::fabs(G.force_x[i]) + std::fabs(G.force_y[i]);
+  const CohesiveInterface& ci = s.interfaces[0];
+  double near_bond = 0;  // cohesive force carried by faces whose stencil reaches a tied node
+  for (std::size_t k = 0; k < ci.num_nodes(); ++k)
+    if (ci.x0[k] > 0.006 - 0.5e-3) near_bond += std::fabs(ci.fx_node[k]);
+  std::printf("cohesive force: sum (%.3e, %.3e) N/m against sum |f| %.3e N/m; %.3e N/m within a cell of the bond\n",
+              sum_x, sum_y, scale, near_bond);
+  EXPECT_GT(near_bond, 0.0) << "the test must load the faces next to the bonded stretch";
+  EXPECT_LT(std::fabs(sum_x), 1e-13 * scale);
+  EXPECT_LT(std::fabs(sum_y), 1e-13 * scale);
+}
 
 // SPEC E6 at rest: the per-step bound from the face stencils and masses equals the lumped
 // estimate `rupture check` prints (faces on their node row, row mass rho h^2 / 2, stiffness
