@@ -233,8 +233,7 @@ constexpr double kUnstableIncrement = 1e-3;  // x delta_n
 
 }  // namespace
 
-void advance_interfaces(State& s) {
-  const GridFields& G = s.fields;
+void advance_interfaces(State& s, const double* vel_x, const double* vel_y) {
   const double dt = s.dt;
   for (CohesiveInterface& c : s.interfaces) {
     const long n = long(c.num_nodes());
@@ -243,14 +242,14 @@ void advance_interfaces(State& s) {
 #pragma omp parallel for schedule(static) reduction(min : unstable)
     for (long kl = 0; kl < n; ++kl) {
       const std::size_t k = std::size_t(kl);
-      // Each face moves with its own field's t^{n+1} grid velocity (the particles' velocity),
-      // through the stencil its force was spread with (update_face_stencils).
+      // Each face moves with its own field's t^{n+1} grid velocity (the one its body's strain is
+      // updated with), through the stencil its force was spread with (update_face_stencils).
       const FaceStencil& a = c.face_up[k];
       const FaceStencil& b = c.face_lo[k];
       double vax = 0, vay = 0, vbx = 0, vby = 0;
       for (int q = 0; q < 4; ++q) {
-        vax += a.c[q] * G.vel_x[a.node[q]], vay += a.c[q] * G.vel_y[a.node[q]];
-        vbx += b.c[q] * G.vel_x[b.node[q]], vby += b.c[q] * G.vel_y[b.node[q]];
+        vax += a.c[q] * vel_x[a.node[q]], vay += a.c[q] * vel_y[a.node[q]];
+        vbx += b.c[q] * vel_x[b.node[q]], vby += b.c[q] * vel_y[b.node[q]];
       }
       c.jump_before[k] = std::hypot(c.jump_normal(k), c.jump_tangential(k));
       c.ux_up[k] += dt * vax, c.uy_up[k] += dt * vay;

@@ -6,7 +6,8 @@
 //                        forces (upper face -T^, lower face +T^), before the momentum update;
 //   tie_bonded_nodes:    where the halves are bonded, the two fields share mass, momentum and
 //                        force on the interface row, which is exactly a single body;
-//   advance_interfaces:  face nodes move with their field's t^{n+1} grid velocity; jumps,
+//   advance_interfaces:  face nodes move with their field's t^{n+1} grid velocity (MUSL: the
+//                        re-mapped one its strain uses, solver/time_step.hpp); jumps,
 //                        tractions, separation and cohesive work are updated.
 #pragma once
 #include "solver/state.hpp"
@@ -18,7 +19,7 @@ enum class TieWhat { mass_momentum, force, remapped_momentum };
 void update_face_stencils(State& s);
 void add_cohesive_forces(State& s);
 void tie_bonded_nodes(State& s, TieWhat what);
-void advance_interfaces(State& s);
+void advance_interfaces(State& s, const double* vel_x, const double* vel_y);
 // Jumps -> Gauss-point tractions, separation, nodal forces and cohesive work at time t; the
 // step began at t_before (node crack times are interpolated in [t_before, t] from
 // c.jump_before).

@@ -721,7 +721,10 @@ void step(State& s) {
   ++s.step;
   if (!s.interfaces.empty()) {
     CohesiveTimer timer(s);
-    advance_interfaces(s);  // face nodes follow their fields; jumps and tractions at t^{n+1}
+    // Face nodes follow their fields with the velocity the bodies' strain is updated with (MUSL:
+    // re-mapped), so jumps and strains stay consistent; jumps and tractions at t^{n+1}.
+    const bool musl = s.scheme == Scheme::MUSL;
+    advance_interfaces(s, musl ? G.remap_x.data() : G.vel_x.data(), musl ? G.remap_y.data() : G.vel_y.data());
   }
 }
 

@@ -37,7 +37,8 @@ CaseSummary summarize(const Case& c) {
                                 c.materials[c.bodies[is.lower_field].material].density);
     const double k = is.law.stability_stiffness(0.0, 0.0) * h;
     const double m = 0.5 * rho * h * h;
-    const double limit = 2.0 / std::sqrt(s.bulk_eigen_bound + 2.0 * k / m);
+    const double scheme = c.solver.scheme == Scheme::MUSL ? 1.0 : 2.0;  // solver/time_step.cpp
+    const double limit = 2.0 / std::sqrt(scheme * (s.bulk_eigen_bound + 2.0 * k / m));
     s.dt_cohesive = s.dt_cohesive > 0 ? std::min(s.dt_cohesive, limit) : limit;
   }
   if (s.dt_cohesive > 0) s.dt = std::min(s.dt, c.time.cohesive_safety * s.dt_cohesive);

@@ -87,7 +87,12 @@ void choose_time_step(State& s) {
   double dt = s.limits.cfl_dt;
   if (!s.interfaces.empty()) {
     const double lambda = s.limits.bulk_eigen_bound + cohesive_eigen_bound(s);
-    s.limits.cohesive_dt = 2.0 / std::sqrt(lambda);
+    // MUSL moves the faces with the velocity it keeps (re-mapped): central-difference limit.
+    // USL/USF move them with the raw grid velocity v + dv while the next step keeps only
+    // v + S dv (S = M_L^-1 M_C, 0 < S <= 1): the limit drops to 2 / sqrt((2 - S) lambda), at
+    // worst sqrt(2 / lambda) (docs/time_step.md).
+    const double scheme = s.scheme == Scheme::MUSL ? 1.0 : 2.0;
+    s.limits.cohesive_dt = 2.0 / std::sqrt(scheme * lambda);
     s.limits.min_cohesive_dt = std::min(s.limits.min_cohesive_dt, s.limits.cohesive_dt);
     dt = std::min(dt, s.cohesive_safety * s.limits.cohesive_dt);
   }
