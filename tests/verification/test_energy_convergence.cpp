@@ -48,7 +48,7 @@ double standing_wave_error(double h) {
   for (std::size_t p = 0; p < s.particles.size(); ++p)
     s.particles.vx[p] = v0 * std::sin(std::numbers::pi * s.particles.x[p] / L);
   while (s.time < half_period - 1e-15) {
-    s.dt = std::min(s.limits.dt, half_period - s.time);
+    s.dt_cap = half_period - s.time;  // land on the half period
     step(s);
   }
   const double w = std::numbers::pi * cd / L;
