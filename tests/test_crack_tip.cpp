@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "cohesive/crack_tip.hpp"
+#include "solver/cohesive_step.hpp"
 
 using namespace rupture;
 
@@ -137,4 +138,50 @@ TEST(CrackTip, reaching_the_end_of_the_cohesive_line_is_recorded) {
   CrackTracker intact(0.02);
   intact.sample(line(), 1e-6);
   EXPECT_LT(intact.end_reached_time(), 0.0) << "no crack, so no arrival";
+}
+
+// SPEC §6 bands, with Homalite's speeds: below c_R, between c_R and c_S (the band no crack
+// sustains), between c_S and c_D, above c_D; "none" for a crack that does not move.
+TEST(CrackTip, regimes_follow_the_wave_speeds) {
+  EXPECT_EQ(crack_regime(0.0, kHomalite), "none");
+  EXPECT_EQ(crack_regime(1100.0, kHomalite), "sub-Rayleigh");
+  EXPECT_EQ(crack_regime(1200.0, kHomalite), "Rayleigh-to-shear");
+  EXPECT_EQ(crack_regime(kHomalite.shear, kHomalite), "intersonic");
+  EXPECT_EQ(crack_regime(2300.0, kHomalite), "intersonic");
+  EXPECT_EQ(crack_regime(3000.0, kHomalite), "supersonic");
+}
+
+// E10/E11 do not depend on the time step: a tip whose nodes crack at exact times x / v is
+// sampled at exact multiples of an interval shorter than any step a run would take, and only
+// nodes cracked by the sample time count, so every E11 window spans exactly 31 intervals and
+// the speed is v to within the node spacing's staircase.
+TEST(CrackTip, samples_at_exact_times_see_only_nodes_cracked_by_then) {
+  CohesiveInterface c = line();  // nodes every 0.1 mm
+  const double v = 1200.0, interval = 0.01e-6;
+  for (std::size_t k = 0; k < c.num_nodes(); ++k) c.node_crack_time[k] = c.x0[k] / v;  // all known now
+  CrackTracker tracker;
+  for (int n = 0; n <= 600; ++n) tracker.sample(c, n * interval);
+  const std::vector<CrackSample>& s = tracker.samples();
+  // At t = 3.05 us the tip is the last node with x0 <= v t = 3.66 mm: 3.6 mm.
+  EXPECT_NEAR(s[305].tip, 3.6e-3, 1e-12);
+  const std::vector<double> speeds = tracker.speeds();
+  for (std::size_t n = 15; n + 15 < s.size(); ++n) {
+    ASSERT_FALSE(std::isnan(speeds[n]));
+    EXPECT_NEAR(speeds[n], v, 0.15 * v) << "window of 31 x 10 ns over 0.1 mm nodes at t = " << s[n].time;
+  }
+  const CrackSummary sum = tracker.summarize(c, kHomalite, 4e-6);
+  EXPECT_NEAR(sum.sustained_speed, v, 0.01 * v);
+  EXPECT_EQ(sum.regime, "Rayleigh-to-shear");
+}
+
+// A node's crack time is where its jump crossed the criterion inside the step, linearly in
+// time: a jump that went from 0.8 to 1.2 x the criterion over [0.9, 1.0] us cracked at 0.95 us.
+TEST(CrackTip, node_crack_time_is_interpolated_inside_the_step) {
+  CohesiveInterface c = line();
+  const double crit = c.separation_opening();
+  c.jump_before[7] = 0.8 * crit;
+  c.ux_up[7] = 0.6 * crit, c.ux_lo[7] = -0.6 * crit;  // jump 1.2 crit now
+  evaluate_interface(c, 1.0e-6, 0.9e-6);
+  EXPECT_NEAR(c.node_crack_time[7], 0.95e-6, 1e-15);
+  EXPECT_LT(c.node_crack_time[6], 0.0);
 }
