@@ -551,13 +551,15 @@ void grid_to_particles_impl(State& s, const double* gvx, const double* gvy) {
       kMode == G2PMode::stress_velocity_and_move || kMode == G2PMode::velocity_and_move;
   constexpr bool do_stress = kMode != G2PMode::velocity_and_move;
   constexpr bool do_move = kMode != G2PMode::stress_only;
-  // Particles must keep their whole 3-node stencil inside the grid.
+  // Particles must keep their whole 3-node stencil inside the grid: the stencil starts at the
+  // cell of x - lp, so on the high side the particle stays out of the last cell (there the
+  // stencil would reach node cells + 1); on the low side lp <= half a cell suffices.
   const Axis& ax = s.grid.x;
   const Axis& ay = s.grid.y;
   const double xlo = ax.node(0) + 0.5 * ax.width(0);
-  const double xhi = ax.node(ax.cells) - 0.5 * ax.width(ax.cells - 1);
+  const double xhi = ax.node(ax.cells - 1);
   const double ylo = ay.node(0) + 0.5 * ay.width(0);
-  const double yhi = ay.node(ay.cells) - 0.5 * ay.width(ay.cells - 1);
+  const double yhi = ay.node(ay.cells - 1);
   const ScatterPlan& plan = s.plan;
   const int width = plan.strip_cells;
   std::size_t bad = kNone;
