@@ -18,6 +18,9 @@ std::string run_json(const Case& c, const CaseSummary& s, const RunRecord& r) {
   t.insert("status", r.status);
   t.insert("message", r.message);
   t.insert("stop_reason", r.stop_reason);
+  toml::array warnings;  // what `rupture check` warned about (io/case_checks.hpp)
+  for (const std::string& w : c.warnings) warnings.push_back(w);
+  t.insert("warnings", warnings);
   t.insert("heartbeat", r.heartbeat);
   t.insert("heartbeat_unix", r.heartbeat_unix);
   t.insert("checkpoint_time", r.checkpoint_time);
