@@ -153,7 +153,9 @@ class Writer {
   }
 
  private:
-  void raw(const void* p, std::size_t n) { out.append(static_cast<const char*>(p), n); }
+  void raw(const void* p, std::size_t n) {
+    if (n > 0) out.append(static_cast<const char*>(p), n);  // an empty vector's data() may be null
+  }
   template <class T>
   void pod(const T& v) {
     raw(&v, sizeof v);
@@ -251,7 +253,7 @@ class Reader {
   }
   void raw(void* dst, std::size_t n) {
     need(n);
-    std::memcpy(dst, p_, n);
+    if (n > 0) std::memcpy(dst, p_, n);  // an empty vector's data() may be null
     p_ += n, left_ -= n;
   }
   template <class T>
