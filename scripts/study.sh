@@ -13,6 +13,9 @@
 #                                      (the example's graded grid with finest cell H)
 #   scripts/study.sh refined H [full]  V = 30 m/s on the example's refined grid, finest H,
 #                                      cropped (or the full plate with `full`)
+#   scripts/study.sh safety H [S...]   V = 30 m/s to 19.2 us at uniform H for each
+#                                      time.cohesive_safety S (default 0.125 0.25 0.5 0.7 0.9 1):
+#                                      the answer must not depend on the step (docs/time_step.md)
 #   scripts/study.sh table DIR...      print the table for finished runs
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -86,6 +89,14 @@ case "${1:-}" in
     $bin run examples/rosakis1999.toml -o "$d" --overwrite --quiet "${extra[@]}" --set grid.cell_size=$h \
       | grep -E "^(particles|steps|wall_seconds|crack.sustained_speed|status)="
     table "$d" ;;
+  safety)
+    h=${2:?cell size}; shift 2; ss=("$@"); [ ${#ss[@]} -gt 0 ] || ss=(0.125 0.25 0.5 0.7 0.9 1.0); dirs=()
+    for sf in "${ss[@]}"; do
+      d=runs/study/safety_h${h}_s$sf; dirs+=("$d")
+      $bin run examples/rosakis1999.toml -o "$d" --overwrite --quiet "${crop[@]}" "${uniform[@]}" \
+        --set grid.cell_size=$h --set time.cohesive_safety=$sf | grep -E "^(steps|wall_seconds|status)="
+    done
+    table "${dirs[@]}" ;;
   table) shift; table "$@" ;;
-  *) sed -n 2,14p "$0"; exit 1 ;;
+  *) sed -n 2,17p "$0"; exit 1 ;;
 esac
