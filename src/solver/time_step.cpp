@@ -73,7 +73,8 @@ double cohesive_eigen_bound(const State& s) {
         for (int q = 0; q < 4; ++q)
           if (f->c[q] > 0.0) lo = std::min(lo, f->node[q]), hi = std::max(hi, f->node[q]);
     if (lo > hi) continue;
-    std::vector<double> row(hi - lo + 1, 0.0);
+    thread_local std::vector<double> row;  // scratch, kept between steps (no allocation)
+    row.assign(hi - lo + 1, 0.0);
     for (std::size_t k = 0; k < n; ++k)
       for (const FaceStencil* f : {&c.face_up[k], &c.face_lo[k]})
         for (int q = 0; q < 4; ++q)
