@@ -7,7 +7,6 @@
 #pragma once
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace rupture {
 
@@ -42,29 +41,37 @@ struct XuNeedleman {
   // Initial normal stiffness of the law, e sigma_max / delta_n (SPEC E6).
   double initial_stiffness() const { return std::exp(1.0) * sigma_max / delta_n; }
 
-  // SPEC E7 (+ E8 for dn < 0). dn, dt: normal and tangential openings, m.
-  CohesiveTraction traction(double dn, double dt) const {
-    const double pn = phi_n();
+  // Normalized openings and their exponentials, shared by the traction and its tangent.
+  struct Openings {
+    double xn, xt;  // Dn / delta_n, Dt / delta_t
+    double en, et;  // e^{-xn}, e^{-xt^2}
+  };
+  Openings openings(double dn, double dt) const {
     const double xn = dn / delta_n, xt = dt / delta_t;
-    const double en = std::exp(-xn), et = std::exp(-xt * xt);
+    return {xn, xt, std::exp(-xn), std::exp(-xt * xt)};
+  }
+
+  // SPEC E7 (+ E8 for dn < 0). dn, dt: normal and tangential openings, m.
+  CohesiveTraction traction(double dn, double dt) const { return traction(openings(dn, dt), dn); }
+  CohesiveTraction traction(const Openings& o, double dn) const {
+    const double pn = phi_n();
     CohesiveTraction T;
-    T.normal = (pn / delta_n) * en * (xn * et + (1.0 - q) / (r - 1.0) * (1.0 - et) * (r - xn));
-    T.tangential = (pn / delta_n) * (2.0 * delta_n / delta_t) * xt * (q + (r - q) / (r - 1.0) * xn) * en * et;
+    T.normal = (pn / delta_n) * o.en * (o.xn * o.et + (1.0 - q) / (r - 1.0) * (1.0 - o.et) * (r - o.xn));
+    T.tangential = (pn / delta_n) * (2.0 * delta_n / delta_t) * o.xt * (q + (r - q) / (r - 1.0) * o.xn) * o.en * o.et;
     if (dn < 0.0) T.normal += penalty_stiffness() * dn;
     return T;
   }
 
-  // dT^/dDelta of E7 (+ E8 for dn < 0), differentiated in closed form.
-  CohesiveTangent tangent(double dn, double dt) const {
+  // dT^/dDelta of E7 (+ E8 when compressed), differentiated in closed form.
+  CohesiveTangent tangent(double dn, double dt) const { return tangent(openings(dn, dt), dn < 0.0); }
+  CohesiveTangent tangent(const Openings& o, bool compressed) const {
     const double pn = phi_n();
-    const double xn = dn / delta_n, xt = dt / delta_t;
-    const double en = std::exp(-xn), et = std::exp(-xt * xt);
     const double a = (1.0 - q) / (r - 1.0), b = (r - q) / (r - 1.0);
     CohesiveTangent K;
-    K.nn = pn / (delta_n * delta_n) * en * (et * (1.0 - xn) - a * (1.0 - et) * (1.0 + r - xn));
-    K.nt = 2.0 * pn / (delta_n * delta_t) * xt * en * et * (b - q - b * xn);
-    K.tt = 2.0 * pn / (delta_t * delta_t) * (q + b * xn) * en * et * (1.0 - 2.0 * xt * xt);
-    if (dn < 0.0) K.nn += penalty_stiffness();
+    K.nn = pn / (delta_n * delta_n) * o.en * (o.et * (1.0 - o.xn) - a * (1.0 - o.et) * (1.0 + r - o.xn));
+    K.nt = 2.0 * pn / (delta_n * delta_t) * o.xt * o.en * o.et * (b - q - b * o.xn);
+    K.tt = 2.0 * pn / (delta_t * delta_t) * (q + b * o.xn) * o.en * o.et * (1.0 - 2.0 * o.xt * o.xt);
+    if (compressed) K.nn += penalty_stiffness();
     return K;
   }
 
@@ -72,10 +79,12 @@ struct XuNeedleman {
   // the largest tangent eigenvalue, taken also on the compressed side of Dn = 0 when the face
   // is open or just closed, since the penalty (E8) switches on there and a step's round-off
   // moves a closed face across the kink.
-  double stability_stiffness(double dn, double dt) const {
-    const double here = tangent(dn, dt).max_eigenvalue();
+  double stability_stiffness(double dn, double dt) const { return stability_stiffness(openings(dn, dt), dn); }
+  double stability_stiffness(const Openings& o, double dn) const {
+    const double here = tangent(o, dn < 0.0).max_eigenvalue();
     if (dn < 0.0) return here;
-    return std::max(here, tangent(-std::numeric_limits<double>::denorm_min(), dt).max_eigenvalue());
+    const Openings closed{0.0, o.xt, 1.0, o.et};  // Dn -> 0 from below, same Dt
+    return std::max(here, tangent(closed, true).max_eigenvalue());
   }
 
   // The potential phi(dn, dt) whose gradient is the traction (J/m^2), penalty included:

@@ -86,10 +86,11 @@ void evaluate_interface(CohesiveInterface& c, double t, double t_before) {
       double tn = 0.0, tt = 0.0, k = 0.0;
       if (!c.gp_separated[i] && std::hypot(dn, dt) >= crit) c.gp_separated[i] = 1;
       if (!c.gp_separated[i]) {
-        const CohesiveTraction T = law.traction(dn, dt);
+        const XuNeedleman::Openings o = law.openings(dn, dt);  // two exponentials for both
+        const CohesiveTraction T = law.traction(o, dn);
         tn = T.normal;
         tt = T.tangential;
-        k = law.stability_stiffness(dn, dt);  // E6 bound (solver/time_step.hpp)
+        k = law.stability_stiffness(o, dn);  // E6 bound (solver/time_step.hpp)
       }
       // Work of the tractions over the step, trapezoidal in time (E14).
       const double jw = kW[g] * half;
