@@ -1,0 +1,34 @@
+// rupture/io/case_parse.hpp
+// One parse function per table of the input file (io/case_toml builds the Case by calling them
+// in order). Each validates its table completely; cross-table rules that need several tables
+// live in io/case_checks. Internal to io/.
+#pragma once
+#include <map>
+#include <string>
+
+#include "io/case.hpp"
+#include "io/toml_section.hpp"
+
+namespace rupture {
+
+// Names already parsed, for the tables that refer to them.
+struct ParseContext {
+  std::map<std::string, int> material_index;
+  std::map<std::string, int> body_index;
+};
+
+void parse_model(Section& top, Case& c);
+void parse_materials(Section& top, Case& c, ParseContext& ctx);
+void parse_grid(Section& top, Case& c);
+void parse_bodies(Section& top, Case& c, ParseContext& ctx);
+void parse_time(Section& top, Case& c);
+void parse_solver(Section& top, Case& c);
+void parse_boundary(Section& top, Case& c, ParseContext& ctx);
+void parse_interfaces(Section& top, Case& c, ParseContext& ctx);
+void parse_output(Section& top, Case& c);
+// grid.margin when not given: the largest displacement of any load over the run.
+void set_automatic_margin(Case& c);
+// On a graded grid, bodies fill whole cells: their edges must be grid lines.
+void check_bodies_on_graded_grid(const Case& c);
+
+}  // namespace rupture

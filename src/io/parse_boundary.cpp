@@ -1,0 +1,93 @@
+// rupture/io/parse_boundary.cpp
+// The [boundary] table: prescribed velocities on domain edges (SPEC E2).
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "io/case_parse.hpp"
+
+namespace rupture {
+
+void parse_boundary(Section& top, Case& c, ParseContext& ctx) {
+  auto& body_index = ctx.body_index;
+  Section bcs = top.table("boundary", false);
+  for (const auto& [k, v] : in_input_order(bcs.raw())) {
+    const std::string& name = k;
+    Section b = bcs.table(name, true,
+                          {"edge", "from", "to", "component", "bodies", "function", "velocity",
+                           "rise_time", "plateau_time", "fall_time", "follow_edge"});
+    VelocityBC bc;
+    bc.name = name;
+    const std::string edge = b.string("edge", "", {"left", "right", "bottom", "top"});
+    bc.edge = edge == "left"     ? Edge::left
+              : edge == "right"  ? Edge::right
+              : edge == "bottom" ? Edge::bottom
+                                 : Edge::top;
+    const bool vertical = bc.edge == Edge::left || bc.edge == Edge::right;
+    const int along = vertical ? 1 : 0;
+    const double lo = c.grid.min[along], hi = c.grid.max[along];
+    bc.from = b.number("from", lo);
+    bc.to = b.number("to", hi);
+    const std::string coord = vertical ? "y" : "x";
+    if (!(bc.from <= bc.to))
+      fail(b.key("to"), bc.to, fmt::format("must be >= {} = {:g}", b.key("from"), bc.from));
+    const double tol = 1e-9 * c.grid.cell_size;
+    if (!inside(bc.from, lo, hi, tol))
+      fail(b.key("from"), bc.from,
+           fmt::format("must lie on the {} edge: {} in [{:g}, {:g}] m", edge, coord, lo, hi));
+    if (!inside(bc.to, lo, hi, tol))
+      fail(b.key("to"), bc.to,
+           fmt::format("must lie on the {} edge: {} in [{:g}, {:g}] m", edge, coord, lo, hi));
+    const std::string comp = b.string("component", "", {"x", "y"});
+    bc.component = comp == "x" ? 0 : 1;
+    for (const std::string& body : b.strings("bodies")) {
+      if (!body_index.count(body)) {
+        std::vector<std::string> names;
+        for (const auto& bb : c.bodies) names.push_back(bb.name);
+        fail(b.key("bodies"), "\"" + body + "\"", "must name bodies among " + Section::join(names));
+      }
+      bc.fields.push_back(body_index[body]);
+    }
+    const std::string fn = b.string("function", "constant", {"constant", "trapezoid"});
+    bc.velocity.value = b.number("velocity");
+    if (fn == "trapezoid") {
+      bc.velocity.kind = TimeFunction::Kind::trapezoid;
+      bc.velocity.rise_time = b.number("rise_time");
+      if (bc.velocity.rise_time <= 0)
+        fail(b.key("rise_time"), bc.velocity.rise_time, "must be > 0 (s)");
+      bc.velocity.plateau_time = b.number("plateau_time");
+      if (bc.velocity.plateau_time < 0)
+        fail(b.key("plateau_time"), bc.velocity.plateau_time, "must be >= 0 (s)");
+      bc.velocity.fall_time = b.number("fall_time");
+      if (bc.velocity.fall_time <= 0)
+        fail(b.key("fall_time"), bc.velocity.fall_time, "must be > 0 (s)");
+    } else {
+      for (const char* key : {"rise_time", "plateau_time", "fall_time"})
+        if (b.has(key))
+          fail(b.key(key), show(*b.node(key)), "only allowed with function = \"trapezoid\"");
+    }
+    bc.follow_edge = b.boolean("follow_edge", true);
+    if (b.has("follow_edge") && !bc.normal())
+      fail(b.key("follow_edge"), show(*b.node("follow_edge")),
+           fmt::format("only applies to the velocity component normal to the {} edge ({})", edge,
+                       vertical ? "x" : "y"));
+    c.boundary.push_back(bc);
+  }
+}
+
+void set_automatic_margin(Case& c) {
+  if (c.grid.margin >= 0.0) return;  // given
+  // Automatic ghost margin (GridSpec::margin): the largest displacement of any prescribed or
+  // initial velocity over the run. 1000 samples of a piecewise-linear V miss nothing that matters.
+  double m = 0.0;
+  for (const VelocityBC& bc : c.boundary)
+    for (int k = 1; k <= 1000; ++k)
+      m = std::max(m, std::fabs(bc.velocity.displacement(c.time.end * k / 1000.0)));
+  for (const BodySpec& b : c.bodies)
+    m = std::max(m, std::hypot(b.velocity[0], b.velocity[1]) * c.time.end);
+  // Capped like an explicit grid.margin: a long run with a constant velocity would otherwise
+  // ask for an unbounded grid; a surface moving farther is caught as "particle left the grid".
+  c.grid.margin = std::min(m, c.grid.max_margin());
+}
+
+}  // namespace rupture

@@ -1,0 +1,30 @@
+// rupture/io/toml_section.cpp
+#include "io/toml_section.hpp"
+
+#include <limits>
+
+namespace rupture {
+
+std::vector<std::pair<std::string, const toml::node*>> in_input_order(const toml::table& t) {
+  struct Entry {
+    std::size_t line, column;
+    std::string name;
+    const toml::node* node;
+  };
+  std::vector<Entry> e;
+  for (const auto& [k, v] : t) {
+    const auto& pos = k.source().begin;
+    const bool known =
+        pos.line > 0 && k.source().path && t.source().path && *k.source().path == *t.source().path;
+    e.push_back({known ? std::size_t(pos.line) : std::numeric_limits<std::size_t>::max(),
+                 known ? std::size_t(pos.column) : 0, std::string(k.str()), &v});
+  }
+  std::stable_sort(e.begin(), e.end(), [](const Entry& a, const Entry& b) {
+    return a.line != b.line ? a.line < b.line : a.column < b.column;
+  });
+  std::vector<std::pair<std::string, const toml::node*>> out;
+  for (const Entry& x : e) out.emplace_back(x.name, x.node);
+  return out;
+}
+
+}  // namespace rupture
