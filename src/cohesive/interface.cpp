@@ -2,36 +2,78 @@
 #include "cohesive/interface.hpp"
 
 #include <cmath>
+#include <utility>
 
 namespace rupture {
+
+Polyline InterfaceSpec::geometry() const {
+  if (line.num_vertices() >= 2) return line;
+  Polyline p;
+  p.x = {start, end};
+  p.y = {y, y};
+  return p;
+}
+
+Polyline InterfaceSpec::tie_geometry() const {
+  if (bonded_line.num_vertices() >= 2 || !bonded) return bonded_line;
+  Polyline p;
+  p.x = {bonded_from, bonded_to};
+  p.y = {y, y};
+  return p;
+}
 
 CohesiveInterface make_interface(const InterfaceSpec& spec) {
   CohesiveInterface c;
   c.spec = spec;
-  const std::size_t n = std::size_t(spec.segments) + 1;
-  c.x0.resize(n);
-  for (std::size_t k = 0; k < n; ++k)
-    c.x0[k] = spec.start + (spec.end - spec.start) * double(k) / double(spec.segments);
+  const Polyline line = spec.geometry();
+  c.closed = line.closed;
+  LineNodes nodes = discretize(line, spec.segments);
+  c.x0 = std::move(nodes.x);
+  c.y0 = std::move(nodes.y);
+  c.s0 = std::move(nodes.s);
+  const std::size_t n = c.x0.size(), nseg = c.num_segments();
+  c.seg_nx.resize(nseg);
+  c.seg_ny.resize(nseg);
+  c.seg_length.resize(nseg);
+  for (std::size_t s = 0; s < nseg; ++s) {
+    const std::size_t b = c.segment_end(s);
+    const double dx = c.x0[b] - c.x0[s], dy = c.y0[b] - c.y0[s];
+    const double len = std::hypot(dx, dy);  // exactly |dx| on a horizontal line
+    c.seg_length[s] = len;
+    c.seg_nx[s] = -dy / len;
+    c.seg_ny[s] = dx / len;
+  }
+  c.node_nx.resize(n);
+  c.node_ny.resize(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    double nx = 0.0, ny = 0.0;
+    if (k < nseg) nx += c.seg_nx[k], ny += c.seg_ny[k];
+    const bool has_prev = k > 0 || c.closed;
+    const std::size_t prev = k > 0 ? k - 1 : nseg - 1;
+    if (has_prev) nx += c.seg_nx[prev], ny += c.seg_ny[prev];
+    const double len = std::hypot(nx, ny);
+    c.node_nx[k] = nx / len, c.node_ny[k] = ny / len;
+  }
   for (auto* v : {&c.ux_up, &c.uy_up, &c.ux_lo, &c.uy_lo, &c.fx_node, &c.fy_node, &c.stiffness_node,
-                  &c.jump_before, &c.last_increment_n, &c.last_increment_t,
-                  &c.streak_base})
+                  &c.jump_before, &c.last_increment_n, &c.last_increment_t, &c.streak_base})
     v->assign(n, 0.0);
   c.node_crack_time.assign(n, -1.0);
   c.reversal_streak.assign(n, 0);
-  const std::size_t g = std::size_t(spec.segments) * CohesiveInterface::kGauss;
+  const std::size_t g = nseg * CohesiveInterface::kGauss;
   for (auto* v : {&c.gp_dn, &c.gp_dt, &c.gp_tn, &c.gp_tt}) v->assign(g, 0.0);
   c.gp_separated.assign(g, 0);
-  for (auto* v : {&c.seg_fa_x, &c.seg_fa_y, &c.seg_fb_x, &c.seg_fb_y, &c.seg_ka, &c.seg_kb}) v->assign(std::size_t(spec.segments), 0.0);
+  for (auto* v : {&c.seg_fa_x, &c.seg_fa_y, &c.seg_fb_x, &c.seg_fb_y, &c.seg_ka, &c.seg_kb})
+    v->assign(nseg, 0.0);
   return c;
 }
 
 double CohesiveInterface::stored_energy() const {
   // 4-point Gauss weights (they sum to 2 over [-1, 1]).
-  static constexpr double w[kGauss] = {0.3478548451374538, 0.6521451548625461,
-                                       0.6521451548625461, 0.3478548451374538};
+  static constexpr double w[kGauss] = {0.3478548451374538, 0.6521451548625461, 0.6521451548625461,
+                                       0.3478548451374538};
   double e = 0.0;
   for (std::size_t s = 0; s < num_segments(); ++s) {
-    const double half = 0.5 * (x0[s + 1] - x0[s]);
+    const double half = 0.5 * seg_length[s];
     for (int g = 0; g < kGauss; ++g) {
       const std::size_t i = s * kGauss + std::size_t(g);
       if (!gp_separated[i]) e += w[g] * half * spec.law.potential(gp_dn[i], gp_dt[i]);

@@ -1,29 +1,44 @@
 // rupture/cohesive/interface.hpp
-// A straight horizontal cohesive interface between two velocity fields (SPEC §3, E7-E9).
-// Cohesive nodes x_0 < ... < x_N lie on y = y0; each exists twice, an upper face (moving with
-// the upper body's field) and a lower face (lower body's field), coincident at t = 0.
+// A cohesive interface between two velocity fields along a polyline (SPEC §3, E7-E9).
+// Cohesive nodes lie on the line (cohesive/polyline.hpp: a node on every vertex); each exists
+// twice, an upper face (moving with the field of the body the line's normal points into) and
+// a lower face (the other body's field), coincident at t = 0. Each segment has its own frame:
+// normal n (the line direction turned +90 degrees) and tangent t = (n_y, -n_x); jumps
+// (upper minus lower face displacement) and tractions are computed in that frame, so a
+// horizontal line drawn in +x has n = +y, t = +x as in the SPEC.
 // Face velocities are the grid velocities of their field interpolated with the bilinear hat at
 // the face position; forces go back to the same grid nodes with the same weights.
 // Separation (SPEC §3): a Gauss point whose jump magnitude reaches separation_factor * delta_t
 // carries no traction from then on; a node whose jump reaches it counts as cracked (E10).
+// Where the two bodies are bonded instead (bonded_line), their fields share every grid node
+// near the line (solver/cohesive_step.hpp: tie_bonded_nodes): one continuum there.
 // Units: m, m/s, N per unit thickness (N/m), J/m.
 #pragma once
 #include <cstdint>
 #include <vector>
 
+#include "cohesive/polyline.hpp"
 #include "cohesive/xu_needleman.hpp"
 
 namespace rupture {
 
 struct InterfaceSpec {
-  int upper_field = 0, lower_field = 1;
-  double y = 0.0;                   // m
-  double start = 0.0, end = 0.0;    // m
+  int upper_field = 0, lower_field = 1;  // the normal points into the upper field's body
+  // Where the interface lies. Empty: the horizontal form, the line (start, y) -> (end, y).
+  Polyline line;
+  double y = 0.0;                 // m
+  double start = 0.0, end = 0.0;  // m
   int segments = 1;
   XuNeedleman law;
-  double separation_factor = 5.0;   // multiple of delta_t (SPEC: 5)
-  bool bonded = false;              // tie the fields along y on [bonded_from, bonded_to]
+  double separation_factor = 5.0;  // multiple of delta_t (SPEC: 5)
+  // Where the two fields are bonded (tied). Empty and `bonded`: the horizontal form, along y
+  // from bonded_from to bonded_to.
+  Polyline bonded_line;
+  bool bonded = false;
   double bonded_from = 0.0, bonded_to = 0.0;  // m
+
+  Polyline geometry() const;      // line, or its horizontal form
+  Polyline tie_geometry() const;  // bonded_line, or its horizontal form (empty if not bonded)
 };
 
 // A face point's grid stencil (solver/cohesive_step.cpp): it moves with, and loads, its own
@@ -40,7 +55,12 @@ struct FaceStencil {
 struct CohesiveInterface {
   static constexpr int kGauss = 4;  // Gauss points per segment (E9)
   InterfaceSpec spec;
-  std::vector<double> x0;                  // reference node positions, m (N + 1)
+  bool closed = false;                     // the last segment ends on node 0
+  std::vector<double> x0, y0;              // reference node positions, m (N + 1; N if closed)
+  std::vector<double> s0;                  // arc length of each node from the line's start, m
+  std::vector<double> node_nx, node_ny;    // unit normal at a node (mean of its segments')
+  std::vector<double> seg_nx, seg_ny;      // unit normal of each segment (tangent: (n_y, -n_x))
+  std::vector<double> seg_length;          // m
   std::vector<double> ux_up, uy_up;        // upper-face displacement, m
   std::vector<double> ux_lo, uy_lo;        // lower-face displacement, m
   std::vector<double> fx_node, fy_node;    // cohesive force on the upper face node, N/m
@@ -54,9 +74,9 @@ struct CohesiveInterface {
   // thickness (sum over the Gauss points of its segments of weight x N x the law's largest
   // tangent eigenvalue): the cohesive part of the step bound (solver/time_step.hpp).
   std::vector<double> stiffness_node;
-  std::vector<double> seg_ka, seg_kb;    // per-segment end stiffnesses (scratch)
+  std::vector<double> seg_ka, seg_kb;         // per-segment end stiffnesses (scratch)
   std::vector<FaceStencil> face_up, face_lo;  // this step's face stencils (derived, not state)
-  std::vector<double> jump_before;       // |jump| at the start of the step (scratch), m
+  std::vector<double> jump_before;            // |jump| at the start of the step (scratch), m
   // Instability watch (solver/cohesive_step.cpp): the last step's jump increment per node, m,
   // for how many steps in a row the increment has reversed and grown, and its size when that
   // run of steps began, m.
@@ -65,9 +85,20 @@ struct CohesiveInterface {
   double work = 0.0;  // work done on the interface by the bodies so far, J/m (stored + dissipated)
 
   std::size_t num_nodes() const { return x0.size(); }
-  std::size_t num_segments() const { return x0.size() - 1; }
-  double jump_normal(std::size_t k) const { return uy_up[k] - uy_lo[k]; }
-  double jump_tangential(std::size_t k) const { return ux_up[k] - ux_lo[k]; }
+  std::size_t num_segments() const { return closed ? x0.size() : x0.size() - 1; }
+  std::size_t segment_end(std::size_t seg) const {
+    return closed && seg + 1 == x0.size() ? 0 : seg + 1;
+  }
+  double length() const { return closed ? s0.back() + seg_length.back() : s0.back(); }  // m
+  // Jump of node k in its own frame (node_nx, node_ny).
+  double jump_x(std::size_t k) const { return ux_up[k] - ux_lo[k]; }
+  double jump_y(std::size_t k) const { return uy_up[k] - uy_lo[k]; }
+  double jump_normal(std::size_t k) const {
+    return node_nx[k] * jump_x(k) + node_ny[k] * jump_y(k);
+  }
+  double jump_tangential(std::size_t k) const {
+    return node_ny[k] * jump_x(k) - node_nx[k] * jump_y(k);
+  }
   double separation_opening() const { return spec.separation_factor * spec.law.delta_t; }
   // Energy stored in intact Gauss points (potential of the law), J/m.
   double stored_energy() const;

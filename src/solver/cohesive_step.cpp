@@ -74,15 +74,18 @@ void evaluate_interface(CohesiveInterface& c, double t, double t_before) {
   double work = 0.0;
 #pragma omp parallel for schedule(static) reduction(+ : work)
   for (long sl = 0; sl < nseg; ++sl) {
-    const std::size_t s = std::size_t(sl);
-    const double half = 0.5 * (c.x0[s + 1] - c.x0[s]);
-    const double dn_a = c.jump_normal(s), dn_b = c.jump_normal(s + 1);
-    const double dt_a = c.jump_tangential(s), dt_b = c.jump_tangential(s + 1);
+    const std::size_t s = std::size_t(sl), e = c.segment_end(s);
+    const double half = 0.5 * c.seg_length[s];
+    // The segment's frame: normal n, tangent t = (n_y, -n_x) (exactly +y, +x on a line drawn in +x).
+    const double nx = c.seg_nx[s], ny = c.seg_ny[s], tx = ny, ty = -nx;
+    const double jx_a = c.jump_x(s), jx_b = c.jump_x(e);
+    const double jy_a = c.jump_y(s), jy_b = c.jump_y(e);
     double fa_n = 0, fa_t = 0, fb_n = 0, fb_t = 0, ka = 0, kb = 0;
     for (int g = 0; g < kG; ++g) {
       const std::size_t i = s * kG + std::size_t(g);
       const double Na = 0.5 * (1.0 - kXi[g]), Nb = 0.5 * (1.0 + kXi[g]);
-      const double dn = Na * dn_a + Nb * dn_b, dt = Na * dt_a + Nb * dt_b;  // linear jump
+      const double jx = Na * jx_a + Nb * jx_b, jy = Na * jy_a + Nb * jy_b;  // linear jump
+      const double dn = nx * jx + ny * jy, dt = tx * jx + ty * jy;          // in the segment frame
       double tn = 0.0, tt = 0.0, k = 0.0;
       if (!c.gp_separated[i] && std::hypot(dn, dt) >= crit) c.gp_separated[i] = 1;
       if (!c.gp_separated[i]) {
@@ -101,18 +104,23 @@ void evaluate_interface(CohesiveInterface& c, double t, double t_before) {
       ka += jw * Na * k, kb += jw * Nb * k;
     }
     c.seg_ka[s] = ka, c.seg_kb[s] = kb;
-    // Force on the upper face: -T^ (t = +x, n = +y; rotation neglected, SPEC §3).
-    c.seg_fa_x[s] = -fa_t, c.seg_fa_y[s] = -fa_n;
-    c.seg_fb_x[s] = -fb_t, c.seg_fb_y[s] = -fb_n;
+    // Force on the upper face: -T^ = -(T^n n + T^t t) (rotation of the faces neglected, SPEC §3).
+    c.seg_fa_x[s] = -(fa_n * nx + fa_t * tx), c.seg_fa_y[s] = -(fa_n * ny + fa_t * ty);
+    c.seg_fb_x[s] = -(fb_n * nx + fb_t * tx), c.seg_fb_y[s] = -(fb_n * ny + fb_t * ty);
   }
   c.work += work;
   const long nn = long(c.num_nodes());
+  const std::size_t last_seg = c.num_segments() - 1;
 #pragma omp parallel for schedule(static)
   for (long kl = 0; kl < nn; ++kl) {
     const std::size_t k = std::size_t(kl);
     double fx = 0, fy = 0, stiff = 0;
-    if (k > 0) fx += c.seg_fb_x[k - 1], fy += c.seg_fb_y[k - 1], stiff += c.seg_kb[k - 1];
-    if (k + 1 < c.num_nodes()) fx += c.seg_fa_x[k], fy += c.seg_fa_y[k], stiff += c.seg_ka[k];
+    // The segment ending on node k (on a closed line, node 0 ends the last one), then the one
+    // starting there.
+    const bool has_prev = k > 0 || c.closed;
+    const std::size_t prev = k > 0 ? k - 1 : last_seg;
+    if (has_prev) fx += c.seg_fb_x[prev], fy += c.seg_fb_y[prev], stiff += c.seg_kb[prev];
+    if (k <= last_seg) fx += c.seg_fa_x[k], fy += c.seg_fa_y[k], stiff += c.seg_ka[k];
     c.fx_node[k] = fx, c.fy_node[k] = fy, c.stiffness_node[k] = stiff;
     const double jump = std::hypot(c.jump_normal(k), c.jump_tangential(k));
     if (c.node_crack_time[k] < 0.0 && jump >= crit) {
@@ -134,8 +142,8 @@ void update_face_stencils(State& s) {
 #pragma omp parallel for schedule(static) reduction(min : bad)
     for (long kl = 0; kl < n; ++kl) {
       const std::size_t k = std::size_t(kl);
-      const double xa = c.x0[k] + c.ux_up[k], ya = c.spec.y + c.uy_up[k];
-      const double xb = c.x0[k] + c.ux_lo[k], yb = c.spec.y + c.uy_lo[k];
+      const double xa = c.x0[k] + c.ux_up[k], ya = c.y0[k] + c.uy_up[k];
+      const double xb = c.x0[k] + c.ux_lo[k], yb = c.y0[k] + c.uy_lo[k];
       if (!face_inside(s.grid, xa, ya) || !face_inside(s.grid, xb, yb)) {
         bad = std::min(bad, kl);
         continue;
@@ -146,10 +154,10 @@ void update_face_stencils(State& s) {
     if (bad < n) {
       const std::size_t k = std::size_t(bad);
       throw SimulationError(fmt::format(
-          "unstable: cohesive interface at y = {:.6g} m, node {} (x0 = {:.6g} m) has a face at a non-finite "
+          "unstable: cohesive interface node {} at (x, y) = ({:.6g}, {:.6g}) m has a face at a non-finite "
           "position or outside the grid at step {}, t = {:.6g} s: upper face displacement ({:.4g}, "
           "{:.4g}) m, lower ({:.4g}, {:.4g}) m; reduce time.cohesive_safety or time.cfl",
-          c.spec.y, k, c.x0[k], s.step, s.time, c.ux_up[k], c.uy_up[k], c.ux_lo[k], c.uy_lo[k]));
+          k, c.x0[k], c.y0[k], s.step, s.time, c.ux_up[k], c.uy_up[k], c.ux_lo[k], c.uy_lo[k]));
     }
   }
 }
@@ -174,15 +182,33 @@ void add_cohesive_forces(State& s) {
 
 std::vector<std::size_t> bonded_nodes(const Grid& g, const InterfaceSpec& spec) {
   std::vector<std::size_t> out;
-  if (!spec.bonded) return out;
-  // The node row on the interface line (validated to be a grid line).
-  int j = 0;
-  for (int k = 1; k < g.nodes_y(); ++k)
-    if (std::fabs(g.y.node(k) - spec.y) < std::fabs(g.y.node(j) - spec.y)) j = k;
-  const double tol = 1e-9 * g.x.h;
-  for (int i = 0; i < g.nodes_x(); ++i) {
-    const double x = g.x.node(i);
-    if (x >= spec.bonded_from - tol && x <= spec.bonded_to + tol) out.push_back(g.node_index(i, j));
+  const Polyline tie = spec.tie_geometry();
+  if (tie.num_vertices() < 2) return out;
+  // A grid node gets mass from both bodies when the GIMP support of one body's particles
+  // reaches across the line to it: the support of a node is the box of half-widths (h_x, h_y)
+  // (its cells' widths), which reaches |n_x| h_x + |n_y| h_y along the line's normal. Every node
+  // strictly closer than that to the bonded stretch (and not beyond its ends) is tied, so the
+  // two fields there sum to exactly what one field would hold: one continuum. On a grid line
+  // (a horizontal or vertical tie through nodes) that is the nodes on the line only.
+  double xlo = INFINITY, xhi = -INFINITY, ylo = INFINITY, yhi = -INFINITY;
+  for (std::size_t v = 0; v < tie.num_vertices(); ++v) {
+    xlo = std::min(xlo, tie.x[v]), xhi = std::max(xhi, tie.x[v]);
+    ylo = std::min(ylo, tie.y[v]), yhi = std::max(yhi, tie.y[v]);
+  }
+  auto node_width = [](const Axis& a, int i) {
+    return std::max(a.width(std::clamp(i - 1, 0, a.cells - 1)), a.width(std::clamp(i, 0, a.cells - 1)));
+  };
+  const double tol = 1e-9 * std::min(g.x.h, g.y.h);
+  for (int j = 0; j < g.nodes_y(); ++j) {
+    const double y = g.y.node(j), hy = node_width(g.y, j);
+    if (y < ylo - 2.0 * hy || y > yhi + 2.0 * hy) continue;
+    for (int i = 0; i < g.nodes_x(); ++i) {
+      const double x = g.x.node(i), hx = node_width(g.x, i);
+      if (x < xlo - 2.0 * hx || x > xhi + 2.0 * hx) continue;
+      const LineProjection p = project(tie, x, y);
+      const double reach = std::fabs(p.nx) * hx + std::fabs(p.ny) * hy;
+      if (p.beyond <= tol && p.distance < reach - tol) out.push_back(g.node_index(i, j));
+    }
   }
   return out;
 }
@@ -222,12 +248,12 @@ constexpr double kUnstableIncrement = 1e-3;  // x delta_n
 
 [[noreturn]] void throw_cohesive_oscillation(const State& s, const CohesiveInterface& c, std::size_t k) {
   throw SimulationError(fmt::format(
-      "unstable: cohesive interface at y = {:.6g} m oscillates at node {} (x0 = {:.6g} m): its jump "
+      "unstable: cohesive interface oscillates at node {} (x, y) = ({:.6g}, {:.6g}) m: its jump "
       "increment reversed sign and grew for {} steps in a row, {:.3g} times over, to ({:.3g}, {:.3g}) m "
       "per step (normal, tangential), at step {}, t = {:.6g} s, with dt = {:.4g} s against a cohesive "
       "stability limit of {:.4g} s; the step is too long for the interface stiffness (reduce "
       "time.cohesive_safety or time.cfl)",
-      c.spec.y, k, c.x0[k], c.reversal_streak[k],
+      k, c.x0[k], c.y0[k], c.reversal_streak[k],
       std::hypot(c.last_increment_n[k], c.last_increment_t[k]) / c.streak_base[k], c.last_increment_n[k],
       c.last_increment_t[k], s.step, s.time, s.dt, s.limits.cohesive_dt));
 }

@@ -5,7 +5,8 @@
 //   add_cohesive_forces: nodal cohesive forces of every interface onto its two fields' grid
 //                        forces (upper face -T^, lower face +T^), before the momentum update;
 //   tie_bonded_nodes:    where the halves are bonded, the two fields share mass, momentum and
-//                        force on the interface row, which is exactly a single body;
+//                        force on every grid node both reach across the bonded line, which
+//                        is exactly a single body;
 //   advance_interfaces:  face nodes move with their field's t^{n+1} grid velocity (MUSL: the
 //                        re-mapped one its strain uses, solver/time_step.hpp); jumps,
 //                        tractions, separation and cohesive work are updated.
@@ -24,7 +25,8 @@ void advance_interfaces(State& s, const double* vel_x, const double* vel_y);
 // step began at t_before (node crack times are interpolated in [t_before, t] from
 // c.jump_before).
 void evaluate_interface(CohesiveInterface& c, double t, double t_before);
-// Grid nodes on the interface row within the bonded range (computed once at setup).
+// Grid nodes tied along the interface's bonded stretch (computed once at setup): those closer
+// to it than the reach of a node's GIMP support along its normal, not beyond its ends.
 std::vector<std::size_t> bonded_nodes(const Grid& g, const InterfaceSpec& spec);
 
 }  // namespace rupture
