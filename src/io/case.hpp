@@ -100,6 +100,11 @@ struct Case {
 
 const char* scheme_name(Scheme s);
 
+// Whether the point (x, y) (m) lies in the body's shape (boundary included).
+inline bool body_contains(const BodySpec& b, double x, double y) {
+  return x >= b.min[0] && x <= b.max[0] && y >= b.min[1] && y <= b.max[1];
+}
+
 // The background grid a case asks for: uniform, or graded from its refinement levels.
 Grid build_grid(const GridSpec& g);
 

@@ -1,12 +1,172 @@
 // rupture/io/parse_interfaces.cpp
-// The [interface] table: cohesive interfaces, their law and bonded stretch (SPEC §3).
+// The [interface] table: cohesive interfaces, their line, law and bonded stretch (SPEC §3).
+// A line is horizontal (y, start, end: the original form), a polyline (points, closed) or a
+// circle (center, radius); it must separate its two bodies, the upper one on the side its
+// normal (direction turned +90 degrees) points to.
 #include <fmt/format.h>
 
 #include <cmath>
 
+#include <optional>
+
+#include "cohesive/polyline.hpp"
 #include "io/case_parse.hpp"
 
 namespace rupture {
+
+namespace {
+
+// An array of points [[x, y], ...] (m), at least `min_count`.
+Polyline read_points(Section& f, const std::string& key, std::size_t min_count) {
+  const toml::node* n = f.node(key);
+  const toml::array* a = n ? n->as_array() : nullptr;
+  const std::string rule = fmt::format("must be an array of at least {} points [[x, y], ...] (m)", min_count);
+  if (!a || a->size() < min_count) fail(f.key(key), n ? show(*n) : "(missing)", rule);
+  Polyline p;
+  for (const auto& e : *a) {
+    const toml::array* xy = e.as_array();
+    std::optional<double> x, y;
+    if (xy && xy->size() == 2) x = (*xy)[0].value<double>(), y = (*xy)[1].value<double>();
+    if (!x || !y || !std::isfinite(*x) || !std::isfinite(*y)) fail(f.key(key), show(e), rule);
+    p.x.push_back(*x);
+    p.y.push_back(*y);
+  }
+  return p;
+}
+
+// The line is simple, has no zero-length piece and lies in the domain.
+void check_line(Section& f, const std::string& key, const Polyline& line, const Case& c) {
+  const double tol = 1e-9 * c.grid.cell_size;
+  for (std::size_t i = 0; i < line.num_pieces(); ++i)
+    if (line.piece_length(i) <= tol)
+      fail(f.key(key), fmt::format("[{:g}, {:g}]", line.x[i], line.y[i]),
+           fmt::format("point {} repeats the next one: pieces must have a length > 0", i));
+  for (std::size_t v = 0; v < line.num_vertices(); ++v)
+    if (!inside(line.x[v], c.grid.min[0], c.grid.max[0], tol) ||
+        !inside(line.y[v], c.grid.min[1], c.grid.max[1], tol))
+      fail(f.key(key), fmt::format("[{:g}, {:g}]", line.x[v], line.y[v]),
+           fmt::format("point {} lies outside the grid [{:g}, {:g}]..[{:g}, {:g}]", v, c.grid.min[0],
+                       c.grid.min[1], c.grid.max[0], c.grid.max[1]));
+  const PieceCrossing x = first_self_crossing(line);
+  if (x.i >= 0)
+    fail(f.key(key), fmt::format("(piece {} from [{:g}, {:g}], piece {} from [{:g}, {:g}])", x.i,
+                                 line.x[std::size_t(x.i)], line.y[std::size_t(x.i)], x.j,
+                                 line.x[std::size_t(x.j)], line.y[std::size_t(x.j)]),
+         "the line crosses itself; an interface must be a simple line");
+}
+
+// The line must separate the two bodies: just off it along its normal lies the upper body,
+// just off it the other way the lower one (sampled along every piece).
+void check_between_bodies(Section& f, const std::string& key, const Polyline& line, const Case& c,
+                          const BodySpec& up, const BodySpec& lo) {
+  const double eps = 1e-3 * c.grid.cell_size;
+  for (std::size_t i = 0; i < line.num_pieces(); ++i) {
+    const std::size_t j = line.piece_end(i);
+    const double len = line.piece_length(i);
+    const double tx = (line.x[j] - line.x[i]) / len, ty = (line.y[j] - line.y[i]) / len;
+    const double nx = -ty, ny = tx;
+    const int samples = 64;
+    for (int k = 0; k <= samples; ++k) {
+      // Skip the very ends of a piece: a vertex may sit on a body's corner.
+      const double a = len * (0.001 + 0.998 * double(k) / samples);
+      const double x = line.x[i] + a * tx, y = line.y[i] + a * ty;
+      const bool in_up = body_contains(up, x + eps * nx, y + eps * ny);
+      const bool in_lo = body_contains(lo, x - eps * nx, y - eps * ny);
+      if (in_up && in_lo) continue;
+      const bool swapped = body_contains(lo, x + eps * nx, y + eps * ny) &&
+                           body_contains(up, x - eps * nx, y - eps * ny);
+      fail(f.key(key), fmt::format("(near [{:.6g}, {:.6g}] on piece {})", x, y, i),
+           swapped ? fmt::format("the line's normal (its direction turned +90 degrees) points into "
+                                 "bodies.{} there, the lower body: reverse the points or swap "
+                                 "upper_body and lower_body",
+                                 lo.name)
+                   : fmt::format("must lie on the boundary between bodies.{} (on the side the normal, "
+                                 "the line's direction turned +90 degrees, points to) and bodies.{}",
+                                 up.name, lo.name));
+    }
+  }
+}
+
+// The geometry keys: the horizontal form (y, start, end, bonded_to) or a polyline (points,
+// closed, bonded_points) or a circle (center, radius).
+void parse_interface_geometry(Section& f, InterfaceSpec& is, const Case& c, const BodySpec& up,
+                              const BodySpec& lo) {
+  const double tol = 1e-9 * c.grid.cell_size;
+  const bool horizontal = f.has("y") || f.has("start") || f.has("end");
+  const bool polyline = f.has("points");
+  const bool circle = f.has("center") || f.has("radius");
+  if (int(horizontal) + int(polyline) + int(circle) != 1)
+    fail(f.key("points"), polyline ? "(present)" : "(missing)",
+         "give the line one way: y, start and end (a horizontal line), points = [[x, y], ...] "
+         "(a polyline), or center and radius (a circle)");
+  const long segments = f.integer("segments", -1);
+  if (segments < 1 || segments > 100000000)
+    fail(f.key("segments"), double(segments), "required, an integer in [1, 1e8]");
+  is.segments = int(segments);
+  if (horizontal) {
+    is.y = f.number("y");
+    if (std::fabs(up.min[1] - is.y) > tol || std::fabs(lo.max[1] - is.y) > tol)
+      fail(f.key("y"), is.y,
+           fmt::format("must be the bottom of the upper body ({:g}) and the top of the lower body ({:g})",
+                       up.min[1], lo.max[1]));
+    is.start = f.number("start");
+    is.end = f.number("end");
+    const double x0 = std::max(up.min[0], lo.min[0]), x1 = std::min(up.max[0], lo.max[0]);
+    if (!inside(is.start, x0, x1, tol))
+      fail(f.key("start"), is.start, fmt::format("must lie where both bodies meet: [{:g}, {:g}] m", x0, x1));
+    if (!(is.end > is.start) || !inside(is.end, x0, x1, tol))
+      fail(f.key("end"), is.end, fmt::format("must lie in ({:g}, {:g}] m", is.start, x1));
+    if (f.has("bonded_to")) {
+      is.bonded = true;
+      is.bonded_from = is.end;
+      is.bonded_to = f.number("bonded_to");
+      if (!(is.bonded_to > is.end) || !inside(is.bonded_to, x0, x1, tol))
+        fail(f.key("bonded_to"), is.bonded_to,
+             fmt::format("must lie in ({:g}, {:g}] m (the halves are tied from end to here)", is.end, x1));
+    }
+    for (const char* k : {"closed", "bonded_points"})
+      if (f.has(k)) fail(f.key(k), show(*f.node(k)), "only allowed with points = [[x, y], ...]");
+    return;
+  }
+  if (f.has("bonded_to"))
+    fail(f.key("bonded_to"), show(*f.node("bonded_to")),
+         "only allowed with the horizontal form (y, start, end); give bonded_points = [[x, y], ...]");
+  if (polyline) {
+    is.line = read_points(f, "points", 2);
+    is.line.closed = f.boolean("closed", false);
+    if (is.line.closed && is.line.num_vertices() < 3)
+      fail(f.key("points"), double(is.line.num_vertices()), "a closed line needs at least 3 points");
+  } else {
+    double center[2];
+    f.pair("center", center, true);
+    const double radius = f.number("radius");
+    if (!(radius > 0)) fail(f.key("radius"), radius, "must be > 0 (m)");
+    if (segments < 8) fail(f.key("segments"), double(segments), "a circle needs at least 8 segments");
+    // A closed polygon with a vertex per segment, counter-clockwise: its normal points to the
+    // centre, so the upper body is the one inside the circle.
+    constexpr double kPi = 3.141592653589793;
+    for (long k = 0; k < segments; ++k) {
+      const double a = 2.0 * kPi * double(k) / double(segments);
+      is.line.x.push_back(center[0] + radius * std::cos(a));
+      is.line.y.push_back(center[1] + radius * std::sin(a));
+    }
+    is.line.closed = true;
+  }
+  const std::string key = polyline ? "points" : "center";
+  check_line(f, key, is.line, c);
+  if (std::size_t(segments) < is.line.num_pieces())
+    fail(f.key("segments"), double(segments),
+         fmt::format("must be at least the number of pieces of the line ({})", is.line.num_pieces()));
+  check_between_bodies(f, key, is.line, c, up, lo);
+  if (f.has("bonded_points")) {
+    is.bonded_line = read_points(f, "bonded_points", 2);
+    check_line(f, "bonded_points", is.bonded_line, c);
+    check_between_bodies(f, "bonded_points", is.bonded_line, c, up, lo);
+    is.bonded = true;
+  }
+}
+
+}  // namespace
 
 void parse_interfaces(Section& top, Case& c, ParseContext& ctx) {
   auto& body_index = ctx.body_index;
@@ -15,8 +175,9 @@ void parse_interfaces(Section& top, Case& c, ParseContext& ctx) {
     const std::string& name = k;
     Section f = ifs.table(
         name, true,
-        {"upper_body", "lower_body", "y", "start", "end", "segments", "sigma_max", "tau_max",
-         "delta_n", "delta_t", "q", "r", "penalty", "separation", "bonded_to"});
+        {"upper_body", "lower_body", "y", "start", "end", "points", "closed", "center", "radius",
+         "segments", "sigma_max", "tau_max", "delta_n", "delta_t", "q", "r", "penalty",
+         "separation", "bonded_to", "bonded_points"});
     InterfaceSpec is;
     std::vector<std::string> names;
     for (const auto& bb : c.bodies) names.push_back(bb.name);
@@ -30,25 +191,7 @@ void parse_interfaces(Section& top, Case& c, ParseContext& ctx) {
       fail(f.key("lower_body"), "\"" + c.bodies[is.lower_field].name + "\"",
            "must differ from upper_body");
     const BodySpec &up = c.bodies[is.upper_field], &lo = c.bodies[is.lower_field];
-    is.y = f.number("y");
-    const double tol = 1e-9 * c.grid.cell_size;
-    if (std::fabs(up.min[1] - is.y) > tol || std::fabs(lo.max[1] - is.y) > tol)
-      fail(f.key("y"), is.y,
-           fmt::format(
-               "must be the bottom of the upper body ({:g}) and the top of the lower body ({:g})",
-               up.min[1], lo.max[1]));
-    is.start = f.number("start");
-    is.end = f.number("end");
-    const double x0 = std::max(up.min[0], lo.min[0]), x1 = std::min(up.max[0], lo.max[0]);
-    if (!inside(is.start, x0, x1, tol))
-      fail(f.key("start"), is.start,
-           fmt::format("must lie where both bodies meet: [{:g}, {:g}] m", x0, x1));
-    if (!(is.end > is.start) || !inside(is.end, x0, x1, tol))
-      fail(f.key("end"), is.end, fmt::format("must lie in ({:g}, {:g}] m", is.start, x1));
-    const long segments = f.integer("segments", -1);
-    if (segments < 1 || segments > 100000000)
-      fail(f.key("segments"), double(segments), "required, an integer in [1, 1e8]");
-    is.segments = int(segments);
+    parse_interface_geometry(f, is, c, up, lo);
     XuNeedleman& law = is.law;
     law.sigma_max = f.number("sigma_max");
     if (law.sigma_max <= 0) fail(f.key("sigma_max"), law.sigma_max, "must be > 0 (Pa)");
@@ -76,15 +219,6 @@ void parse_interfaces(Section& top, Case& c, ParseContext& ctx) {
     if (!(is.separation_factor > 0 && is.separation_factor <= 1000))
       fail(f.key("separation"), is.separation_factor,
            "must lie in (0, 1000] (multiples of delta_t)");
-    if (f.has("bonded_to")) {
-      is.bonded = true;
-      is.bonded_from = is.end;
-      is.bonded_to = f.number("bonded_to");
-      if (!(is.bonded_to > is.end) || !inside(is.bonded_to, x0, x1, tol))
-        fail(f.key("bonded_to"), is.bonded_to,
-             fmt::format("must lie in ({:g}, {:g}] m (the halves are tied from end to here)",
-                         is.end, x1));
-    }
     c.interfaces.push_back(is);
     c.interface_names.push_back(name);
   }
