@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cohesive/law_types.hpp"
+
 namespace rupture {
 
 struct CohesiveTraction {
@@ -98,6 +100,21 @@ struct XuNeedleman {
     if (dn < 0.0) phi += 0.5 * penalty_stiffness() * dn * dn;
     return phi;
   }
+
+  // The traction-law contract (cohesive/law.hpp), as thin wrappers of the functions above with
+  // bitwise the same results. The law has no history: it is elastic (a potential), and its
+  // separation criterion (|Delta| >= 5 delta_t, SPEC) belongs to the interface.
+  LawResponse respond(double dn, double dt, GaussHistory& /*unused*/) const {
+    const Openings o = openings(dn, dt);
+    const CohesiveTraction T = traction(o, dn);
+    return {T.normal, T.tangential, stability_stiffness(o, dn)};
+  }
+  double stored_energy(double dn, double dt, const GaussHistory& /*unused*/) const {
+    return potential(dn, dt);
+  }
+  double fracture_energy_normal() const { return phi_n(); }
+  double fracture_energy_tangential() const { return phi_t(); }
+  bool separated(const GaussHistory& /*unused*/) const { return false; }
 };
 
 }  // namespace rupture

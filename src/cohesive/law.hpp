@@ -1,0 +1,77 @@
+// rupture/cohesive/law.hpp
+// The traction-law contract: what the interface loop (E7-E9) asks of a cohesive law at one
+// Gauss point, the laws that keep it (a std::variant, chosen once per interface and
+// dispatched once with std::visit around a loop templated on the law), and contact for the
+// points that have no cohesion left. Units: SI (m, Pa, Pa/m, J/m^2).
+//
+// Contract. The loop gives each Gauss point its normal and tangential jumps (dn, dt, m, in
+// the segment's frame, dn = n.(u+ - u-)) and its GaussHistory h; a law L provides, as const
+// members with exactly these shapes (checked by the concept TractionLaw below):
+//   LawResponse L::respond(double dn, double dt, GaussHistory& h) const;
+//       The resisting traction T^ = (tn, tt), Pa: the upper face receives -T^, the lower +T^
+//       (as XuNeedleman::traction; tn > 0 resists opening, tn < 0 resists interpenetration).
+//       The stiffness, Pa/m, is >= 0 and bounds the largest eigenvalue of the tangent
+//       dT^/dDelta here, including a penalty that a step's round-off could switch on
+//       (docs/time_step.md). Updates h irreversibly (damage only grows); call it once per
+//       Gauss point per step, with the step's final jumps.
+//   double L::stored_energy(double dn, double dt, const GaussHistory& h) const;
+//       The recoverable energy at this state, J/m^2, given the history respond() left: the
+//       potential for an elastic law, the damaged spring's 0.5 T^.Delta for a damage law.
+//       Dissipated energy = work done on the point - stored energy.
+//   double L::fracture_energy_normal() const;      G_Ic, J/m^2
+//   double L::fracture_energy_tangential() const;  G_IIc, J/m^2
+//   double L::initial_stiffness() const;           Pa/m, the undamaged law's elastic stiffness
+//   bool L::separated(const GaussHistory& h) const;
+//       True once the law carries no cohesion (irreversible). XuNeedleman answers false: its
+//       criterion (|Delta| >= 5 delta_t, SPEC §3) is the interface's.
+// No allocation, no virtual call: every member is inline and the structs are plain data.
+//
+// To add a law: one header (+ .cpp for validate()) with a struct keeping the contract, its
+// test file, and one more alternative in CohesiveLaw and law_name (docs/cohesive_laws.md).
+#pragma once
+#include <concepts>
+#include <variant>
+
+#include "cohesive/bilinear.hpp"
+#include "cohesive/contact.hpp"
+#include "cohesive/law_types.hpp"
+#include "cohesive/xu_needleman.hpp"
+
+namespace rupture {
+
+template <class L>
+concept TractionLaw = requires(const L& law, double d, GaussHistory& h, const GaussHistory& ch) {
+  { law.respond(d, d, h) } -> std::same_as<LawResponse>;
+  { law.stored_energy(d, d, ch) } -> std::same_as<double>;
+  { law.fracture_energy_normal() } -> std::same_as<double>;
+  { law.fracture_energy_tangential() } -> std::same_as<double>;
+  { law.initial_stiffness() } -> std::same_as<double>;
+  { law.separated(ch) } -> std::same_as<bool>;
+};
+
+using CohesiveLaw = std::variant<XuNeedleman, BilinearLaw>;
+
+static_assert(TractionLaw<XuNeedleman>);
+static_assert(TractionLaw<BilinearLaw>);
+
+// The name the input file uses for the law.
+inline const char* law_name(const CohesiveLaw& law) {
+  struct Name {
+    const char* operator()(const XuNeedleman&) const { return "xu_needleman"; }
+    const char* operator()(const BilinearLaw&) const { return "bilinear"; }
+  };
+  return std::visit(Name{}, law);
+}
+
+// The stability stiffness of a pristine point at rest (Dn = Dt = 0), Pa/m: what the time-step
+// estimate needs at t = 0 (for XuNeedleman, stability_stiffness(0, 0)).
+inline double stiffness_at_rest(const CohesiveLaw& law) {
+  return std::visit(
+      [](const auto& l) {
+        GaussHistory h;
+        return l.respond(0.0, 0.0, h).stiffness;
+      },
+      law);
+}
+
+}  // namespace rupture

@@ -1,0 +1,29 @@
+// rupture/cohesive/law_types.hpp
+// The two plain structs every traction law shares: the history a Gauss point carries between
+// steps and what a law returns there. Include cohesive/law.hpp, which states the contract;
+// this header exists only so that each law's own header can use them without a cycle.
+// Units: SI (m, Pa, Pa/m).
+#pragma once
+
+namespace rupture {
+
+// Per-Gauss-point history, stored by the interface as one array per member (checkpointed).
+// Zero-initialised = pristine. What each member means:
+//   damage  BilinearLaw: the largest effective opening lambda reached so far (dimensionless,
+//           >= 0, never decreases; >= 1 = fully separated). XuNeedleman: unused (stays 0).
+//   slip    ContactLaw: the plastic (frictional) slip, m, the rest length of the tangential
+//           stick spring. Cohesive laws leave it alone, so the same record carries over when a
+//           separated point hands over to contact.
+struct GaussHistory {
+  double damage = 0.0;
+  double slip = 0.0;
+};
+
+// What a law returns at one Gauss point.
+struct LawResponse {
+  double tn;         // resisting normal traction T^n, Pa (> 0 pulls the faces together)
+  double tt;         // resisting tangential traction T^t, Pa
+  double stiffness;  // stability stiffness, Pa/m: >= the largest eigenvalue of dT^/dDelta here
+};
+
+}  // namespace rupture
