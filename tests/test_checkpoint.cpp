@@ -35,7 +35,7 @@ std::string scratch_dir(const char* name) {
 // A context as the driver sets it up (trackers, snapshot writer), before any step.
 void set_up(RunContext& r, const Case& c, const std::string& dir) {
   r.s = make_state(c);
-  for (std::size_t k = 0; k < r.s.interfaces.size(); ++k) r.cracks.emplace_back(2e-3);
+  for (std::size_t k = 0; k < r.s.interfaces.size(); ++k) r.cracks.emplace_back(r.s.interfaces[k], 2e-3);
   r.snapshots = std::make_unique<SnapshotWriter>(dir, r.s.particles);
 }
 

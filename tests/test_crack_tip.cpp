@@ -57,7 +57,7 @@ TEST(CrackTip, tip_stretches_and_zones_of_a_prescribed_jump_field) {
     else if (k <= 49) jump = below;
     c.ux_up[k] = 0.5 * jump, c.ux_lo[k] = -0.5 * jump;
   }
-  CrackTracker tracker;
+  CrackTracker tracker(c);
   tracker.sample(c, 2e-6);
   const CrackSample& s = tracker.samples().back();
   EXPECT_NEAR(s.tip, 6.4e-3, 1e-12) << "E10: the farthest cracked node, the daughter's tip";
@@ -79,7 +79,7 @@ TEST(CrackTip, tip_stretches_and_zones_of_a_prescribed_jump_field) {
 
 TEST(CrackTip, speeds_of_a_tip_moving_at_constant_speed_are_exact) {
   CohesiveInterface c = line();
-  CrackTracker tracker;
+  CrackTracker tracker(c);
   const double v = 2000.0, dt = 2e-8;
   for (int n = 0; n < 200; ++n) {
     const double t = n * dt;
@@ -109,7 +109,7 @@ TEST(CrackTip, speeds_of_a_tip_moving_at_constant_speed_are_exact) {
 // measures the arrest, which is why time.stop_at_interface_end exists.
 TEST(CrackTip, reaching_the_end_of_the_cohesive_line_is_recorded) {
   CohesiveInterface c = line();  // [0, 10 mm]
-  CrackTracker tracker(0.25e-3);
+  CrackTracker tracker(c, 0.25e-3);
   const double v = 2000.0, dt = 2e-8;
   for (int n = 0; n < 400; ++n) {  // 8 us: the tip gets to 10 mm at 5 us
     const double t = n * dt;
@@ -128,14 +128,14 @@ TEST(CrackTip, reaching_the_end_of_the_cohesive_line_is_recorded) {
   // sample where it gets within it.
   CohesiveInterface short_of_end = line();
   for (std::size_t k = 0; k <= 97; ++k) short_of_end.node_crack_time[k] = 0.0;  // tip 9.7 mm
-  CrackTracker approaching(0.25e-3);
+  CrackTracker approaching(short_of_end, 0.25e-3);
   approaching.sample(short_of_end, 1e-6);
   EXPECT_LT(approaching.end_reached_time(), 0.0) << "tip 9.7 mm, end 10 mm, tolerance 0.25 mm";
   short_of_end.node_crack_time[98] = 2e-6;  // tip 9.8 mm
   approaching.sample(short_of_end, 2e-6);
   EXPECT_DOUBLE_EQ(approaching.end_reached_time(), 2e-6);
   // An intact line's "tip" is its start: however wide the tolerance, nothing reached the end.
-  CrackTracker intact(0.02);
+  CrackTracker intact(line(), 0.02);
   intact.sample(line(), 1e-6);
   EXPECT_LT(intact.end_reached_time(), 0.0) << "no crack, so no arrival";
 }
@@ -159,7 +159,7 @@ TEST(CrackTip, samples_at_exact_times_see_only_nodes_cracked_by_then) {
   CohesiveInterface c = line();  // nodes every 0.1 mm
   const double v = 1200.0, interval = 0.01e-6;
   for (std::size_t k = 0; k < c.num_nodes(); ++k) c.node_crack_time[k] = c.x0[k] / v;  // all known now
-  CrackTracker tracker;
+  CrackTracker tracker(c);
   for (int n = 0; n <= 600; ++n) tracker.sample(c, n * interval);
   const std::vector<CrackSample>& s = tracker.samples();
   // At t = 3.05 us the tip is the last node with x0 <= v t = 3.66 mm: 3.6 mm.

@@ -1,9 +1,10 @@
 // rupture/cohesive/crack_tip.cpp
 #include "cohesive/crack_tip.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 
 #include "io/atomic_file.hpp"
 
@@ -15,33 +16,61 @@ double least_squares_slope(const double* t, const double* y, std::size_t n) {
   for (std::size_t k = 0; k < n; ++k) tm += t[k], ym += y[k];
   tm /= double(n), ym /= double(n);
   double num = 0, den = 0;
-  for (std::size_t k = 0; k < n; ++k) num += (t[k] - tm) * (y[k] - ym), den += (t[k] - tm) * (t[k] - tm);
+  for (std::size_t k = 0; k < n; ++k)
+    num += (t[k] - tm) * (y[k] - ym), den += (t[k] - tm) * (t[k] - tm);
   return den > 0 ? num / den : NAN;
+}
+
+CrackTracker::CrackTracker(const CohesiveInterface& c, double end_tolerance)
+    : x0_(c.x0), y0_(c.y0), s0_(c.s0), end_tolerance_(end_tolerance) {}
+
+void CrackTracker::position(double s, double& x, double& y) const {
+  if (s0_.empty()) {
+    x = y = NAN;
+    return;
+  }
+  const auto it = std::lower_bound(s0_.begin(), s0_.end(), s);
+  const std::size_t k = std::size_t(it - s0_.begin());
+  if (k < s0_.size() && s0_[k] == s) {
+    x = x0_[k], y = y0_[k];
+    return;
+  }
+  if (k == 0 || k == s0_.size()) {
+    const std::size_t e = k == 0 ? 0 : s0_.size() - 1;
+    x = x0_[e], y = y0_[e];
+    return;
+  }
+  const double f = (s - s0_[k - 1]) / (s0_[k] - s0_[k - 1]);
+  x = x0_[k - 1] + f * (x0_[k] - x0_[k - 1]);
+  y = y0_[k - 1] + f * (y0_[k] - y0_[k - 1]);
 }
 
 void CrackTracker::sample(const CohesiveInterface& c, double t) {
   CrackSample s;
   s.time = t;
-  s.tip = c.spec.start;
+  s.tip = 0.0;
   bool in_stretch = false;
   std::size_t tip_node = 0;
   bool any = false;
-  auto cracked_by = [&](std::size_t k) { return c.node_crack_time[k] >= 0.0 && c.node_crack_time[k] <= t; };
+  auto cracked_by = [&](std::size_t k) {
+    return c.node_crack_time[k] >= 0.0 && c.node_crack_time[k] <= t;
+  };
   for (std::size_t k = 0; k < c.num_nodes(); ++k) {
     const bool cracked = cracked_by(k);
-    if (cracked && !in_stretch) s.stretch_begin.push_back(c.x0[k]);
-    if (!cracked && in_stretch) s.stretch_end.push_back(c.x0[k - 1]);
-    if (cracked) s.tip = c.x0[k], tip_node = k, any = true;
+    if (cracked && !in_stretch) s.stretch_begin.push_back(c.s0[k]);
+    if (!cracked && in_stretch) s.stretch_end.push_back(c.s0[k - 1]);
+    if (cracked) s.tip = c.s0[k], tip_node = k, any = true;
     in_stretch = cracked;
   }
-  if (in_stretch) s.stretch_end.push_back(c.x0.back());
+  if (in_stretch) s.stretch_end.push_back(c.s0.back());
+  s.back = s.stretch_begin.empty() ? 0.0 : s.stretch_begin.back();
   // Cohesive (process) zone: intact nodes ahead of the tip already past the opening of peak
   // shear traction (delta_t / sqrt 2), i.e. softening.
   const double soft = c.spec.law.delta_t / std::sqrt(2.0);
   double zone_end = s.tip;
   for (std::size_t k = any ? tip_node + 1 : 0; k < c.num_nodes(); ++k) {
     if (cracked_by(k)) continue;
-    if (std::hypot(c.jump_normal(k), c.jump_tangential(k)) >= soft) zone_end = c.x0[k];
+    if (std::hypot(c.jump_normal(k), c.jump_tangential(k)) >= soft) zone_end = c.s0[k];
   }
   s.cohesive_zone = zone_end - s.tip;
   const XuNeedleman& law = c.spec.law;
@@ -54,10 +83,10 @@ void CrackTracker::sample(const CohesiveInterface& c, double t) {
     const CohesiveTraction T = law.traction(dn, dt);
     const double load = std::max(std::fabs(T.tangential) / law.tau_max, T.normal / law.sigma_max);
     if (std::hypot(dn, dt) < soft && load < kTractionZoneFraction) break;
-    loaded_end = c.x0[k];
+    loaded_end = c.s0[k];
   }
   s.traction_zone = loaded_end - s.tip;
-  if (end_reached_time_ < 0.0 && any && s.tip >= c.spec.end - end_tolerance_) end_reached_time_ = t;
+  if (end_reached_time_ < 0.0 && any && s.tip >= c.length() - end_tolerance_) end_reached_time_ = t;
   samples_.push_back(std::move(s));
 }
 
@@ -82,11 +111,15 @@ CrackSummary CrackTracker::summarize(const CohesiveInterface& c, const WaveSpeed
                                      double window) const {
   const double c_s = waves.shear;
   CrackSummary r;
-  for (double tc : c.node_crack_time)
-    if (tc >= 0.0 && (r.initiation_time < 0.0 || tc < r.initiation_time)) r.initiation_time = tc;
+  for (std::size_t k = 0; k < c.num_nodes(); ++k) {
+    const double tc = c.node_crack_time[k];
+    if (tc >= 0.0 && (r.initiation_time < 0.0 || tc < r.initiation_time))
+      r.initiation_time = tc, r.initiation_s = c.s0[k];
+  }
   r.initiated = r.initiation_time >= 0.0;
   if (samples_.empty()) return r;
-  r.final_tip = samples_.back().tip;
+  r.final_tip_s = samples_.back().tip;
+  position(r.final_tip_s, r.final_tip, r.final_tip_y);
   r.final_cohesive_zone = samples_.back().cohesive_zone;
   r.final_traction_zone = samples_.back().traction_zone;
   r.end_reached_time = end_reached_time_;
@@ -103,33 +136,63 @@ CrackSummary CrackTracker::summarize(const CohesiveInterface& c, const WaveSpeed
     }
   // Sustained speed: least-squares slope through the tip positions of the last `window`.
   const double t_end = samples_.back().time;
-  std::vector<double> t, x;
+  std::vector<double> t, x, b;
   for (const CrackSample& s : samples_)
-    if (s.time >= t_end - window - 1e-15) t.push_back(s.time), x.push_back(s.tip);
+    if (s.time >= t_end - window - 1e-15)
+      t.push_back(s.time), x.push_back(s.tip), b.push_back(s.back);
   r.sustained_speed = t.size() >= 2 ? least_squares_slope(t.data(), x.data(), t.size()) : 0.0;
   if (!std::isfinite(r.sustained_speed)) r.sustained_speed = 0.0;
+  r.back_speed = t.size() >= 2 ? -least_squares_slope(t.data(), b.data(), t.size()) : 0.0;
+  if (!std::isfinite(r.back_speed)) r.back_speed = 0.0;
   r.regime = r.initiated ? crack_regime(r.sustained_speed, waves) : "none";
   return r;
 }
 
-void CrackTracker::write(const std::string& dir, double c_r, double c_s) const {
+void CrackTracker::write(const std::string& dir, const std::string& suffix, double c_r,
+                         double c_s) const {
   const std::vector<double> v = speeds();
+  // The back tip's speed (E11 window, positive when it runs towards the line's start).
+  const std::size_t n = samples_.size(), half = kWindow / 2;
+  std::vector<double> tt(n), bb(n), vb(n, NAN);
+  for (std::size_t k = 0; k < n; ++k) tt[k] = samples_[k].time, bb[k] = samples_[k].back;
+  for (std::size_t k = half; k + half < n; ++k)
+    vb[k] = -least_squares_slope(&tt[k - half], &bb[k - half], kWindow);
   std::string tip =
       "time,tip_x,speed,speed_over_cR,speed_over_cS,stretches,cohesive_zone_length,"
-      "leading_stretch_begin,leading_stretch_end,traction_zone_length\n";
-  std::string stretches = "time,index,x_begin,x_end\n";
+      "leading_stretch_begin,leading_stretch_end,traction_zone_length,tip_y,tip_s,back_s,back_x,"
+      "back_y,back_speed\n";
+  std::string stretches = "time,index,x_begin,x_end,y_begin,y_end,s_begin,s_end\n";
   for (std::size_t k = 0; k < samples_.size(); ++k) {
     const CrackSample& s = samples_[k];
     const bool has = !s.stretch_begin.empty();
-    tip += fmt::format("{:.9e},{:.9e},{:.6e},{:.6e},{:.6e},{},{:.6e},{:.9e},{:.9e},{:.6e}\n", s.time,
-                       s.tip, v[k], v[k] / c_r, v[k] / c_s, s.stretch_begin.size(), s.cohesive_zone,
-                       has ? s.stretch_begin.back() : NAN, has ? s.stretch_end.back() : NAN,
-                       s.traction_zone);
-    for (std::size_t i = 0; i < s.stretch_begin.size(); ++i)
-      stretches += fmt::format("{:.9e},{},{:.9e},{:.9e}\n", s.time, i, s.stretch_begin[i], s.stretch_end[i]);
+    double tx, ty, bx, by, lbx = NAN, lby, lex = NAN, ley;
+    position(s.tip, tx, ty);
+    position(s.back, bx, by);
+    if (has) position(s.stretch_begin.back(), lbx, lby), position(s.stretch_end.back(), lex, ley);
+    tip += fmt::format(
+        "{:.9e},{:.9e},{:.6e},{:.6e},{:.6e},{},{:.6e},{:.9e},{:.9e},{:.6e},{:.9e},{:.9e},{:.9e},{:."
+        "9e},{:.9e},{:.6e}\n",
+        s.time, tx, v[k], v[k] / c_r, v[k] / c_s, s.stretch_begin.size(), s.cohesive_zone, lbx, lex,
+        s.traction_zone, ty, s.tip, s.back, bx, by, vb[k]);
+    for (std::size_t i = 0; i < s.stretch_begin.size(); ++i) {
+      double xb, yb, xe, ye;
+      position(s.stretch_begin[i], xb, yb);
+      position(s.stretch_end[i], xe, ye);
+      stretches += fmt::format("{:.9e},{},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e}\n", s.time, i,
+                               xb, xe, yb, ye, s.stretch_begin[i], s.stretch_end[i]);
+    }
   }
-  write_file_atomic(dir + "/crack_tip.csv", tip);
-  write_file_atomic(dir + "/crack_stretches.csv", stretches);
+  write_file_atomic(dir + "/crack_tip" + suffix + ".csv", tip);
+  write_file_atomic(dir + "/crack_stretches" + suffix + ".csv", stretches);
+}
+
+void write_rupture_times(const std::string& dir, const std::string& suffix,
+                         const CohesiveInterface& c) {
+  std::string out = "s,x,y,crack_time\n";
+  for (std::size_t k = 0; k < c.num_nodes(); ++k)
+    out += fmt::format("{:.9e},{:.9e},{:.9e},{:.9e}\n", c.s0[k], c.x0[k], c.y0[k],
+                       c.node_crack_time[k]);
+  write_file_atomic(dir + "/rupture_time" + suffix + ".csv", out);
 }
 
 }  // namespace rupture

@@ -1,7 +1,11 @@
 // rupture/cohesive/crack_tip.hpp
-// Crack-tip tracking on a cohesive interface (SPEC §4, E10-E11).
+// Crack-tip tracking on a cohesive interface (SPEC §4, E10-E11). Positions are arc lengths s
+// along the interface's line from its first point (cohesive/polyline.hpp); the files also give
+// the (x, y) of each.
 //  - tip (E10): the farthest cohesive node from the initial tip (interface start) whose jump
-//    magnitude has reached the separation criterion; sampled at a fixed interval;
+//    magnitude has reached the separation criterion; sampled at a fixed interval; the back tip
+//    is the start of the separated stretch that holds it (a crack nucleating inside the line
+//    runs both ways);
 //  - every separated stretch (run of cracked nodes) is recorded, so a daughter crack ahead of
 //    the main tip shows up as a second stretch;
 //  - speed (E11): slope of a least-squares line through 31 consecutive tip positions (centred);
@@ -27,11 +31,12 @@ namespace rupture {
 // Every member must also be written in io/checkpoint.cpp (restart is bitwise).
 struct CrackSample {
   double time = 0.0;
-  double tip = 0.0;                  // tip position x (interface start if not initiated), m
-  double cohesive_zone = 0.0;        // length ahead of the tip past the peak-traction opening, m
-  double traction_zone = 0.0;        // length ahead of the tip still carrying >= 10 % of the
-                                     // peak traction (kTractionZoneFraction), m
-  std::vector<double> stretch_begin, stretch_end;  // separated stretches, m
+  double tip = 0.0;            // tip position s (0, the line's start, if not initiated), m
+  double back = 0.0;           // start s of the stretch that holds the tip, m
+  double cohesive_zone = 0.0;  // length ahead of the tip past the peak-traction opening, m
+  double traction_zone = 0.0;  // length ahead of the tip still carrying >= 10 % of the
+                               // peak traction (kTractionZoneFraction), m
+  std::vector<double> stretch_begin, stretch_end;  // separated stretches (s), m
 };
 
 struct CrackSummary {
@@ -41,7 +46,12 @@ struct CrackSummary {
   double peak_speed = 0.0;           // m/s, max of the E11 speeds
   double intersonic_time = -1.0;     // first time the E11 speed exceeds c_S (-1: never)
   double daughter_time = -1.0;       // first sample with a separated stretch ahead of the main one
-  double final_tip = 0.0;            // m
+  double final_tip = 0.0;            // x of the tip at the end, m
+  double final_tip_y = 0.0;          // y of the tip at the end, m
+  double final_tip_s = 0.0;          // arc length of the tip at the end, m
+  double initiation_s = -1.0;        // arc length of the first node to crack, m (-1 if none)
+  double back_speed = 0.0;           // m/s, speed of the back tip (> 0 when it runs backwards)
+                                     // over the last `window` seconds
   double final_cohesive_zone = 0.0;  // m
   double final_traction_zone = 0.0;  // m
   double end_reached_time = -1.0;    // first sample with the tip within end_tolerance of the
@@ -63,8 +73,9 @@ class CrackTracker {
 
   // end_tolerance: how close to the end of the cohesive line the tip counts as having reached
   // it, m. The last nodes before a bonded grid node cannot open fully, so the driver passes two
-  // grid cells there.
-  explicit CrackTracker(double end_tolerance = 0.0) : end_tolerance_(end_tolerance) {}
+  // grid cells there. The interface's node positions are kept to place arc lengths in (x, y).
+  CrackTracker() = default;
+  explicit CrackTracker(const CohesiveInterface& c, double end_tolerance = 0.0);
 
   // Records the crack at time t <= the interface's current time: nodes cracked by t (their
   // interpolated crack times) make the tip and stretches; zone lengths use the current jumps.
@@ -75,18 +86,25 @@ class CrackTracker {
   std::vector<double> speeds() const;
   CrackSummary summarize(const CohesiveInterface& c, const WaveSpeeds& waves,
                          double window = 4e-6) const;
-  // DIR/crack_tip.csv and DIR/crack_stretches.csv (rewritten atomically).
-  void write(const std::string& dir, double c_r, double c_s) const;
+  // DIR/crack_tip<suffix>.csv and DIR/crack_stretches<suffix>.csv (rewritten atomically).
+  void write(const std::string& dir, const std::string& suffix, double c_r, double c_s) const;
+  // Position (x, y) of arc length s: a node's own coordinates at a node, else interpolated.
+  void position(double s, double& x, double& y) const;
 
  private:
   friend struct CheckpointAccess;  // every member below must also be written in io/checkpoint.cpp
   std::vector<CrackSample> samples_;
+  std::vector<double> x0_, y0_, s0_;  // the interface's nodes (from the case, not stored)
   double end_tolerance_ = 0.0;
   double end_reached_time_ = -1.0;
 };
 
 // Regime of a crack running at `speed` (SPEC §6); "none" below 1e-3 c_S.
 std::string crack_regime(double speed, const WaveSpeeds& w);
+
+// DIR/rupture_time<suffix>.csv: when each node of the interface cracked (-1: not yet).
+void write_rupture_times(const std::string& dir, const std::string& suffix,
+                         const CohesiveInterface& c);
 
 // Least-squares slope of y(t) (E11).
 double least_squares_slope(const double* t, const double* y, std::size_t n);

@@ -405,6 +405,7 @@ template <class A>
 void fields(A& a, CrackSample& c) {
   a("time", c.time);
   a("tip", c.tip);
+  a("back", c.back);
   a("cohesive_zone", c.cohesive_zone);
   a("traction_zone", c.traction_zone);
   a("stretch_begin", c.stretch_begin);

@@ -6,7 +6,6 @@
 #include <fmt/format.h>
 
 #include <cmath>
-
 #include <optional>
 
 #include "cohesive/polyline.hpp"
@@ -20,7 +19,8 @@ namespace {
 Polyline read_points(Section& f, const std::string& key, std::size_t min_count) {
   const toml::node* n = f.node(key);
   const toml::array* a = n ? n->as_array() : nullptr;
-  const std::string rule = fmt::format("must be an array of at least {} points [[x, y], ...] (m)", min_count);
+  const std::string rule =
+      fmt::format("must be an array of at least {} points [[x, y], ...] (m)", min_count);
   if (!a || a->size() < min_count) fail(f.key(key), n ? show(*n) : "(missing)", rule);
   Polyline p;
   for (const auto& e : *a) {
@@ -45,13 +45,14 @@ void check_line(Section& f, const std::string& key, const Polyline& line, const 
     if (!inside(line.x[v], c.grid.min[0], c.grid.max[0], tol) ||
         !inside(line.y[v], c.grid.min[1], c.grid.max[1], tol))
       fail(f.key(key), fmt::format("[{:g}, {:g}]", line.x[v], line.y[v]),
-           fmt::format("point {} lies outside the grid [{:g}, {:g}]..[{:g}, {:g}]", v, c.grid.min[0],
-                       c.grid.min[1], c.grid.max[0], c.grid.max[1]));
+           fmt::format("point {} lies outside the grid [{:g}, {:g}]..[{:g}, {:g}]", v,
+                       c.grid.min[0], c.grid.min[1], c.grid.max[0], c.grid.max[1]));
   const PieceCrossing x = first_self_crossing(line);
   if (x.i >= 0)
-    fail(f.key(key), fmt::format("(piece {} from [{:g}, {:g}], piece {} from [{:g}, {:g}])", x.i,
-                                 line.x[std::size_t(x.i)], line.y[std::size_t(x.i)], x.j,
-                                 line.x[std::size_t(x.j)], line.y[std::size_t(x.j)]),
+    fail(f.key(key),
+         fmt::format("(piece {} from [{:g}, {:g}], piece {} from [{:g}, {:g}])", x.i,
+                     line.x[std::size_t(x.i)], line.y[std::size_t(x.i)], x.j,
+                     line.x[std::size_t(x.j)], line.y[std::size_t(x.j)]),
          "the line crosses itself; an interface must be a simple line");
 }
 
@@ -76,13 +77,14 @@ void check_between_bodies(Section& f, const std::string& key, const Polyline& li
       const bool swapped = body_contains(lo, x + eps * nx, y + eps * ny) &&
                            body_contains(up, x - eps * nx, y - eps * ny);
       fail(f.key(key), fmt::format("(near [{:.6g}, {:.6g}] on piece {})", x, y, i),
-           swapped ? fmt::format("the line's normal (its direction turned +90 degrees) points into "
-                                 "bodies.{} there, the lower body: reverse the points or swap "
-                                 "upper_body and lower_body",
-                                 lo.name)
-                   : fmt::format("must lie on the boundary between bodies.{} (on the side the normal, "
-                                 "the line's direction turned +90 degrees, points to) and bodies.{}",
-                                 up.name, lo.name));
+           swapped
+               ? fmt::format("the line's normal (its direction turned +90 degrees) points into "
+                             "bodies.{} there, the lower body: reverse the points or swap "
+                             "upper_body and lower_body",
+                             lo.name)
+               : fmt::format("must lie on the boundary between bodies.{} (on the side the normal, "
+                             "the line's direction turned +90 degrees, points to) and bodies.{}",
+                             up.name, lo.name));
     }
   }
 }
@@ -107,13 +109,15 @@ void parse_interface_geometry(Section& f, InterfaceSpec& is, const Case& c, cons
     is.y = f.number("y");
     if (std::fabs(up.min[1] - is.y) > tol || std::fabs(lo.max[1] - is.y) > tol)
       fail(f.key("y"), is.y,
-           fmt::format("must be the bottom of the upper body ({:g}) and the top of the lower body ({:g})",
-                       up.min[1], lo.max[1]));
+           fmt::format(
+               "must be the bottom of the upper body ({:g}) and the top of the lower body ({:g})",
+               up.min[1], lo.max[1]));
     is.start = f.number("start");
     is.end = f.number("end");
     const double x0 = std::max(up.min[0], lo.min[0]), x1 = std::min(up.max[0], lo.max[0]);
     if (!inside(is.start, x0, x1, tol))
-      fail(f.key("start"), is.start, fmt::format("must lie where both bodies meet: [{:g}, {:g}] m", x0, x1));
+      fail(f.key("start"), is.start,
+           fmt::format("must lie where both bodies meet: [{:g}, {:g}] m", x0, x1));
     if (!(is.end > is.start) || !inside(is.end, x0, x1, tol))
       fail(f.key("end"), is.end, fmt::format("must lie in ({:g}, {:g}] m", is.start, x1));
     if (f.has("bonded_to")) {
@@ -122,7 +126,8 @@ void parse_interface_geometry(Section& f, InterfaceSpec& is, const Case& c, cons
       is.bonded_to = f.number("bonded_to");
       if (!(is.bonded_to > is.end) || !inside(is.bonded_to, x0, x1, tol))
         fail(f.key("bonded_to"), is.bonded_to,
-             fmt::format("must lie in ({:g}, {:g}] m (the halves are tied from end to here)", is.end, x1));
+             fmt::format("must lie in ({:g}, {:g}] m (the halves are tied from end to here)",
+                         is.end, x1));
     }
     for (const char* k : {"closed", "bonded_points"})
       if (f.has(k)) fail(f.key(k), show(*f.node(k)), "only allowed with points = [[x, y], ...]");
@@ -130,18 +135,21 @@ void parse_interface_geometry(Section& f, InterfaceSpec& is, const Case& c, cons
   }
   if (f.has("bonded_to"))
     fail(f.key("bonded_to"), show(*f.node("bonded_to")),
-         "only allowed with the horizontal form (y, start, end); give bonded_points = [[x, y], ...]");
+         "only allowed with the horizontal form (y, start, end); give bonded_points = [[x, y], "
+         "...]");
   if (polyline) {
     is.line = read_points(f, "points", 2);
     is.line.closed = f.boolean("closed", false);
     if (is.line.closed && is.line.num_vertices() < 3)
-      fail(f.key("points"), double(is.line.num_vertices()), "a closed line needs at least 3 points");
+      fail(f.key("points"), double(is.line.num_vertices()),
+           "a closed line needs at least 3 points");
   } else {
     double center[2];
     f.pair("center", center, true);
     const double radius = f.number("radius");
     if (!(radius > 0)) fail(f.key("radius"), radius, "must be > 0 (m)");
-    if (segments < 8) fail(f.key("segments"), double(segments), "a circle needs at least 8 segments");
+    if (segments < 8)
+      fail(f.key("segments"), double(segments), "a circle needs at least 8 segments");
     // A closed polygon with a vertex per segment, counter-clockwise: its normal points to the
     // centre, so the upper body is the one inside the circle.
     constexpr double kPi = 3.141592653589793;
@@ -156,7 +164,8 @@ void parse_interface_geometry(Section& f, InterfaceSpec& is, const Case& c, cons
   check_line(f, key, is.line, c);
   if (std::size_t(segments) < is.line.num_pieces())
     fail(f.key("segments"), double(segments),
-         fmt::format("must be at least the number of pieces of the line ({})", is.line.num_pieces()));
+         fmt::format("must be at least the number of pieces of the line ({})",
+                     is.line.num_pieces()));
   check_between_bodies(f, key, is.line, c, up, lo);
   if (f.has("bonded_points")) {
     is.bonded_line = read_points(f, "bonded_points", 2);
@@ -173,11 +182,11 @@ void parse_interfaces(Section& top, Case& c, ParseContext& ctx) {
   Section ifs = top.table("interface", false);
   for (const auto& [k, v] : in_input_order(ifs.raw())) {
     const std::string& name = k;
-    Section f = ifs.table(
-        name, true,
-        {"upper_body", "lower_body", "y", "start", "end", "points", "closed", "center", "radius",
-         "segments", "sigma_max", "tau_max", "delta_n", "delta_t", "q", "r", "penalty",
-         "separation", "bonded_to", "bonded_points"});
+    Section f = ifs.table(name, true,
+                          {"upper_body", "lower_body", "y",          "start",     "end",
+                           "points",     "closed",     "center",     "radius",    "segments",
+                           "sigma_max",  "tau_max",    "delta_n",    "delta_t",   "q",
+                           "r",          "penalty",    "separation", "bonded_to", "bonded_points"});
     InterfaceSpec is;
     std::vector<std::string> names;
     for (const auto& bb : c.bodies) names.push_back(bb.name);

@@ -85,9 +85,11 @@ void set_up(RunContext& r, const Case& c, const std::string& dir, double checkpo
     r.snapshots = std::make_unique<SnapshotWriter>(
         dir, s.particles, c.output.has_snapshot_region ? c.output.snapshot_region : nullptr);
   for (const CohesiveInterface& ci : s.interfaces) {
-    const Axis& ax = s.grid.x;
-    const int cell = std::clamp(ax.cell_of(ci.spec.end), 0, ax.cells - 1);
-    r.cracks.emplace_back(2.0 * ax.width(cell));  // two cells at the end of the cohesive line
+    // Two cells (the wider direction) at the end of the cohesive line.
+    const int i = std::clamp(s.grid.x.cell_of(ci.x0.back()), 0, s.grid.x.cells - 1);
+    const int j = std::clamp(s.grid.y.cell_of(ci.y0.back()), 0, s.grid.y.cells - 1);
+    const double w = std::fabs(ci.node_ny.back()) * s.grid.x.width(i) + std::fabs(ci.node_nx.back()) * s.grid.y.width(j);
+    r.cracks.emplace_back(ci, 2.0 * w);
   }
   r.eps = 1e-6 * s.dt;  // absorbs round-off in accumulated time
   r.hist = Schedule(c.output.history_interval > 0 ? c.output.history_interval : s.dt);
@@ -148,7 +150,13 @@ RunResult run_case(const Case& c, const RunOptions& options) {
     ++interface_files;
   };
   auto write_cracks = [&]() {
-    if (!cracks.empty()) cracks[0].write(dir, crack_speeds[0].rayleigh, crack_speeds[0].shear);
+    // The first interface keeps the original names (crack_tip.csv); every interface also gets
+    // files named after it.
+    for (std::size_t k = 0; k < cracks.size(); ++k) {
+      if (k == 0) cracks[0].write(dir, "", crack_speeds[0].rayleigh, crack_speeds[0].shear);
+      cracks[k].write(dir, "_" + c.interface_names[k], crack_speeds[k].rayleigh, crack_speeds[k].shear);
+      write_rupture_times(dir, "_" + c.interface_names[k], s.interfaces[k]);
+    }
   };
 
   if (!options.resume) {
