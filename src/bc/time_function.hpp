@@ -28,8 +28,8 @@ struct TimeFunction {
   double rise_time = 0.0;     // tr, s (trapezoid, smooth_ramp)
   double plateau_time = 0.0;  // tp, s
   double fall_time = 0.0;     // ts, s
-  std::vector<double> table_t, table_v;  // table points (set_table), s and value units
-  std::vector<double> table_integral;    // integral of the interpolant from t_0 to t_k
+  std::vector<double> table_t{}, table_v{};  // table points (set_table), s and value units
+  std::vector<double> table_integral{};     // integral of the interpolant from t_0 to t_k
 
   // Makes this a table function through (t[k], v[k]); t strictly increasing (validated by io/).
   void set_table(std::vector<double> t, std::vector<double> v, double scale = 1.0) {
