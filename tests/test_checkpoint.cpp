@@ -123,6 +123,52 @@ TEST(Checkpoint, round_trip_is_bitwise_and_the_run_continues_bitwise) {
   EXPECT_EQ(checkpoint_bytes(kSource, a), checkpoint_bytes(kSource, b));
 }
 
+// [loads] (bc/loads.hpp) keep particle ids and re-index them after each sort: a resumed run with
+// a traction, a body force and a velocity region continues bitwise, past re-sorts.
+TEST(Checkpoint, a_case_with_loads_restarts_bitwise) {
+  std::string text = test::strip_case_toml();
+  text = text.substr(0, text.find("[boundary.push]")) + R"(
+[loads.pull]
+type = "traction"
+from = [0.01, 0.0]
+to = [0.01, 0.002]
+normal = 1e6
+shear = 2e5
+function = "smooth_ramp"
+rise_time = 1e-6
+[loads.gravity]
+type = "body_force"
+acceleration = [0.0, -1e4]
+function = "table"
+table = [[0.0, 0.0], [1e-6, 1.0], [3e-6, -0.5]]
+[loads.piston]
+type = "velocity"
+min = [0.0, 0.0]
+max = [0.001, 0.002]
+direction = [1.0, 1.0]
+velocity = 2.0
+)" + text.substr(text.find("[output]"));
+  for (const std::string scheme : {"MUSL", "USL", "USF"}) {
+    const Case c = parse_case(text, {"solver.scheme=\"" + scheme + "\"", "time.end=20e-6"});
+    const std::string dir = scratch_dir("rupture_test_checkpoint_loads");
+    RunContext a;
+    set_up(a, c, dir);
+    advance(a, 60);  // past two re-sorts
+    const std::string bytes = checkpoint_bytes(kSource, a);
+    RunContext b;
+    set_up(b, c, dir);
+    restore_checkpoint_bytes(bytes, "test", b);
+    advance(a, 40);
+    advance(b, 40);
+    EXPECT_TRUE(bitwise_equal(a.s.particles.x, b.s.particles.x)) << scheme;
+    EXPECT_TRUE(bitwise_equal(a.s.particles.vy, b.s.particles.vy)) << scheme;
+    EXPECT_TRUE(bitwise_equal(a.s.particles.sxy, b.s.particles.sxy)) << scheme;
+    EXPECT_EQ(a.s.external_work, b.s.external_work) << scheme;
+    EXPECT_GT(a.s.external_work, 0.0) << scheme;
+    EXPECT_EQ(checkpoint_bytes(kSource, a), checkpoint_bytes(kSource, b)) << scheme;
+  }
+}
+
 namespace {
 // The message of the InputError that restoring `bytes` into a context of case `c` raises.
 std::string restore_error(const std::string& bytes, const Case& c) {

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "bc/loads.hpp"
 #include "bc/velocity_bc.hpp"
 #include "cohesive/interface.hpp"
 #include "grid/grid.hpp"
@@ -91,6 +92,7 @@ struct Case {
   TimeSpec time;
   SolverSpec solver;
   std::vector<VelocityBC> boundary;
+  Loads loads;  // [loads]: tractions, body forces, velocity regions (bc/loads.hpp)
   std::vector<InterfaceSpec> interfaces;  // cohesive interfaces (SPEC §3)
   std::vector<std::string> interface_names;
   OutputSpec output;

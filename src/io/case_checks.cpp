@@ -32,12 +32,22 @@ std::string describe(const VelocityBC& bc) {
   const TimeFunction& f = bc.velocity;
   if (f.kind == TimeFunction::Kind::constant)
     return fmt::format("velocity = {:g} (constant)", f.value);
+  if (f.kind == TimeFunction::Kind::smooth_ramp)
+    return fmt::format("velocity = {:g} (smooth_ramp: rise_time = {:g})", f.value, f.rise_time);
+  if (f.kind == TimeFunction::Kind::table)
+    return fmt::format("velocity from a table of {} points ({:g} m/s at t = {:g} s ... {:g} m/s at "
+                       "t = {:g} s)",
+                       f.table_t.size(), f.table_v.front(), f.table_t.front(), f.table_v.back(),
+                       f.table_t.back());
   return fmt::format(
       "velocity = {:g} (trapezoid: rise_time = {:g}, plateau_time = {:g}, fall_time = {:g})",
       f.value, f.rise_time, f.plateau_time, f.fall_time);
 }
 
 bool same_function(const TimeFunction& a, const TimeFunction& b) {
+  if (a.kind == TimeFunction::Kind::table || b.kind == TimeFunction::Kind::table)
+    return a.kind == b.kind && a.value == b.value && a.table_t == b.table_t &&
+           a.table_v == b.table_v;
   return a.kind == b.kind && a.value == b.value &&
          (a.kind == TimeFunction::Kind::constant ||
           (a.rise_time == b.rise_time && a.plateau_time == b.plateau_time &&

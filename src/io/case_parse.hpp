@@ -5,6 +5,7 @@
 #pragma once
 #include <map>
 #include <string>
+#include <vector>
 
 #include "io/case.hpp"
 #include "io/toml_section.hpp"
@@ -15,6 +16,13 @@ namespace rupture {
 struct ParseContext {
   std::map<std::string, int> material_index;
   std::map<std::string, int> body_index;
+  std::string case_dir;  // directory of the case file: relative table_file paths start there
+  // Tables read from files (table_file), so the input echo can hold them inline.
+  struct FileTable {
+    std::vector<std::string> path;  // keys of the table holding table_file, e.g. {"loads", "x"}
+    std::vector<double> t, v;
+  };
+  std::vector<FileTable> file_tables;
 };
 
 void parse_model(Section& top, Case& c);
@@ -25,6 +33,12 @@ void parse_time(Section& top, Case& c);
 void parse_solver(Section& top, Case& c);
 void parse_boundary(Section& top, Case& c, ParseContext& ctx);
 void parse_interfaces(Section& top, Case& c, ParseContext& ctx);
+void parse_loads(Section& top, Case& c, ParseContext& ctx);
+// `function` and its keys (io/parse_time_function.cpp). value_key names the amplitude key
+// ("velocity"); empty: the function is a dimensionless factor (value 1). path: the keys of the
+// table b, recorded with a table read from a file.
+TimeFunction parse_time_function(Section& b, const std::string& value_key,
+                                 const std::vector<std::string>& path, ParseContext& ctx);
 void parse_output(Section& top, Case& c);
 // grid.margin when not given: the largest displacement of any load over the run.
 void set_automatic_margin(Case& c);

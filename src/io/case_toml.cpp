@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -140,13 +141,36 @@ void apply_override(toml::table& root, const std::string& assignment) {
   t->insert_or_assign(parts.back(), *parsed.get("v"));
 }
 
-Case build_case(const toml::table& root) {
+// The input echo holds tables read from files inline (table = [...] for table_file = "..."), so
+// run.json records the values the run used.
+std::string input_echo(const toml::table& root, const ParseContext& ctx) {
+  std::ostringstream echo;
+  if (ctx.file_tables.empty()) {
+    echo << toml::toml_formatter{root};
+    return echo.str();
+  }
+  toml::table copy = root;
+  for (const ParseContext::FileTable& ft : ctx.file_tables) {
+    toml::table* t = &copy;
+    for (const std::string& key : ft.path) t = t ? t->get_as<toml::table>(key) : nullptr;
+    if (!t) continue;
+    toml::array rows;
+    for (std::size_t k = 0; k < ft.t.size(); ++k) rows.push_back(toml::array{ft.t[k], ft.v[k]});
+    t->erase("table_file");
+    t->insert_or_assign("table", std::move(rows));
+  }
+  echo << toml::toml_formatter{copy};
+  return echo.str();
+}
+
+Case build_case(const toml::table& root, const std::string& case_dir) {
   Case c;
   Section top(root, "",
               {"title", "model", "materials", "grid", "bodies", "time", "solver", "boundary",
-               "interface", "output"});
+               "loads", "interface", "output"});
   c.title = top.string("title", "");
   ParseContext ctx;
+  ctx.case_dir = case_dir;
   parse_model(top, c);
   parse_materials(top, c, ctx);
   parse_grid(top, c);
@@ -154,6 +178,7 @@ Case build_case(const toml::table& root) {
   parse_time(top, c);
   parse_solver(top, c);
   parse_boundary(top, c, ctx);
+  parse_loads(top, c, ctx);
   set_automatic_margin(c);
   parse_interfaces(top, c, ctx);
   parse_output(top, c);
@@ -161,9 +186,7 @@ Case build_case(const toml::table& root) {
 
   check_case_consistency(c);
 
-  std::ostringstream echo;
-  echo << toml::toml_formatter{root};
-  c.input_toml = echo.str();
+  c.input_toml = input_echo(root, ctx);
   return c;
 }
 
@@ -201,7 +224,11 @@ Case parse_case(const std::string& toml_text, const std::vector<std::string>& ov
                                  src.begin.column, e.description()));
   }
   for (const std::string& o : overrides) apply_override(root, o);
-  return build_case(root);
+  // Relative table_file paths start at the case file's directory (the working directory for
+  // text that came from no file).
+  std::string case_dir;
+  if (origin != "<string>") case_dir = std::filesystem::path(origin).parent_path().string();
+  return build_case(root, case_dir);
 }
 
 Case load_case(const std::string& path, const std::vector<std::string>& overrides) {

@@ -364,7 +364,9 @@ void fields(A& a, CohesiveInterface& c) {
 }
 
 // Rebuilt from the case by make_state() and not stored: grid, stiffness, boundary, bonded,
-// cohesive_safety. Set by the driver before every step: dt_cap; tests only: forced_dt.
+// cohesive_safety, loads (LoadState: particle ids from the t = 0 particles; indices, region
+// nodes and forces are rebuilt after the restored sort and in every step; the loads' work is
+// in external_work). Set by the driver before every step: dt_cap; tests only: forced_dt.
 // Not stored, per-step scratch: fields (every grid array is recomputed in each step).
 template <class A>
 void fields(A& a, State& s) {

@@ -15,7 +15,8 @@ void parse_boundary(Section& top, Case& c, ParseContext& ctx) {
     const std::string& name = k;
     Section b = bcs.table(name, true,
                           {"edge", "from", "to", "component", "bodies", "function", "velocity",
-                           "rise_time", "plateau_time", "fall_time", "follow_edge"});
+                           "rise_time", "plateau_time", "fall_time", "table", "table_file",
+                           "follow_edge"});
     VelocityBC bc;
     bc.name = name;
     const std::string edge = b.string("edge", "", {"left", "right", "bottom", "top"});
@@ -48,24 +49,7 @@ void parse_boundary(Section& top, Case& c, ParseContext& ctx) {
       }
       bc.fields.push_back(body_index[body]);
     }
-    const std::string fn = b.string("function", "constant", {"constant", "trapezoid"});
-    bc.velocity.value = b.number("velocity");
-    if (fn == "trapezoid") {
-      bc.velocity.kind = TimeFunction::Kind::trapezoid;
-      bc.velocity.rise_time = b.number("rise_time");
-      if (bc.velocity.rise_time <= 0)
-        fail(b.key("rise_time"), bc.velocity.rise_time, "must be > 0 (s)");
-      bc.velocity.plateau_time = b.number("plateau_time");
-      if (bc.velocity.plateau_time < 0)
-        fail(b.key("plateau_time"), bc.velocity.plateau_time, "must be >= 0 (s)");
-      bc.velocity.fall_time = b.number("fall_time");
-      if (bc.velocity.fall_time <= 0)
-        fail(b.key("fall_time"), bc.velocity.fall_time, "must be > 0 (s)");
-    } else {
-      for (const char* key : {"rise_time", "plateau_time", "fall_time"})
-        if (b.has(key))
-          fail(b.key(key), show(*b.node(key)), "only allowed with function = \"trapezoid\"");
-    }
+    bc.velocity = parse_time_function(b, "velocity", {"boundary", name}, ctx);
     bc.follow_edge = b.boolean("follow_edge", true);
     if (b.has("follow_edge") && !bc.normal())
       fail(b.key("follow_edge"), show(*b.node("follow_edge")),
@@ -83,6 +67,9 @@ void set_automatic_margin(Case& c) {
   for (const VelocityBC& bc : c.boundary)
     for (int k = 1; k <= 1000; ++k)
       m = std::max(m, std::fabs(bc.velocity.displacement(c.time.end * k / 1000.0)));
+  for (const VelocityRegion& r : c.loads.velocity_regions)
+    for (int k = 1; k <= 1000; ++k)
+      m = std::max(m, std::fabs(r.displacement(c.time.end * k / 1000.0)));
   for (const BodySpec& b : c.bodies)
     m = std::max(m, std::hypot(b.velocity[0], b.velocity[1]) * c.time.end);
   // Capped like an explicit grid.margin: a long run with a constant velocity would otherwise

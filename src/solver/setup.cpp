@@ -7,6 +7,7 @@
 #include "solver/state.hpp"
 #include "solver/step.hpp"
 #include "solver/cohesive_step.hpp"
+#include "solver/load_step.hpp"
 #include "solver/summary.hpp"
 
 namespace rupture {
@@ -91,6 +92,7 @@ State make_state(const Case& c) {
   s.initial_energy = kinetic_energy(s.particles) + strain_energy(s.particles);
   // Sorted from the start, so particle indices are stable until the first re-sort.
   build_scatter_plan(s);
+  set_up_loads(s, c.loads, c.grid.cell_size);
   return s;
 }
 

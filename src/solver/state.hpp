@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "bc/loads.hpp"
 #include "bc/velocity_bc.hpp"
 #include "cohesive/interface.hpp"
 #include "grid/grid.hpp"
@@ -49,6 +50,29 @@ struct StepLimits {
   double dt = 0.0;           // step at t = 0, s
 };
 
+// The loads of Case::loads as the time step applies them (solver/load_step.hpp). Built from the
+// case by make_state() (the particles at t = 0 fix which ids a load acts on); the rest is
+// rebuilt after each particle sort or each step, so nothing here is checkpointed.
+struct LoadState {
+  Loads spec;
+  std::vector<TractionPatch> patches;                    // per traction load
+  std::vector<std::vector<std::uint32_t>> region_ids;    // per velocity region: particle ids
+  // Rebuilt after each sort (ScatterPlan::sorted_step): particle indices of the ids above.
+  long indexed_sort = -2;
+  std::vector<std::uint32_t> slot_of_id;                 // id -> index
+  std::vector<std::vector<std::uint32_t>> patch_index, region_index;
+  // Per-step scratch.
+  std::vector<double> accel_x, accel_y;  // per field: summed body-force acceleration, m/s^2
+  std::vector<double> ext_fx, ext_fy;    // per field node: this step's external force, N
+  struct RegionNode {
+    std::size_t node;  // field offset + node index
+    int region;
+  };
+  std::vector<RegionNode> region_nodes;  // nodes the region particles touch this step
+  std::vector<long> node_stamp;          // per field node: step + 1 when listed
+  bool has_forces() const { return !spec.tractions.empty() || !spec.body_forces.empty(); }
+};
+
 // Every member must also be written in io/checkpoint.cpp (restart is bitwise), or be listed
 // there as rebuilt from the case or per-step scratch.
 struct State {
@@ -62,6 +86,7 @@ struct State {
   ScatterPlan plan;
   std::vector<CohesiveInterface> interfaces;
   std::vector<std::vector<std::size_t>> bonded;  // per interface: tied grid nodes (row y0)
+  LoadState loads;  // [loads] (bc/loads.hpp): tractions, body forces, velocity regions
 
   Scheme scheme = Scheme::MUSL;
   double flip = 1.0;
@@ -75,7 +100,7 @@ struct State {
   double mass_floor = 0.0;  // nodes lighter than this are treated as empty, kg
 
   double cohesive_seconds = 0.0;  // wall time spent in the cohesive phases so far, s
-  double external_work = 0.0;  // work of the prescribed velocities so far, J (per unit thickness)
+  double external_work = 0.0;  // work of the prescribed velocities and loads so far, J (per unit thickness)
   double initial_energy = 0.0; // kinetic + strain energy at t = 0, J
 };
 

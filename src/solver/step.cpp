@@ -12,6 +12,7 @@
 
 #include "core/errors.hpp"
 #include "solver/cohesive_step.hpp"
+#include "solver/load_step.hpp"
 #include "solver/time_step.hpp"
 
 namespace rupture {
@@ -686,39 +687,52 @@ void step(State& s) {
   // A driven edge that has moved onto another grid line takes its condition with it (E2).
   if (update_edge_lines(s.boundary, s.grid, s.time, s.bc_lines))
     s.bc_nodes = resolve_nodes(s.boundary, s.grid, s.fields.num_fields, s.bc_lines);
+  prepare_loads(s);                         // loaded particles after a sort, region nodes at t^n
   GridFields& G = s.fields;
   switch (s.scheme) {
     case Scheme::MUSL:
       particles_to_grid(s, true);           // E4, per velocity field
       tie_stencils_and_time_step(s);        // bonded stretch, face stencils, dt (E6)
+      add_external_forces(s);               // E4 tractions, body forces ([loads])
       cohesive_forces_and_ties(s);          // E7-E9, bonded stretch
       integrate_grid(s);                    // E4 momentum update + E2 velocity BCs
+      apply_velocity_regions(s);            // [loads] velocity regions, along d
+      external_force_work(s);               // E14
       update_particle_velocity_and_remap(s);
       if (!s.interfaces.empty()) {
         CohesiveTimer timer(s);
         tie_bonded_nodes(s, TieWhat::remapped_momentum);
       }
       remapped_grid_velocity(s);
+      prescribe_region_velocity(s, G.remap_x.data(), G.remap_y.data(), s.time + s.dt);
       grid_to_particles(s, G.remap_x.data(), G.remap_y.data(), G2PMode::stress_and_move);  // E5
       break;
     case Scheme::USL:
       particles_to_grid(s, true);
       tie_stencils_and_time_step(s);
+      add_external_forces(s);
       cohesive_forces_and_ties(s);
       integrate_grid(s);
+      apply_velocity_regions(s);
+      external_force_work(s);
       grid_to_particles(s, G.vel_x.data(), G.vel_y.data(), G2PMode::stress_velocity_and_move);
       break;
     case Scheme::USF:
       particles_to_grid(s, false);
       tie_stencils_and_time_step(s);
       grid_velocity_from_momentum(s, s.time);
+      prescribe_region_velocity(s, G.remap_x.data(), G.remap_y.data(), s.time);
       grid_to_particles(s, G.remap_x.data(), G.remap_y.data(), G2PMode::stress_only);
       particles_to_grid_force(s);
+      add_external_forces(s);
       cohesive_forces_and_ties(s);
       integrate_grid(s);
+      apply_velocity_regions(s);
+      external_force_work(s);
       grid_to_particles(s, G.vel_x.data(), G.vel_y.data(), G2PMode::velocity_and_move);
       break;
   }
+  set_region_particle_velocity(s);          // region particles: component along d at t^{n+1}
   s.time += s.dt;
   ++s.step;
   if (!s.interfaces.empty()) {

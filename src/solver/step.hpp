@@ -9,7 +9,8 @@
 //         -> integrate -> G2P (velocity, move)
 // The step dt is chosen inside step() once the nodal masses are known (solver/time_step.hpp),
 // never longer than s.dt_cap.
-// (cohesive phases: solver/cohesive_step.hpp)
+// (cohesive phases: solver/cohesive_step.hpp; [loads] phases: solver/load_step.hpp, external
+// forces after the internal force, velocity regions after the velocity BCs)
 // Throws SimulationError (what, where, when) on a non-finite particle or one leaving the grid.
 #pragma once
 #include "solver/state.hpp"

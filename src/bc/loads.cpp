@@ -1,0 +1,98 @@
+// rupture/bc/loads.cpp
+#include "bc/loads.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/errors.hpp"
+
+namespace rupture {
+
+namespace {
+
+// Length of the part of the segment A + u s (0 <= u <= L) inside the box [lo, hi] (clipped
+// parametrically, one slab per axis).
+double clipped_length(const double A[2], const double s[2], double L, const double lo[2],
+                      const double hi[2]) {
+  double u0 = 0.0, u1 = L;
+  for (int d = 0; d < 2; ++d) {
+    if (s[d] == 0.0) {
+      if (A[d] < lo[d] || A[d] > hi[d]) return 0.0;
+      continue;
+    }
+    double a = (lo[d] - A[d]) / s[d], b = (hi[d] - A[d]) / s[d];
+    if (a > b) std::swap(a, b);
+    u0 = std::max(u0, a);
+    u1 = std::min(u1, b);
+  }
+  return std::max(0.0, u1 - u0);
+}
+
+}  // namespace
+
+TractionPatch find_traction_patch(const TractionLoad& load, const Particles& p, double cell_size) {
+  TractionPatch patch;
+  const double* A = load.from;
+  const double dx = load.to[0] - A[0], dy = load.to[1] - A[1];
+  const double L = std::hypot(dx, dy);
+  const double s[2] = {dx / L, dy / L};
+  const double right[2] = {s[1], -s[0]};  // unit normal to the right of from -> to
+  patch.segment_length = L;
+  patch.tangent[0] = s[0], patch.tangent[1] = s[1];
+  const double tol = 1e-9 * cell_size;
+  const std::string key = "loads." + load.name;
+  const std::string seg = fmt::format("[{:g}, {:g}] -> [{:g}, {:g}]", A[0], A[1], load.to[0], load.to[1]);
+  std::vector<double> raw;
+  int left_side = 0, right_side = 0;
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    const double lo[2] = {p.x[k] - p.half_x[k] - tol, p.y[k] - p.half_y[k] - tol};
+    const double hi[2] = {p.x[k] + p.half_x[k] + tol, p.y[k] + p.half_y[k] + tol};
+    const double len = clipped_length(A, s, L, lo, hi);
+    if (len <= 4.0 * tol) continue;  // a corner or an edge end touching: no share
+    const double side = (p.x[k] - A[0]) * right[0] + (p.y[k] - A[1]) * right[1];
+    if (side > tol) ++right_side;
+    if (side < -tol) ++left_side;
+    patch.ids.push_back(p.id[k]);
+    raw.push_back(len);
+  }
+  if (patch.ids.empty())
+    throw InputError(fmt::format(
+        "input keys '{0}.from', '{0}.to' = {1}: no particle is adjacent to the segment; a "
+        "traction segment must lie on the surface of the material",
+        key, seg));
+  if (left_side > 0 && right_side > 0)
+    throw InputError(fmt::format(
+        "input keys '{0}.from', '{0}.to' = {1}: material lies on both sides of the segment ({2} "
+        "and {3} particles); a traction segment must lie on the surface of the material",
+        key, seg, left_side, right_side));
+  // Outward normal: away from the material.
+  const double sign = right_side > 0 ? -1.0 : 1.0;
+  patch.normal[0] = sign * right[0], patch.normal[1] = sign * right[1];
+  double covered = 0.0;
+  for (double len : raw) covered += len;
+  if (covered < 0.5 * L || covered > 1.5 * L)
+    throw InputError(fmt::format(
+        "input keys '{0}.from', '{0}.to' = {1}: the boxes of the particles along the segment "
+        "cover {2:g} m of its {3:g} m; a traction segment must lie on the surface of the material",
+        key, seg, covered, L));
+  // Shares sum to the segment length (exactly covered on a surface made of whole particle boxes).
+  patch.length.resize(raw.size());
+  for (std::size_t k = 0; k < raw.size(); ++k) patch.length[k] = raw[k] * (L / covered);
+  return patch;
+}
+
+std::vector<std::uint32_t> region_particles(const VelocityRegion& r, const Particles& p) {
+  std::vector<std::uint32_t> ids;
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    const bool in_field = r.fields.empty() ||
+                          std::count(r.fields.begin(), r.fields.end(), int(p.field[k])) > 0;
+    if (in_field && p.x[k] >= r.min[0] && p.x[k] <= r.max[0] && p.y[k] >= r.min[1] &&
+        p.y[k] <= r.max[1])
+      ids.push_back(p.id[k]);
+  }
+  return ids;
+}
+
+}  // namespace rupture

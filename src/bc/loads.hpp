@@ -1,0 +1,82 @@
+// rupture/bc/loads.hpp
+// Loads besides the edge velocities of bc/velocity_bc.hpp, as the input states them ([loads.NAME],
+// docs/loads.md), and what the time step needs to apply them (solver/load_step.hpp). SI units.
+// Contract: every load's amplitude is multiplied by its dimensionless time function `factor`;
+// forces enter the nodal force as particle external forces f_p scattered with the particle's
+// GIMP weights (SPEC E4); every load's work goes into State::external_work (SPEC E14).
+//   traction:     f_p = factor(t) * traction * length_p on the surface particles of a segment,
+//                 length_p the part of the segment their box covers (the shares sum to its
+//                 length). traction is global (tx, ty), or normal/shear in the segment frame:
+//                 n the outward normal of the material there (normal > 0: tension), s the unit
+//                 vector from `from` to `to` (shear > 0 pulls the surface along s).
+//   body_force:   f_p = m_p * factor(t) * acceleration on the particles of the chosen bodies.
+//   velocity:     the material initially inside a box moves at factor(t) * speed along d;
+//                 the perpendicular component stays free (see solver/load_step.hpp).
+// Particles are re-sorted during a run: loads hold particle ids (Particles::id), which are stable,
+// and the step maps them to indices after every sort.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "bc/time_function.hpp"
+#include "particles/particles.hpp"
+
+namespace rupture {
+
+struct TractionLoad {
+  std::string name;
+  double from[2]{}, to[2]{};  // segment end points, m
+  bool global = true;         // traction[] given; else normal/shear in the segment frame
+  double traction[2]{};       // Pa (global)
+  double normal = 0.0;        // Pa, > 0 tension (segment frame)
+  double shear = 0.0;         // Pa, along from -> to
+  TimeFunction factor;        // dimensionless
+};
+
+struct BodyForceLoad {
+  std::string name;
+  double acceleration[2]{};  // m/s^2
+  std::vector<int> fields;   // bodies it acts on; empty = all
+  TimeFunction factor;       // dimensionless
+};
+
+struct VelocityRegion {
+  std::string name;
+  double min[2]{}, max[2]{};  // box holding the driven material at t = 0, m
+  double direction[2]{1.0, 0.0};  // unit vector d
+  double speed = 0.0;         // m/s along d
+  std::vector<int> fields;    // bodies it acts on; empty = all
+  TimeFunction factor;        // dimensionless
+
+  double velocity(double t) const { return speed * factor(t); }  // m/s along d
+  double displacement(double t) const { return speed * factor.displacement(t); }  // m
+};
+
+struct Loads {
+  std::vector<TractionLoad> tractions;
+  std::vector<BodyForceLoad> body_forces;
+  std::vector<VelocityRegion> velocity_regions;
+  bool empty() const {
+    return tractions.empty() && body_forces.empty() && velocity_regions.empty();
+  }
+};
+
+// The surface particles a traction segment loads, with their share of its length.
+struct TractionPatch {
+  std::vector<std::uint32_t> ids;  // Particles::id
+  std::vector<double> length;      // m, sums to the segment length
+  double normal[2]{};              // outward unit normal of the material at the segment
+  double tangent[2]{};             // unit vector from -> to
+  double segment_length = 0.0;     // m
+};
+
+// Finds the particles whose GIMP box meets the segment of `load` and their shares. Throws
+// InputError (naming loads.NAME.from/to) if no particle is adjacent to the segment, if material
+// lies on both sides of it, or if the boxes cover less than half of it.
+TractionPatch find_traction_patch(const TractionLoad& load, const Particles& p, double cell_size);
+
+// Ids of the particles of the region's fields whose centre lies in its box (closed).
+std::vector<std::uint32_t> region_particles(const VelocityRegion& r, const Particles& p);
+
+}  // namespace rupture

@@ -1,0 +1,221 @@
+// rupture/solver/load_step.cpp
+// Loads in the time step (solver/load_step.hpp). Per-step loops use preallocated arrays only.
+#include "solver/load_step.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "core/errors.hpp"
+
+namespace rupture {
+namespace {
+
+// Calls visit(node, weight) for the nodes of particle p with a nonzero GIMP weight (E3); node
+// is the grid index within the particle's field plus the field offset.
+template <class Visit>
+inline void for_each_weight(const State& s, std::size_t p, Visit&& visit) {
+  const Particles& P = s.particles;
+  Stencil1D sx, sy;
+  stencil(s.grid.x, P.x[p], P.half_x[p], sx);
+  stencil(s.grid.y, P.y[p], P.half_y[p], sy);
+  const std::size_t base = s.fields.offset(P.field[p]);
+  for (int b = 0; b < 3; ++b)
+    for (int a = 0; a < 3; ++a) {
+      const double w = sx.s[a] * sy.s[b];
+      if (w > 0.0) visit(base + s.grid.node_index(sx.first + a, sy.first + b), w);
+    }
+}
+
+}  // namespace
+
+void set_up_loads(State& s, const Loads& loads, double cell_size) {
+  LoadState& L = s.loads;
+  L.spec = loads;
+  if (loads.empty()) return;
+  for (const TractionLoad& t : loads.tractions)
+    L.patches.push_back(find_traction_patch(t, s.particles, cell_size));
+  for (const VelocityRegion& r : loads.velocity_regions) {
+    L.region_ids.push_back(region_particles(r, s.particles));
+    if (L.region_ids.back().empty())
+      throw InputError(fmt::format(
+          "input keys 'loads.{0}.min', 'loads.{0}.max' = [{1:g}, {2:g}]..[{3:g}, {4:g}]: the box "
+          "holds no particle (of the bodies it names); a velocity region must hold material",
+          r.name, r.min[0], r.min[1], r.max[0], r.max[1]));
+  }
+  L.patch_index.resize(L.patches.size());
+  for (std::size_t k = 0; k < L.patches.size(); ++k) L.patch_index[k].resize(L.patches[k].ids.size());
+  L.region_index.resize(L.region_ids.size());
+  for (std::size_t k = 0; k < L.region_ids.size(); ++k) L.region_index[k].resize(L.region_ids[k].size());
+  L.slot_of_id.resize(s.particles.size());
+  const std::size_t grid_nodes = s.fields.mass.size();
+  L.accel_x.resize(std::size_t(s.fields.num_fields));
+  L.accel_y.resize(std::size_t(s.fields.num_fields));
+  if (L.has_forces()) {
+    L.ext_fx.assign(grid_nodes, 0.0);
+    L.ext_fy.assign(grid_nodes, 0.0);
+  }
+  if (!loads.velocity_regions.empty()) {
+    L.node_stamp.assign(grid_nodes, 0);
+    std::size_t most = 0;
+    for (const auto& ids : L.region_ids) most += 9 * ids.size();
+    L.region_nodes.reserve(most);
+  }
+}
+
+void prepare_loads(State& s) {
+  LoadState& L = s.loads;
+  if (L.spec.tractions.empty() && L.spec.velocity_regions.empty()) return;
+  const Particles& P = s.particles;
+  if (L.indexed_sort != s.plan.sorted_step) {
+    for (std::size_t p = 0; p < P.size(); ++p) L.slot_of_id[P.id[p]] = std::uint32_t(p);
+    for (std::size_t k = 0; k < L.patches.size(); ++k)
+      for (std::size_t j = 0; j < L.patches[k].ids.size(); ++j)
+        L.patch_index[k][j] = L.slot_of_id[L.patches[k].ids[j]];
+    for (std::size_t k = 0; k < L.region_ids.size(); ++k)
+      for (std::size_t j = 0; j < L.region_ids[k].size(); ++j)
+        L.region_index[k][j] = L.slot_of_id[L.region_ids[k][j]];
+    L.indexed_sort = s.plan.sorted_step;
+  }
+  // Nodes the region particles touch at t^n, each listed once (in input and id order).
+  L.region_nodes.clear();  // keeps its capacity: no allocation
+  const long stamp = s.step + 1;
+  for (std::size_t r = 0; r < L.region_index.size(); ++r)
+    for (const std::uint32_t p : L.region_index[r])
+      for_each_weight(s, p, [&](std::size_t i, double) {
+        if (L.node_stamp[i] == stamp) return;
+        L.node_stamp[i] = stamp;
+        L.region_nodes.push_back({i, int(r)});
+      });
+}
+
+void add_external_forces(State& s) {
+  LoadState& L = s.loads;
+  if (!L.has_forces()) return;
+  const Particles& P = s.particles;
+  const double t = s.time;
+  std::fill(L.ext_fx.begin(), L.ext_fx.end(), 0.0);
+  std::fill(L.ext_fy.begin(), L.ext_fy.end(), 0.0);
+  // Body forces: f_p = m_p g(t), per field (one field per body).
+  if (!L.spec.body_forces.empty()) {
+    std::fill(L.accel_x.begin(), L.accel_x.end(), 0.0);
+    std::fill(L.accel_y.begin(), L.accel_y.end(), 0.0);
+    for (const BodyForceLoad& b : L.spec.body_forces) {
+      const double f = b.factor(t);
+      for (int field = 0; field < s.fields.num_fields; ++field) {
+        if (!b.fields.empty() && std::find(b.fields.begin(), b.fields.end(), field) == b.fields.end())
+          continue;
+        L.accel_x[std::size_t(field)] += f * b.acceleration[0];
+        L.accel_y[std::size_t(field)] += f * b.acceleration[1];
+      }
+    }
+    // Strips of one colour touch disjoint nodes (ScatterPlan): no race.
+    const ScatterPlan& plan = s.plan;
+    for (int colour = 0; colour < 2; ++colour) {
+#pragma omp parallel for schedule(dynamic, 1)
+      for (int strip = colour; strip < plan.num_strips; strip += 2)
+        for (std::size_t p = plan.strip_begin[std::size_t(strip)];
+             p < plan.strip_begin[std::size_t(strip) + 1]; ++p) {
+          const double gx = L.accel_x[P.field[p]], gy = L.accel_y[P.field[p]];
+          if (gx == 0.0 && gy == 0.0) continue;
+          const double fx = P.mass[p] * gx, fy = P.mass[p] * gy;
+          for_each_weight(s, p, [&](std::size_t i, double w) {
+            L.ext_fx[i] += w * fx;
+            L.ext_fy[i] += w * fy;
+          });
+        }
+    }
+  }
+  // Tractions: f_p = traction(t) length_p.
+  for (std::size_t k = 0; k < L.patches.size(); ++k) {
+    const TractionLoad& load = L.spec.tractions[k];
+    const TractionPatch& patch = L.patches[k];
+    double tx = load.traction[0], ty = load.traction[1];
+    if (!load.global) {
+      tx = load.normal * patch.normal[0] + load.shear * patch.tangent[0];
+      ty = load.normal * patch.normal[1] + load.shear * patch.tangent[1];
+    }
+    const double f = load.factor(t);
+    tx *= f, ty *= f;
+    for (std::size_t j = 0; j < patch.ids.size(); ++j) {
+      const double len = patch.length[j];
+      for_each_weight(s, L.patch_index[k][j], [&](std::size_t i, double w) {
+        L.ext_fx[i] += w * tx * len;
+        L.ext_fy[i] += w * ty * len;
+      });
+    }
+  }
+  GridFields& G = s.fields;
+  const long n = long(G.force_x.size());
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i) {
+    G.force_x[i] += L.ext_fx[i];
+    G.force_y[i] += L.ext_fy[i];
+  }
+}
+
+void apply_velocity_regions(State& s) {
+  LoadState& L = s.loads;
+  if (L.region_nodes.empty()) return;
+  GridFields& G = s.fields;
+  const double t0 = s.time, t1 = s.time + s.dt;
+  for (const LoadState::RegionNode& e : L.region_nodes) {
+    const double m = G.mass[e.node];
+    if (m <= s.mass_floor) continue;
+    const VelocityRegion& r = L.spec.velocity_regions[std::size_t(e.region)];
+    const double dx = r.direction[0], dy = r.direction[1];
+    const double v0 = r.velocity(t0), v1 = r.velocity(t1);
+    const double jump = v1 - (G.vel_x[e.node] * dx + G.vel_y[e.node] * dy);
+    // Impulse m jump along d, acting at the mean prescribed speed (as apply_velocity_bcs, E14).
+    s.external_work += m * jump * 0.5 * (v0 + v1);
+    G.vel_x[e.node] += jump * dx;
+    G.vel_y[e.node] += jump * dy;
+    G.dvel_x[e.node] += jump * dx;
+    G.dvel_y[e.node] += jump * dy;
+  }
+}
+
+void prescribe_region_velocity(State& s, double* gvx, double* gvy, double t) {
+  LoadState& L = s.loads;
+  for (const LoadState::RegionNode& e : L.region_nodes) {
+    if (s.fields.mass[e.node] <= s.mass_floor) continue;
+    const VelocityRegion& r = L.spec.velocity_regions[std::size_t(e.region)];
+    const double jump = r.velocity(t) - (gvx[e.node] * r.direction[0] + gvy[e.node] * r.direction[1]);
+    gvx[e.node] += jump * r.direction[0];
+    gvy[e.node] += jump * r.direction[1];
+  }
+}
+
+void external_force_work(State& s) {
+  LoadState& L = s.loads;
+  if (!L.has_forces()) return;
+  const GridFields& G = s.fields;
+  double w = 0.0;
+  // Serial: the sum does not depend on the number of threads.
+  for (std::size_t i = 0; i < L.ext_fx.size(); ++i) {
+    if (L.ext_fx[i] == 0.0 && L.ext_fy[i] == 0.0) continue;
+    const double m = G.mass[i];
+    if (m <= s.mass_floor) continue;
+    const double vx0 = G.mom_x[i] / m, vy0 = G.mom_y[i] / m;
+    w += L.ext_fx[i] * (vx0 + G.vel_x[i]) + L.ext_fy[i] * (vy0 + G.vel_y[i]);
+  }
+  s.external_work += 0.5 * s.dt * w;
+}
+
+void set_region_particle_velocity(State& s) {
+  LoadState& L = s.loads;
+  Particles& P = s.particles;
+  const double t1 = s.time + s.dt;
+  for (std::size_t r = 0; r < L.region_index.size(); ++r) {
+    const VelocityRegion& reg = L.spec.velocity_regions[r];
+    const double v1 = reg.velocity(t1), dx = reg.direction[0], dy = reg.direction[1];
+    for (const std::uint32_t p : L.region_index[r]) {
+      const double u = P.vx[p] * dx + P.vy[p] * dy;
+      s.external_work += P.mass[p] * (v1 - u) * 0.5 * (v1 + u);  // its kinetic energy change
+      P.vx[p] += (v1 - u) * dx;
+      P.vy[p] += (v1 - u) * dy;
+    }
+  }
+}
+
+}  // namespace rupture

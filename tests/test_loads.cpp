@@ -1,0 +1,362 @@
+// Tests of [loads] (bc/loads.hpp, solver/load_step.hpp) and the time functions they use
+// (bc/time_function.hpp): physics that a wrong implementation would miss (plane-wave amplitude
+// under a traction, free fall, a driven region), energy balance (SPEC E14) and bad input.
+#include <gtest/gtest.h>
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+
+#include "core/errors.hpp"
+#include "io/case_toml.hpp"
+#include "solver/energy.hpp"
+#include "solver/state.hpp"
+#include "solver/step.hpp"
+#include "support.hpp"
+
+using namespace rupture;
+
+namespace {
+
+// Midpoint-rule integral of f over [0, t] with n steps.
+double integrate(const TimeFunction& f, double t, int n) {
+  double u = 0.0;
+  for (int k = 0; k < n; ++k) u += f((k + 0.5) * t / n) * (t / n);
+  return u;
+}
+
+std::string error_of(const std::string& text) {
+  try {
+    parse_case(text);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+// The strip case with the [boundary] table replaced by `loads` (TOML text).
+std::string strip_with(const std::string& loads) {
+  std::string t = test::strip_case_toml();
+  const auto b = t.find("[boundary.push]"), o = t.find("[output]");
+  return t.substr(0, b) + loads + "\n" + t.substr(o);
+}
+
+double energy_error(const State& s) {
+  const double total = kinetic_energy(s.particles) + strain_energy(s.particles);
+  return std::fabs(s.initial_energy + s.external_work - total) /
+         (s.initial_energy + std::fabs(s.external_work));
+}
+
+void run_to(State& s, double end) {
+  while (s.time < end - 1e-6 * s.dt) {
+    s.dt_cap = end - s.time;
+    step(s);
+  }
+}
+
+}  // namespace
+
+// ---- time functions ----
+
+TEST(TimeFunctionKinds, smooth_ramp_value_and_slope_are_continuous) {
+  TimeFunction f{TimeFunction::Kind::smooth_ramp, 2.0, 1e-6, 0, 0};
+  const double e = 1e-13, tr = 1e-6;
+  for (double t : {0.0, tr}) {
+    EXPECT_NEAR(f(t - e), f(t + e), 1e-6) << "value jumps at t = " << t;
+    const double slope_before = (f(t - e) - f(t - 2 * e)) / e, slope_after = (f(t + 2 * e) - f(t + e)) / e;
+    EXPECT_NEAR(slope_before, 0.0, 1e-3 * 2.0 / tr) << "slope before t = " << t;
+    EXPECT_NEAR(slope_after, 0.0, 1e-3 * 2.0 / tr) << "slope after t = " << t;
+  }
+  EXPECT_NEAR(f(0.5 * tr), 1.0, 1e-15);  // odd about the middle: half the value there
+  EXPECT_EQ(f(2 * tr), 2.0);
+  EXPECT_EQ(f(-1.0), 0.0);
+}
+
+TEST(TimeFunctionKinds, displacement_equals_the_numerical_integral_for_every_kind) {
+  TimeFunction table;
+  table.set_table({0.2e-6, 1e-6, 1.5e-6, 3e-6}, {0.5, 3.0, -1.0, 2.0}, 1.5);
+  const TimeFunction kinds[] = {
+      {TimeFunction::Kind::constant, -2.0, 0, 0, 0},
+      {TimeFunction::Kind::trapezoid, 30.0, 0.3e-6, 1e-6, 0.7e-6},
+      {TimeFunction::Kind::smooth_ramp, 7.0, 1.3e-6, 0, 0},
+      table};
+  for (const TimeFunction& f : kinds)
+    for (double t : {0.1e-6, 0.77e-6, 1.3e-6, 2.2e-6, 4e-6}) {
+      const double exact = f.displacement(t), numeric = integrate(f, t, 400000);
+      EXPECT_NEAR(exact, numeric, 1e-9 * std::fabs(numeric))
+          << "kind " << int(f.kind) << " at t = " << t;
+    }
+}
+
+TEST(TimeFunctionKinds, table_through_the_trapezoid_corners_reproduces_it) {
+  const TimeFunction trap{TimeFunction::Kind::trapezoid, 30.0, 0.1e-6, 15e-6, 1e-6};
+  TimeFunction table;
+  table.set_table({0.0, 0.1e-6, 15.1e-6, 16.1e-6}, {0.0, 30.0, 30.0, 0.0});
+  for (int k = 0; k <= 2000; ++k) {
+    const double t = 18e-6 * k / 2000.0 + 1.234e-9;
+    EXPECT_NEAR(table(t), trap(t), 1e-12 * 30.0) << "t = " << t;
+    EXPECT_NEAR(table.displacement(t), trap.displacement(t), 1e-12 * 30.0 * 16.1e-6) << "t = " << t;
+  }
+}
+
+TEST(TimeFunctionKinds, non_monotone_table_is_rejected_naming_key_and_row) {
+  const std::string e = error_of(strip_with(R"([boundary.push]
+edge = "left"
+component = "x"
+function = "table"
+table = [[0.0, 0.0], [1e-6, 1.0], [0.5e-6, 2.0]]
+)"));
+  EXPECT_NE(e.find("boundary.push.table"), std::string::npos) << e;
+  EXPECT_NE(e.find("row 3"), std::string::npos) << e;
+  EXPECT_NE(e.find("t = 5e-07 s after t = 1e-06 s"), std::string::npos) << e;
+}
+
+TEST(TimeFunctionKinds, table_file_is_read_relative_to_the_case_and_echoed_inline) {
+  const auto dir = std::filesystem::temp_directory_path() / "rupture_test_table_file";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "v.csv") << "time,velocity\n0, 0\n1e-6, 2.0\n# comment\n2e-6, 2.0\n";
+  std::ofstream(dir / "case.toml") << strip_with(R"([boundary.push]
+edge = "left"
+component = "x"
+function = "table"
+table_file = "v.csv"
+)");
+  const Case c = load_case((dir / "case.toml").string());
+  const TimeFunction& f = c.boundary[0].velocity;
+  EXPECT_EQ(f.kind, TimeFunction::Kind::table);
+  EXPECT_EQ(f(0.5e-6), 1.0);
+  EXPECT_EQ(f(5e-6), 2.0);
+  EXPECT_EQ(c.input_toml.find("table_file"), std::string::npos) << c.input_toml;
+  EXPECT_NE(c.input_toml.find("table = "), std::string::npos) << c.input_toml;
+  std::ofstream(dir / "v.csv") << "0, 0\n1e-6, 2.0\n1e-6, 3.0\n";
+  try {
+    load_case((dir / "case.toml").string());
+    ADD_FAILURE() << "a repeated time was accepted";
+  } catch (const InputError& err) {
+    const std::string m = err.what();
+    EXPECT_NE(m.find("boundary.push.table_file"), std::string::npos) << m;
+    EXPECT_NE(m.find("line 3"), std::string::npos) << m;
+  }
+}
+
+// ---- traction ----
+
+namespace {
+
+// A Homalite strip, long along `axis` (0: x, 1: y), rollers on its long sides, loaded on its
+// edge at coordinate 0 by a step traction given by `traction` (TOML keys).
+Case traction_strip(int axis, const std::string& traction, double length, double width, double h,
+                    double end) {
+  const double L[2] = {axis == 0 ? length : width, axis == 0 ? width : length};
+  const std::string from = axis == 0 ? "[0.0, 0.0]" : fmt::format("[{}, 0.0]", L[0]);
+  const std::string to = axis == 0 ? fmt::format("[0.0, {}]", L[1]) : "[0.0, 0.0]";
+  const std::string e1 = axis == 0 ? "bottom" : "left", e2 = axis == 0 ? "top" : "right";
+  const std::string roller = axis == 0 ? "y" : "x";
+  return parse_case(fmt::format(R"({0}
+[grid]
+min = [0.0, 0.0]
+max = [{1}, {2}]
+cell_size = {3}
+[bodies.strip]
+material = "homalite"
+min = [0.0, 0.0]
+max = [{1}, {2}]
+[time]
+end = {4}
+[boundary.a]
+edge = "{5}"
+component = "{7}"
+velocity = 0.0
+[boundary.b]
+edge = "{6}"
+component = "{7}"
+velocity = 0.0
+[loads.push]
+type = "traction"
+from = {8}
+to = {9}
+{10}
+)",
+                                test::kHomaliteToml, L[0], L[1], h, end, e1, e2, roller, from, to,
+                                traction));
+}
+
+// Mean velocity component and stress of the particles with coordinate along `axis` in [a, b].
+void mean_behind(const Particles& P, int axis, double a, double b, double& v, double& sigma) {
+  v = sigma = 0.0;
+  int n = 0;
+  for (std::size_t p = 0; p < P.size(); ++p) {
+    const double x = axis == 0 ? P.x[p] : P.y[p];
+    if (x < a || x > b) continue;
+    v += axis == 0 ? P.vx[p] : P.vy[p];
+    sigma += axis == 0 ? P.sxx[p] : P.syy[p];
+    ++n;
+  }
+  v /= n, sigma /= n;
+}
+
+}  // namespace
+
+TEST(Traction, step_traction_launches_plane_wave_with_v_sigma_over_rho_cD_on_any_edge) {
+  const double sigma = 2e6, rho = 1246.0, E = 5.2e9, nu = 0.34;
+  const double cD = std::sqrt(E * (1 - nu) / ((1 + nu) * (1 - 2 * nu) * rho));
+  const double v_expected = sigma / (rho * cD);
+  const double length = 0.04, width = 0.002, h = 0.5e-3, end = 10e-6;  // front at 25 mm
+  // Left edge: global traction pushing into the body (+x); bottom edge of a strip along y: the
+  // same load given as a normal compression (outward normal -y).
+  const Case cx = traction_strip(0, fmt::format("traction = [{}, 0.0]", sigma), length, width, h, end);
+  const Case cy = traction_strip(1, fmt::format("normal = {}", -sigma), length, width, h, end);
+  double vs[2], ss[2];
+  for (int axis = 0; axis < 2; ++axis) {
+    State s = make_state(axis == 0 ? cx : cy);
+    const TractionPatch& patch = s.loads.patches[0];
+    double sum = 0.0;
+    for (double l : patch.length) sum += l;
+    EXPECT_NEAR(sum, width, 1e-12 * width) << "shares must sum to the segment length";
+    EXPECT_EQ(patch.ids.size(), std::size_t(2 * width / h)) << "one row of surface particles";
+    EXPECT_NEAR(patch.normal[axis], -1.0, 1e-15) << "outward normal";
+    run_to(s, end);
+    mean_behind(s.particles, axis, 0.2 * cD * end, 0.8 * cD * end, vs[axis], ss[axis]);
+    EXPECT_NEAR(vs[axis], v_expected, 0.02 * v_expected) << "axis " << axis;
+    EXPECT_NEAR(ss[axis], -sigma, 0.02 * sigma) << "axis " << axis;
+    const double err = energy_error(s);
+    EXPECT_LT(err, 0.01) << "external work " << s.external_work << " J/m vs kinetic + strain";
+    RecordProperty(fmt::format("axis{}_v_rel_error", axis), fmt::format("{:.3e}", vs[axis] / v_expected - 1));
+    RecordProperty(fmt::format("axis{}_energy_error", axis), fmt::format("{:.3e}", err));
+    std::printf("axis %d: v = %.6g m/s (expected %.6g, %.3f %%), stress = %.6g Pa, energy error %.3e\n",
+                axis, vs[axis], v_expected, 100 * (vs[axis] / v_expected - 1), ss[axis], err);
+  }
+  EXPECT_NEAR(vs[0], vs[1], 1e-9 * v_expected) << "the rotated load must give the rotated answer";
+}
+
+// ---- body force ----
+
+TEST(BodyForce, free_block_falls_with_g_and_the_energy_balance_closes) {
+  const std::string text = strip_with(R"([loads.gravity]
+type = "body_force"
+acceleration = [300.0, -9810.0]
+)");
+  State s = make_state(parse_case(text));
+  run_to(s, 2e-6);
+  const Particles& P = s.particles;
+  double m = 0, px = 0, py = 0;
+  for (std::size_t p = 0; p < P.size(); ++p) m += P.mass[p], px += P.mass[p] * P.vx[p], py += P.mass[p] * P.vy[p];
+  EXPECT_NEAR(px / m, 300.0 * s.time, 1e-10 * 300.0 * s.time);
+  EXPECT_NEAR(py / m, -9810.0 * s.time, 1e-10 * 9810.0 * s.time);
+  const double err = energy_error(s);
+  EXPECT_LT(err, 1e-6) << "energy balance";
+  std::printf("v_com = (%.10g, %.10g) m/s at t = %g s; energy error %.3e\n", px / m, py / m, s.time, err);
+}
+
+// ---- velocity region ----
+
+TEST(VelocityRegion, region_moves_at_the_prescribed_speed_along_d_and_is_free_across) {
+  const std::string text = [] {
+    std::string t = strip_with(R"([loads.piston]
+type = "velocity"
+min = [0.0, 0.0]
+max = [0.002, 0.002]
+direction = [2.0, 0.0]
+velocity = 3.0
+function = "smooth_ramp"
+rise_time = 0.5e-6
+)");
+    // A perpendicular initial velocity that must be kept.
+    const std::string body_end = "max = [0.01, 0.002]\n[time]";
+    t.replace(t.find(body_end), body_end.size(), "max = [0.01, 0.002]\nvelocity = [0.0, 0.7]\n[time]");
+    return t;
+  }();
+  const Case c = parse_case(text);
+  State s = make_state(c);
+  std::vector<double> x0(s.particles.size());
+  for (std::size_t p = 0; p < s.particles.size(); ++p) x0[s.particles.id[p]] = s.particles.x[p];
+  const VelocityRegion& r = c.loads.velocity_regions[0];
+  // Particles move with the end-of-step grid velocity: the region by dt V(t^{n+1}) each step.
+  double moved = 0.0;
+  while (s.time < 2e-6) {
+    step(s);
+    moved += s.dt * r.velocity(s.time);
+  }
+  const Particles& P = s.particles;
+  double vx = 0, vy = 0, dx = 0;
+  int n = 0;
+  for (std::size_t p = 0; p < P.size(); ++p) {
+    if (x0[P.id[p]] > 0.002) continue;
+    vx += P.vx[p], vy += P.vy[p], dx += P.x[p] - x0[P.id[p]], ++n;
+  }
+  vx /= n, vy /= n, dx /= n;
+  EXPECT_EQ(n, 4 * 4 * 4);
+  EXPECT_NEAR(vx, 3.0, 1e-12) << "speed along d";
+  EXPECT_NEAR(vy, 0.7, 1e-3 * 0.7) << "the perpendicular component is free and keeps its value";
+  EXPECT_NEAR(dx, moved, 1e-9 * moved) << "displacement along d, step by step";
+  EXPECT_NEAR(dx, r.displacement(s.time), 0.05 * moved) << "displacement along d, exact (O(dt))";
+  const double err = energy_error(s);
+  EXPECT_LT(err, 0.01) << "energy balance";
+  std::printf("region: v = (%.10g, %.8g) m/s, displacement %.6g m (steps %.6g, exact %.6g), energy "
+              "error %.3e\n",
+              vx, vy, dx, moved, r.displacement(s.time), err);
+}
+
+// ---- bad input ----
+
+TEST(LoadsInput, each_key_out_of_range_names_key_value_and_range) {
+  struct Bad {
+    std::string load;
+    std::vector<std::string> expected;
+  };
+  const std::string trac = "[loads.t]\ntype = \"traction\"\n";
+  const std::string reg = "[loads.r]\ntype = \"velocity\"\n";
+  const Bad cases[] = {
+      {"[loads.t]\ntype = \"pressure\"\n", {"loads.t.type", "\"pressure\"", "traction"}},
+      {trac + "from = [0.0, 0.0]\nto = [0.0, 0.5]\ntraction = [1.0, 0.0]\n",
+       {"loads.t.to", "[0, 0.5]", "grid domain"}},
+      {trac + "from = [0.0, 0.0]\nto = [0.0, 0.0]\ntraction = [1.0, 0.0]\n",
+       {"loads.t.to", "must differ from loads.t.from"}},
+      {trac + "from = [0.0, 0.0]\nto = [0.0, 0.002]\ntraction = [1.0, 0.0]\nnormal = 1.0\n",
+       {"loads.t.traction", "not both"}},
+      {trac + "from = [0.0, 0.0]\nto = [0.0, 0.002]\n", {"loads.t.traction", "(missing)"}},
+      {trac + "from = [0.0, 0.0]\nto = [0.0, 0.002]\nnormal = 1.0\nfunction = \"smooth_ramp\"\nrise_time = -1.0\n",
+       {"loads.t.rise_time", "-1", "> 0"}},
+      {trac + "from = [0.0, 0.0]\nto = [0.0, 0.002]\nnormal = 1.0\nfunction = \"table\"\n",
+       {"loads.t.table", "exactly one of"}},
+      {trac + "from = [0.0, 0.0]\nto = [0.0, 0.002]\nnormal = 1.0\ntable = [[0.0, 1.0], [1.0, 1.0]]\n",
+       {"loads.t.table", "only allowed with function = \"table\""}},
+      {trac + "from = [0.0, 0.0]\nto = [0.0, 0.002]\nnormal = 1.0\nacceleration = [0.0, 1.0]\n",
+       {"loads.t.acceleration", "unknown key"}},
+      {"[loads.g]\ntype = \"body_force\"\nacceleration = [0.0, 1.0]\nbodies = [\"nope\"]\n",
+       {"loads.g.bodies", "\"nope\"", "strip"}},
+      {"[loads.g]\ntype = \"body_force\"\n", {"loads.g.acceleration", "(missing)"}},
+      {reg + "min = [0.0, 0.0]\nmax = [0.002, 0.002]\ndirection = [0.0, 0.0]\nvelocity = 1.0\n",
+       {"loads.r.direction", "[0, 0]", "nonzero"}},
+      {reg + "min = [0.003, 0.0]\nmax = [0.002, 0.002]\ndirection = [1.0, 0.0]\nvelocity = 1.0\n",
+       {"loads.r.max", "[0.002, 0.002]", "must exceed loads.r.min"}},
+      {reg + "min = [0.0, 0.0]\nmax = [0.002, 0.02]\ndirection = [1.0, 0.0]\nvelocity = 1.0\n",
+       {"loads.r.max", "grid domain"}},
+      {reg + "min = [0.0, 0.0]\nmax = [0.002, 0.002]\ndirection = [1.0, 0.0]\n",
+       {"loads.r.velocity", "(missing)"}},
+  };
+  for (const Bad& b : cases) {
+    const std::string e = error_of(strip_with(b.load));
+    for (const std::string& x : b.expected) EXPECT_NE(e.find(x), std::string::npos) << b.load << "\n-> " << e;
+  }
+  // Checked against the particles at set-up: a segment inside the material, one off it, an
+  // empty region.
+  auto setup_error = [](const std::string& load) -> std::string {
+    try {
+      make_state(parse_case(strip_with(load)));
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "no error";
+  };
+  EXPECT_NE(setup_error(trac + "from = [0.005, 0.0]\nto = [0.005, 0.002]\nnormal = 1.0\n").find("both sides"),
+            std::string::npos);
+  EXPECT_NE(setup_error(trac + "from = [0.0, 0.0]\nto = [0.01, 0.0]\nnormal = 1.0\n").find("no error"),
+            std::string::npos) << "the bottom edge is a surface";
+  EXPECT_NE(setup_error(reg + "min = [0.0, 0.0]\nmax = [0.0001, 0.0001]\ndirection = [1.0, 0.0]\nvelocity = 1.0\n")
+                .find("holds no particle"),
+            std::string::npos);
+}
