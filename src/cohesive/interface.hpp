@@ -16,7 +16,8 @@
 namespace rupture {
 
 struct InterfaceSpec {
-  int upper_field = 0, lower_field = 1;
+  int upper_field = 0, lower_field = 1;  // the velocity fields of the two faces
+  int upper_body = 0, lower_body = 1;    // the bodies named (Case::bodies): materials, messages
   double y = 0.0;                   // m
   double start = 0.0, end = 0.0;    // m
   int segments = 1;

@@ -2,6 +2,7 @@
 // The [boundary] table: prescribed velocities on domain edges (SPEC E2).
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "io/case_parse.hpp"
@@ -46,7 +47,10 @@ void parse_boundary(Section& top, Case& c, ParseContext& ctx) {
         for (const auto& bb : c.bodies) names.push_back(bb.name);
         fail(b.key("bodies"), "\"" + body + "\"", "must name bodies among " + Section::join(names));
       }
-      bc.fields.push_back(body_index[body]);
+      // Conditions act on velocity fields: a body's field (once, if bodies share one).
+      const int field = c.bodies[std::size_t(body_index[body])].field;
+      if (std::find(bc.fields.begin(), bc.fields.end(), field) == bc.fields.end())
+        bc.fields.push_back(field);
     }
     const std::string fn = b.string("function", "constant", {"constant", "trapezoid"});
     bc.velocity.value = b.number("velocity");
