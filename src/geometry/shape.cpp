@@ -19,7 +19,9 @@ bool on_segment(const Point& a, const Point& b, const Point& c) {
          c.y <= std::max(a.y, b.y);
 }
 
-int sign(double v) { return (v > 0.0) - (v < 0.0); }
+int sign(double v) {
+  return (v > 0.0) - (v < 0.0);
+}
 
 // Closed segments p1-p2 and q1-q2 share a point (crossing or touching).
 bool segments_meet(const Point& p1, const Point& p2, const Point& q1, const Point& q2) {
@@ -111,7 +113,9 @@ Box bounding_box(const Shape& s) {
   return b;
 }
 
-Box bounding_box(const Region& r) { return bounding_box(r.outer); }
+Box bounding_box(const Region& r) {
+  return bounding_box(r.outer);
+}
 
 bool boxes_overlap(const Box& a, const Box& b, double gap) {
   return a.min[0] < b.max[0] + gap && b.min[0] < a.max[0] + gap && a.min[1] < b.max[1] + gap &&
@@ -148,9 +152,9 @@ std::optional<std::pair<int, int>> polygon_self_intersection(const std::vector<P
       if (next || wrap) {
         // Adjacent edges share one vertex: they meet elsewhere only by folding back over each
         // other (collinear, pointing the same way from the shared vertex).
-        const Point& s = next ? a1 : a0;                // the shared vertex
-        const Point& p = next ? a0 : a1;                // the other end of edge i
-        const Point& q = next ? b1 : b0;                // the other end of edge j
+        const Point& s = next ? a1 : a0;  // the shared vertex
+        const Point& p = next ? a0 : a1;  // the other end of edge i
+        const Point& q = next ? b1 : b0;  // the other end of edge j
         if (orient(p, s, q) == 0.0 && (p.x - s.x) * (q.x - s.x) + (p.y - s.y) * (q.y - s.y) > 0.0)
           return std::make_pair(i, j);
         continue;

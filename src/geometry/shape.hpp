@@ -24,11 +24,11 @@ enum class ShapeKind { rectangle, polygon, circle, ellipse };
 
 struct Shape {
   ShapeKind kind = ShapeKind::rectangle;
-  double min[2]{}, max[2]{};     // rectangle: corners, m
-  std::vector<Point> vertices;   // polygon: a simple closed polygon, either orientation, m
-  double center[2]{};            // circle, ellipse: m
-  double radii[2]{};             // circle: {r, r}; ellipse: semi-axes {a, b}, m
-  double angle = 0.0;            // ellipse: rotation of the a-axis from +x, rad
+  double min[2]{}, max[2]{};    // rectangle: corners, m
+  std::vector<Point> vertices;  // polygon: a simple closed polygon, either orientation, m
+  double center[2]{};           // circle, ellipse: m
+  double radii[2]{};            // circle: {r, r}; ellipse: semi-axes {a, b}, m
+  double angle = 0.0;           // ellipse: rotation of the a-axis from +x, rad
 };
 
 // One outer shape with cut-outs (holes, notches): a point is in the region when it is in the
@@ -44,7 +44,7 @@ bool contains(const Shape& s, double x, double y);
 bool contains(const Region& r, double x, double y);
 
 Box bounding_box(const Shape& s);
-Box bounding_box(const Region& r);  // the outer shape's box
+Box bounding_box(const Region& r);                                 // the outer shape's box
 bool boxes_overlap(const Box& a, const Box& b, double gap = 0.0);  // closer than `gap`
 
 // The enclosed area with a sign: > 0 counter-clockwise, < 0 clockwise (shoelace), m^2.

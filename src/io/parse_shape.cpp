@@ -27,7 +27,9 @@ std::vector<std::string> keys_of(ShapeKind k) {
   return {};
 }
 
-std::string point(const Point& p) { return fmt::format("({:g}, {:g})", p.x, p.y); }
+std::string point(const Point& p) {
+  return fmt::format("({:g}, {:g})", p.x, p.y);
+}
 
 std::vector<Point> parse_vertices(Section& s) {
   const std::string key = s.key("vertices");
@@ -98,8 +100,7 @@ Shape parse_shape(Section& s, const char* what) {
         if (!(shape.max[d] > shape.min[d]))
           fail(s.key("max"), fmt::format("[{:g}, {:g}]", shape.max[0], shape.max[1]),
                fmt::format("the {} is empty: must exceed {} = [{:g}, {:g}] in both components",
-                           what, s.key("min"),
-                           shape.min[0], shape.min[1]));
+                           what, s.key("min"), shape.min[0], shape.min[1]));
       break;
     case ShapeKind::polygon:
       shape.vertices = parse_vertices(s);

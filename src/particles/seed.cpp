@@ -17,7 +17,8 @@ Line uniform_line(const Axis& a, double domain_min, double lo, double hi, int pp
   // Start on the box edge when it is a grid line (exactly as seed_rectangle counts), else on the
   // grid line below it.
   const double cells_below = (lo - domain_min) / h;
-  const double start = std::fabs(cells_below - std::round(cells_below)) <= tol * std::max(1.0, std::fabs(cells_below))
+  const double start = std::fabs(cells_below - std::round(cells_below)) <=
+                               tol * std::max(1.0, std::fabs(cells_below))
                            ? lo
                            : domain_min + std::floor(cells_below) * h;
   const long cells = std::max(0L, long(std::ceil((hi - start) / h - tol)));
