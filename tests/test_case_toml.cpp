@@ -2,10 +2,13 @@
 // key, the value and the allowed range.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 
 #include "core/errors.hpp"
 #include "io/case_toml.hpp"
+#include "solver/state.hpp"
+#include "solver/summary.hpp"
 #include "support.hpp"
 
 using namespace rupture;
@@ -215,4 +218,226 @@ TEST(CaseToml, a_run_of_more_than_ten_million_steps_is_warned_about) {
   ASSERT_EQ(c.warnings.size(), 1u);
   EXPECT_TRUE(any_warning_has(c, "12672353 time steps")) << c.warnings[0];
   EXPECT_TRUE(any_warning_has(c, "more than 1e7")) << c.warnings[0];
+}
+
+// --- Shapes, cut-outs, initial stress and velocity fields (docs/geometry.md) ---------------
+
+namespace {
+
+// The strip case with `bodies` (TOML) in place of its one body, and `extra` tables appended.
+std::string with_bodies(const std::string& bodies, const std::string& extra = "") {
+  return replace(test::strip_case_toml(),
+                 "[bodies.strip]\nmaterial = \"homalite\"\nmin = [0.0, 0.0]\nmax = [0.01, 0.002]\n", bodies) +
+         extra;
+}
+
+// A plate with a circular hole (r = 0.5 mm) and a notch, a triangle sharing its field, and an
+// ellipse of its own field.
+const char* kShapes = R"(
+[bodies.plate]
+material = "homalite"
+min = [0.0, 0.0]
+max = [0.006, 0.002]
+stress = [1e6, -2e6, 3e5]
+field = "solid"
+[[bodies.plate.minus]]
+shape = "circle"
+center = [0.003, 0.001]
+radius = 0.0005
+[[bodies.plate.minus]]
+min = [0.0, 0.00085]
+max = [0.001, 0.00115]
+[bodies.wedge]
+material = "homalite"
+shape = "polygon"
+vertices = [[0.006, 0.0], [0.01, 0.0], [0.006, 0.002]]
+field = "solid"
+[bodies.disc]
+material = "homalite"
+shape = "ellipse"
+center = [0.0085, 0.0015]
+radii = [0.001, 0.0004]
+angle = 10
+)";
+
+}  // namespace
+
+TEST(CaseToml, shapes_cut_outs_stress_and_fields_parse) {
+  const Case c = parse_case(with_bodies(kShapes));
+  ASSERT_EQ(c.bodies.size(), 3u);
+  ASSERT_EQ(c.field_names, (std::vector<std::string>{"solid", "disc"}));  // order of first appearance
+  EXPECT_EQ(c.bodies[0].field, 0);
+  EXPECT_EQ(c.bodies[1].field, 0);
+  EXPECT_EQ(c.bodies[2].field, 1);
+  const BodySpec& plate = c.bodies[0];
+  EXPECT_EQ(plate.region.outer.kind, ShapeKind::rectangle);
+  ASSERT_EQ(plate.region.minus.size(), 2u);
+  EXPECT_EQ(plate.region.minus[0].kind, ShapeKind::circle);
+  EXPECT_EQ(plate.region.minus[1].kind, ShapeKind::rectangle);
+  EXPECT_FALSE(plate.plain_rectangle());
+  EXPECT_DOUBLE_EQ(plate.stress[0], 1e6);
+  EXPECT_DOUBLE_EQ(plate.stress[1], -2e6);
+  EXPECT_DOUBLE_EQ(plate.stress[2], 3e5);
+  EXPECT_EQ(c.bodies[1].region.outer.vertices.size(), 3u);
+  EXPECT_DOUBLE_EQ(c.bodies[1].min[0], 0.006);  // the bounding box
+  EXPECT_DOUBLE_EQ(c.bodies[1].max[1], 0.002);
+  EXPECT_NEAR(c.bodies[2].region.outer.angle, 10 * 3.14159265358979 / 180, 1e-12);
+  // The plate and the wedge are one continuum; the ellipse, another field, grazes the wedge.
+  ASSERT_EQ(c.warnings.size(), 1u);
+  EXPECT_NE(c.warnings[0].find("bodies.wedge and bodies.disc touch near ("), std::string::npos) << c.warnings[0];
+  // The state has one grid field per velocity field, and particles say which.
+  const State s = make_state(c);
+  EXPECT_EQ(s.fields.num_fields, 2);
+  const CaseSummary sum = summarize(c);
+  EXPECT_EQ(long(s.particles.size()), sum.particles) << "summary and seeding disagree";
+  long in_hole = 0, in_notch = 0, disc = 0;
+  for (std::size_t p = 0; p < s.particles.size(); ++p) {
+    const double x = s.particles.x[p], y = s.particles.y[p];
+    in_hole += std::hypot(x - 0.003, y - 0.001) < 0.0005;
+    in_notch += x < 0.001 && y > 0.00085 && y < 0.00115;
+    disc += s.particles.field[p] == 1;
+  }
+  EXPECT_EQ(in_hole, 0);
+  EXPECT_EQ(in_notch, 0);
+  EXPECT_EQ(disc, sum.particles_per_body[2]);
+  // The plate: 24 x 8 sub-cells minus 12 in the hole (r = 2 sub-cells: the 12 centres within
+  // 0.5 mm of a sub-cell corner) and 2 rows x 4 in the notch.
+  EXPECT_EQ(sum.particles_per_body[0], 24 * 8 - 12 - 8);
+}
+
+TEST(CaseToml, bodies_sharing_a_field_map_to_it_in_boundaries_and_interfaces) {
+  const std::string halves = R"(
+[bodies.lower]
+material = "homalite"
+min = [0.0, 0.0]
+max = [0.01, 0.001]
+field = "plate"
+[bodies.upper]
+material = "homalite"
+min = [0.0, 0.001]
+max = [0.01, 0.002]
+field = "plate"
+)";
+  const Case c = parse_case(with_bodies(halves), {"boundary.push.bodies=[\"upper\", \"lower\"]"});
+  EXPECT_EQ(c.field_names, (std::vector<std::string>{"plate"}));
+  ASSERT_EQ(c.boundary[0].fields, (std::vector<int>{0}));  // one field, named twice
+  EXPECT_TRUE(c.warnings.empty()) << "one continuum touching itself: " << c.warnings.front();
+  const std::string weak = R"(
+[interface.weak]
+upper_body = "upper"
+lower_body = "lower"
+y = 0.001
+start = 0.002
+end = 0.008
+segments = 12
+sigma_max = 24e6
+delta_n = 0.4e-6
+)";
+  const std::string e = error_of(with_bodies(halves, weak));
+  for (const char* s : {"interface.weak.lower_body", "\"lower\"", "bodies.upper and bodies.lower",
+                        "share the velocity field \"plate\"", "two different fields"})
+    EXPECT_NE(e.find(s), std::string::npos) << "missing '" << s << "' in: " << e;
+  // Own fields (the default): the interface joins them.
+  std::string own = with_bodies(halves, weak);
+  while (own.find("field = \"plate\"\n") != std::string::npos) own = replace(own, "field = \"plate\"\n", "");
+  const Case joined = parse_case(own);
+  ASSERT_EQ(joined.interfaces.size(), 1u);
+  EXPECT_EQ(joined.interfaces[0].upper_field, 1);
+  EXPECT_EQ(joined.interfaces[0].lower_field, 0);
+  EXPECT_EQ(joined.interfaces[0].upper_body, 1);
+  EXPECT_TRUE(joined.warnings.empty()) << joined.warnings.front();
+}
+
+TEST(CaseToml, touching_shapes_of_different_fields_are_warned_about) {
+  // An inclusion filling a plate's hole: touching all around, another field, no interface.
+  const std::string inclusion = R"(
+[bodies.plate]
+material = "homalite"
+min = [0.0, 0.0]
+max = [0.01, 0.002]
+[[bodies.plate.minus]]
+shape = "circle"
+center = [0.005, 0.001]
+radius = 0.0007
+[bodies.inclusion]
+material = "homalite"
+shape = "circle"
+center = [0.005, 0.001]
+radius = 0.0007
+)";
+  const Case c = parse_case(with_bodies(inclusion));
+  ASSERT_EQ(c.warnings.size(), 1u);
+  for (const char* s : {"bodies.plate and bodies.inclusion touch near (", "no [interface] joins them",
+                        "pass through each other", "same bodies.NAME.field"})
+    EXPECT_NE(c.warnings[0].find(s), std::string::npos) << "missing '" << s << "' in: " << c.warnings[0];
+  // One field: one continuum, nothing to say. Apart: nothing either.
+  EXPECT_TRUE(parse_case(with_bodies(inclusion), {"bodies.inclusion.field=plate"}).warnings.empty());
+  EXPECT_TRUE(parse_case(with_bodies(inclusion), {"bodies.inclusion.radius=0.0004"}).warnings.empty());
+  // Larger than the hole: they overlap.
+  const std::string e = error_of(with_bodies(inclusion), {"bodies.inclusion.radius=0.0009"});
+  EXPECT_NE(e.find("'bodies.inclusion'"), std::string::npos) << e;
+  EXPECT_NE(e.find("overlaps bodies.plate"), std::string::npos) << e;
+}
+
+TEST(CaseToml, every_bad_shape_is_reported_with_key_value_and_rule) {
+  struct BadBody {
+    const char* name;
+    std::string body;                 // the [bodies.strip] table's keys after material
+    std::vector<std::string> expect;  // substrings the message must contain
+  };
+  const std::vector<BadBody> cases = {
+      {"bow-tie polygon", "shape = \"polygon\"\nvertices = [[0.0, 0.0], [0.004, 0.002], [0.004, 0.0], [0.0, 0.002]]",
+       {"bodies.strip.vertices", "intersects itself", "edge 0 from (0, 0) to (0.004, 0.002)",
+        "edge 2 from (0.004, 0) to (0, 0.002)"}},
+      {"repeated vertex", "shape = \"polygon\"\nvertices = [[0.0, 0.0], [0.004, 0.0], [0.004, 0.002], [0.0, 0.0]]",
+       {"bodies.strip.vertices", "vertices 0 and 3 are the same point (0, 0)"}},
+      {"collinear polygon", "shape = \"polygon\"\nvertices = [[0.0, 0.0], [0.002, 0.001], [0.004, 0.002]]",
+       {"bodies.strip.vertices", "no area"}},
+      {"two vertices", "shape = \"polygon\"\nvertices = [[0.0, 0.0], [0.002, 0.001]]",
+       {"bodies.strip.vertices", "at least 3 points"}},
+      {"bad vertex", "shape = \"polygon\"\nvertices = [[0.0, 0.0], [0.002], [0.004, 0.002]]",
+       {"bodies.strip.vertices", "vertex 1 is [ 0.002 ]", "two finite numbers"}},
+      {"zero radius", "shape = \"circle\"\ncenter = [0.005, 0.001]\nradius = 0.0", {"bodies.strip.radius", "= 0:", "> 0"}},
+      {"negative radius", "shape = \"circle\"\ncenter = [0.005, 0.001]\nradius = -0.001",
+       {"bodies.strip.radius", "-0.001", "> 0"}},
+      {"missing center", "shape = \"circle\"\nradius = 0.001", {"bodies.strip.center", "(missing)"}},
+      {"ellipse radius zero", "shape = \"ellipse\"\ncenter = [0.005, 0.001]\nradii = [0.002, 0.0]",
+       {"bodies.strip.radii", "[0.002, 0]", "both semi-axes"}},
+      {"ellipse radii missing", "shape = \"ellipse\"\ncenter = [0.005, 0.001]", {"bodies.strip.radii", "(missing)"}},
+      {"key of another shape", "shape = \"circle\"\ncenter = [0.005, 0.001]\nradius = 0.0005\nradii = [1.0, 1.0]",
+       {"bodies.strip.radii", "not a key of shape = \"circle\"", "\"center\", \"radius\"", "ellipse"}},
+      {"rectangle keys on a polygon", "shape = \"polygon\"\nvertices = [[0.0, 0.0], [0.004, 0.0], [0.0, 0.002]]\nmin = [0.0, 0.0]",
+       {"bodies.strip.min", "not a key of shape = \"polygon\""}},
+      {"unknown shape", "shape = \"square\"\nmin = [0.0, 0.0]\nmax = [0.01, 0.002]",
+       {"bodies.strip.shape", "\"square\"", "\"polygon\""}},
+      {"circle off the grid", "shape = \"circle\"\ncenter = [0.0095, 0.001]\nradius = 0.0008",
+       {"bodies.strip.center", "circle spanning [0.0087, 0.0002]..[0.0103, 0.0018]", "inside the grid"}},
+      {"no particle", "shape = \"circle\"\ncenter = [0.001, 0.001]\nradius = 0.00001",
+       {"'bodies.strip' = \"strip\"", "holds no particle"}},
+      {"hole outside the body",
+       "min = [0.0, 0.0]\nmax = [0.005, 0.002]\n[[bodies.strip.minus]]\nshape = \"circle\"\ncenter = [0.008, 0.001]\nradius = 0.0005",
+       {"bodies.strip.minus[0].shape", "\"circle\" spanning", "outside the body", "[0, 0]..[0.005, 0.002]"}},
+      {"hole between particles",
+       "min = [0.0, 0.0]\nmax = [0.01, 0.002]\n[[bodies.strip.minus]]\nshape = \"circle\"\ncenter = [0.005, 0.001]\nradius = 0.00005",
+       {"bodies.strip.minus[0]", "removes no particle"}},
+      {"notch thinner than a particle row",
+       "min = [0.0, 0.0]\nmax = [0.01, 0.002]\n[[bodies.strip.minus]]\nmin = [0.0, 0.0009]\nmax = [0.002, 0.0011]",
+       {"bodies.strip.minus[0]", "\"rectangle\" spanning [0, 0.0009]..[0.002, 0.0011]", "removes no particle"}},
+      {"empty cut-out", "min = [0.0, 0.0]\nmax = [0.01, 0.002]\n[[bodies.strip.minus]]\nmin = [0.001, 0.001]\nmax = [0.001, 0.002]",
+       {"bodies.strip.minus[0].max", "the cut-out is empty"}},
+      {"minus not tables", "min = [0.0, 0.0]\nmax = [0.01, 0.002]\nminus = 1", {"bodies.strip.minus", "array of tables"}},
+      {"unknown key in a cut-out",
+       "min = [0.0, 0.0]\nmax = [0.01, 0.002]\n[[bodies.strip.minus]]\nshape = \"circle\"\ncentre = [0.005, 0.001]\nradius = 0.0005",
+       {"bodies.strip.minus[0].centre", "unknown key", "did you mean 'bodies.strip.minus[0].center'"}},
+      {"stress of two numbers", "min = [0.0, 0.0]\nmax = [0.01, 0.002]\nstress = [1e6, 2e6]",
+       {"bodies.strip.stress", "three finite numbers [sxx, syy, sxy] (Pa)"}},
+      {"empty field name", "min = [0.0, 0.0]\nmax = [0.01, 0.002]\nfield = \"\"", {"bodies.strip.field", "velocity field"}},
+      {"field not a string", "min = [0.0, 0.0]\nmax = [0.01, 0.002]\nfield = 3", {"bodies.strip.field", "must be a string"}},
+  };
+  for (const BadBody& b : cases) {
+    const std::string msg = error_of(with_bodies("[bodies.strip]\nmaterial = \"homalite\"\n" + b.body + "\n"));
+    EXPECT_FALSE(msg.empty()) << b.name << ": no error raised";
+    for (const std::string& s : b.expect)
+      EXPECT_NE(msg.find(s), std::string::npos) << b.name << ": '" << s << "' not in: " << msg;
+  }
 }

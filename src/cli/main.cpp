@@ -47,7 +47,8 @@ void print_check(const std::string& path, const Case& c) {
         std::sqrt(2.0) * w.shear);
   }
   for (std::size_t b = 0; b < c.bodies.size(); ++b)
-    fmt::print("body {} (field {}): {} particles\n", c.bodies[b].name, c.bodies[b].field,
+    fmt::print("body {} (field {} \"{}\"): {} particles\n", c.bodies[b].name, c.bodies[b].field,
+               c.field_names[std::size_t(c.bodies[b].field)],
                s.particles_per_body[b]);
   fmt::print("dt={:.6e}\n", s.dt);
   fmt::print("dt_cfl_limit={:.6e}\n", s.dt_cfl);

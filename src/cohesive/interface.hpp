@@ -23,7 +23,9 @@
 namespace rupture {
 
 struct InterfaceSpec {
-  int upper_field = 0, lower_field = 1;  // the normal points into the upper field's body
+  int upper_field = 0, lower_field = 1;  // the velocity fields of the two faces
+  int upper_body = 0, lower_body = 1;    // the bodies named (Case::bodies); the normal points
+                                         // into the upper one
   // Where the interface lies. Empty: the horizontal form, the line (start, y) -> (end, y).
   Polyline line;
   double y = 0.0;                 // m

@@ -9,6 +9,7 @@
 #include "bc/loads.hpp"
 #include "bc/velocity_bc.hpp"
 #include "cohesive/interface.hpp"
+#include "geometry/shape.hpp"
 #include "grid/grid.hpp"
 #include "material/elastic.hpp"
 
@@ -16,12 +17,22 @@ namespace rupture {
 
 enum class Scheme { USF, USL, MUSL };
 
+// A body: a region of one material with a uniform initial velocity and stress, mapped to one
+// velocity field. Bodies that share a field are one continuum (one set of grid arrays).
 struct BodySpec {
   std::string name;
   int material = 0;             // index into Case::materials
-  double min[2]{}, max[2]{};    // rectangle, m
+  Region region;                // shape and cut-outs (geometry/shape.hpp), m
+  double min[2]{}, max[2]{};    // bounding box of the outer shape (a rectangle: itself), m
   double velocity[2]{};         // initial velocity, m/s
-  int field = 0;                // velocity field: one per body
+  double stress[3]{};           // initial uniform stress sxx, syy, sxy, Pa (sigma_zz follows
+                                // from the plane mode; the strain from the compliance)
+  int field = 0;                // velocity field: index into Case::field_names
+
+  // An axis-aligned rectangle on grid lines without cut-outs: seeded as always (bitwise).
+  bool plain_rectangle() const {
+    return region.outer.kind == ShapeKind::rectangle && region.minus.empty();
+  }
 };
 
 // Mesh refinement (SPEC §5) as nested boxes with a level each, level 0 being the whole plate
@@ -88,6 +99,9 @@ struct Case {
   PlaneMode plane = PlaneMode::strain;
   std::vector<ElasticMaterial> materials;
   std::vector<BodySpec> bodies;
+  // Velocity fields (SPEC §3), numbered in order of first appearance among the bodies
+  // (bodies.NAME.field, by default the body's own name). At most 255.
+  std::vector<std::string> field_names;
   GridSpec grid;
   TimeSpec time;
   SolverSpec solver;
@@ -102,10 +116,8 @@ struct Case {
 
 const char* scheme_name(Scheme s);
 
-// Whether the point (x, y) (m) lies in the body's shape (boundary included).
-inline bool body_contains(const BodySpec& b, double x, double y) {
-  return x >= b.min[0] && x <= b.max[0] && y >= b.min[1] && y <= b.max[1];
-}
+// Whether the point (x, y) (m) lies in the body's region (geometry/shape.hpp).
+inline bool body_contains(const BodySpec& b, double x, double y) { return contains(b.region, x, y); }
 
 // The background grid a case asks for: uniform, or graded from its refinement levels.
 Grid build_grid(const GridSpec& g);

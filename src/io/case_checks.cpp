@@ -5,8 +5,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <optional>
+#include <utility>
+#include <vector>
 
 #include "core/errors.hpp"
+#include "particles/seed.hpp"
 #include "solver/summary.hpp"
 
 namespace rupture {
@@ -107,34 +112,91 @@ void check_boundary_conflicts(Case& c) {
     }
 }
 
-// Two bodies are two velocity fields (SPEC §3): they interact only through a cohesive
-// interface. Touching along a segment without one, they pass through each other.
-void warn_touching_bodies(Case& c) {
+constexpr const char* kPassThrough =
+    "they are two velocity fields, so they will pass through each other. Join them with an "
+    "[interface.NAME] (upper_body, lower_body; bonded_to ties a stretch), or give them the same "
+    "bodies.NAME.field to make them one continuum";
+
+// Two plain rectangles touch along a segment of a line x = const or y = const.
+void warn_touching_rectangles(Case& c, const BodySpec& a, const BodySpec& b) {
   const double tol = 1e-9 * c.grid.cell_size;
+  for (int d = 0; d < 2; ++d) {  // contact across a line of constant coordinate d
+    const int e = 1 - d;
+    const double lo = std::max(a.min[e], b.min[e]), hi = std::min(a.max[e], b.max[e]);
+    if (hi - lo <= tol) continue;
+    const bool a_below = std::fabs(a.max[d] - b.min[d]) <= tol;
+    if (a_below || std::fabs(b.max[d] - a.min[d]) <= tol) {
+      const double line = a_below ? a.max[d] : a.min[d];
+      c.warnings.push_back(fmt::format(
+          "bodies.{} and bodies.{} touch along {} = {:g} m, {} in [{:g}, {:g}] m, but no "
+          "[interface] joins them: {}",
+          a.name, b.name, d == 0 ? "x" : "y", line, e == 0 ? "x" : "y", lo, hi, kPassThrough));
+    }
+  }
+}
+
+// Any other shapes touch where a particle box of one shares a stretch of edge with (or
+// overlaps) a particle box of the other. Boxes are bucketed by grid cell: a box touching
+// another has its centre in the same or a neighbouring cell.
+void warn_touching_shapes(Case& c, const Grid& grid, const BodySpec& a, const BodySpec& b) {
+  const int ppc = c.grid.particles_per_cell;
+  const double gap = c.grid.refined() ? c.grid.coarse_cell_size : c.grid.cell_size;
+  if (!boxes_overlap(bounding_box(a.region), bounding_box(b.region), gap)) return;
+  std::map<std::pair<int, int>, std::vector<SeedPoint>> cells;
+  for_each_seed_point(grid, b.region, ppc, [&](const SeedPoint& p) {
+    cells[{grid.x.cell_of(p.x), grid.y.cell_of(p.y)}].push_back(p);
+  });
+  const double tol = 1e-9 * grid.cell_size();
+  std::vector<Point> contacts;
+  for_each_seed_point(grid, a.region, ppc, [&](const SeedPoint& p) {
+    const int ci = grid.x.cell_of(p.x), cj = grid.y.cell_of(p.y);
+    for (int j = cj - 1; j <= cj + 1; ++j)
+      for (int i = ci - 1; i <= ci + 1; ++i) {
+        const auto it = cells.find({i, j});
+        if (it == cells.end()) continue;
+        for (const SeedPoint& q : it->second) {
+          const double gx = std::fabs(p.x - q.x) - 0.5 * (p.lx + q.lx);
+          const double gy = std::fabs(p.y - q.y) - 0.5 * (p.ly + q.ly);
+          // Sharing a stretch of edge: touching in one direction, overlapping in the other.
+          if (std::max(gx, gy) <= tol && std::min(gx, gy) < -tol)
+            contacts.push_back({0.5 * (p.x + q.x), 0.5 * (p.y + q.y)});
+        }
+      }
+  });
+  if (contacts.empty()) return;
+  // Report the contact point nearest the mean of all of them.
+  Point mean;
+  for (const Point& q : contacts) mean.x += q.x / double(contacts.size()), mean.y += q.y / double(contacts.size());
+  const Point near = *std::min_element(contacts.begin(), contacts.end(), [&](const Point& u, const Point& v) {
+    return std::hypot(u.x - mean.x, u.y - mean.y) < std::hypot(v.x - mean.x, v.y - mean.y);
+  });
+  c.warnings.push_back(fmt::format(
+      "bodies.{} and bodies.{} touch near ({:g}, {:g}) m ({} particle faces in contact), but no "
+      "[interface] joins them: {}",
+      a.name, b.name, near.x, near.y, contacts.size(), kPassThrough));
+}
+
+// Bodies of two velocity fields (SPEC §3) interact only through a cohesive interface between
+// their fields. Touching without one, they pass through each other. Bodies of one field are
+// one continuum: touching is what they are for.
+void warn_touching_bodies(Case& c) {
+  std::optional<Grid> grid;  // built only if a shape other than a plain rectangle needs it
   for (std::size_t i = 0; i < c.bodies.size(); ++i)
     for (std::size_t j = i + 1; j < c.bodies.size(); ++j) {
       const BodySpec &a = c.bodies[i], &b = c.bodies[j];
+      if (a.field == b.field) continue;
       const bool joined =
           std::any_of(c.interfaces.begin(), c.interfaces.end(), [&](const InterfaceSpec& s) {
             return (s.upper_field == a.field && s.lower_field == b.field) ||
                    (s.upper_field == b.field && s.lower_field == a.field);
           });
       if (joined) continue;
-      for (int d = 0; d < 2; ++d) {  // contact across a line of constant coordinate d
-        const int e = 1 - d;
-        const double lo = std::max(a.min[e], b.min[e]), hi = std::min(a.max[e], b.max[e]);
-        if (hi - lo <= tol) continue;
-        const bool a_below = std::fabs(a.max[d] - b.min[d]) <= tol;
-        if (a_below || std::fabs(b.max[d] - a.min[d]) <= tol) {
-          const double line = a_below ? a.max[d] : a.min[d];
-          c.warnings.push_back(fmt::format(
-              "bodies.{} and bodies.{} touch along {} = {:g} m, {} in [{:g}, {:g}] m, but no "
-              "[interface] joins them: each body is its own velocity field, so they will pass "
-              "through each other. Join them with an [interface.NAME] (upper_body, lower_body; "
-              "bonded_to ties a stretch), or make them one body",
-              a.name, b.name, d == 0 ? "x" : "y", line, e == 0 ? "x" : "y", lo, hi));
-        }
+      if (a.plain_rectangle() && b.plain_rectangle()) {
+        warn_touching_rectangles(c, a, b);
+        continue;
       }
+      if (!grid) grid = build_grid(c.grid);
+      warn_touching_shapes(c, *grid, a, b);
     }
 }
 

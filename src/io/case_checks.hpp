@@ -3,8 +3,9 @@
 //  - two boundary conditions prescribing the same velocity component on shared nodes (same
 //    edge, overlapping ranges, a body in common) with different time functions: InputError
 //    naming both keys, their values and what is allowed (identical ones: a warning);
-//  - bodies that touch along a segment of nonzero length with no [interface] between them:
-//    a warning (each body is its own velocity field, so they pass through each other);
+//  - bodies of different velocity fields that touch along a segment of nonzero length (two
+//    rectangles: along x or y = const; other shapes: particle boxes sharing an edge) with no
+//    [interface] between their fields: a warning (they would pass through each other);
 //  - a run of more than 1e7 time steps: a warning.
 // Warnings are appended to Case::warnings; the CLI prints them as `warning: ...` on stderr.
 #pragma once

@@ -15,7 +15,7 @@ namespace rupture {
 // Names already parsed, for the tables that refer to them.
 struct ParseContext {
   std::map<std::string, int> material_index;
-  std::map<std::string, int> body_index;
+  std::map<std::string, int> body_index;  // index into Case::bodies
   std::string case_dir;  // directory of the case file: relative table_file paths start there
   // Tables read from files (table_file), so the input echo can hold them inline.
   struct FileTable {
@@ -42,7 +42,15 @@ TimeFunction parse_time_function(Section& b, const std::string& value_key,
 void parse_output(Section& top, Case& c);
 // grid.margin when not given: the largest displacement of any load over the run.
 void set_automatic_margin(Case& c);
-// On a graded grid, bodies fill whole cells: their edges must be grid lines.
+// On a graded grid, rectangular bodies fill whole cells: their edges must be grid lines.
 void check_bodies_on_graded_grid(const Case& c);
+// Once the grid is final: every body holds a particle, every cut-out removes one, and no two
+// bodies share a particle position.
+void check_body_seeding(const Case& c);
+// A shape (io/parse_shape.cpp) from the table of a body or a cut-out (`what`: "body",
+// "cut-out"), with the shape keys only.
+Shape parse_shape(Section& s, const char* what);
+// "[x0, y0]..[x1, y1]"
+std::string describe_extent(const Box& b);
 
 }  // namespace rupture

@@ -183,6 +183,7 @@ Case build_case(const toml::table& root, const std::string& case_dir) {
   parse_interfaces(top, c, ctx);
   parse_output(top, c);
   check_bodies_on_graded_grid(c);
+  check_body_seeding(c);
 
   check_case_consistency(c);
 

@@ -2,6 +2,7 @@
 // The [boundary] table: prescribed velocities on domain edges (SPEC E2).
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "io/case_parse.hpp"
@@ -47,7 +48,10 @@ void parse_boundary(Section& top, Case& c, ParseContext& ctx) {
         for (const auto& bb : c.bodies) names.push_back(bb.name);
         fail(b.key("bodies"), "\"" + body + "\"", "must name bodies among " + Section::join(names));
       }
-      bc.fields.push_back(body_index[body]);
+      // Conditions act on velocity fields: a body's field (once, if bodies share one).
+      const int field = c.bodies[std::size_t(body_index[body])].field;
+      if (std::find(bc.fields.begin(), bc.fields.end(), field) == bc.fields.end())
+        bc.fields.push_back(field);
     }
     bc.velocity = parse_time_function(b, "velocity", {"boundary", name}, ctx);
     bc.follow_edge = b.boolean("follow_edge", true);

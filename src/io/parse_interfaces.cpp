@@ -194,12 +194,21 @@ void parse_interfaces(Section& top, Case& c, ParseContext& ctx) {
       const std::string body = f.string(which, "");
       if (!body_index.count(body))
         fail(f.key(which), "\"" + body + "\"", "must name a body among " + Section::join(names));
-      (std::string(which) == "upper_body" ? is.upper_field : is.lower_field) = body_index[body];
+      (std::string(which) == "upper_body" ? is.upper_body : is.lower_body) = body_index[body];
     }
-    if (is.upper_field == is.lower_field)
-      fail(f.key("lower_body"), "\"" + c.bodies[is.lower_field].name + "\"",
+    if (is.upper_body == is.lower_body)
+      fail(f.key("lower_body"), "\"" + c.bodies[is.lower_body].name + "\"",
            "must differ from upper_body");
-    const BodySpec &up = c.bodies[is.upper_field], &lo = c.bodies[is.lower_field];
+    const BodySpec &up = c.bodies[is.upper_body], &lo = c.bodies[is.lower_body];
+    is.upper_field = up.field;
+    is.lower_field = lo.field;
+    // The interface joins two velocity fields: bodies of one field are one continuum.
+    if (up.field == lo.field)
+      fail(f.key("lower_body"), "\"" + lo.name + "\"",
+           fmt::format("bodies.{} and bodies.{} share the velocity field \"{}\" (one continuum): "
+                       "an interface must join bodies of two different fields (give one of them "
+                       "its own bodies.NAME.field)",
+                       up.name, lo.name, c.field_names[std::size_t(up.field)]));
     parse_interface_geometry(f, is, c, up, lo);
     XuNeedleman& law = is.law;
     law.sigma_max = f.number("sigma_max");

@@ -16,6 +16,23 @@ ElasticStiffness stiffness(const ElasticMaterial& m, PlaneMode mode) {
   return {c, c * nu, mu, 0.0};
 }
 
+ElasticState prestressed_state(const ElasticMaterial& m, PlaneMode mode, double sxx, double syy,
+                               double sxy) {
+  const double E = m.youngs_modulus, nu = m.poisson_ratio;
+  ElasticState s{sxx, syy, sxy, 0.0, 0.0, 0.0, 0.0};
+  if (mode == PlaneMode::strain) {
+    // eps = ((1 + nu) / E) (sigma - nu tr(sigma) I) with sigma_zz = nu (sxx + syy).
+    s.szz = nu * (sxx + syy);
+    s.exx = (1.0 + nu) / E * ((1.0 - nu) * sxx - nu * syy);
+    s.eyy = (1.0 + nu) / E * ((1.0 - nu) * syy - nu * sxx);
+  } else {
+    s.exx = (sxx - nu * syy) / E;
+    s.eyy = (syy - nu * sxx) / E;
+  }
+  s.exy = (1.0 + nu) / E * sxy;  // sxy / (2 mu)
+  return s;
+}
+
 WaveSpeeds wave_speeds(const ElasticMaterial& m, PlaneMode mode) {
   const double nu = m.poisson_ratio;
   const double mu = m.youngs_modulus / (2.0 * (1.0 + nu));

@@ -24,6 +24,19 @@ struct ElasticStiffness {
 
 ElasticStiffness stiffness(const ElasticMaterial& m, PlaneMode mode);
 
+// A uniform elastic state: stress, Pa, and small strain (tensor components), -.
+struct ElasticState {
+  double sxx, syy, sxy, szz;
+  double exx, eyy, exy;
+};
+
+// The state of a material prestressed to the in-plane stress (sxx, syy, sxy), Pa: the strain
+// is the compliance of the plane mode applied to it, and sigma_zz = nu (sxx + syy) in plane
+// strain (eps_zz = 0), 0 in plane stress. So sigma = C : eps, as the incremental stress update
+// (SPEC E5) assumes, and 0.5 sigma:eps is the strain energy density from the start.
+ElasticState prestressed_state(const ElasticMaterial& m, PlaneMode mode, double sxx, double syy,
+                               double sxy);
+
 struct WaveSpeeds {
   double dilatational;  // c_D, m/s
   double shear;         // c_S, m/s

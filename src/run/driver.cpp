@@ -137,7 +137,7 @@ RunResult run_case(const Case& c, const RunOptions& options) {
   // Crack speeds are reported against the speeds of the lower body's material.
   std::vector<WaveSpeeds> crack_speeds;  // per interface
   for (const InterfaceSpec& is : c.interfaces)
-    crack_speeds.push_back(summary.speeds[std::size_t(c.bodies[is.lower_field].material)]);
+    crack_speeds.push_back(summary.speeds[std::size_t(c.bodies[is.lower_body].material)]);
   int& interface_files = ctx.interface_files;
   auto write_interfaces = [&]() {
     if (s.interfaces.empty()) return;

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "particles/seed.hpp"
 #include "solver/energy.hpp"
 #include "solver/state.hpp"
 #include "solver/step.hpp"
@@ -13,38 +14,15 @@
 namespace rupture {
 namespace {
 
-// SPEC §5: on a refined grid every cell the body covers gets ppc x ppc particles of the
-// cell's own size (rectangular where the cell is), in rows of particles across the body.
-void seed_graded(Particles& P, const Grid& g, const BodySpec& b, int ppc, double density) {
-  const double tol = 1e-9 * g.x.h;
-  std::vector<int> cols, rows;
-  for (int i = 0; i < g.x.cells; ++i) {
-    const double xc = g.x.node(i) + 0.5 * g.x.width(i);
-    if (xc > b.min[0] - tol && xc < b.max[0] + tol) cols.push_back(i);
+// The body's uniform initial stress (bodies.NAME.stress) on its particles [first, last).
+void prestress(Particles& P, std::size_t first, std::size_t last, const BodySpec& b,
+               const ElasticMaterial& m, PlaneMode plane) {
+  if (b.stress[0] == 0.0 && b.stress[1] == 0.0 && b.stress[2] == 0.0) return;
+  const ElasticState e = prestressed_state(m, plane, b.stress[0], b.stress[1], b.stress[2]);
+  for (std::size_t p = first; p < last; ++p) {
+    P.sxx[p] = e.sxx, P.syy[p] = e.syy, P.sxy[p] = e.sxy, P.szz[p] = e.szz;
+    P.exx[p] = e.exx, P.eyy[p] = e.eyy, P.exy[p] = e.exy;
   }
-  for (int j = 0; j < g.y.cells; ++j) {
-    const double yc = g.y.node(j) + 0.5 * g.y.width(j);
-    if (yc > b.min[1] - tol && yc < b.max[1] + tol) rows.push_back(j);
-  }
-  std::size_t k = P.size();
-  P.resize(k + cols.size() * rows.size() * std::size_t(ppc * ppc));
-  for (int j : rows)
-    for (int sj = 0; sj < ppc; ++sj)
-      for (int i : cols)
-        for (int si = 0; si < ppc; ++si, ++k) {
-          const double lx = g.x.width(i) / ppc, ly = g.y.width(j) / ppc;
-          P.x[k] = g.x.node(i) + (si + 0.5) * lx;
-          P.y[k] = g.y.node(j) + (sj + 0.5) * ly;
-          P.vx[k] = b.velocity[0];
-          P.vy[k] = b.velocity[1];
-          P.volume0[k] = P.volume[k] = lx * ly;
-          P.mass[k] = density * lx * ly;
-          P.half_x[k] = 0.5 * lx;
-          P.half_y[k] = 0.5 * ly;
-          P.field[k] = std::uint8_t(b.field);
-          P.material[k] = std::uint8_t(b.material);
-          P.id[k] = std::uint32_t(k);
-        }
 }
 
 }  // namespace
@@ -52,17 +30,24 @@ void seed_graded(Particles& P, const Grid& g, const BodySpec& b, int ppc, double
 State make_state(const Case& c) {
   State s;
   s.grid = build_grid(c.grid);
-  const int num_fields = int(c.bodies.size());
+  const int num_fields = int(c.field_names.size());  // bodies sharing a field share its arrays
   s.fields.resize(num_fields, s.grid.num_nodes());
 
   for (const ElasticMaterial& m : c.materials) s.stiffness.push_back(stiffness(m, c.plane));
+  const int ppc = c.grid.particles_per_cell;
   for (const BodySpec& b : c.bodies) {
-    if (s.grid.graded())
-      seed_graded(s.particles, s.grid, b, c.grid.particles_per_cell, c.materials[b.material].density);
+    const ElasticMaterial& m = c.materials[std::size_t(b.material)];
+    const SeedProperties props{m.density, std::uint8_t(b.field), std::uint8_t(b.material),
+                               {b.velocity[0], b.velocity[1]}};
+    const std::size_t first = s.particles.size();
+    if (!b.plain_rectangle())  // point-in-shape of the sub-cell centres (particles/seed.hpp)
+      seed_region(s.particles, s.grid, b.region, ppc, props);
+    else if (s.grid.graded())
+      seed_graded_rectangle(s.particles, s.grid, b.min, b.max, ppc, props);
     else
-      seed_rectangle(s.particles, b.min, b.max, c.grid.cell_size, c.grid.particles_per_cell,
-                     c.materials[b.material].density, std::uint8_t(b.field),
-                     std::uint8_t(b.material), b.velocity);
+      seed_rectangle(s.particles, b.min, b.max, c.grid.cell_size, ppc, m.density,
+                     std::uint8_t(b.field), std::uint8_t(b.material), b.velocity);
+    prestress(s.particles, first, s.particles.size(), b, m, c.plane);
   }
   s.boundary = c.boundary;
   update_edge_lines(s.boundary, s.grid, 0.0, s.bc_lines);

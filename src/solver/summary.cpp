@@ -6,6 +6,7 @@
 
 #include "grid/grid.hpp"
 #include "particles/particles.hpp"
+#include "particles/seed.hpp"
 #include "solver/time_step.hpp"
 
 namespace rupture {
@@ -33,8 +34,8 @@ CaseSummary summarize(const Case& c) {
     s.bulk_eigen_bound = std::max(s.bulk_eigen_bound, bulk_eigen_bound(stiffness(m, c.plane), m.density, ppc, h));
   s.dt_bulk = 2.0 / std::sqrt(s.bulk_eigen_bound);
   for (const InterfaceSpec& is : c.interfaces) {
-    const double rho = std::min(c.materials[c.bodies[is.upper_field].material].density,
-                                c.materials[c.bodies[is.lower_field].material].density);
+    const double rho = std::min(c.materials[c.bodies[is.upper_body].material].density,
+                                c.materials[c.bodies[is.lower_body].material].density);
     const double k = is.law.stability_stiffness(0.0, 0.0) * h;
     const double m = 0.5 * rho * h * h;
     const double scheme = c.solver.scheme == Scheme::MUSL ? 1.0 : 2.0;  // solver/time_step.cpp
@@ -64,8 +65,9 @@ CaseSummary summarize(const Case& c) {
     s.cells = cx * cy;
     s.cells_per_level[0] = s.cells;
     for (const BodySpec& b : c.bodies) {
-      const long n = std::lround((b.max[0] - b.min[0]) / h) * std::lround((b.max[1] - b.min[1]) / h) *
-                     ppcl * ppcl;
+      const long n = b.plain_rectangle() ? std::lround((b.max[0] - b.min[0]) / h) *
+                                               std::lround((b.max[1] - b.min[1]) / h) * ppcl * ppcl
+                                         : count_seed_points(grid, b.region, ppc);
       s.particles_per_body.push_back(n);
       s.particles += n;
     }
@@ -81,6 +83,15 @@ CaseSummary summarize(const Case& c) {
       }
     for (const BodySpec& b : c.bodies) {
       long n = 0;
+      if (!b.plain_rectangle()) {
+        for_each_seed_point(grid, b.region, ppc, [&](const SeedPoint& p) {
+          ++n;
+          ++s.particles_per_level[std::size_t(level_of(p.lx * ppc, p.ly * ppc))];
+        });
+        s.particles_per_body.push_back(n);
+        s.particles += n;
+        continue;
+      }
       for (int j = 0; j < grid.y.cells; ++j) {
         const double yc = grid.y.node(j) + 0.5 * grid.y.width(j);
         if (yc < b.min[1] - tol || yc > b.max[1] + tol) continue;
@@ -95,7 +106,7 @@ CaseSummary summarize(const Case& c) {
       s.particles += n;
     }
   }
-  s.fields = int(c.bodies.size());
+  s.fields = int(c.field_names.size());
   // 11 nodal arrays per field (grid/grid.hpp) + particle arrays + sort scratch (order, one
   // double array for the permutation).
   std::size_t interface_bytes = 0;

@@ -134,6 +134,7 @@ velocity = 2.0)";
   Case one = two;
   one.interfaces.clear();
   for (BodySpec& b : one.bodies) b.field = 0;
+  one.field_names.resize(1);
   State a = make_state(one), b = make_state(two);
   a.forced_dt = b.forced_dt = std::min(a.limits.dt, b.limits.dt);  // the same steps in both
   for (int k = 0; k < 40; ++k) step(a), step(b);

@@ -1,0 +1,167 @@
+// rupture/geometry/shape.cpp
+#include "geometry/shape.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace rupture {
+namespace {
+
+// (b - a) x (c - a): > 0 when c lies left of the line a -> b.
+double orient(const Point& a, const Point& b, const Point& c) {
+  return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+}
+
+// c is collinear with a-b (orient == 0): is it within the segment's box?
+bool on_segment(const Point& a, const Point& b, const Point& c) {
+  return c.x >= std::min(a.x, b.x) && c.x <= std::max(a.x, b.x) && c.y >= std::min(a.y, b.y) &&
+         c.y <= std::max(a.y, b.y);
+}
+
+int sign(double v) {
+  return (v > 0.0) - (v < 0.0);
+}
+
+// Closed segments p1-p2 and q1-q2 share a point (crossing or touching).
+bool segments_meet(const Point& p1, const Point& p2, const Point& q1, const Point& q2) {
+  const int o1 = sign(orient(p1, p2, q1)), o2 = sign(orient(p1, p2, q2));
+  const int o3 = sign(orient(q1, q2, p1)), o4 = sign(orient(q1, q2, p2));
+  if (o1 * o2 < 0 && o3 * o4 < 0) return true;
+  return (o1 == 0 && on_segment(p1, p2, q1)) || (o2 == 0 && on_segment(p1, p2, q2)) ||
+         (o3 == 0 && on_segment(q1, q2, p1)) || (o4 == 0 && on_segment(q1, q2, p2));
+}
+
+bool polygon_contains(const std::vector<Point>& v, double x, double y) {
+  // Crossing number of a ray towards +x; half-open in y so a vertex is counted once.
+  bool in = false;
+  for (std::size_t i = 0, j = v.size() - 1; i < v.size(); j = i++) {
+    const Point &a = v[i], &b = v[j];
+    if ((a.y > y) != (b.y > y) && x < a.x + (b.x - a.x) * (y - a.y) / (b.y - a.y)) in = !in;
+  }
+  return in;
+}
+
+}  // namespace
+
+const char* shape_name(ShapeKind k) {
+  switch (k) {
+    case ShapeKind::rectangle:
+      return "rectangle";
+    case ShapeKind::polygon:
+      return "polygon";
+    case ShapeKind::circle:
+      return "circle";
+    case ShapeKind::ellipse:
+      return "ellipse";
+  }
+  return "?";
+}
+
+bool contains(const Shape& s, double x, double y) {
+  switch (s.kind) {
+    case ShapeKind::rectangle:
+      return x > s.min[0] && x < s.max[0] && y > s.min[1] && y < s.max[1];
+    case ShapeKind::polygon:
+      return polygon_contains(s.vertices, x, y);
+    case ShapeKind::circle: {
+      const double dx = x - s.center[0], dy = y - s.center[1];
+      return dx * dx + dy * dy < s.radii[0] * s.radii[0];
+    }
+    case ShapeKind::ellipse: {
+      // Coordinates along the ellipse's own axes (a-axis at `angle` from +x).
+      const double dx = x - s.center[0], dy = y - s.center[1];
+      const double c = std::cos(s.angle), sn = std::sin(s.angle);
+      const double u = (c * dx + sn * dy) / s.radii[0], w = (-sn * dx + c * dy) / s.radii[1];
+      return u * u + w * w < 1.0;
+    }
+  }
+  return false;
+}
+
+bool contains(const Region& r, double x, double y) {
+  if (!contains(r.outer, x, y)) return false;
+  for (const Shape& m : r.minus)
+    if (contains(m, x, y)) return false;
+  return true;
+}
+
+Box bounding_box(const Shape& s) {
+  Box b;
+  switch (s.kind) {
+    case ShapeKind::rectangle:
+      b = {{s.min[0], s.min[1]}, {s.max[0], s.max[1]}};
+      break;
+    case ShapeKind::polygon:
+      b = {{s.vertices[0].x, s.vertices[0].y}, {s.vertices[0].x, s.vertices[0].y}};
+      for (const Point& p : s.vertices) {
+        b.min[0] = std::min(b.min[0], p.x), b.max[0] = std::max(b.max[0], p.x);
+        b.min[1] = std::min(b.min[1], p.y), b.max[1] = std::max(b.max[1], p.y);
+      }
+      break;
+    case ShapeKind::circle:
+    case ShapeKind::ellipse: {
+      // Half-extents of the rotated ellipse: sqrt(a^2 cos^2 + b^2 sin^2) along x, and so on.
+      const double a = s.radii[0], bb = s.radii[1];
+      const double c = std::cos(s.angle), sn = std::sin(s.angle);
+      const double wx = s.kind == ShapeKind::circle ? a : std::hypot(a * c, bb * sn);
+      const double wy = s.kind == ShapeKind::circle ? a : std::hypot(a * sn, bb * c);
+      b = {{s.center[0] - wx, s.center[1] - wy}, {s.center[0] + wx, s.center[1] + wy}};
+      break;
+    }
+  }
+  return b;
+}
+
+Box bounding_box(const Region& r) {
+  return bounding_box(r.outer);
+}
+
+bool boxes_overlap(const Box& a, const Box& b, double gap) {
+  return a.min[0] < b.max[0] + gap && b.min[0] < a.max[0] + gap && a.min[1] < b.max[1] + gap &&
+         b.min[1] < a.max[1] + gap;
+}
+
+double signed_area(const std::vector<Point>& v) {
+  double twice = 0.0;
+  for (std::size_t i = 0, j = v.size() - 1; i < v.size(); j = i++)
+    twice += v[j].x * v[i].y - v[i].x * v[j].y;
+  return 0.5 * twice;
+}
+
+double area(const Shape& s) {
+  switch (s.kind) {
+    case ShapeKind::rectangle:
+      return (s.max[0] - s.min[0]) * (s.max[1] - s.min[1]);
+    case ShapeKind::polygon:
+      return std::fabs(signed_area(s.vertices));
+    case ShapeKind::circle:
+    case ShapeKind::ellipse:
+      return std::numbers::pi * s.radii[0] * s.radii[1];
+  }
+  return 0.0;
+}
+
+std::optional<std::pair<int, int>> polygon_self_intersection(const std::vector<Point>& v) {
+  const int n = int(v.size());
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 1; j < n; ++j) {
+      const Point &a0 = v[std::size_t(i)], &a1 = v[std::size_t((i + 1) % n)];
+      const Point &b0 = v[std::size_t(j)], &b1 = v[std::size_t((j + 1) % n)];
+      const bool next = j == i + 1, wrap = i == 0 && j == n - 1;
+      if (next || wrap) {
+        // Adjacent edges share one vertex: they meet elsewhere only by folding back over each
+        // other (collinear, pointing the same way from the shared vertex).
+        const Point& s = next ? a1 : a0;  // the shared vertex
+        const Point& p = next ? a0 : a1;  // the other end of edge i
+        const Point& q = next ? b1 : b0;  // the other end of edge j
+        if (orient(p, s, q) == 0.0 && (p.x - s.x) * (q.x - s.x) + (p.y - s.y) * (q.y - s.y) > 0.0)
+          return std::make_pair(i, j);
+        continue;
+      }
+      if (segments_meet(a0, a1, b0, b1)) return std::make_pair(i, j);
+    }
+  return std::nullopt;
+}
+
+}  // namespace rupture

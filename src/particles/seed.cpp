@@ -1,0 +1,118 @@
+// rupture/particles/seed.cpp
+#include "particles/seed.hpp"
+
+#include <cmath>
+#include <vector>
+
+namespace rupture {
+namespace {
+
+// Sub-cell centres and sides along one axis covering [lo, hi].
+struct Line {
+  std::vector<double> centre, side;  // m
+};
+
+Line uniform_line(const Axis& a, double domain_min, double lo, double hi, int ppc) {
+  const double h = a.h, tol = 1e-9;
+  // Start on the box edge when it is a grid line (exactly as seed_rectangle counts), else on the
+  // grid line below it.
+  const double cells_below = (lo - domain_min) / h;
+  const double start = std::fabs(cells_below - std::round(cells_below)) <=
+                               tol * std::max(1.0, std::fabs(cells_below))
+                           ? lo
+                           : domain_min + std::floor(cells_below) * h;
+  const long cells = std::max(0L, long(std::ceil((hi - start) / h - tol)));
+  const double side = h / ppc;
+  Line l;
+  for (long i = 0; i < cells * ppc; ++i) {
+    l.centre.push_back(start + (double(i) + 0.5) * side);
+    l.side.push_back(side);
+  }
+  return l;
+}
+
+Line graded_line(const Axis& a, double lo, double hi, int ppc) {
+  const double tol = 1e-9 * a.h;
+  Line l;
+  for (int i = 0; i < a.cells; ++i) {
+    if (!(a.node(i + 1) > lo + tol && a.node(i) < hi - tol)) continue;
+    const double side = a.width(i) / ppc;
+    for (int si = 0; si < ppc; ++si) {
+      l.centre.push_back(a.node(i) + (si + 0.5) * side);
+      l.side.push_back(side);
+    }
+  }
+  return l;
+}
+
+void fill(Particles& p, std::size_t k, const SeedPoint& s, const SeedProperties& props) {
+  p.x[k] = s.x;
+  p.y[k] = s.y;
+  p.vx[k] = props.velocity[0];
+  p.vy[k] = props.velocity[1];
+  p.volume0[k] = p.volume[k] = s.lx * s.ly;
+  p.mass[k] = props.density * s.lx * s.ly;
+  p.half_x[k] = 0.5 * s.lx;
+  p.half_y[k] = 0.5 * s.ly;
+  p.field[k] = props.field;
+  p.material[k] = props.material;
+  p.id[k] = std::uint32_t(k);
+}
+
+}  // namespace
+
+void for_each_seed_point(const Grid& g, const Region& r, int ppc,
+                         const std::function<void(const SeedPoint&)>& visit) {
+  const Box b = bounding_box(r);
+  const Line cols = g.graded() ? graded_line(g.x, b.min[0], b.max[0], ppc)
+                               : uniform_line(g.x, g.domain_min[0], b.min[0], b.max[0], ppc);
+  const Line rows = g.graded() ? graded_line(g.y, b.min[1], b.max[1], ppc)
+                               : uniform_line(g.y, g.domain_min[1], b.min[1], b.max[1], ppc);
+  for (std::size_t j = 0; j < rows.centre.size(); ++j)
+    for (std::size_t i = 0; i < cols.centre.size(); ++i)
+      if (contains(r, cols.centre[i], rows.centre[j]))
+        visit({cols.centre[i], rows.centre[j], cols.side[i], rows.side[j]});
+}
+
+long count_seed_points(const Grid& g, const Region& r, int ppc) {
+  long n = 0;
+  for_each_seed_point(g, r, ppc, [&n](const SeedPoint&) { ++n; });
+  return n;
+}
+
+std::size_t seed_region(Particles& p, const Grid& g, const Region& r, int ppc,
+                        const SeedProperties& props) {
+  std::vector<SeedPoint> points;
+  for_each_seed_point(g, r, ppc, [&](const SeedPoint& s) { points.push_back(s); });
+  std::size_t k = p.size();
+  p.resize(k + points.size());
+  for (const SeedPoint& s : points) fill(p, k++, s, props);
+  return points.size();
+}
+
+// SPEC §5: on a refined grid every cell the body covers gets ppc x ppc particles of the
+// cell's own size (rectangular where the cell is), in rows of particles across the body.
+void seed_graded_rectangle(Particles& P, const Grid& g, const double min[2], const double max[2],
+                           int ppc, const SeedProperties& props) {
+  const double tol = 1e-9 * g.x.h;
+  std::vector<int> cols, rows;
+  for (int i = 0; i < g.x.cells; ++i) {
+    const double xc = g.x.node(i) + 0.5 * g.x.width(i);
+    if (xc > min[0] - tol && xc < max[0] + tol) cols.push_back(i);
+  }
+  for (int j = 0; j < g.y.cells; ++j) {
+    const double yc = g.y.node(j) + 0.5 * g.y.width(j);
+    if (yc > min[1] - tol && yc < max[1] + tol) rows.push_back(j);
+  }
+  std::size_t k = P.size();
+  P.resize(k + cols.size() * rows.size() * std::size_t(ppc * ppc));
+  for (int j : rows)
+    for (int sj = 0; sj < ppc; ++sj)
+      for (int i : cols)
+        for (int si = 0; si < ppc; ++si, ++k) {
+          const double lx = g.x.width(i) / ppc, ly = g.y.width(j) / ppc;
+          fill(P, k, {g.x.node(i) + (si + 0.5) * lx, g.y.node(j) + (sj + 0.5) * ly, lx, ly}, props);
+        }
+}
+
+}  // namespace rupture

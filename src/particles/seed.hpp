@@ -1,0 +1,53 @@
+// rupture/particles/seed.hpp
+// Where a body's particles go (SPEC §2, §5). Every grid cell is cut into ppc x ppc sub-cells of
+// its own size; a particle sits at the centre of each sub-cell whose centre lies in the body's
+// region, with the sub-cell's area as its volume and half its sides as GIMP half-widths. The
+// boundary is thus a staircase of sub-cells, exact for rectangles on grid lines and first-order
+// accurate in h otherwise (docs/geometry.md). Particles are appended row by row from the
+// bottom, left to right within a row, at rest and stress-free, with `id` = their index.
+// Units: m, kg/m^3, m/s.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+
+#include "geometry/shape.hpp"
+#include "grid/grid.hpp"
+#include "particles/particles.hpp"
+
+namespace rupture {
+
+// One sub-cell: its centre and sides, m.
+struct SeedPoint {
+  double x, y;    // centre
+  double lx, ly;  // sides (the particle's volume is lx * ly, its half-widths lx/2, ly/2)
+};
+
+// What every particle of one body gets besides its position and size.
+struct SeedProperties {
+  double density = 0.0;  // kg/m^3
+  std::uint8_t field = 0, material = 0;
+  double velocity[2]{};  // m/s
+};
+
+// Visits, in seeding order, the sub-cell centres inside `r` on grid `g` (uniform or graded).
+// The sub-cells are those of the grid cells the region's bounding box overlaps; on a uniform
+// grid their centres are counted from the box's lower-left corner when it lies on grid lines
+// (so a rectangle given as a polygon gets bitwise the positions seed_rectangle gives it), from
+// the grid line below it otherwise.
+void for_each_seed_point(const Grid& g, const Region& r, int ppc,
+                         const std::function<void(const SeedPoint&)>& visit);
+
+// How many particles region `r` gets.
+long count_seed_points(const Grid& g, const Region& r, int ppc);
+
+// Appends the particles of region `r`; returns how many.
+std::size_t seed_region(Particles& p, const Grid& g, const Region& r, int ppc,
+                        const SeedProperties& props);
+
+// A rectangle whose edges lie on lines of a graded grid (SPEC §5): every cell whose centre lies
+// in [min, max] gets ppc x ppc particles of the cell's own size. Appends to `p`.
+void seed_graded_rectangle(Particles& p, const Grid& g, const double min[2], const double max[2],
+                           int ppc, const SeedProperties& props);
+
+}  // namespace rupture
