@@ -56,12 +56,32 @@ void print_check(const std::string& path, const Case& c) {
   if (s.dt_cohesive > 0) fmt::print("dt_cohesive_limit={:.6e}\n", s.dt_cohesive);
   for (std::size_t k = 0; k < c.interfaces.size(); ++k) {
     const InterfaceSpec& is = c.interfaces[k];
-    fmt::print(
-        "interface {}: {} segments of {:.4g} um on y = {:g} m, x in [{:g}, {:g}] m; delta_t = "
-        "{:.4g} um, phi_n = {:.4g} J/m^2, phi_t = {:.4g} J/m^2{}\n",
-        c.interface_names[k], is.segments, 1e6 * (is.end - is.start) / is.segments, is.y,
-        is.start, is.end, 1e6 * is.law.delta_t, is.law.phi_n(), is.law.phi_t(),
-        is.bonded ? fmt::format("; bonded on [{:g}, {:g}] m", is.bonded_from, is.bonded_to) : "");
+    const Polyline line = is.geometry();
+    const double length = line.length();
+    std::string law_text;
+    if (is.precracked) {
+      law_text = "no cohesion (pre-crack)";
+    } else {
+      law_text = std::visit(
+          [](const auto& law) {
+            return fmt::format("G_Ic = {:.4g} J/m^2, G_IIc = {:.4g} J/m^2",
+                               law.fracture_energy_normal(), law.fracture_energy_tangential());
+          },
+          is.law);
+      if (const auto* xn = std::get_if<XuNeedleman>(&is.law))
+        law_text = fmt::format("delta_t = {:.4g} um, phi_n = {:.4g} J/m^2, phi_t = {:.4g} J/m^2",
+                               1e6 * xn->delta_t, xn->phi_n(), xn->phi_t());
+    }
+    const std::string where =
+        line.num_vertices() == 2 && line.y[0] == line.y[1]
+            ? fmt::format("on y = {:g} m, x in [{:g}, {:g}] m", line.y[0], line.x[0], line.x[1])
+            : fmt::format("along a {} line of {} points, {:g} m long, from ({:g}, {:g}) m",
+                          line.closed ? "closed" : "open", line.num_vertices(), length, line.x[0], line.y[0]);
+    const Polyline tie = is.tie_geometry();
+    fmt::print("interface {}: {} segments of {:.4g} um {}; {}, {}{}{}\n", c.interface_names[k], is.segments,
+               1e6 * length / is.segments, where, law_name(is.law), law_text,
+               is.contact ? fmt::format("; contact, friction {:g}", is.contact_law.friction) : "",
+               tie.num_vertices() >= 2 ? fmt::format("; bonded along {:g} m from ({:g}, {:g}) m", tie.length(), tie.x[0], tie.y[0]) : "");
   }
   if (c.grid.refined()) {
     fmt::print("refined grid: {} levels, level 0 = {:g} m, finest = {:g} m; smallest cell {:g} m\n",

@@ -45,6 +45,54 @@ void CrackTracker::position(double s, double& x, double& y) const {
   y = y0_[k - 1] + f * (y0_[k] - y0_[k - 1]);
 }
 
+namespace {
+
+// Past the peak traction (softening): Xu-Needleman, beyond the opening of peak shear traction,
+// delta_t / sqrt 2; bilinear, beyond the elastic opening lambda0.
+bool softening(const XuNeedleman& law, double dn, double dt) {
+  return std::hypot(dn, dt) >= law.delta_t / std::sqrt(2.0);
+}
+bool softening(const BilinearLaw& law, double dn, double dt) {
+  return law.effective_opening(dn, dt) >= law.lambda0;
+}
+
+// The traction of an undamaged point at this opening, as a fraction of its strength.
+template <class Law>
+double load_fraction(const Law& law, double dn, double dt) {
+  GaussHistory fresh;
+  const LawResponse r = law.respond(dn, dt, fresh);
+  return std::max(std::fabs(r.tt) / law.tau_max, r.tn / law.sigma_max);
+}
+
+// Zone lengths ahead of the tip (from node `first`): see CrackTracker::kTractionZoneFraction.
+template <class Law>
+void zone_lengths(const CohesiveInterface& c, const Law& law, std::size_t first, double t,
+                  CrackSample& s) {
+  auto cracked_by = [&](std::size_t k) {
+    return c.node_crack_time[k] >= 0.0 && c.node_crack_time[k] <= t;
+  };
+  // Cohesive (process) zone: intact nodes ahead of the tip already softening.
+  double zone_end = s.tip;
+  for (std::size_t k = first; k < c.num_nodes(); ++k) {
+    if (cracked_by(k)) continue;
+    if (softening(law, c.jump_normal(k), c.jump_tangential(k))) zone_end = c.s0[k];
+  }
+  s.cohesive_zone = zone_end - s.tip;
+  double loaded_end = s.tip;
+  for (std::size_t k = first; k < c.num_nodes(); ++k) {
+    if (cracked_by(k)) break;  // a daughter crack ends the contiguous zone
+    // Softening nodes belong to the zone whatever their (decaying) traction; ahead of them,
+    // the zone goes on while the rising-branch traction stays above the fraction.
+    const double dn = c.jump_normal(k), dt = c.jump_tangential(k);
+    if (!softening(law, dn, dt) && load_fraction(law, dn, dt) < CrackTracker::kTractionZoneFraction)
+      break;
+    loaded_end = c.s0[k];
+  }
+  s.traction_zone = loaded_end - s.tip;
+}
+
+}  // namespace
+
 void CrackTracker::sample(const CohesiveInterface& c, double t) {
   CrackSample s;
   s.time = t;
@@ -64,28 +112,8 @@ void CrackTracker::sample(const CohesiveInterface& c, double t) {
   }
   if (in_stretch) s.stretch_end.push_back(c.s0.back());
   s.back = s.stretch_begin.empty() ? 0.0 : s.stretch_begin.back();
-  // Cohesive (process) zone: intact nodes ahead of the tip already past the opening of peak
-  // shear traction (delta_t / sqrt 2), i.e. softening.
-  const double soft = c.spec.law.delta_t / std::sqrt(2.0);
-  double zone_end = s.tip;
-  for (std::size_t k = any ? tip_node + 1 : 0; k < c.num_nodes(); ++k) {
-    if (cracked_by(k)) continue;
-    if (std::hypot(c.jump_normal(k), c.jump_tangential(k)) >= soft) zone_end = c.s0[k];
-  }
-  s.cohesive_zone = zone_end - s.tip;
-  const XuNeedleman& law = c.spec.law;
-  double loaded_end = s.tip;
-  for (std::size_t k = any ? tip_node + 1 : 0; k < c.num_nodes(); ++k) {
-    if (cracked_by(k)) break;  // a daughter crack ends the contiguous zone
-    // Softening nodes belong to the zone whatever their (decaying) traction; ahead of them,
-    // the zone goes on while the rising-branch traction stays above the fraction.
-    const double dn = c.jump_normal(k), dt = c.jump_tangential(k);
-    const CohesiveTraction T = law.traction(dn, dt);
-    const double load = std::max(std::fabs(T.tangential) / law.tau_max, T.normal / law.sigma_max);
-    if (std::hypot(dn, dt) < soft && load < kTractionZoneFraction) break;
-    loaded_end = c.s0[k];
-  }
-  s.traction_zone = loaded_end - s.tip;
+  std::visit([&](const auto& law) { zone_lengths(c, law, any ? tip_node + 1 : 0, t, s); },
+             c.spec.law);
   if (end_reached_time_ < 0.0 && any && s.tip >= c.length() - end_tolerance_) end_reached_time_ = t;
   samples_.push_back(std::move(s));
 }

@@ -61,7 +61,10 @@ CohesiveInterface make_interface(const InterfaceSpec& spec) {
   c.reversal_streak.assign(n, 0);
   const std::size_t g = nseg * CohesiveInterface::kGauss;
   for (auto* v : {&c.gp_dn, &c.gp_dt, &c.gp_tn, &c.gp_tt}) v->assign(g, 0.0);
-  c.gp_separated.assign(g, 0);
+  c.gp_separated.assign(g, spec.precracked ? 1 : 0);
+  c.gp_damage.assign(g, 0.0);
+  c.gp_slip.assign(g, 0.0);
+  if (spec.precracked) c.node_crack_time.assign(n, 0.0);
   for (auto* v : {&c.seg_fa_x, &c.seg_fa_y, &c.seg_fb_x, &c.seg_fb_y, &c.seg_ka, &c.seg_kb})
     v->assign(nseg, 0.0);
   return c;
@@ -71,15 +74,23 @@ double CohesiveInterface::stored_energy() const {
   // 4-point Gauss weights (they sum to 2 over [-1, 1]).
   static constexpr double w[kGauss] = {0.3478548451374538, 0.6521451548625461, 0.6521451548625461,
                                        0.3478548451374538};
-  double e = 0.0;
-  for (std::size_t s = 0; s < num_segments(); ++s) {
-    const double half = 0.5 * seg_length[s];
-    for (int g = 0; g < kGauss; ++g) {
-      const std::size_t i = s * kGauss + std::size_t(g);
-      if (!gp_separated[i]) e += w[g] * half * spec.law.potential(gp_dn[i], gp_dt[i]);
-    }
-  }
-  return e;
+  return std::visit(
+      [&](const auto& law) {
+        double e = 0.0;
+        for (std::size_t s = 0; s < num_segments(); ++s) {
+          const double half = 0.5 * seg_length[s];
+          for (int g = 0; g < kGauss; ++g) {
+            const std::size_t i = s * kGauss + std::size_t(g);
+            const GaussHistory h{gp_damage[i], gp_slip[i]};
+            if (!gp_separated[i])
+              e += w[g] * half * law.stored_energy(gp_dn[i], gp_dt[i], h);
+            else if (spec.contact)
+              e += w[g] * half * spec.contact_law.stored_energy(gp_dn[i], gp_dt[i], h);
+          }
+        }
+        return e;
+      },
+      spec.law);
 }
 
 }  // namespace rupture

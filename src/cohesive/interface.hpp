@@ -14,11 +14,13 @@
 // near the line (solver/cohesive_step.hpp: tie_bonded_nodes): one continuum there.
 // Units: m, m/s, N per unit thickness (N/m), J/m.
 #pragma once
+#include <cmath>
 #include <cstdint>
+#include <variant>
 #include <vector>
 
+#include "cohesive/law.hpp"
 #include "cohesive/polyline.hpp"
-#include "cohesive/xu_needleman.hpp"
 
 namespace rupture {
 
@@ -31,8 +33,17 @@ struct InterfaceSpec {
   double y = 0.0;                 // m
   double start = 0.0, end = 0.0;  // m
   int segments = 1;
-  XuNeedleman law;
-  double separation_factor = 5.0;  // multiple of delta_t (SPEC: 5)
+  // The traction-separation law (cohesive/law.hpp), chosen once per interface.
+  CohesiveLaw law = XuNeedleman{};
+  double separation_factor = 5.0;  // Xu-Needleman: separated at |jump| = this x delta_t (SPEC: 5)
+  // No cohesion at all (a pre-crack): every point starts separated; with `contact`, its faces
+  // still press and rub on each other.
+  bool precracked = false;
+  // Contact of separated points (after separation, and on a pre-crack): faces in compression
+  // do not pass through each other; optional Coulomb friction (cohesive/contact.hpp). Without
+  // it a separated point carries no traction (SPEC §3, the paper's choice).
+  bool contact = false;
+  ContactLaw contact_law;
   // Where the two fields are bonded (tied). Empty and `bonded`: the horizontal form, along y
   // from bonded_from to bonded_to.
   Polyline bonded_line;
@@ -71,6 +82,7 @@ struct CohesiveInterface {
   std::vector<double> gp_dn, gp_dt;        // jump at each Gauss point (segment-major), m
   std::vector<double> gp_tn, gp_tt;        // traction at each Gauss point, Pa
   std::vector<std::uint8_t> gp_separated;  // irreversible separation flags
+  std::vector<double> gp_damage, gp_slip;  // law history per Gauss point (GaussHistory)
   std::vector<double> seg_fa_x, seg_fa_y, seg_fb_x, seg_fb_y;  // per-segment end forces (scratch)
   // Tributary tangent stiffness of each node at its current openings, N/m^2 per unit
   // thickness (sum over the Gauss points of its segments of weight x N x the law's largest
@@ -101,11 +113,32 @@ struct CohesiveInterface {
   double jump_tangential(std::size_t k) const {
     return node_ny[k] * jump_x(k) - node_nx[k] * jump_y(k);
   }
-  double separation_opening() const { return spec.separation_factor * spec.law.delta_t; }
+  // The node crack criterion (E10): a node has cracked once crack_measure(law, jumps) reaches
+  // crack_threshold(law, separation_factor) (Xu-Needleman: |jump| >= 5 delta_t; bilinear:
+  // effective opening lambda >= 1, full softening).
   // Energy stored in intact Gauss points (potential of the law), J/m.
   double stored_energy() const;
 };
 
 CohesiveInterface make_interface(const InterfaceSpec& spec);
+
+inline double crack_measure(const XuNeedleman&, double dn, double dt) {
+  return std::hypot(dn, dt);
+}
+inline double crack_threshold(const XuNeedleman& law, double separation_factor) {
+  return separation_factor * law.delta_t;
+}
+inline double crack_measure(const BilinearLaw& law, double dn, double dt) {
+  return law.effective_opening(dn, dt);
+}
+inline double crack_threshold(const BilinearLaw&, double) {
+  return 1.0;
+}
+// An opening small against the law's own scale (m): the floor of the instability watch.
+inline double opening_scale(const CohesiveLaw& law) {
+  if (const auto* xn = std::get_if<XuNeedleman>(&law)) return xn->delta_n;
+  const BilinearLaw& b = std::get<BilinearLaw>(law);
+  return b.lambda0 * std::min(b.delta_nc, b.delta_tc);
+}
 
 }  // namespace rupture

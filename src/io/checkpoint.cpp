@@ -351,6 +351,8 @@ void fields(A& a, CohesiveInterface& c) {
   a("gp_tn", c.gp_tn);
   a("gp_tt", c.gp_tt);
   a("gp_separated", c.gp_separated);
+  a("gp_damage", c.gp_damage);
+  a("gp_slip", c.gp_slip);
   a("seg_fa_x", c.seg_fa_x);
   a("seg_fa_y", c.seg_fa_y);
   a("seg_fb_x", c.seg_fb_x);

@@ -3,6 +3,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <variant>
+
 #include "io/atomic_file.hpp"
 
 namespace rupture {
@@ -15,7 +18,17 @@ void write_interface_csv(const std::string& path, const CohesiveInterface& c, do
   for (std::size_t k = 0; k < c.num_nodes(); ++k) {
     const double dn = c.jump_normal(k), dt = c.jump_tangential(k);
     const bool cracked = c.node_crack_time[k] >= 0.0;
-    const CohesiveTraction T = cracked ? CohesiveTraction{0.0, 0.0} : c.spec.law.traction(dn, dt);
+    // The law at the node's jump, with the largest damage of the Gauss points around it.
+    GaussHistory h;
+    for (std::size_t g = 0; g < std::size_t(CohesiveInterface::kGauss); ++g) {
+      if (k < c.num_segments())
+        h.damage = std::max(h.damage, c.gp_damage[k * CohesiveInterface::kGauss + g]);
+      if (k > 0)
+        h.damage = std::max(h.damage, c.gp_damage[(k - 1) * CohesiveInterface::kGauss + g]);
+    }
+    const LawResponse r =
+        std::visit([&](const auto& law) { return law.respond(dn, dt, h); }, c.spec.law);
+    const CohesiveTraction T = cracked ? CohesiveTraction{0.0, 0.0} : CohesiveTraction{r.tn, r.tt};
     // Jumps and tractions in the node's frame (normal, tangent); forces and positions in x, y.
     s += fmt::format(
         "{:.9e},{:.9e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.9e},{:.9e},{},{:.9e},{:.9e},{:."

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <map>
 #include <optional>
 
 #include "cohesive/polyline.hpp"
@@ -175,6 +176,114 @@ void parse_interface_geometry(Section& f, InterfaceSpec& is, const Case& c, cons
   }
 }
 
+// Keys that belong to one law only: given with another, they are an error (not ignored).
+const std::vector<std::string> kXuNeedlemanKeys = {"delta_n", "delta_t", "q", "r", "separation"};
+const std::vector<std::string> kBilinearKeys = {"delta_nc", "delta_tc", "lambda0"};
+const std::vector<std::string> kCohesiveKeys = {"sigma_max", "tau_max", "penalty"};
+
+void reject_keys(Section& f, const std::vector<std::string>& keys, const std::string& law) {
+  for (const std::string& k : keys)
+    if (f.has(k)) fail(f.key(k), show(*f.node(k)), "not a parameter of law = \"" + law + "\"");
+}
+
+// A law's validate() message "name = value: rule" as the input error of its key (`keys` maps a
+// parameter name to its input key where they differ).
+void fail_on_invalid(Section& f, const std::string& problem,
+                     const std::map<std::string, std::string>& keys) {
+  if (problem.empty()) return;
+  const std::size_t eq = problem.find(" = "), colon = problem.find(": ", eq);
+  const std::string name = problem.substr(0, eq);
+  const auto it = keys.find(name);
+  fail(f.key(it == keys.end() ? name : it->second), problem.substr(eq + 3, colon - eq - 3),
+       problem.substr(colon + 2));
+}
+
+XuNeedleman parse_xu_needleman(Section& f, InterfaceSpec& is) {
+  XuNeedleman law;
+  law.sigma_max = f.number("sigma_max");
+  if (law.sigma_max <= 0) fail(f.key("sigma_max"), law.sigma_max, "must be > 0 (Pa)");
+  law.tau_max = f.number("tau_max", law.sigma_max);
+  if (law.tau_max <= 0) fail(f.key("tau_max"), law.tau_max, "must be > 0 (Pa)");
+  law.delta_n = f.number("delta_n");
+  if (law.delta_n <= 0) fail(f.key("delta_n"), law.delta_n, "must be > 0 (m)");
+  law.q = f.number("q", 1.0);
+  if (law.q <= 0) fail(f.key("q"), law.q, "must be > 0");
+  law.r = f.number("r", 0.0);
+  if (law.r < 0 || std::fabs(law.r - 1.0) < 1e-12)
+    fail(f.key("r"), law.r, "must be >= 0 and differ from 1");
+  if (f.has("delta_t")) {
+    law.delta_t = f.number("delta_t");
+    if (law.delta_t <= 0) fail(f.key("delta_t"), law.delta_t, "must be > 0 (m)");
+  } else {
+    // q = phi_t/phi_n with phi_t = sqrt(e/2) tau_max delta_t, phi_n = e sigma_max delta_n.
+    law.delta_t = law.q * std::exp(1.0) * law.sigma_max * law.delta_n /
+                  (std::sqrt(std::exp(1.0) / 2.0) * law.tau_max);
+  }
+  law.penalty = f.number("penalty", 1.0);
+  if (law.penalty < 0)
+    fail(f.key("penalty"), law.penalty, "must be >= 0 (multiple of phi_n/delta_n^2)");
+  is.separation_factor = f.number("separation", 5.0);
+  if (!(is.separation_factor > 0 && is.separation_factor <= 1000))
+    fail(f.key("separation"), is.separation_factor, "must lie in (0, 1000] (multiples of delta_t)");
+  return law;
+}
+
+BilinearLaw parse_bilinear(Section& f) {
+  BilinearLaw law;
+  law.sigma_max = f.number("sigma_max");
+  law.tau_max = f.number("tau_max", law.sigma_max);
+  law.delta_nc = f.number("delta_nc");
+  law.delta_tc = f.number("delta_tc", law.delta_nc);
+  law.lambda0 = f.number("lambda0", 0.01);
+  law.penalty = f.number("penalty", 1.0);
+  fail_on_invalid(f, law.validate(), {});
+  return law;
+}
+
+// law = "xu_needleman" (SPEC E7-E8, the default) | "bilinear" | "contact" (no cohesion: a
+// pre-crack whose faces only touch), and the contact of separated points.
+void parse_interface_law(Section& f, InterfaceSpec& is) {
+  const std::string law = f.string("law", "xu_needleman", {"xu_needleman", "bilinear", "contact"});
+  double default_contact_stiffness = 0.0;  // the law's own penalty: one stiffness for both
+  if (law == "xu_needleman") {
+    reject_keys(f, kBilinearKeys, law);
+    const XuNeedleman xn = parse_xu_needleman(f, is);
+    default_contact_stiffness = xn.penalty_stiffness();
+    is.law = xn;
+  } else if (law == "bilinear") {
+    reject_keys(f, kXuNeedlemanKeys, law);
+    const BilinearLaw b = parse_bilinear(f);
+    default_contact_stiffness = b.penalty_stiffness();
+    is.law = b;
+  } else {
+    reject_keys(f, kXuNeedlemanKeys, law);
+    reject_keys(f, kBilinearKeys, law);
+    reject_keys(f, kCohesiveKeys, law);
+    is.precracked = true;
+  }
+  is.contact = f.boolean("contact", law == "contact");
+  if (law == "contact" && !is.contact)
+    fail(f.key("contact"), "false", "law = \"contact\" is contact only: it needs contact = true");
+  const bool contact_keys =
+      f.has("friction") || f.has("contact_stiffness") || f.has("contact_tangential_stiffness");
+  if (!is.contact && contact_keys)
+    fail(f.key("contact"), "false", "friction and contact_stiffness need contact = true");
+  if (!is.contact) return;
+  ContactLaw& k = is.contact_law;
+  if (law == "contact" && !f.has("contact_stiffness"))
+    fail(f.key("contact_stiffness"), "(missing)",
+         "required with law = \"contact\": the normal penalty, Pa/m, > 0");
+  k.stiffness = f.number("contact_stiffness", default_contact_stiffness);
+  k.friction = f.number("friction", 0.0);
+  k.tangential_stiffness = f.number("contact_tangential_stiffness", 0.0);
+  fail_on_invalid(f, k.validate(),
+                  {{"stiffness", "contact_stiffness"},
+                   {"tangential_stiffness", "contact_tangential_stiffness"}});
+  if (!(k.stiffness > 0))
+    fail(f.key("contact_stiffness"), k.stiffness,
+         "must be > 0 (Pa/m; the law's penalty is 0 here: give it)");
+}
+
 }  // namespace
 
 void parse_interfaces(Section& top, Case& c, ParseContext& ctx) {
@@ -183,10 +292,34 @@ void parse_interfaces(Section& top, Case& c, ParseContext& ctx) {
   for (const auto& [k, v] : in_input_order(ifs.raw())) {
     const std::string& name = k;
     Section f = ifs.table(name, true,
-                          {"upper_body", "lower_body", "y",          "start",     "end",
-                           "points",     "closed",     "center",     "radius",    "segments",
-                           "sigma_max",  "tau_max",    "delta_n",    "delta_t",   "q",
-                           "r",          "penalty",    "separation", "bonded_to", "bonded_points"});
+                          {"upper_body",
+                           "lower_body",
+                           "y",
+                           "start",
+                           "end",
+                           "points",
+                           "closed",
+                           "center",
+                           "radius",
+                           "segments",
+                           "law",
+                           "sigma_max",
+                           "tau_max",
+                           "delta_n",
+                           "delta_t",
+                           "q",
+                           "r",
+                           "penalty",
+                           "separation",
+                           "delta_nc",
+                           "delta_tc",
+                           "lambda0",
+                           "contact",
+                           "friction",
+                           "contact_stiffness",
+                           "contact_tangential_stiffness",
+                           "bonded_to",
+                           "bonded_points"});
     InterfaceSpec is;
     std::vector<std::string> names;
     for (const auto& bb : c.bodies) names.push_back(bb.name);
@@ -210,33 +343,7 @@ void parse_interfaces(Section& top, Case& c, ParseContext& ctx) {
                        "its own bodies.NAME.field)",
                        up.name, lo.name, c.field_names[std::size_t(up.field)]));
     parse_interface_geometry(f, is, c, up, lo);
-    XuNeedleman& law = is.law;
-    law.sigma_max = f.number("sigma_max");
-    if (law.sigma_max <= 0) fail(f.key("sigma_max"), law.sigma_max, "must be > 0 (Pa)");
-    law.tau_max = f.number("tau_max", law.sigma_max);
-    if (law.tau_max <= 0) fail(f.key("tau_max"), law.tau_max, "must be > 0 (Pa)");
-    law.delta_n = f.number("delta_n");
-    if (law.delta_n <= 0) fail(f.key("delta_n"), law.delta_n, "must be > 0 (m)");
-    law.q = f.number("q", 1.0);
-    if (law.q <= 0) fail(f.key("q"), law.q, "must be > 0");
-    law.r = f.number("r", 0.0);
-    if (law.r < 0 || std::fabs(law.r - 1.0) < 1e-12)
-      fail(f.key("r"), law.r, "must be >= 0 and differ from 1");
-    if (f.has("delta_t")) {
-      law.delta_t = f.number("delta_t");
-      if (law.delta_t <= 0) fail(f.key("delta_t"), law.delta_t, "must be > 0 (m)");
-    } else {
-      // q = phi_t/phi_n with phi_t = sqrt(e/2) tau_max delta_t, phi_n = e sigma_max delta_n.
-      law.delta_t = law.q * std::exp(1.0) * law.sigma_max * law.delta_n /
-                    (std::sqrt(std::exp(1.0) / 2.0) * law.tau_max);
-    }
-    law.penalty = f.number("penalty", 1.0);
-    if (law.penalty < 0)
-      fail(f.key("penalty"), law.penalty, "must be >= 0 (multiple of phi_n/delta_n^2)");
-    is.separation_factor = f.number("separation", 5.0);
-    if (!(is.separation_factor > 0 && is.separation_factor <= 1000))
-      fail(f.key("separation"), is.separation_factor,
-           "must lie in (0, 1000] (multiples of delta_t)");
+    parse_interface_law(f, is);
     c.interfaces.push_back(is);
     c.interface_names.push_back(name);
   }

@@ -1,9 +1,12 @@
 // rupture/solver/cohesive_step.cpp
 #include "solver/cohesive_step.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
+#include <type_traits>
+#include <variant>
 
 #include "core/errors.hpp"
 
@@ -67,16 +70,24 @@ inline bool face_inside(const Grid& g, double x, double y) {
 
 }  // namespace
 
-void evaluate_interface(CohesiveInterface& c, double t, double t_before) {
-  const XuNeedleman& law = c.spec.law;
-  const double crit = c.separation_opening();
+namespace {
+
+// The Gauss-point and node loops of evaluate_interface for one law type (dispatched once per
+// interface: no law test inside the loops).
+template <class Law>
+void evaluate_with(CohesiveInterface& c, const Law& law, double t, double t_before) {
+  constexpr bool kXuNeedleman = std::is_same_v<Law, XuNeedleman>;
+  const double crit = crack_threshold(law, c.spec.separation_factor);
+  const bool contact = c.spec.contact;
+  const ContactLaw& contact_law = c.spec.contact_law;
   const long nseg = long(c.num_segments());
   double work = 0.0;
 #pragma omp parallel for schedule(static) reduction(+ : work)
   for (long sl = 0; sl < nseg; ++sl) {
     const std::size_t s = std::size_t(sl), e = c.segment_end(s);
     const double half = 0.5 * c.seg_length[s];
-    // The segment's frame: normal n, tangent t = (n_y, -n_x) (exactly +y, +x on a line drawn in +x).
+    // The segment's frame: normal n, tangent t = (n_y, -n_x) (exactly +y, +x on a line drawn in
+    // +x).
     const double nx = c.seg_nx[s], ny = c.seg_ny[s], tx = ny, ty = -nx;
     const double jx_a = c.jump_x(s), jx_b = c.jump_x(e);
     const double jy_a = c.jump_y(s), jy_b = c.jump_y(e);
@@ -86,18 +97,23 @@ void evaluate_interface(CohesiveInterface& c, double t, double t_before) {
       const double Na = 0.5 * (1.0 - kXi[g]), Nb = 0.5 * (1.0 + kXi[g]);
       const double jx = Na * jx_a + Nb * jx_b, jy = Na * jy_a + Nb * jy_b;  // linear jump
       const double dn = nx * jx + ny * jy, dt = tx * jx + ty * jy;          // in the segment frame
-      double tn = 0.0, tt = 0.0, k = 0.0;
-      if (!c.gp_separated[i] && std::hypot(dn, dt) >= crit) c.gp_separated[i] = 1;
-      if (!c.gp_separated[i]) {
-        const XuNeedleman::Openings o = law.openings(dn, dt);  // two exponentials for both
-        const CohesiveTraction T = law.traction(o, dn);
-        tn = T.normal;
-        tt = T.tangential;
-        k = law.stability_stiffness(o, dn);  // E6 bound (solver/time_step.hpp)
+      GaussHistory h{c.gp_damage[i], c.gp_slip[i]};
+      LawResponse r{0.0, 0.0, 0.0};
+      if constexpr (kXuNeedleman) {  // separated at |jump| >= 5 delta_t (SPEC §3)
+        if (!c.gp_separated[i] && std::hypot(dn, dt) >= crit) c.gp_separated[i] = 1, h.slip = dt;
       }
+      if (!c.gp_separated[i]) {
+        r = law.respond(dn, dt, h);  // E7-E8; stiffness: the E6 bound (solver/time_step.hpp)
+        if (law.separated(h)) c.gp_separated[i] = 1, h.slip = dt, r = {0.0, 0.0, 0.0};
+      } else if (contact) {
+        r = contact_law.respond(dn, dt, h);
+      }
+      c.gp_damage[i] = h.damage, c.gp_slip[i] = h.slip;
+      const double tn = r.tn, tt = r.tt, k = r.stiffness;
       // Work of the tractions over the step, trapezoidal in time (E14).
       const double jw = kW[g] * half;
-      work += jw * (0.5 * (c.gp_tn[i] + tn) * (dn - c.gp_dn[i]) + 0.5 * (c.gp_tt[i] + tt) * (dt - c.gp_dt[i]));
+      work += jw * (0.5 * (c.gp_tn[i] + tn) * (dn - c.gp_dn[i]) +
+                    0.5 * (c.gp_tt[i] + tt) * (dt - c.gp_dt[i]));
       c.gp_dn[i] = dn, c.gp_dt[i] = dt, c.gp_tn[i] = tn, c.gp_tt[i] = tt;
       fa_n += jw * Na * tn, fa_t += jw * Na * tt;
       fb_n += jw * Nb * tn, fb_t += jw * Nb * tt;
@@ -122,19 +138,39 @@ void evaluate_interface(CohesiveInterface& c, double t, double t_before) {
     if (has_prev) fx += c.seg_fb_x[prev], fy += c.seg_fb_y[prev], stiff += c.seg_kb[prev];
     if (k <= last_seg) fx += c.seg_fa_x[k], fy += c.seg_fa_y[k], stiff += c.seg_ka[k];
     c.fx_node[k] = fx, c.fy_node[k] = fy, c.stiffness_node[k] = stiff;
-    const double jump = std::hypot(c.jump_normal(k), c.jump_tangential(k));
-    if (c.node_crack_time[k] < 0.0 && jump >= crit) {
+    const double opening = crack_measure(law, c.jump_normal(k), c.jump_tangential(k));
+    if (c.node_crack_time[k] < 0.0 && opening >= crit) {
       // Linear in time between the step's ends: the E10 tip is then sampled at exact times.
       const double before = c.jump_before[k];
-      const double f = before < crit && jump > before ? (crit - before) / (jump - before) : 1.0;
+      const double f =
+          before < crit && opening > before ? (crit - before) / (opening - before) : 1.0;
       c.node_crack_time[k] = t_before + f * (t - t_before);
     }
   }
 }
 
+}  // namespace
+
+void evaluate_interface(CohesiveInterface& c, double t, double t_before) {
+  std::visit([&](const auto& law) { evaluate_with(c, law, t, t_before); }, c.spec.law);
+}
+
+namespace {
+// jump_before: each node's crack measure before the faces move (node crack times, E10).
+void record_openings(CohesiveInterface& c) {
+  std::visit(
+      [&](const auto& law) {
+        for (std::size_t k = 0; k < c.num_nodes(); ++k)
+          c.jump_before[k] = crack_measure(law, c.jump_normal(k), c.jump_tangential(k));
+      },
+      c.spec.law);
+}
+}  // namespace
+
 void update_face_stencils(State& s) {
   for (CohesiveInterface& c : s.interfaces) {
-    const std::size_t up = s.fields.offset(c.spec.upper_field), lo = s.fields.offset(c.spec.lower_field);
+    const std::size_t up = s.fields.offset(c.spec.upper_field),
+                      lo = s.fields.offset(c.spec.lower_field);
     const long n = long(c.num_nodes());
     c.face_up.resize(c.num_nodes());
     c.face_lo.resize(c.num_nodes());
@@ -154,7 +190,8 @@ void update_face_stencils(State& s) {
     if (bad < n) {
       const std::size_t k = std::size_t(bad);
       throw SimulationError(fmt::format(
-          "unstable: cohesive interface node {} at (x, y) = ({:.6g}, {:.6g}) m has a face at a non-finite "
+          "unstable: cohesive interface node {} at (x, y) = ({:.6g}, {:.6g}) m has a face at a "
+          "non-finite "
           "position or outside the grid at step {}, t = {:.6g} s: upper face displacement ({:.4g}, "
           "{:.4g}) m, lower ({:.4g}, {:.4g}) m; reduce time.cohesive_safety or time.cfl",
           k, c.x0[k], c.y0[k], s.step, s.time, c.ux_up[k], c.uy_up[k], c.ux_lo[k], c.uy_lo[k]));
@@ -196,7 +233,8 @@ std::vector<std::size_t> bonded_nodes(const Grid& g, const InterfaceSpec& spec) 
     ylo = std::min(ylo, tie.y[v]), yhi = std::max(yhi, tie.y[v]);
   }
   auto node_width = [](const Axis& a, int i) {
-    return std::max(a.width(std::clamp(i - 1, 0, a.cells - 1)), a.width(std::clamp(i, 0, a.cells - 1)));
+    return std::max(a.width(std::clamp(i - 1, 0, a.cells - 1)),
+                    a.width(std::clamp(i, 0, a.cells - 1)));
   };
   const double tol = 1e-9 * std::min(g.x.h, g.y.h);
   for (int j = 0; j < g.nodes_y(); ++j) {
@@ -218,7 +256,9 @@ void tie_bonded_nodes(State& s, TieWhat what) {
   for (std::size_t c = 0; c < s.interfaces.size(); ++c) {
     const std::size_t up = G.offset(s.interfaces[c].spec.upper_field);
     const std::size_t lo = G.offset(s.interfaces[c].spec.lower_field);
-    auto tie = [&](std::vector<double>& v, std::size_t n) { v[up + n] = v[lo + n] = v[up + n] + v[lo + n]; };
+    auto tie = [&](std::vector<double>& v, std::size_t n) {
+      v[up + n] = v[lo + n] = v[up + n] + v[lo + n];
+    };
     for (std::size_t n : s.bonded[c]) {
       if (what == TieWhat::mass_momentum) {
         for (auto* v : {&G.mass, &G.mom_x, &G.mom_y}) tie(*v, n);
@@ -246,16 +286,19 @@ constexpr int kUnstableStreak = 4;
 constexpr double kUnstableGrowth = 1e3;
 constexpr double kUnstableIncrement = 1e-3;  // x delta_n
 
-[[noreturn]] void throw_cohesive_oscillation(const State& s, const CohesiveInterface& c, std::size_t k) {
+[[noreturn]] void throw_cohesive_oscillation(const State& s, const CohesiveInterface& c,
+                                             std::size_t k) {
   throw SimulationError(fmt::format(
       "unstable: cohesive interface oscillates at node {} (x, y) = ({:.6g}, {:.6g}) m: its jump "
-      "increment reversed sign and grew for {} steps in a row, {:.3g} times over, to ({:.3g}, {:.3g}) m "
-      "per step (normal, tangential), at step {}, t = {:.6g} s, with dt = {:.4g} s against a cohesive "
+      "increment reversed sign and grew for {} steps in a row, {:.3g} times over, to ({:.3g}, "
+      "{:.3g}) m "
+      "per step (normal, tangential), at step {}, t = {:.6g} s, with dt = {:.4g} s against a "
+      "cohesive "
       "stability limit of {:.4g} s; the step is too long for the interface stiffness (reduce "
       "time.cohesive_safety or time.cfl)",
       k, c.x0[k], c.y0[k], c.reversal_streak[k],
-      std::hypot(c.last_increment_n[k], c.last_increment_t[k]) / c.streak_base[k], c.last_increment_n[k],
-      c.last_increment_t[k], s.step, s.time, s.dt, s.limits.cohesive_dt));
+      std::hypot(c.last_increment_n[k], c.last_increment_t[k]) / c.streak_base[k],
+      c.last_increment_n[k], c.last_increment_t[k], s.step, s.time, s.dt, s.limits.cohesive_dt));
 }
 
 }  // namespace
@@ -264,7 +307,8 @@ void advance_interfaces(State& s, const double* vel_x, const double* vel_y) {
   const double dt = s.dt;
   for (CohesiveInterface& c : s.interfaces) {
     const long n = long(c.num_nodes());
-    const double floor = kUnstableIncrement * c.spec.law.delta_n;
+    const double floor = kUnstableIncrement * opening_scale(c.spec.law);
+    record_openings(c);  // the crack measure before the faces move (node crack times)
     long unstable = n;
 #pragma omp parallel for schedule(static) reduction(min : unstable)
     for (long kl = 0; kl < n; ++kl) {
@@ -278,7 +322,6 @@ void advance_interfaces(State& s, const double* vel_x, const double* vel_y) {
         vax += a.c[q] * vel_x[a.node[q]], vay += a.c[q] * vel_y[a.node[q]];
         vbx += b.c[q] * vel_x[b.node[q]], vby += b.c[q] * vel_y[b.node[q]];
       }
-      c.jump_before[k] = std::hypot(c.jump_normal(k), c.jump_tangential(k));
       c.ux_up[k] += dt * vax, c.uy_up[k] += dt * vay;
       c.ux_lo[k] += dt * vbx, c.uy_lo[k] += dt * vby;
       // Instability watch on the intact part (an opened crack moves freely).
@@ -292,7 +335,8 @@ void advance_interfaces(State& s, const double* vel_x, const double* vel_y) {
         c.reversal_streak[k] = 0;
       }
       c.last_increment_n[k] = inc_n, c.last_increment_t[k] = inc_t;
-      if (c.reversal_streak[k] >= kUnstableStreak && size > floor && size > kUnstableGrowth * c.streak_base[k])
+      if (c.reversal_streak[k] >= kUnstableStreak && size > floor &&
+          size > kUnstableGrowth * c.streak_base[k])
         unstable = std::min(unstable, kl);
     }
     if (unstable < n) throw_cohesive_oscillation(s, c, std::size_t(unstable));

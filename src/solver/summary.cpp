@@ -31,12 +31,15 @@ CaseSummary summarize(const Case& c) {
   // h of interface). The run recomputes both terms every step from the actual state.
   const int ppc = c.grid.particles_per_cell;
   for (const ElasticMaterial& m : c.materials)
-    s.bulk_eigen_bound = std::max(s.bulk_eigen_bound, bulk_eigen_bound(stiffness(m, c.plane), m.density, ppc, h));
+    s.bulk_eigen_bound =
+        std::max(s.bulk_eigen_bound, bulk_eigen_bound(stiffness(m, c.plane), m.density, ppc, h));
   s.dt_bulk = 2.0 / std::sqrt(s.bulk_eigen_bound);
   for (const InterfaceSpec& is : c.interfaces) {
     const double rho = std::min(c.materials[c.bodies[is.upper_body].material].density,
                                 c.materials[c.bodies[is.lower_body].material].density);
-    const double k = is.law.stability_stiffness(0.0, 0.0) * h;
+    const double law_k = is.precracked ? 0.0 : stiffness_at_rest(is.law);
+    const double contact_k = is.contact ? is.contact_law.stability_stiffness() : 0.0;
+    const double k = std::max(law_k, contact_k) * h;
     const double m = 0.5 * rho * h * h;
     const double scheme = c.solver.scheme == Scheme::MUSL ? 1.0 : 2.0;  // solver/time_step.cpp
     const double limit = 2.0 / std::sqrt(scheme * (s.bulk_eigen_bound + 2.0 * k / m));
@@ -45,9 +48,9 @@ CaseSummary summarize(const Case& c) {
   if (s.dt_cohesive > 0) s.dt = std::min(s.dt, c.time.cohesive_safety * s.dt_cohesive);
   s.steps = long(std::ceil(c.time.end / s.dt - 1e-9));
   const long ppcl = ppc;
-  const int levels = c.grid.refined()
-                         ? int(std::lround(std::log2(c.grid.coarse_cell_size / c.grid.cell_size))) + 1
-                         : 1;
+  const int levels =
+      c.grid.refined() ? int(std::lround(std::log2(c.grid.coarse_cell_size / c.grid.cell_size))) + 1
+                       : 1;
   s.cells_per_level.assign(std::size_t(levels), 0);
   s.particles_per_level.assign(std::size_t(levels), 0);
   for (int L = 0; L < levels; ++L)
@@ -99,7 +102,8 @@ CaseSummary summarize(const Case& c) {
           const double xc = grid.x.node(i) + 0.5 * grid.x.width(i);
           if (xc < b.min[0] - tol || xc > b.max[0] + tol) continue;
           n += ppcl * ppcl;
-          s.particles_per_level[std::size_t(level_of(grid.x.width(i), grid.y.width(j)))] += ppcl * ppcl;
+          s.particles_per_level[std::size_t(level_of(grid.x.width(i), grid.y.width(j)))] +=
+              ppcl * ppcl;
         }
       }
       s.particles_per_body.push_back(n);
@@ -111,9 +115,11 @@ CaseSummary summarize(const Case& c) {
   // double array for the permutation).
   std::size_t interface_bytes = 0;
   for (const InterfaceSpec& is : c.interfaces)
-    interface_bytes += std::size_t(is.segments) * (4 * 4 * sizeof(double) + 4 + 4 * sizeof(double)) +
-                       std::size_t(is.segments + 1) * 8 * sizeof(double);
-  s.memory_bytes = interface_bytes + std::size_t(s.nodes) * std::size_t(s.fields) * 11 * sizeof(double) +
+    interface_bytes +=
+        std::size_t(is.segments) * (4 * 4 * sizeof(double) + 4 + 4 * sizeof(double)) +
+        std::size_t(is.segments + 1) * 8 * sizeof(double);
+  s.memory_bytes = interface_bytes +
+                   std::size_t(s.nodes) * std::size_t(s.fields) * 11 * sizeof(double) +
                    std::size_t(s.particles) * (Particles::bytes_per_particle() + 12);
   return s;
 }
