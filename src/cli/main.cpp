@@ -256,6 +256,17 @@ int main(int argc, char** argv) {
       fmt::print("crack.final_traction_zone_length={:.6e}\n", k.final_traction_zone);
       fmt::print("crack.end_reached_time={:.6e}\n", k.end_reached_time);
       fmt::print("crack.regime={}\n", k.regime);
+      // Every interface by name, in input order (the first also under crack.* above).
+      for (std::size_t i = 0; i < r.cracks.size(); ++i) {
+        const CrackSummary& q = r.cracks[i];
+        const std::string& n = c.interface_names[i];
+        fmt::print("crack.{}.initiation_time={:.6e}\n", n, q.initiation_time);
+        fmt::print("crack.{}.initiation_s={:.6e}\n", n, q.initiation_s);
+        fmt::print("crack.{}.sustained_speed={:.1f}\n", n, q.sustained_speed);
+        fmt::print("crack.{}.back_speed={:.1f}\n", n, q.back_speed);
+        fmt::print("crack.{}.final_tip_s={:.6e}\n", n, q.final_tip_s);
+        fmt::print("crack.{}.regime={}\n", n, q.regime);
+      }
     }
     fmt::print("output={}\n", out_dir);
     if (r.outcome == Outcome::interrupted) {

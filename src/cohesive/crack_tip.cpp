@@ -170,7 +170,7 @@ CrackSummary CrackTracker::summarize(const CohesiveInterface& c, const WaveSpeed
       t.push_back(s.time), x.push_back(s.tip), b.push_back(s.back);
   r.sustained_speed = t.size() >= 2 ? least_squares_slope(t.data(), x.data(), t.size()) : 0.0;
   if (!std::isfinite(r.sustained_speed)) r.sustained_speed = 0.0;
-  r.back_speed = t.size() >= 2 ? -least_squares_slope(t.data(), b.data(), t.size()) : 0.0;
+  r.back_speed = t.size() >= 2 ? 0.0 - least_squares_slope(t.data(), b.data(), t.size()) : 0.0;
   if (!std::isfinite(r.back_speed)) r.back_speed = 0.0;
   r.regime = r.initiated ? crack_regime(r.sustained_speed, waves) : "none";
   return r;

@@ -77,7 +77,23 @@ std::string run_json(const Case& c, const CaseSummary& s, const RunRecord& r) {
                      {"final_cohesive_zone_length", cs.final_cohesive_zone},
                      {"final_traction_zone_length", cs.final_traction_zone},
                      {"end_reached_time", cs.end_reached_time},
+                     {"final_tip_y", cs.final_tip_y},
+                     {"final_tip_s", cs.final_tip_s},
+                     {"initiation_s", cs.initiation_s},
+                     {"back_speed", finite(cs.back_speed)},
+                     {"upper_body", c.bodies[std::size_t(c.interfaces[k].upper_body)].name},
+                     {"lower_body", c.bodies[std::size_t(c.interfaces[k].lower_body)].name},
                      {"regime", cs.regime}};
+      // Speeds against the wave speeds of both adjoining materials (a bimaterial interface has two).
+      for (const char* side : {"upper", "lower"}) {
+        const InterfaceSpec& is = c.interfaces[k];
+        const int body = std::string(side) == "upper" ? is.upper_body : is.lower_body;
+        const WaveSpeeds& w = s.speeds[std::size_t(c.bodies[std::size_t(body)].material)];
+        const std::string p = std::string("sustained_speed_over_");
+        ct.insert(p + "cR_" + side, finite(cs.sustained_speed / w.rayleigh));
+        ct.insert(p + "cS_" + side, finite(cs.sustained_speed / w.shear));
+        ct.insert(p + "cD_" + side, finite(cs.sustained_speed / w.dilatational));
+      }
       if (k == 0) {
         t.insert("crack", ct);
         for (auto&& [key, value] : ct) t.insert("crack." + std::string(key.str()), value);
