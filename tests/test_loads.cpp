@@ -251,6 +251,46 @@ acceleration = [300.0, -9810.0]
   std::printf("v_com = (%.10g, %.10g) m/s at t = %g s; energy error %.3e\n", px / m, py / m, s.time, err);
 }
 
+// `bodies` names bodies, and loads act on their velocity fields: with two bodies sharing a field
+// before it, the third body's field is not its body index (a bug once: nothing was loaded).
+TEST(BodyForce, acts_on_the_field_of_the_named_body_when_bodies_share_fields) {
+  std::string t = test::strip_case_toml();
+  const auto b = t.find("[bodies.strip]"), o = t.find("[time]");
+  const std::string bodies = R"([bodies.a]
+material = "homalite"
+min = [0.0, 0.0]
+max = [0.003, 0.002]
+field = "ab"
+[bodies.b]
+material = "homalite"
+min = [0.003, 0.0]
+max = [0.006, 0.002]
+field = "ab"
+[bodies.c]
+material = "homalite"
+min = [0.007, 0.0]
+max = [0.01, 0.002]
+)";
+  std::string text = t.substr(0, b) + bodies + t.substr(o);
+  text = text.substr(0, text.find("[boundary.push]")) + R"([loads.push_c]
+type = "body_force"
+acceleration = [1000.0, 0.0]
+bodies = ["c"]
+)" + text.substr(text.find("[output]"));
+  const Case c = parse_case(text);
+  ASSERT_EQ(c.loads.body_forces[0].fields, std::vector<int>{1}) << "body c is in field 1";
+  State s = make_state(c);
+  run_to(s, 1e-6);
+  double vc = 0, vab = 0;
+  int nc = 0;
+  for (std::size_t k = 0; k < s.particles.size(); ++k) {
+    if (s.particles.field[k] == 1) vc += s.particles.vx[k], ++nc;
+    else vab = std::max(vab, std::fabs(s.particles.vx[k]));
+  }
+  EXPECT_NEAR(vc / nc, 1000.0 * s.time, 1e-9) << "body c accelerates at g";
+  EXPECT_EQ(vab, 0.0) << "bodies a and b are not loaded";
+}
+
 // ---- velocity region ----
 
 TEST(VelocityRegion, region_moves_at_the_prescribed_speed_along_d_and_is_free_across) {
