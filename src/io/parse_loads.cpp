@@ -17,7 +17,7 @@ const std::vector<std::string> kFunctionKeys = {"function",  "rise_time", "plate
 
 std::vector<std::string> keys_for(const std::string& type) {
   std::vector<std::string> k = {"type"};
-  if (type == "traction") k.insert(k.end(), {"from", "to", "traction", "normal", "shear"});
+  if (type == "traction") k.insert(k.end(), {"from", "to", "traction", "normal", "shear", "bodies"});
   if (type == "body_force") k.insert(k.end(), {"acceleration", "bodies"});
   if (type == "velocity") k.insert(k.end(), {"min", "max", "direction", "velocity", "bodies"});
   k.insert(k.end(), kFunctionKeys.begin(), kFunctionKeys.end());
@@ -89,6 +89,7 @@ void parse_loads(Section& top, Case& c, ParseContext& ctx) {
       l.pair("traction", t.traction, false);
       t.normal = l.number("normal", 0.0);
       t.shear = l.number("shear", 0.0);
+      t.fields = body_fields(l, c, ctx);
       c.loads.tractions.push_back(t);
     } else if (type == "body_force") {
       BodyForceLoad b;
