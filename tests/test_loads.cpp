@@ -232,6 +232,61 @@ TEST(Traction, step_traction_launches_plane_wave_with_v_sigma_over_rho_cD_on_any
   EXPECT_NEAR(vs[0], vs[1], 1e-9 * v_expected) << "the rotated load must give the rotated answer";
 }
 
+// The faces of a crack: two bodies (different fields) meet along y = 1 mm. Both have a surface
+// there; `bodies` picks the one the traction loads, with its own outward normal.
+TEST(Traction, segment_between_two_bodies_loads_the_named_body_only) {
+  std::string t = test::strip_case_toml();
+  const auto b = t.find("[bodies.strip]"), o = t.find("[output]");
+  const std::string bodies = R"([bodies.lower]
+material = "homalite"
+min = [0.0, 0.0]
+max = [0.01, 0.001]
+[bodies.upper]
+material = "homalite"
+min = [0.0, 0.001]
+max = [0.01, 0.002]
+[time]
+end = 1e-6
+[loads.open]
+type = "traction"
+from = [0.002, 0.001]
+to = [0.006, 0.001]
+normal = -1e6
+bodies = ["upper"]
+)";
+  const Case c = parse_case(t.substr(0, b) + bodies + t.substr(o));
+  ASSERT_EQ(c.loads.tractions.size(), 1u);
+  ASSERT_EQ(c.loads.tractions[0].fields, std::vector<int>{1});
+  State s = make_state(c);
+  const TractionPatch& patch = s.loads.patches[0];
+  EXPECT_EQ(patch.ids.size(), std::size_t(0.004 / 0.25e-3)) << "one row of the upper body";
+  for (std::uint32_t id : patch.ids) {
+    for (std::size_t k = 0; k < s.particles.size(); ++k) {
+      if (s.particles.id[k] == id) {
+        EXPECT_EQ(int(s.particles.field[k]), 1);
+      }
+    }
+  }
+  EXPECT_NEAR(patch.normal[1], -1.0, 1e-15) << "outward normal of the upper body's bottom face";
+  run_to(s, 0.5e-6);
+  double upper = 0, lower = 0;
+  for (std::size_t k = 0; k < s.particles.size(); ++k)
+    (s.particles.field[k] == 1 ? upper : lower) += s.particles.mass[k] * s.particles.vy[k];
+  EXPECT_GT(upper, 0.0) << "compression on the upper face pushes the upper body up";
+  EXPECT_EQ(lower, 0.0) << "the lower body is not loaded";
+  // Without `bodies` the segment has material on both sides; the message says what to do.
+  std::string both = t.substr(0, b) + bodies + t.substr(o);
+  both.erase(both.find("bodies = [\"upper\"]"), 18);
+  const std::string e = error_of(both);
+  EXPECT_EQ(e, "no error") << "parsing alone does not see the particles";
+  try {
+    make_state(parse_case(both));
+    ADD_FAILURE() << "expected an InputError";
+  } catch (const InputError& err) {
+    EXPECT_NE(std::string(err.what()).find("loads.open.bodies"), std::string::npos) << err.what();
+  }
+}
+
 // ---- body force ----
 
 TEST(BodyForce, free_block_falls_with_g_and_the_energy_balance_closes) {
@@ -249,6 +304,46 @@ acceleration = [300.0, -9810.0]
   const double err = energy_error(s);
   EXPECT_LT(err, 1e-6) << "energy balance";
   std::printf("v_com = (%.10g, %.10g) m/s at t = %g s; energy error %.3e\n", px / m, py / m, s.time, err);
+}
+
+// `bodies` names bodies, and loads act on their velocity fields: with two bodies sharing a field
+// before it, the third body's field is not its body index (a bug once: nothing was loaded).
+TEST(BodyForce, acts_on_the_field_of_the_named_body_when_bodies_share_fields) {
+  std::string t = test::strip_case_toml();
+  const auto b = t.find("[bodies.strip]"), o = t.find("[time]");
+  const std::string bodies = R"([bodies.a]
+material = "homalite"
+min = [0.0, 0.0]
+max = [0.003, 0.002]
+field = "ab"
+[bodies.b]
+material = "homalite"
+min = [0.003, 0.0]
+max = [0.006, 0.002]
+field = "ab"
+[bodies.c]
+material = "homalite"
+min = [0.007, 0.0]
+max = [0.01, 0.002]
+)";
+  std::string text = t.substr(0, b) + bodies + t.substr(o);
+  text = text.substr(0, text.find("[boundary.push]")) + R"([loads.push_c]
+type = "body_force"
+acceleration = [1000.0, 0.0]
+bodies = ["c"]
+)" + text.substr(text.find("[output]"));
+  const Case c = parse_case(text);
+  ASSERT_EQ(c.loads.body_forces[0].fields, std::vector<int>{1}) << "body c is in field 1";
+  State s = make_state(c);
+  run_to(s, 1e-6);
+  double vc = 0, vab = 0;
+  int nc = 0;
+  for (std::size_t k = 0; k < s.particles.size(); ++k) {
+    if (s.particles.field[k] == 1) vc += s.particles.vx[k], ++nc;
+    else vab = std::max(vab, std::fabs(s.particles.vx[k]));
+  }
+  EXPECT_NEAR(vc / nc, 1000.0 * s.time, 1e-9) << "body c accelerates at g";
+  EXPECT_EQ(vab, 0.0) << "bodies a and b are not loaded";
 }
 
 // ---- velocity region ----

@@ -47,6 +47,9 @@ TractionPatch find_traction_patch(const TractionLoad& load, const Particles& p, 
   std::vector<double> raw;
   int left_side = 0, right_side = 0;
   for (std::size_t k = 0; k < p.size(); ++k) {
+    if (!load.fields.empty() &&
+        std::find(load.fields.begin(), load.fields.end(), int(p.field[k])) == load.fields.end())
+      continue;
     const double lo[2] = {p.x[k] - p.half_x[k] - tol, p.y[k] - p.half_y[k] - tol};
     const double hi[2] = {p.x[k] + p.half_x[k] + tol, p.y[k] + p.half_y[k] + tol};
     const double len = clipped_length(A, s, L, lo, hi);
@@ -65,7 +68,8 @@ TractionPatch find_traction_patch(const TractionLoad& load, const Particles& p, 
   if (left_side > 0 && right_side > 0)
     throw InputError(fmt::format(
         "input keys '{0}.from', '{0}.to' = {1}: material lies on both sides of the segment ({2} "
-        "and {3} particles); a traction segment must lie on the surface of the material",
+        "and {3} particles); a traction segment must lie on the surface of the material (on a "
+        "line between two bodies, e.g. a crack's faces, name the loaded one: {0}.bodies = [...])",
         key, seg, left_side, right_side));
   // Outward normal: away from the material.
   const double sign = right_side > 0 ? -1.0 : 1.0;

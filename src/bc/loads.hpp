@@ -31,6 +31,9 @@ struct TractionLoad {
   double traction[2]{};       // Pa (global)
   double normal = 0.0;        // Pa, > 0 tension (segment frame)
   double shear = 0.0;         // Pa, along from -> to
+  // Bodies whose surface it loads (their fields); empty = all. Two bodies in different fields
+  // meeting along a line (the faces of a crack) each have a surface there: naming one picks it.
+  std::vector<int> fields;
   TimeFunction factor;        // dimensionless
 };
 
@@ -72,8 +75,9 @@ struct TractionPatch {
 };
 
 // Finds the particles whose GIMP box meets the segment of `load` and their shares. Throws
-// InputError (naming loads.NAME.from/to) if no particle is adjacent to the segment, if material
-// lies on both sides of it, or if the boxes cover less than half of it.
+// InputError (naming loads.NAME.from/to) if no particle (of the load's fields) is adjacent to the
+// segment, if material (of those fields) lies on both sides of it, or if the boxes cover less
+// than half of it.
 TractionPatch find_traction_patch(const TractionLoad& load, const Particles& p, double cell_size);
 
 // Ids of the particles of the region's fields whose centre lies in its box (closed).

@@ -3,6 +3,7 @@
 // prescribed velocities of material regions, each with a dimensionless time function.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "io/case_parse.hpp"
@@ -16,7 +17,7 @@ const std::vector<std::string> kFunctionKeys = {"function",  "rise_time", "plate
 
 std::vector<std::string> keys_for(const std::string& type) {
   std::vector<std::string> k = {"type"};
-  if (type == "traction") k.insert(k.end(), {"from", "to", "traction", "normal", "shear"});
+  if (type == "traction") k.insert(k.end(), {"from", "to", "traction", "normal", "shear", "bodies"});
   if (type == "body_force") k.insert(k.end(), {"acceleration", "bodies"});
   if (type == "velocity") k.insert(k.end(), {"min", "max", "direction", "velocity", "bodies"});
   k.insert(k.end(), kFunctionKeys.begin(), kFunctionKeys.end());
@@ -43,7 +44,10 @@ std::vector<int> body_fields(Section& l, const Case& c, ParseContext& ctx) {
       for (const auto& bb : c.bodies) names.push_back(bb.name);
       fail(l.key("bodies"), "\"" + body + "\"", "must name bodies among " + Section::join(names));
     }
-    fields.push_back(ctx.body_index[body]);
+    // Loads act on velocity fields: a body's field (once, if bodies share one), as for
+    // [boundary] conditions. (Particles carry the field number, not the body index.)
+    const int field = c.bodies[std::size_t(ctx.body_index[body])].field;
+    if (std::find(fields.begin(), fields.end(), field) == fields.end()) fields.push_back(field);
   }
   return fields;
 }
@@ -85,6 +89,7 @@ void parse_loads(Section& top, Case& c, ParseContext& ctx) {
       l.pair("traction", t.traction, false);
       t.normal = l.number("normal", 0.0);
       t.shear = l.number("shear", 0.0);
+      t.fields = body_fields(l, c, ctx);
       c.loads.tractions.push_back(t);
     } else if (type == "body_force") {
       BodyForceLoad b;
