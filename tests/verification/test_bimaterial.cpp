@@ -189,7 +189,7 @@ TEST_P(Bimaterial, reflection_and_transmission_match_impedance_ratios_E20) {
     // Intact: the mean opening is the static one of the law under the transmitted stress,
     // T_n(jump) = T rho1 c1 |V| (linear estimate T sigma_i / K, 9 % below it at 0.09 delta_n);
     // the ends of the line (the rollers' corners) open up to 1.6 times more.
-    const XuNeedleman law = bar(Join::cohesive, 1e-6).interfaces[0].law;
+    const XuNeedleman law = std::get<XuNeedleman>(bar(Join::cohesive, 1e-6).interfaces[0].law);
     const double sigma_t = T * Z1 * std::fabs(kV);
     double lo = 0.0, hi = law.delta_n;  // bisection on the rising branch
     for (int it = 0; it < 60; ++it) {

@@ -110,7 +110,7 @@ struct Initiation {
 Initiation run_until_initiation(double sigma, double h, double end, double t_freund) {
   State s = make_state(plate(sigma, h, end));
   const CohesiveInterface& c = s.interfaces[0];
-  const XuNeedleman& law = c.spec.law;
+  const XuNeedleman& law = std::get<XuNeedleman>(c.spec.law);
   const double e_prime = kHomalite.youngs_modulus / (1 - kHomalite.poisson_ratio * kHomalite.poisson_ratio);
   Initiation r;
   while (s.time < end && r.time < 0) {
