@@ -56,12 +56,24 @@ void print_check(const std::string& path, const Case& c) {
   if (s.dt_cohesive > 0) fmt::print("dt_cohesive_limit={:.6e}\n", s.dt_cohesive);
   for (std::size_t k = 0; k < c.interfaces.size(); ++k) {
     const InterfaceSpec& is = c.interfaces[k];
+    // The horizontal form says where it lies; a polyline or circle gives its length and points.
+    const Polyline line = is.geometry();
+    const std::string where =
+        is.line.num_vertices() >= 2
+            ? fmt::format("along a {} line of {} points, length {:g} m", line.closed ? "closed" : "open",
+                          line.num_vertices(), line.length())
+            : fmt::format("on y = {:g} m, x in [{:g}, {:g}] m", is.y, is.start, is.end);
+    std::string bonded;
+    if (is.bonded && is.bonded_line.num_vertices() >= 2)
+      bonded = fmt::format("; bonded along {} points, length {:g} m", is.bonded_line.num_vertices(),
+                           is.bonded_line.length());
+    else if (is.bonded)
+      bonded = fmt::format("; bonded on [{:g}, {:g}] m", is.bonded_from, is.bonded_to);
     fmt::print(
-        "interface {}: {} segments of {:.4g} um on y = {:g} m, x in [{:g}, {:g}] m; delta_t = "
+        "interface {}: {} segments of {:.4g} um {}; delta_t = "
         "{:.4g} um, phi_n = {:.4g} J/m^2, phi_t = {:.4g} J/m^2{}\n",
-        c.interface_names[k], is.segments, 1e6 * (is.end - is.start) / is.segments, is.y,
-        is.start, is.end, 1e6 * is.law.delta_t, is.law.phi_n(), is.law.phi_t(),
-        is.bonded ? fmt::format("; bonded on [{:g}, {:g}] m", is.bonded_from, is.bonded_to) : "");
+        c.interface_names[k], is.segments, 1e6 * line.length() / is.segments, where,
+        1e6 * is.law.delta_t, is.law.phi_n(), is.law.phi_t(), bonded);
   }
   if (c.grid.refined()) {
     fmt::print("refined grid: {} levels, level 0 = {:g} m, finest = {:g} m; smallest cell {:g} m\n",
