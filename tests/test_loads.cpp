@@ -251,6 +251,66 @@ acceleration = [300.0, -9810.0]
   std::printf("v_com = (%.10g, %.10g) m/s at t = %g s; energy error %.3e\n", px / m, py / m, s.time, err);
 }
 
+// `bodies` names bodies, but loads act on velocity fields: with two bodies sharing a field the
+// third body's index (2) is not its field (1). The load used to take the body index as the
+// field, so a body force on "right" pushed nothing and a velocity region on it found no
+// particle.
+TEST(BodyForce, bodies_sharing_a_field_are_mapped_to_their_field) {
+  const std::string text = fmt::format(R"({}
+[grid]
+min = [0.0, 0.0]
+max = [0.006, 0.002]
+cell_size = 0.5e-3
+[bodies.left]
+material = "homalite"
+min = [0.0, 0.0]
+max = [0.002, 0.002]
+field = "lr"
+[bodies.middle]
+material = "homalite"
+min = [0.002, 0.0]
+max = [0.004, 0.002]
+field = "lr"
+[bodies.right]
+material = "homalite"
+min = [0.0045, 0.0]
+max = [0.006, 0.002]
+[time]
+end = 1e-6
+[loads.g]
+type = "body_force"
+acceleration = [0.0, -9810.0]
+bodies = ["right"]
+)",
+                                       test::kHomaliteToml);
+  const Case c = parse_case(text);
+  ASSERT_EQ(c.bodies[2].field, 1);
+  ASSERT_EQ(c.loads.body_forces[0].fields, std::vector<int>{1}) << "the field of bodies.right";
+  State s = make_state(c);
+  run_to(s, 1e-6);
+  const Particles& P = s.particles;
+  double vy_right = 0, vy_other = 0;
+  int n_right = 0;
+  for (std::size_t p = 0; p < P.size(); ++p) {
+    if (P.field[p] == 1) vy_right += P.vy[p], ++n_right;
+    else vy_other = std::max(vy_other, std::fabs(P.vy[p]));
+  }
+  EXPECT_NEAR(vy_right / n_right, -9810.0 * s.time, 1e-9 * 9810.0 * s.time) << "bodies.right falls";
+  EXPECT_EQ(vy_other, 0.0) << "bodies.left and middle (field lr) are not loaded";
+  // A velocity region on bodies.right finds its particles (it used to find none: field 2).
+  const Case r = parse_case(text + R"(
+[loads.v]
+type = "velocity"
+min = [0.0, 0.0]
+max = [0.006, 0.002]
+direction = [1.0, 0.0]
+velocity = 1.0
+bodies = ["right"]
+)");
+  EXPECT_EQ(r.loads.velocity_regions[0].fields, std::vector<int>{1});
+  EXPECT_NO_THROW(make_state(r));
+}
+
 // ---- velocity region ----
 
 TEST(VelocityRegion, region_moves_at_the_prescribed_speed_along_d_and_is_free_across) {

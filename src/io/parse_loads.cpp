@@ -3,6 +3,7 @@
 // prescribed velocities of material regions, each with a dimensionless time function.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "io/case_parse.hpp"
@@ -43,7 +44,9 @@ std::vector<int> body_fields(Section& l, const Case& c, ParseContext& ctx) {
       for (const auto& bb : c.bodies) names.push_back(bb.name);
       fail(l.key("bodies"), "\"" + body + "\"", "must name bodies among " + Section::join(names));
     }
-    fields.push_back(ctx.body_index[body]);
+    // Loads act on velocity fields: the body's field (once, if bodies share one).
+    const int field = c.bodies[std::size_t(ctx.body_index[body])].field;
+    if (std::find(fields.begin(), fields.end(), field) == fields.end()) fields.push_back(field);
   }
   return fields;
 }
