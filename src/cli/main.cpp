@@ -60,7 +60,7 @@ void print_check(const std::string& path, const Case& c) {
     const Polyline line = is.geometry();
     const std::string where =
         is.line.num_vertices() >= 2
-            ? fmt::format("along a {} line of {} points, length {:g} m", line.closed ? "closed" : "open",
+            ? fmt::format("along {} line of {} points, length {:g} m", line.closed ? "a closed" : "an open",
                           line.num_vertices(), line.length())
             : fmt::format("on y = {:g} m, x in [{:g}, {:g}] m", is.y, is.start, is.end);
     std::string bonded;
