@@ -40,7 +40,7 @@ struct TractionLoad {
 struct BodyForceLoad {
   std::string name;
   double acceleration[2]{};  // m/s^2
-  std::vector<int> fields;   // bodies it acts on; empty = all
+  std::vector<int> fields;   // velocity fields of the bodies it acts on; empty = all
   TimeFunction factor;       // dimensionless
 };
 
@@ -49,7 +49,7 @@ struct VelocityRegion {
   double min[2]{}, max[2]{};  // box holding the driven material at t = 0, m
   double direction[2]{1.0, 0.0};  // unit vector d
   double speed = 0.0;         // m/s along d
-  std::vector<int> fields;    // bodies it acts on; empty = all
+  std::vector<int> fields;    // velocity fields of the bodies it acts on; empty = all
   TimeFunction factor;        // dimensionless
 
   double velocity(double t) const { return speed * factor(t); }  // m/s along d

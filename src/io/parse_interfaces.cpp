@@ -58,10 +58,12 @@ void check_line(Section& f, const std::string& key, const Polyline& line, const 
 }
 
 // The line must separate the two bodies: just off it along its normal lies the upper body,
-// just off it the other way the lower one (sampled along every piece).
+// just off it the other way the lower one (sampled along every piece). `slack` (m) is how far
+// the line may lie from the bodies' common boundary: a circle's polygon is inside its circle by
+// up to its sagitta, so a circle body or cut-out of the same radius is met only that far out.
 void check_between_bodies(Section& f, const std::string& key, const Polyline& line, const Case& c,
-                          const BodySpec& up, const BodySpec& lo) {
-  const double eps = 1e-3 * c.grid.cell_size;
+                          const BodySpec& up, const BodySpec& lo, double slack = 0.0) {
+  const double eps = 1e-3 * c.grid.cell_size + slack;
   for (std::size_t i = 0; i < line.num_pieces(); ++i) {
     const std::size_t j = line.piece_end(i);
     const double len = line.piece_length(i);
@@ -138,6 +140,7 @@ void parse_interface_geometry(Section& f, InterfaceSpec& is, const Case& c, cons
     fail(f.key("bonded_to"), show(*f.node("bonded_to")),
          "only allowed with the horizontal form (y, start, end); give bonded_points = [[x, y], "
          "...]");
+  double sagitta = 0.0;  // the circle form's chords lie inside the circle by up to this, m
   if (polyline) {
     is.line = read_points(f, "points", 2);
     is.line.closed = f.boolean("closed", false);
@@ -154,6 +157,7 @@ void parse_interface_geometry(Section& f, InterfaceSpec& is, const Case& c, cons
     // A closed polygon with a vertex per segment, counter-clockwise: its normal points to the
     // centre, so the upper body is the one inside the circle.
     constexpr double kPi = 3.141592653589793;
+    sagitta = radius * (1.0 - std::cos(kPi / double(segments)));
     for (long k = 0; k < segments; ++k) {
       const double a = 2.0 * kPi * double(k) / double(segments);
       is.line.x.push_back(center[0] + radius * std::cos(a));
@@ -167,7 +171,7 @@ void parse_interface_geometry(Section& f, InterfaceSpec& is, const Case& c, cons
     fail(f.key("segments"), double(segments),
          fmt::format("must be at least the number of pieces of the line ({})",
                      is.line.num_pieces()));
-  check_between_bodies(f, key, is.line, c, up, lo);
+  check_between_bodies(f, key, is.line, c, up, lo, sagitta);
   if (f.has("bonded_points")) {
     is.bonded_line = read_points(f, "bonded_points", 2);
     check_line(f, "bonded_points", is.bonded_line, c);

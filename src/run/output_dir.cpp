@@ -17,6 +17,11 @@ const std::vector<std::string>& run_files() {
   return names;
 }
 
+const std::vector<std::string>& run_file_prefixes() {
+  static const std::vector<std::string> prefixes{"crack_tip_", "crack_stretches_", "rupture_time_"};
+  return prefixes;
+}
+
 void prepare_output_dir(const std::string& dir, bool overwrite) {
   namespace fs = std::filesystem;
   std::error_code ec;
@@ -26,6 +31,15 @@ void prepare_output_dir(const std::string& dir, bool overwrite) {
   for (const std::string& name : run_files())
     for (const std::string& entry : {name, name + ".tmp"})
       if (fs::exists(fs::path(dir) / entry, ec)) found.push_back(fs::path(dir) / entry);
+  // Per-interface crack files, named after interfaces the old run may have had and this one not.
+  if (fs::is_directory(dir, ec))
+    for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
+      const std::string f = e.path().filename().string();
+      for (const std::string& prefix : run_file_prefixes())
+        if (f.size() > prefix.size() && f.compare(0, prefix.size(), prefix) == 0 &&
+            (f.ends_with(".csv") || f.ends_with(".csv.tmp")))
+          found.push_back(e.path());
+    }
   if (!found.empty() && !overwrite) {
     std::string names;
     for (const fs::path& p : found) names += (names.empty() ? "" : ", ") + p.filename().string();

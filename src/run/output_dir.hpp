@@ -11,6 +11,8 @@ namespace rupture {
 
 // Entries a run (or `rupture plot`) writes directly under its directory.
 const std::vector<std::string>& run_files();
+// Prefixes of the per-interface files a run writes there (PREFIX + interface name + ".csv").
+const std::vector<std::string>& run_file_prefixes();
 
 // Creates `dir` if needed. If it holds another run's files: throws InputError naming them and
 // --overwrite, or with overwrite = true deletes them first.

@@ -1,0 +1,51 @@
+#!/usr/bin/python3
+"""The reference problem rotated by 30 degrees gives the unrotated answer (examples/inclined_weak_plane.toml
+against tests/inputs/inclined_weak_plane_unrotated.toml, the same traction impact).
+
+Usage: check_inclined.py ROTATED_DIR UNROTATED_DIR [--same]
+--same: a rotation by 90 degrees, which the grid maps onto itself: the same numbers to round-off.
+Targets: initiation within 0.1 us, sustained speed within 2 %, energy balance error (run.json
+energy_balance_error) within 1 % in both runs. The crack position is compared along the line
+(tip_s of crack_tip.csv) at the common sample times.
+"""
+import csv
+import json
+import sys
+
+dirs = sys.argv[1:3]
+same = "--same" in sys.argv[3:]
+runs = [json.load(open(f"{d}/run.json")) for d in dirs]
+tips = [list(csv.DictReader(open(f"{d}/crack_tip.csv"))) for d in dirs]
+ok = True
+
+
+def check(cond, what):
+    global ok
+    print(("ok   " if cond else "FAIL ") + what)
+    ok = ok and cond
+
+
+(a, b) = (r["crack"] for r in runs)
+check(a["initiated"] and b["initiated"], "both cracks initiate")
+d_init = abs(a["initiation_time"] - b["initiation_time"])
+check(d_init <= (1e-12 if same else 0.1e-6), f"initiation {a['initiation_time'] * 1e6:.3f} us rotated vs {b['initiation_time'] * 1e6:.3f} "
+      f"us (difference {d_init * 1e6:.3g} us, limit {1e-6 if same else 0.1} us)")
+d_speed = abs(a["sustained_speed"] - b["sustained_speed"]) / b["sustained_speed"]
+check(d_speed <= (1e-9 if same else 0.02), f"sustained speed {a['sustained_speed']:.1f} vs {b['sustained_speed']:.1f} m/s "
+      f"(difference {100 * d_speed:.3g} %, limit {1e-7 if same else 2} %)")
+if same:
+    d_energy = abs(runs[0]["energy_balance_error"] - runs[1]["energy_balance_error"])
+    check(d_energy <= 1e-9, f"energy balance error {runs[0]['energy_balance_error']:.6e} vs "
+          f"{runs[1]['energy_balance_error']:.6e}")
+for name, r in zip(("rotated", "unrotated"), runs if not same else []):
+    check(r["energy_balance_error"] <= 0.01, f"{name}: energy balance error {100 * r['energy_balance_error']:.2f} % "
+          f"(final {100 * r['energy_balance_error_final']:.2f} %, limit 1 %)")
+# Tip along the line at a few times (informative).
+by_time = [{round(float(t["time"]) * 1e8): float(t["tip_s"]) for t in tip} for tip in tips]
+line = []
+for t in (11, 13, 15, 17, 19):
+    k = t * 100
+    if k in by_time[0] and k in by_time[1]:
+        line.append(f"{t} us: {1e3 * by_time[0][k]:.2f} vs {1e3 * by_time[1][k]:.2f} mm")
+print("tip along the line (rotated vs unrotated): " + "; ".join(line))
+sys.exit(0 if ok else 1)
