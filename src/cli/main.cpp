@@ -1,6 +1,8 @@
 // rupture/cli/main.cpp
 // The `rupture` command line:
 //   rupture check CASE.toml [--set key=value ...]   validate and print derived quantities
+//   rupture check --explain [KEY]   the description of an input key or table (no case file)
+//   rupture docs --input            the input reference as Markdown (docs/input.md)
 //   rupture run   CASE.toml -o DIR [--set key=value ...] [--quiet] [--checkpoint-interval T]
 //                 [--overwrite]
 //   rupture resume DIR [--quiet] [--checkpoint-interval T]   continue from DIR's last checkpoint
@@ -26,6 +28,7 @@
 #include "core/errors.hpp"
 #include "io/case_toml.hpp"
 #include "io/checkpoint.hpp"
+#include "io/input_schema.hpp"
 #include "run/driver.hpp"
 #include "solver/summary.hpp"
 
@@ -148,6 +151,21 @@ CaseSource read_case_source(const std::string& path, const std::vector<std::stri
   return CaseSource{buf.str(), path, overrides};
 }
 
+// rupture check --explain KEY: the schema entry (io/input_schema.hpp), or exit code 1 with the
+// documented keys that come close.
+int explain(const std::string& key) {
+  if (const KeyDoc* e = find_key(key)) {
+    fmt::print("{}", explain_key(*e));
+    return 0;
+  }
+  std::string hint;
+  for (const std::string& k : similar_keys(key)) hint += "\n  " + k;
+  fmt::print(stderr, "error: '{}' is not an input key or table{}\n", key,
+             hint.empty() ? "; rupture check --explain lists the tables"
+                          : "; did you mean:" + hint);
+  return 1;
+}
+
 int exit_code(Outcome o) {
   switch (o) {
     case Outcome::completed: return 0;
@@ -169,8 +187,20 @@ int main(int argc, char** argv) {
   bool quiet = false;
 
   auto* check = app.add_subcommand("check", "validate a case and print derived quantities");
-  check->add_option("case", case_path, "case file (TOML)")->required();
+  // CASE is required unless --explain is given (checked after parsing).
+  auto* check_case = check->add_option("case", case_path, "case file (TOML)");
   check->add_option("--set", overrides, "override an input key: dotted.key=value");
+  std::string explain_path;
+  auto* explain_opt =
+      check->add_option("--explain", explain_path,
+                        "describe an input key or table (unit, default, range, example), e.g. "
+                        "time.cfl or interface.weak_plane.sigma_max; no KEY: the top level")
+          ->expected(0, 1);
+
+  auto* docs = app.add_subcommand("docs", "print reference documentation");
+  bool docs_input = false;
+  docs->add_flag("--input", docs_input, "every input table and key as Markdown (docs/input.md)")
+      ->required();
 
   auto* run = app.add_subcommand("run", "run a case");
   run->add_option("case", case_path, "case file (TOML)")->required();
@@ -205,6 +235,13 @@ int main(int argc, char** argv) {
   plot->add_option("--labels", labels, "legend labels, one per run");
 
   CLI11_PARSE(app, argc, argv);
+  if (docs->parsed()) {
+    fmt::print("{}", input_reference_markdown());
+    return 0;
+  }
+  if (check->parsed() && explain_opt->count() > 0) return explain(explain_path);
+  if (check->parsed() && check_case->count() == 0)
+    return app.exit(CLI::RequiredError(check_case->get_name()));
   if (plot->parsed()) return run_plot(argv[0], plot_dir, compare, labels);
 
   try {

@@ -14,11 +14,12 @@
 #include "core/errors.hpp"
 #include "io/case_checks.hpp"
 #include "io/case_parse.hpp"
+#include "io/input_schema.hpp"
 #include "io/toml_section.hpp"
 
 namespace rupture {
 void parse_model(Section& top, Case& c) {
-  Section model = top.table("model", false, {"plane"});
+  Section model = top.table("model", false, allowed_keys("model"));
   const std::string plane = model.string("plane", "strain", {"strain", "stress"});
   c.plane = plane == "strain" ? PlaneMode::strain : PlaneMode::stress;
 }
@@ -28,7 +29,7 @@ void parse_materials(Section& top, Case& c, ParseContext& ctx) {
   Section mats = top.table("materials", true);
   for (const auto& [k, v] : in_input_order(mats.raw())) {
     const std::string& name = k;
-    Section m = mats.table(name, true, {"youngs_modulus", "poisson_ratio", "density"});
+    Section m = mats.table(name, true, allowed_keys("materials.*"));
     ElasticMaterial em;
     em.name = name;
     em.youngs_modulus = m.number("youngs_modulus");
@@ -48,7 +49,7 @@ void parse_materials(Section& top, Case& c, ParseContext& ctx) {
 }
 
 void parse_time(Section& top, Case& c) {
-  Section t = top.table("time", true, {"end", "cfl", "cohesive_safety", "stop_at_interface_end"});
+  Section t = top.table("time", true, allowed_keys("time"));
   c.time.end = t.number("end");
   if (c.time.end <= 0) fail(t.key("end"), c.time.end, "must be > 0 (s)");
   c.time.cfl = t.number("cfl", 0.4);
@@ -60,7 +61,7 @@ void parse_time(Section& top, Case& c) {
 }
 
 void parse_solver(Section& top, Case& c) {
-  Section s = top.table("solver", false, {"scheme", "flip", "threads"});
+  Section s = top.table("solver", false, allowed_keys("solver"));
   const std::string scheme = s.string("scheme", "MUSL", {"MUSL", "USL", "USF"});
   c.solver.scheme = scheme == "MUSL" ? Scheme::MUSL : scheme == "USL" ? Scheme::USL : Scheme::USF;
   c.solver.flip = s.number("flip", 1.0);
@@ -73,10 +74,7 @@ void parse_solver(Section& top, Case& c) {
 }
 
 void parse_output(Section& top, Case& c) {
-  Section o = top.table(
-      "output", false,
-      {"history_interval", "snapshot_interval", "progress_interval", "crack_sample_interval",
-       "interface_interval", "snapshot_region_min", "snapshot_region_max"});
+  Section o = top.table("output", false, allowed_keys("output"));
   c.output.history_interval = o.number("history_interval", c.time.end / 200.0);
   if (c.output.history_interval < 0)
     fail(o.key("history_interval"), c.output.history_interval, "must be >= 0 (s; 0 = every step)");
@@ -165,9 +163,7 @@ std::string input_echo(const toml::table& root, const ParseContext& ctx) {
 
 Case build_case(const toml::table& root, const std::string& case_dir) {
   Case c;
-  Section top(root, "",
-              {"title", "model", "materials", "grid", "bodies", "time", "solver", "boundary",
-               "loads", "interface", "output"});
+  Section top(root, "", allowed_keys(""));
   c.title = top.string("title", "");
   ParseContext ctx;
   ctx.case_dir = case_dir;

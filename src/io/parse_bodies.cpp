@@ -6,19 +6,11 @@
 #include <cmath>
 
 #include "io/case_parse.hpp"
+#include "io/input_schema.hpp"
 #include "particles/seed.hpp"
 
 namespace rupture {
 namespace {
-
-const std::vector<std::string> kShapeKeys = {"shape",  "min",   "max",  "vertices",
-                                             "center", "radius", "radii", "angle"};
-
-std::vector<std::string> body_keys() {
-  std::vector<std::string> k = {"material", "velocity", "stress", "field", "minus"};
-  k.insert(k.end(), kShapeKeys.begin(), kShapeKeys.end());
-  return k;
-}
 
 // The rules a rectangle body has always had: inside the grid, edges on grid lines.
 void check_rectangle_body(Section& b, const Shape& r, const Case& c) {
@@ -62,7 +54,8 @@ std::vector<Shape> parse_minus(Section& b, const Shape& outer) {
     fail(b.key("minus"), show(*n),
          "must be an array of tables, each a shape to cut out: [[" + b.key("minus") + "]]");
   for (std::size_t k = 0; k < a->size(); ++k) {
-    Section m(*(*a)[k].as_table(), fmt::format("{}[{}]", b.key("minus"), k), kShapeKeys);
+    Section m(*(*a)[k].as_table(), fmt::format("{}[{}]", b.key("minus"), k),
+              allowed_keys("bodies.*.minus[]"));
     minus.push_back(parse_shape(m, "cut-out"));
     if (!boxes_overlap(bounding_box(minus.back()), bounding_box(outer)))
       fail(m.key("shape"), fmt::format("\"{}\" spanning {}", shape_name(minus.back().kind),
@@ -96,7 +89,7 @@ void parse_bodies(Section& top, Case& c, ParseContext& ctx) {
   const double tol = 1e-9 * c.grid.cell_size;
   for (const auto& [k, v] : in_input_order(bodies.raw())) {
     const std::string& name = k;
-    Section b = bodies.table(name, true, body_keys());
+    Section b = bodies.table(name, true, allowed_keys("bodies.*"));
     BodySpec bs;
     bs.name = name;
     const std::string mat = b.string("material", "");

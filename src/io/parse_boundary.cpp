@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "io/case_parse.hpp"
+#include "io/input_schema.hpp"
 
 namespace rupture {
 
@@ -14,10 +15,7 @@ void parse_boundary(Section& top, Case& c, ParseContext& ctx) {
   Section bcs = top.table("boundary", false);
   for (const auto& [k, v] : in_input_order(bcs.raw())) {
     const std::string& name = k;
-    Section b = bcs.table(name, true,
-                          {"edge", "from", "to", "component", "bodies", "function", "velocity",
-                           "rise_time", "plateau_time", "fall_time", "table", "table_file",
-                           "follow_edge"});
+    Section b = bcs.table(name, true, allowed_keys("boundary.*"));
     VelocityBC bc;
     bc.name = name;
     const std::string edge = b.string("edge", "", {"left", "right", "bottom", "top"});

@@ -5,13 +5,12 @@
 #include <cmath>
 
 #include "io/case_parse.hpp"
+#include "io/input_schema.hpp"
 
 namespace rupture {
 
 void parse_grid(Section& top, Case& c) {
-  Section g = top.table(
-      "grid", true,
-      {"min", "max", "cell_size", "particles_per_cell", "coarse_cell_size", "refine", "margin"});
+  Section g = top.table("grid", true, allowed_keys("grid"));
   g.pair("min", c.grid.min, true);
   g.pair("max", c.grid.max, true);
   for (int d = 0; d < 2; ++d) {
@@ -51,7 +50,7 @@ void parse_grid(Section& top, Case& c) {
   for (const auto& [k, v] : in_input_order(refine.raw())) {
     if (!c.grid.refined()) break;
     const std::string& name = k;
-    Section r = refine.table(name, true, {"min", "max", "level"});
+    Section r = refine.table(name, true, allowed_keys("grid.refine.*"));
     RefineLevel L;
     L.name = name;
     r.pair("min", L.min, true);

@@ -11,6 +11,7 @@
 
 #include "cohesive/polyline.hpp"
 #include "io/case_parse.hpp"
+#include "io/input_schema.hpp"
 
 namespace rupture {
 
@@ -295,35 +296,7 @@ void parse_interfaces(Section& top, Case& c, ParseContext& ctx) {
   Section ifs = top.table("interface", false);
   for (const auto& [k, v] : in_input_order(ifs.raw())) {
     const std::string& name = k;
-    Section f = ifs.table(name, true,
-                          {"upper_body",
-                           "lower_body",
-                           "y",
-                           "start",
-                           "end",
-                           "points",
-                           "closed",
-                           "center",
-                           "radius",
-                           "segments",
-                           "law",
-                           "sigma_max",
-                           "tau_max",
-                           "delta_n",
-                           "delta_t",
-                           "q",
-                           "r",
-                           "penalty",
-                           "separation",
-                           "delta_nc",
-                           "delta_tc",
-                           "lambda0",
-                           "contact",
-                           "friction",
-                           "contact_stiffness",
-                           "contact_tangential_stiffness",
-                           "bonded_to",
-                           "bonded_points"});
+    Section f = ifs.table(name, true, allowed_keys("interface.*"));
     InterfaceSpec is;
     std::vector<std::string> names;
     for (const auto& bb : c.bodies) names.push_back(bb.name);

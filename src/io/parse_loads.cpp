@@ -7,22 +7,11 @@
 #include <cmath>
 
 #include "io/case_parse.hpp"
+#include "io/input_schema.hpp"
 
 namespace rupture {
 
 namespace {
-
-const std::vector<std::string> kFunctionKeys = {"function",  "rise_time", "plateau_time",
-                                                "fall_time", "table",     "table_file"};
-
-std::vector<std::string> keys_for(const std::string& type) {
-  std::vector<std::string> k = {"type"};
-  if (type == "traction") k.insert(k.end(), {"from", "to", "traction", "normal", "shear", "bodies"});
-  if (type == "body_force") k.insert(k.end(), {"acceleration", "bodies"});
-  if (type == "velocity") k.insert(k.end(), {"min", "max", "direction", "velocity", "bodies"});
-  k.insert(k.end(), kFunctionKeys.begin(), kFunctionKeys.end());
-  return k;
-}
 
 std::string show_pair(const double v[2]) { return fmt::format("[{:g}, {:g}]", v[0], v[1]); }
 
@@ -60,7 +49,7 @@ void parse_loads(Section& top, Case& c, ParseContext& ctx) {
     const std::string& name = k;
     Section probe = loads.table(name, true);
     const std::string type = probe.string("type", "", {"traction", "body_force", "velocity"});
-    Section l = loads.table(name, true, keys_for(type));
+    Section l = loads.table(name, true, allowed_keys("loads.*", "type", type));
     const TimeFunction factor = parse_time_function(l, "", {"loads", name}, ctx);
     if (type == "traction") {
       TractionLoad t;

@@ -9,22 +9,14 @@
 #include <optional>
 
 #include "io/case_parse.hpp"
+#include "io/input_schema.hpp"
 
 namespace rupture {
 namespace {
 
+// The keys of one kind of shape: those documented "only with shape = <kind>".
 std::vector<std::string> keys_of(ShapeKind k) {
-  switch (k) {
-    case ShapeKind::rectangle:
-      return {"min", "max"};
-    case ShapeKind::polygon:
-      return {"vertices"};
-    case ShapeKind::circle:
-      return {"center", "radius"};
-    case ShapeKind::ellipse:
-      return {"center", "radii", "angle"};
-  }
-  return {};
+  return variant_keys("bodies.*.minus[]", "shape", shape_name(k));
 }
 
 std::string point(const Point& p) {
