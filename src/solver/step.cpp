@@ -1,659 +1,25 @@
 // rupture/solver/step.cpp
-// The time step, phase by phase (SPEC E4-E6). Scatters (particle -> grid) go through the
-// two-colour strip plan of ScatterPlan; gathers (grid -> particle) are plain parallel loops.
+// The time step: one function per update scheme, each the method's phases in order with the
+// boundary conditions, loads and cohesive phases visible (SPEC E4-E9). The phases live in
+// solver/transfer (particle <-> grid), solver/grid_update (nodes, velocity BCs),
+// solver/cohesive_step (interfaces), solver/load_step ([loads]), solver/time_step (dt, E6).
 #include "solver/step.hpp"
 
-#include <algorithm>
-#include <cassert>
 #include <chrono>
-#include <cmath>
-#include <fmt/format.h>
-#include <limits>
 
-#include "core/errors.hpp"
 #include "solver/cohesive_step.hpp"
 #include "solver/load_step.hpp"
 #include "solver/time_step.hpp"
 
 namespace rupture {
 namespace {
-
-constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
-
-// Stencils of a batch of consecutive particles, computed SIMD over particles (the weights are
-// then reused across the batch's node loops). For particle k: weights sx[a][k], sy[b][k] of
-// node (first_x + a, first_y + b) and their derivatives; base[k] = field offset + index of
-// node (first_x, first_y).
-constexpr int kBatch = 16;
-struct StencilBatch {
-  alignas(64) double sx[3][kBatch];
-  alignas(64) double dsx[3][kBatch];
-  alignas(64) double sy[3][kBatch];
-  alignas(64) double dsy[3][kBatch];
-  std::size_t base[kBatch];
-};
-
-// One axis for n <= kBatch particles: the stencil rule of grid/grid.hpp (stencil()), with
-// the weights of gimp_uniform_node written out over plain arrays so the loop vectorizes.
-inline void axis_stencils(const Axis& ax, const double* __restrict xp, const double* __restrict lp,
-                          int n, double (&w)[3][kBatch], double (&dw)[3][kBatch],
-                          int* __restrict first) {
-  double* __restrict w0 = w[0];
-  double* __restrict w1 = w[1];
-  double* __restrict w2 = w[2];
-  double* __restrict d0 = dw[0];
-  double* __restrict d1 = dw[1];
-  double* __restrict d2 = dw[2];
-  if (ax.graded()) {
-    // Graded axis (SPEC E3): the first node and its local cell size per particle (a table
-    // lookup), then the uniform form, vectorized, for every particle; the few whose stencil
-    // straddles a change of cell size are redone with the graded form.
-    double x0[kBatch], inv_hl[kBatch];
-    bool straddles = false;
-    for (int k = 0; k < n; ++k) {
-      const int c = ax.cell_of(xp[k] - lp[k]);
-      first[k] = c;
-      x0[k] = ax.node(c);
-      inv_hl[k] = 1.0 / ax.width(c);
-      straddles |= !ax.uniform_from[std::size_t(c)];
-    }
-#pragma omp simd
-    for (int k = 0; k < n; ++k) {
-      const double u = (xp[k] - x0[k]) * inv_hl[k], l = lp[k] * inv_hl[k], inv_2l = 0.5 / l;
-      gimp_uniform_node(u, l, inv_2l, inv_hl[k], w0[k], d0[k]);
-      gimp_uniform_node(u - 1.0, l, inv_2l, inv_hl[k], w1[k], d1[k]);
-      gimp_uniform_node(u - 2.0, l, inv_2l, inv_hl[k], w2[k], d2[k]);
-    }
-    if (straddles)
-      for (int k = 0; k < n; ++k) {
-        if (ax.uniform_from[std::size_t(first[k])]) continue;
-        Stencil1D st;
-        stencil(ax, xp[k], lp[k], st);
-        for (int j = 0; j < 3; ++j) w[j][k] = st.s[j], dw[j][k] = st.ds[j];
-      }
-    return;
-  }
-  const double inv_h = 1.0 / ax.h, origin = ax.origin;
-  double fl[kBatch];
-#pragma omp simd
-  for (int k = 0; k < n; ++k) {
-    const double xi = (xp[k] - origin) * inv_h;
-    // xi > 0 for every particle (the grid keeps its ghost cells around them: checked after each
-    // move), so truncation is floor; unlike std::floor it vectorizes without -ffast-math.
-    const double cell = double(int(xi));
-    const double f = (xi - cell < 0.5) ? cell - 1.0 : cell;
-    fl[k] = f;
-    const double u = xi - f, l = lp[k] * inv_h, inv_2l = 0.5 / l;
-    gimp_uniform_node(u, l, inv_2l, inv_h, w0[k], d0[k]);
-    gimp_uniform_node(u - 1.0, l, inv_2l, inv_h, w1[k], d1[k]);
-    gimp_uniform_node(u - 2.0, l, inv_2l, inv_h, w2[k], d2[k]);
-  }
-  for (int k = 0; k < n; ++k) first[k] = int(fl[k]);
-}
-
-inline void batch_stencils(const State& s, std::size_t p0, int n, StencilBatch& B) {
-  const Particles& P = s.particles;
-  int fx[kBatch], fy[kBatch];
-  axis_stencils(s.grid.x, P.x.data() + p0, P.half_x.data() + p0, n, B.sx, B.dsx, fx);
-  axis_stencils(s.grid.y, P.y.data() + p0, P.half_y.data() + p0, n, B.sy, B.dsy, fy);
-  const std::size_t nx = std::size_t(s.grid.nodes_x()), nn = s.fields.num_nodes;
-  for (int k = 0; k < n; ++k) {
-    // Debug builds: the 3 x 3 stencil lies in the grid (the gathers index it directly).
-    assert(fx[k] >= 0 && fx[k] + 2 < s.grid.nodes_x() && fy[k] >= 0 && fy[k] + 2 < s.grid.nodes_y());
-    B.base[k] = std::size_t(P.field[p0 + std::size_t(k)]) * nn + std::size_t(fy[k]) * nx +
-                std::size_t(fx[k]);
-  }
-}
-
-// Runs body(p, k, B) for particles [begin, end), batch by batch (k: index in the batch B).
-template <class Body>
-inline void for_each_in_batches(const State& s, std::size_t begin, std::size_t end, Body&& body) {
-  StencilBatch B;
-  for (std::size_t p0 = begin; p0 < end; p0 += kBatch) {
-    const int n = int(std::min<std::size_t>(kBatch, end - p0));
-    batch_stencils(s, p0, n, B);
-    for (int k = 0; k < n; ++k) body(p0 + std::size_t(k), k, B);
-  }
-}
-
-// Runs body(strip, begin, end) over the particle range of every strip, strips of one colour
-// in parallel (see ScatterPlan).
-template <class Body>
-void for_each_strip_coloured(const ScatterPlan& plan, Body&& body) {
-  for (int colour = 0; colour < 2; ++colour) {
-#pragma omp parallel for schedule(dynamic, 1)
-    for (int strip = colour; strip < plan.num_strips; strip += 2)
-      body(strip, plan.strip_begin[std::size_t(strip)], plan.strip_begin[std::size_t(strip) + 1]);
-  }
-}
-
-// Velocity-BC time function values at the start and end of the step.
-inline double bc_value(const State& s, const NodeBC& e, double t) {
-  return s.boundary[std::size_t(e.condition)].velocity(t);
-}
-
-// A failure spreads through the grid within one step, so the diagnosis reports every bad
-// particle's extent (where it started lies inside) and the worst one, not just the first index.
-std::string diagnose_bad_particles(const State& s, double xlo, double xhi, double ylo, double yhi) {
-  const Particles& P = s.particles;
-  std::size_t nonfinite = 0, outside = 0, first = kNone;
-  double bx0 = INFINITY, bx1 = -INFINITY, by0 = INFINITY, by1 = -INFINITY;
-  const char* quantity = "velocity";
-  for (std::size_t p = 0; p < P.size(); ++p) {
-    const bool v_ok = std::isfinite(P.vx[p] + P.vy[p]);
-    const bool s_ok = std::isfinite(P.sxx[p] + P.syy[p] + P.sxy[p]);
-    const bool in = P.x[p] > xlo && P.x[p] < xhi && P.y[p] > ylo && P.y[p] < yhi;
-    if (v_ok && s_ok && in) continue;
-    if (first == kNone) first = p;
-    if (!v_ok || !s_ok) {
-      ++nonfinite;
-      if (!s_ok && v_ok) quantity = "stress";
-    } else {
-      ++outside;
-    }
-    if (std::isfinite(P.x[p]) && std::isfinite(P.y[p])) {
-      bx0 = std::min(bx0, P.x[p]), bx1 = std::max(bx1, P.x[p]);
-      by0 = std::min(by0, P.y[p]), by1 = std::max(by1, P.y[p]);
-    }
-  }
-  const std::string where = fmt::format(
-      "at step {}, t = {:.6g} s; affected region x in [{:.6g}, {:.6g}], y in [{:.6g}, {:.6g}] m; "
-      "first: particle {} (field {}) at (x, y) = ({:.6g}, {:.6g}) m, v = ({:.4g}, {:.4g}) m/s",
-      s.step, s.time, bx0, bx1, by0, by1, P.id[first], int(P.field[first]), P.x[first], P.y[first],
-      P.vx[first], P.vy[first]);
-  if (nonfinite > 0)
-    return fmt::format("unstable: non-finite {} in {} particle(s) {}; reduce time.cfl or check the loading",
-                       quantity, nonfinite, where);
-  return fmt::format(
-      "particle left the grid: {} particle(s) {}; the grid with its ghost cells spans x in "
-      "[{:.6g}, {:.6g}], y in [{:.6g}, {:.6g}] m",
-      outside, where, xlo, xhi, ylo, yhi);
-}
-
-// The GIMP contract of grid/grid.hpp (count_stencil_overflows), checked at every re-sort on a
-// graded grid: a particle breaking it would silently lose a node of its weights.
-void check_gimp_contract(const State& s) {
-  if (!s.grid.graded()) return;
-  const Particles& P = s.particles;
-  const Axis* axes[2] = {&s.grid.x, &s.grid.y};
-  const double* pos[2] = {P.x.data(), P.y.data()};
-  const double* half[2] = {P.half_x.data(), P.half_y.data()};
-  for (int d = 0; d < 2; ++d) {
-    const Axis& a = *axes[d];
-    if (count_stencil_overflows(a, pos[d], half[d], P.size()) == 0) continue;
-    std::size_t p = 0;
-    while (p < P.size() && !stencil_overflows(a, pos[d][p], half[d][p])) ++p;
-    if (p == P.size()) continue;  // cannot happen: both tests share their arithmetic
-    const double lp = half[d][p], lo = pos[d][p] - lp, hi = pos[d][p] + lp;
-    int cell = a.cell_of(lo) + 1;  // the narrowest cell wholly inside the box
-    for (int c = cell; c + 1 <= a.cells && a.node(c + 1) <= hi; ++c)
-      if (a.width(c) < a.width(cell)) cell = c;
-    const char* name = d == 0 ? "x" : "y";
-    const int col = d == 0 ? cell : s.grid.x.cell_of(P.x[p]);
-    const int row = d == 1 ? cell : s.grid.y.cell_of(P.y[p]);
-    throw SimulationError(fmt::format(
-        "GIMP contract broken at step {}, t = {:.6g} s: particle {} (field {}) at (x, y) = "
-        "({:.6g}, {:.6g}) m with half-widths (l_x, l_y) = ({:.4g}, {:.4g}) m spans, along {}, "
-        "[{:.6g}, {:.6g}] m, which holds cell (column {}, row {}) of width {:.4g} m whole: its "
-        "3-node stencil (SPEC E3) loses a node: the box may overlap at most two cells, so 2 l_p "
-        "must not exceed the width of a cell it reaches. A particle keeps the size of the cell "
-        "it was made in (l_p = a quarter of it at 2 x 2 per cell), so this one came from cells "
-        "more than twice as wide. Move the refinement-box transition further from moving "
-        "material (larger [grid.refine] boxes, so that material stays in cells at most 2x "
-        "finer than where it started), or refine where it starts as well",
-        s.step, s.time, P.id[p], int(P.field[p]), P.x[p], P.y[p], P.half_x[p], P.half_y[p],
-        name, lo, hi, col, row, a.width(cell)));
-  }
-}
-
-}  // namespace
-
-void sort_particles(State& s) {
-  check_gimp_contract(s);
-  ScatterPlan& plan = s.plan;
-  Particles& P = s.particles;
-  const std::size_t n = P.size();
-  const int cx = s.grid.x.cells, cy = s.grid.y.cells, width = plan.strip_cells;
-  plan.num_strips = (cx + width - 1) / width;
-  // Bucket (strip, row): strip-major, so every strip is one contiguous particle range.
-  auto bucket_of = [&](std::size_t p) {
-    const int col = std::clamp(s.grid.x.cell_of(P.x[p]), 0, cx - 1);
-    const int row = std::clamp(s.grid.y.cell_of(P.y[p]), 0, cy - 1);
-    return std::size_t(col / width) * std::size_t(cy) + std::size_t(row);
-  };
-  const std::size_t buckets = std::size_t(plan.num_strips) * std::size_t(cy);
-  plan.bucket.assign(buckets + 1, 0);
-  for (std::size_t p = 0; p < n; ++p) ++plan.bucket[bucket_of(p) + 1];
-  for (std::size_t k = 0; k < buckets; ++k) plan.bucket[k + 1] += plan.bucket[k];
-  plan.strip_begin.resize(std::size_t(plan.num_strips) + 1);
-  for (int k = 0; k <= plan.num_strips; ++k)
-    plan.strip_begin[std::size_t(k)] = plan.bucket[std::size_t(k) * std::size_t(cy)];
-  // Stable counting sort: particles keep their previous relative order inside a bucket.
-  plan.order.resize(n);
-  for (std::size_t p = 0; p < n; ++p) plan.order[plan.bucket[bucket_of(p)]++] = std::uint32_t(p);
-  P.permute(plan.order, plan.scratch);
-  plan.valid = true;
-  plan.sorted_step = s.step;
-}
-
-void build_scatter_plan(State& s) {
-  const ScatterPlan& plan = s.plan;
-  if (!plan.valid || s.step - plan.sorted_step >= plan.sort_interval) sort_particles(s);
-}
-
-namespace {
-
-// Strip tiles. Each particle loop works on one strip at a time through a small node-major
-// tile that holds, per node, the few values the loop needs packed in one vector (Lane4/Lane8):
-// a particle-node pair is then one to three vector FMAs instead of several scalar loads or
-// read-modify-writes on separate arrays. Gathers pack the tile from the grid arrays first;
-// scatters add the tile to the grid arrays after. A tile spans the strip's node columns (with
-// the one-column drift tolerance of ScatterPlan) and, per field, the node rows its particles
-// touch.
-using Lane8 = double __attribute__((vector_size(64)));
-using Lane4 = double __attribute__((vector_size(32)));
-
-struct TileLayout {
-  int col0 = 0, cols = 0;          // first node column, number of columns
-  std::vector<int> row0, rows;     // per field: first node row, number of rows (0: absent)
-  std::vector<std::size_t> start;  // per field: offset of its first node in the tile
-  std::size_t size() const { return start.back(); }
-  // Tile index of the node with grid index `base` (field offset included) of field f: the
-  // first node of a particle's 3 x 3 stencil. Debug builds check that the whole stencil lies
-  // in the tile; a particle breaking the GIMP contract (grid/grid.hpp) could write outside it.
-  std::size_t index(const State& s, std::size_t f, std::size_t base) const {
-    const std::size_t nx = std::size_t(s.grid.nodes_x());
-    assert(f < rows.size() && base >= s.fields.offset(int(f)));
-    const std::size_t local = base - s.fields.offset(int(f));
-    const int gx = int(local % nx), gy = int(local / nx);
-    assert(gy >= row0[f] && gy + 2 < row0[f] + rows[f] && "stencil rows outside the tile");
-    assert(gx >= col0 && gx + 2 < col0 + cols && "stencil columns outside the tile");
-    const std::size_t t = start[f] + std::size_t(gy - row0[f]) * std::size_t(cols) + std::size_t(gx - col0);
-    assert(t + 2 * std::size_t(cols) + 2 < size());
-    return t;
-  }
-};
-
-void tile_layout(const State& s, int strip, std::size_t begin, std::size_t end, TileLayout& T) {
-  const Particles& P = s.particles;
-  const int fields = s.fields.num_fields;
-  const double oy = s.grid.y.origin, inv_hy = 1.0 / s.grid.y.h;
-  const bool graded = s.grid.y.graded();
-  T.col0 = strip * s.plan.strip_cells - 2;
-  T.cols = s.plan.strip_cells + 5;
-  // Node rows per field: a particle in cell row r touches node rows r-1 .. r+2.
-  T.row0.assign(std::size_t(fields), std::numeric_limits<int>::max());
-  T.rows.assign(std::size_t(fields), std::numeric_limits<int>::min());  // last row, then count
-  for (std::size_t p = begin; p < end; ++p) {
-    const int r = graded ? s.grid.y.cell_of(P.y[p]) : int((P.y[p] - oy) * inv_hy);  // > 0: trunc = floor
-    const std::size_t f = P.field[p];
-    T.row0[f] = std::min(T.row0[f], r - 1);
-    T.rows[f] = std::max(T.rows[f], r + 2);
-  }
-  T.start.assign(std::size_t(fields) + 1, 0);
-  for (std::size_t f = 0; f < std::size_t(fields); ++f) {
-    T.rows[f] = T.rows[f] >= T.row0[f] ? T.rows[f] - T.row0[f] + 1 : 0;
-    T.start[f + 1] = T.start[f] + std::size_t(T.rows[f]) * std::size_t(T.cols);
-  }
-}
-
-// Calls visit(tile_index, grid_index) for every tile node that lies inside the grid.
-template <class Visit>
-void for_each_tile_node(const State& s, const TileLayout& T, Visit&& visit) {
-  const int nxi = s.grid.nodes_x(), nyi = s.grid.nodes_y();
-  const std::size_t nx = std::size_t(nxi);
-  for (std::size_t f = 0; f < T.rows.size(); ++f) {
-    for (int r = 0; r < T.rows[f]; ++r) {
-      const int gy = T.row0[f] + r;
-      if (gy < 0 || gy >= nyi) continue;
-      const std::size_t t = T.start[f] + std::size_t(r) * std::size_t(T.cols);
-      const std::size_t row = s.fields.offset(int(f)) + std::size_t(gy) * nx;
-      for (int c = 0; c < T.cols; ++c) {
-        const int gx = T.col0 + c;
-        if (gx >= 0 && gx < nxi) visit(t + std::size_t(c), row + std::size_t(gx));
-      }
-    }
-  }
-}
-
-template <class Lane>
-Lane* tile_buffer(std::vector<Lane>& buffer, std::size_t size, bool zero) {
-  if (buffer.size() < size) buffer.resize(size);
-  if (zero) std::fill(buffer.begin(), buffer.begin() + std::ptrdiff_t(size), Lane{});
-  return buffer.data();
-}
-
-template <bool kWithForce>
-void scatter_mass_momentum_force(State& s) {
-  GridFields& G = s.fields;
-  const Particles& P = s.particles;
-  for_each_strip_coloured(s.plan, [&](int strip, std::size_t begin, std::size_t end) {
-    if (begin == end) return;
-    thread_local TileLayout T;
-    thread_local std::vector<Lane8> buffer;
-    tile_layout(s, strip, begin, end, T);
-    Lane8* tile = tile_buffer(buffer, T.size(), true);
-    const std::size_t cols = std::size_t(T.cols);
-    for_each_in_batches(s, begin, end, [&](std::size_t p, int k, const StencilBatch& B) {
-      const double m = P.mass[p], V = P.volume[p];
-      const Lane8 A = {m, m * P.vx[p], m * P.vy[p], 0, 0, 0, 0, 0};
-      const double vsxx = V * P.sxx[p], vsyy = V * P.syy[p], vsxy = V * P.sxy[p];
-      // SPEC E4: f_i = -sum_p V_p sigma_p . grad S_ip
-      const Lane8 Fx = {0, 0, 0, -vsxx, -vsxy, 0, 0, 0};
-      const Lane8 Fy = {0, 0, 0, -vsxy, -vsyy, 0, 0, 0};
-      Lane8* t0 = tile + T.index(s, P.field[p], B.base[k]);
-      for (int b = 0; b < 3; ++b) {
-        Lane8* t = t0 + std::size_t(b) * cols;
-        const double wy = B.sy[b][k], gy_b = B.dsy[b][k];
-        for (int a = 0; a < 3; ++a) {
-          if constexpr (kWithForce) {
-            t[a] += (B.sx[a][k] * wy) * A + (B.dsx[a][k] * wy) * Fx + (B.sx[a][k] * gy_b) * Fy;
-          } else {
-            t[a] += (B.sx[a][k] * wy) * A;
-          }
-        }
-      }
-    });
-    // Strips of one colour never share a node: no race.
-    for_each_tile_node(s, T, [&](std::size_t t, std::size_t n) {
-      const Lane8 v = tile[t];
-      G.mass[n] += v[0];
-      G.mom_x[n] += v[1];
-      G.mom_y[n] += v[2];
-      if constexpr (kWithForce) {
-        G.force_x[n] += v[3];
-        G.force_y[n] += v[4];
-      }
-    });
-  });
-}
-
-}  // namespace
-
-void particles_to_grid(State& s, bool with_force) {
-  GridFields& G = s.fields;
-  std::fill(G.mass.begin(), G.mass.end(), 0.0);
-  std::fill(G.mom_x.begin(), G.mom_x.end(), 0.0);
-  std::fill(G.mom_y.begin(), G.mom_y.end(), 0.0);
-  std::fill(G.force_x.begin(), G.force_x.end(), 0.0);
-  std::fill(G.force_y.begin(), G.force_y.end(), 0.0);
-  if (with_force)
-    scatter_mass_momentum_force<true>(s);
-  else
-    scatter_mass_momentum_force<false>(s);
-}
-
-void particles_to_grid_force(State& s) {
-  GridFields& G = s.fields;
-  std::fill(G.force_x.begin(), G.force_x.end(), 0.0);
-  std::fill(G.force_y.begin(), G.force_y.end(), 0.0);
-  const Particles& P = s.particles;
-  const std::size_t nx = std::size_t(s.grid.nodes_x());
-  double* fx = G.force_x.data();
-  double* fy = G.force_y.data();
-  for_each_strip_coloured(s.plan, [&](int, std::size_t begin, std::size_t end) {
-    for_each_in_batches(s, begin, end, [&](std::size_t p, int k, const StencilBatch& B) {
-      const double V = P.volume[p], sxx = P.sxx[p], syy = P.syy[p], sxy = P.sxy[p];
-      for (int b = 0; b < 3; ++b) {
-        const std::size_t row = B.base[k] + std::size_t(b) * nx;
-        for (int a = 0; a < 3; ++a) {
-          const double gx = B.dsx[a][k] * B.sy[b][k], gy = B.sx[a][k] * B.dsy[b][k];
-          fx[row + a] -= V * (sxx * gx + sxy * gy);
-          fy[row + a] -= V * (sxy * gx + syy * gy);
-        }
-      }
-    });
-  });
-}
-
-void grid_velocity_from_momentum(State& s, double t) {
-  GridFields& G = s.fields;
-  const long n = long(G.mass.size());
-  const double floor = s.mass_floor;
-#pragma omp parallel for schedule(static)
-  for (long i = 0; i < n; ++i) {
-    const double m = G.mass[i];
-    G.remap_x[i] = m > floor ? G.mom_x[i] / m : 0.0;
-    G.remap_y[i] = m > floor ? G.mom_y[i] / m : 0.0;
-  }
-  for (const NodeBC& e : s.bc_nodes) {
-    const std::size_t i = G.offset(e.field) + e.node;
-    (e.component == 0 ? G.remap_x : G.remap_y)[i] = bc_value(s, e, t);
-  }
-}
-
-void integrate_grid(State& s) {
-  GridFields& G = s.fields;
-  const long n = long(G.mass.size());
-  const double dt = s.dt, floor = s.mass_floor;
-#pragma omp parallel for schedule(static)
-  for (long i = 0; i < n; ++i) {
-    const double m = G.mass[i];
-    if (m > floor) {
-      // Nodal momentum update p^{n+1} = p^n + dt f (E4), stored as velocity and increment.
-      const double inv_m = 1.0 / m;
-      G.dvel_x[i] = dt * G.force_x[i] * inv_m;
-      G.dvel_y[i] = dt * G.force_y[i] * inv_m;
-      G.vel_x[i] = G.mom_x[i] * inv_m + G.dvel_x[i];
-      G.vel_y[i] = G.mom_y[i] * inv_m + G.dvel_y[i];
-    } else {
-      G.dvel_x[i] = G.dvel_y[i] = G.vel_x[i] = G.vel_y[i] = 0.0;
-    }
-  }
-  apply_velocity_bcs(s);
-}
-
-void apply_velocity_bcs(State& s) {
-  GridFields& G = s.fields;
-  const double t0 = s.time, t1 = s.time + s.dt;
-  for (const NodeBC& e : s.bc_nodes) {
-    const std::size_t i = G.offset(e.field) + e.node;
-    const double m = G.mass[i];
-    if (m <= s.mass_floor) continue;
-    const double v0 = bc_value(s, e, t0), v1 = bc_value(s, e, t1);
-    double& vel = (e.component == 0 ? G.vel_x : G.vel_y)[i];
-    double& dvel = (e.component == 0 ? G.dvel_x : G.dvel_y)[i];
-    // The constraint's impulse m (V^{n+1} - v_free) acts on a node moving at the mean
-    // prescribed velocity over the step: its work is the external work of SPEC E14.
-    s.external_work += m * (v1 - vel) * 0.5 * (v0 + v1);
-    dvel += v1 - vel;
-    vel = v1;
-  }
-}
-
-namespace {
-
-// kPureFlip: flip == 1, so the PIC part (the gathered velocity) is not needed.
-// kPureFlip: flip == 1, so the PIC part (the gathered velocity) is not needed.
-template <bool kPureFlip>
-void velocity_update_and_remap(State& s) {
-  GridFields& G = s.fields;
-  Particles& P = s.particles;
-  const double flip = s.flip;
-  for_each_strip_coloured(s.plan, [&](int strip, std::size_t begin, std::size_t end) {
-    if (begin == end) return;
-    thread_local TileLayout T;
-    thread_local std::vector<Lane4> gather_buffer, scatter_buffer;
-    tile_layout(s, strip, begin, end, T);
-    Lane4* in = tile_buffer(gather_buffer, T.size(), false);
-    Lane4* out = tile_buffer(scatter_buffer, T.size(), true);
-    for_each_tile_node(s, T, [&](std::size_t t, std::size_t n) {
-      in[t] = Lane4{G.dvel_x[n], G.dvel_y[n], G.vel_x[n], G.vel_y[n]};
-    });
-    const std::size_t cols = std::size_t(T.cols);
-    for_each_in_batches(s, begin, end, [&](std::size_t p, int k, const StencilBatch& B) {
-      const std::size_t t0 = T.index(s, P.field[p], B.base[k]);
-      Lane4 acc = {0, 0, 0, 0};  // dv x, dv y, v x, v y
-      for (int b = 0; b < 3; ++b)
-        for (int a = 0; a < 3; ++a) acc += (B.sx[a][k] * B.sy[b][k]) * in[t0 + std::size_t(b) * cols + std::size_t(a)];
-      // FLIP/PIC blend of the particle velocity update.
-      double vx, vy;
-      if constexpr (kPureFlip) {
-        vx = P.vx[p] + acc[0];
-        vy = P.vy[p] + acc[1];
-      } else {
-        vx = flip * (P.vx[p] + acc[0]) + (1.0 - flip) * acc[2];
-        vy = flip * (P.vy[p] + acc[1]) + (1.0 - flip) * acc[3];
-      }
-      P.vx[p] = vx;
-      P.vy[p] = vy;
-      const double m = P.mass[p];
-      const Lane4 mv = {m * vx, m * vy, 0, 0};
-      for (int b = 0; b < 3; ++b)
-        for (int a = 0; a < 3; ++a) out[t0 + std::size_t(b) * cols + std::size_t(a)] += (B.sx[a][k] * B.sy[b][k]) * mv;
-    });
-    for_each_tile_node(s, T, [&](std::size_t t, std::size_t n) {
-      G.remap_x[n] += out[t][0];
-      G.remap_y[n] += out[t][1];
-    });
-  });
-}
-
-}  // namespace
-
-void update_particle_velocity_and_remap(State& s) {
-  GridFields& G = s.fields;
-  std::fill(G.remap_x.begin(), G.remap_x.end(), 0.0);
-  std::fill(G.remap_y.begin(), G.remap_y.end(), 0.0);
-  if (s.flip == 1.0)
-    velocity_update_and_remap<true>(s);
-  else
-    velocity_update_and_remap<false>(s);
-}
-
-void remapped_grid_velocity(State& s) {
-  GridFields& G = s.fields;
-  const long n = long(G.mass.size());
-  const double floor = s.mass_floor;
-#pragma omp parallel for schedule(static)
-  for (long i = 0; i < n; ++i) {
-    const double m = G.mass[i];
-    G.remap_x[i] = m > floor ? G.remap_x[i] / m : 0.0;
-    G.remap_y[i] = m > floor ? G.remap_y[i] / m : 0.0;
-  }
-  const double t1 = s.time + s.dt;
-  for (const NodeBC& e : s.bc_nodes) {
-    const std::size_t i = G.offset(e.field) + e.node;
-    if (G.mass[i] <= floor) continue;
-    (e.component == 0 ? G.remap_x : G.remap_y)[i] = bc_value(s, e, t1);
-  }
-}
-
-namespace {
-
-// One specialization per G2PMode, so the node loop carries no mode tests.
-template <G2PMode kMode>
-void grid_to_particles_impl(State& s, const double* gvx, const double* gvy) {
-  Particles& P = s.particles;
-  const GridFields& G = s.fields;
-  const std::size_t nx = std::size_t(s.grid.nodes_x());
-  const double dt = s.dt, flip = s.flip;
-  constexpr bool do_velocity =
-      kMode == G2PMode::stress_velocity_and_move || kMode == G2PMode::velocity_and_move;
-  constexpr bool do_stress = kMode != G2PMode::velocity_and_move;
-  constexpr bool do_move = kMode != G2PMode::stress_only;
-  // Particles must keep their whole 3-node stencil inside the grid: the stencil starts at the
-  // cell of x - lp, so on the high side the particle stays out of the last cell (there the
-  // stencil would reach node cells + 1); on the low side lp <= half a cell suffices.
-  const Axis& ax = s.grid.x;
-  const Axis& ay = s.grid.y;
-  const double xlo = ax.node(0) + 0.5 * ax.width(0);
-  const double xhi = ax.node(ax.cells - 1);
-  const double ylo = ay.node(0) + 0.5 * ay.width(0);
-  const double yhi = ay.node(ay.cells - 1);
-  const ScatterPlan& plan = s.plan;
-  const int width = plan.strip_cells;
-  std::size_t bad = kNone;
-  bool drifted = false;
-#pragma omp parallel for schedule(dynamic, 1) reduction(min : bad) reduction(|| : drifted)
-  for (int strip = 0; strip < plan.num_strips; ++strip) {
-    // Drift tolerance of the scatter plan: one cell column either side of the strip.
-    const double col_lo = double(strip * width - 1), col_hi = double(strip * width + width);
-    const std::size_t end = plan.strip_begin[std::size_t(strip) + 1];
-    for_each_in_batches(s, plan.strip_begin[std::size_t(strip)], end, [&](std::size_t p, int k,
-                                                                          const StencilBatch& B) {
-      double L00 = 0, L01 = 0, L10 = 0, L11 = 0;  // velocity gradient L_ij = dv_i/dx_j
-      double pic_x = 0, pic_y = 0, dvx = 0, dvy = 0, mvx = 0, mvy = 0;
-      for (int b = 0; b < 3; ++b) {
-        const std::size_t row = B.base[k] + std::size_t(b) * nx;
-        for (int a = 0; a < 3; ++a) {
-          const std::size_t i = row + std::size_t(a);
-          const double w = B.sx[a][k] * B.sy[b][k];
-          if constexpr (do_stress) {
-            const double gx = B.dsx[a][k] * B.sy[b][k], gy = B.sx[a][k] * B.dsy[b][k];
-            L00 += gvx[i] * gx;
-            L01 += gvx[i] * gy;
-            L10 += gvy[i] * gx;
-            L11 += gvy[i] * gy;
-          }
-          if constexpr (do_velocity) {
-            pic_x += w * G.vel_x[i];
-            pic_y += w * G.vel_y[i];
-            dvx += w * G.dvel_x[i];
-            dvy += w * G.dvel_y[i];
-          }
-          if constexpr (do_move) {
-            mvx += w * G.vel_x[i];
-            mvy += w * G.vel_y[i];
-          }
-        }
-      }
-      if constexpr (do_velocity) {
-        P.vx[p] = flip * (P.vx[p] + dvx) + (1.0 - flip) * pic_x;
-        P.vy[p] = flip * (P.vy[p] + dvy) + (1.0 - flip) * pic_y;
-      }
-      if constexpr (do_stress) {
-        // SPEC E5: eps_dot = sym(L), sigma_dot = C : eps_dot (small strain, plane mode in C).
-        const ElasticStiffness& C = s.stiffness[P.material[p]];
-        const double dexx = L00 * dt, deyy = L11 * dt, dexy = 0.5 * (L01 + L10) * dt;
-        P.exx[p] += dexx;
-        P.eyy[p] += deyy;
-        P.exy[p] += dexy;
-        P.sxx[p] += C.c11 * dexx + C.c12 * deyy;
-        P.syy[p] += C.c12 * dexx + C.c11 * deyy;
-        P.sxy[p] += 2.0 * C.mu * dexy;
-        P.szz[p] += C.cz * (dexx + deyy);
-        P.volume[p] = P.volume0[p] * (1.0 + P.exx[p] + P.eyy[p]);
-      }
-      if constexpr (do_move) {
-        P.x[p] += dt * mvx;
-        P.y[p] += dt * mvy;
-        if (std::isfinite(P.x[p])) {  // a non-finite particle is diagnosed below
-          const double col = double(ax.cell_of(P.x[p]));
-          if (col < col_lo || col > col_hi) drifted = true;
-        }
-      }
-      const bool finite = std::isfinite(P.vx[p] + P.vy[p] + P.sxx[p] + P.syy[p] + P.sxy[p]);
-      const bool inside = P.x[p] > xlo && P.x[p] < xhi && P.y[p] > ylo && P.y[p] < yhi;
-      if (!finite || !inside) bad = std::min(bad, p);
-    });
-  }
-  if (drifted) s.plan.valid = false;
-  if (bad != kNone) throw SimulationError(diagnose_bad_particles(s, xlo, xhi, ylo, yhi));
-}
-
-}  // namespace
-
-void grid_to_particles(State& s, const double* gvx, const double* gvy, G2PMode mode) {
-  switch (mode) {
-    case G2PMode::stress_and_move:
-      return grid_to_particles_impl<G2PMode::stress_and_move>(s, gvx, gvy);
-    case G2PMode::stress_velocity_and_move:
-      return grid_to_particles_impl<G2PMode::stress_velocity_and_move>(s, gvx, gvy);
-    case G2PMode::stress_only:
-      return grid_to_particles_impl<G2PMode::stress_only>(s, gvx, gvy);
-    case G2PMode::velocity_and_move:
-      return grid_to_particles_impl<G2PMode::velocity_and_move>(s, gvx, gvy);
-  }
-}
-
-namespace {
 // Wall time of the cohesive phases (forces, ties, interface advance), for the run record.
 class CohesiveTimer {
  public:
   explicit CohesiveTimer(State& s) : s_(s), t0_(std::chrono::steady_clock::now()) {}
   ~CohesiveTimer() {
-    s_.cohesive_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
+    s_.cohesive_seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
   }
   CohesiveTimer(const CohesiveTimer&) = delete;
   CohesiveTimer& operator=(const CohesiveTimer&) = delete;
@@ -680,6 +46,59 @@ void cohesive_forces_and_ties(State& s) {
   add_cohesive_forces(s);  // E7-E9
   tie_bonded_nodes(s, TieWhat::force);
 }
+
+// MUSL (modified update stress last): the stress is updated with the grid velocity re-mapped
+// from the updated particle velocities.
+void step_musl(State& s) {
+  GridFields& G = s.fields;
+  particles_to_grid(s, true);             // E4: mass, momentum, internal force per field
+  tie_stencils_and_time_step(s);          // bonded stretch, face stencils, dt (E6)
+  add_external_forces(s);                 // E4 tractions, body forces ([loads])
+  cohesive_forces_and_ties(s);            // E7-E9, bonded stretch
+  integrate_grid(s);                      // E4 momentum update + E2 velocity BCs
+  apply_velocity_regions(s);              // [loads] velocity regions, along d
+  external_force_work(s);                 // E14
+  update_particle_velocity_and_remap(s);  // FLIP/PIC velocity, re-mapped momentum
+  if (!s.interfaces.empty()) {
+    CohesiveTimer timer(s);
+    tie_bonded_nodes(s, TieWhat::remapped_momentum);
+  }
+  remapped_grid_velocity(s);  // + E2 velocity BCs at t^{n+1}
+  prescribe_region_velocity(s, G.remap_x.data(), G.remap_y.data(), s.time + s.dt);
+  grid_to_particles(s, G.remap_x.data(), G.remap_y.data(), G2PMode::stress_and_move);  // E5
+}
+
+// USL (update stress last): the stress is updated with the t^{n+1} grid velocity.
+void step_usl(State& s) {
+  GridFields& G = s.fields;
+  particles_to_grid(s, true);
+  tie_stencils_and_time_step(s);
+  add_external_forces(s);
+  cohesive_forces_and_ties(s);
+  integrate_grid(s);
+  apply_velocity_regions(s);
+  external_force_work(s);
+  grid_to_particles(s, G.vel_x.data(), G.vel_y.data(), G2PMode::stress_velocity_and_move);  // E5
+}
+
+// USF (update stress first): the stress is updated with the t^n grid velocity, before the
+// internal force is scattered.
+void step_usf(State& s) {
+  GridFields& G = s.fields;
+  particles_to_grid(s, false);  // E4: mass, momentum
+  tie_stencils_and_time_step(s);
+  grid_velocity_from_momentum(s, s.time);  // + E2 velocity BCs at t^n
+  prescribe_region_velocity(s, G.remap_x.data(), G.remap_y.data(), s.time);
+  grid_to_particles(s, G.remap_x.data(), G.remap_y.data(), G2PMode::stress_only);  // E5
+  particles_to_grid_force(s);
+  add_external_forces(s);
+  cohesive_forces_and_ties(s);
+  integrate_grid(s);
+  apply_velocity_regions(s);
+  external_force_work(s);
+  grid_to_particles(s, G.vel_x.data(), G.vel_y.data(), G2PMode::velocity_and_move);
+}
+
 }  // namespace
 
 void step(State& s) {
@@ -687,60 +106,29 @@ void step(State& s) {
   // A driven edge that has moved onto another grid line takes its condition with it (E2).
   if (update_edge_lines(s.boundary, s.grid, s.time, s.bc_lines))
     s.bc_nodes = resolve_nodes(s.boundary, s.grid, s.fields.num_fields, s.bc_lines);
-  prepare_loads(s);                         // loaded particles after a sort, region nodes at t^n
-  GridFields& G = s.fields;
+  prepare_loads(s);  // loaded particles after a sort, region nodes at t^n
   switch (s.scheme) {
     case Scheme::MUSL:
-      particles_to_grid(s, true);           // E4, per velocity field
-      tie_stencils_and_time_step(s);        // bonded stretch, face stencils, dt (E6)
-      add_external_forces(s);               // E4 tractions, body forces ([loads])
-      cohesive_forces_and_ties(s);          // E7-E9, bonded stretch
-      integrate_grid(s);                    // E4 momentum update + E2 velocity BCs
-      apply_velocity_regions(s);            // [loads] velocity regions, along d
-      external_force_work(s);               // E14
-      update_particle_velocity_and_remap(s);
-      if (!s.interfaces.empty()) {
-        CohesiveTimer timer(s);
-        tie_bonded_nodes(s, TieWhat::remapped_momentum);
-      }
-      remapped_grid_velocity(s);
-      prescribe_region_velocity(s, G.remap_x.data(), G.remap_y.data(), s.time + s.dt);
-      grid_to_particles(s, G.remap_x.data(), G.remap_y.data(), G2PMode::stress_and_move);  // E5
+      step_musl(s);
       break;
     case Scheme::USL:
-      particles_to_grid(s, true);
-      tie_stencils_and_time_step(s);
-      add_external_forces(s);
-      cohesive_forces_and_ties(s);
-      integrate_grid(s);
-      apply_velocity_regions(s);
-      external_force_work(s);
-      grid_to_particles(s, G.vel_x.data(), G.vel_y.data(), G2PMode::stress_velocity_and_move);
+      step_usl(s);
       break;
     case Scheme::USF:
-      particles_to_grid(s, false);
-      tie_stencils_and_time_step(s);
-      grid_velocity_from_momentum(s, s.time);
-      prescribe_region_velocity(s, G.remap_x.data(), G.remap_y.data(), s.time);
-      grid_to_particles(s, G.remap_x.data(), G.remap_y.data(), G2PMode::stress_only);
-      particles_to_grid_force(s);
-      add_external_forces(s);
-      cohesive_forces_and_ties(s);
-      integrate_grid(s);
-      apply_velocity_regions(s);
-      external_force_work(s);
-      grid_to_particles(s, G.vel_x.data(), G.vel_y.data(), G2PMode::velocity_and_move);
+      step_usf(s);
       break;
   }
-  set_region_particle_velocity(s);          // region particles: component along d at t^{n+1}
+  set_region_particle_velocity(s);  // region particles: component along d at t^{n+1}
   s.time += s.dt;
   ++s.step;
   if (!s.interfaces.empty()) {
     CohesiveTimer timer(s);
     // Face nodes follow their fields with the velocity the bodies' strain is updated with (MUSL:
     // re-mapped), so jumps and strains stay consistent; jumps and tractions at t^{n+1}.
+    const GridFields& G = s.fields;
     const bool musl = s.scheme == Scheme::MUSL;
-    advance_interfaces(s, musl ? G.remap_x.data() : G.vel_x.data(), musl ? G.remap_y.data() : G.vel_y.data());
+    advance_interfaces(s, musl ? G.remap_x.data() : G.vel_x.data(),
+                       musl ? G.remap_y.data() : G.vel_y.data());
   }
 }
 

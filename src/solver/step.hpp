@@ -11,26 +11,15 @@
 // never longer than s.dt_cap.
 // (cohesive phases: solver/cohesive_step.hpp; [loads] phases: solver/load_step.hpp, external
 // forces after the internal force, velocity regions after the velocity BCs)
+// The phases: solver/transfer.hpp, solver/grid_update.hpp (both included here for callers).
 // Throws SimulationError (what, where, when) on a non-finite particle or one leaving the grid.
 #pragma once
+#include "solver/grid_update.hpp"
 #include "solver/state.hpp"
+#include "solver/transfer.hpp"
 
 namespace rupture {
 
 void step(State& s);
-
-// --- phases (exposed for tests and benchmarks) ---
-void build_scatter_plan(State& s);
-void particles_to_grid(State& s, bool with_force);  // mass, momentum [, internal force] (E4)
-void particles_to_grid_force(State& s);             // internal force only (USF)
-void grid_velocity_from_momentum(State& s, double t);  // v_i = p_i/m_i with BCs (USF)
-void integrate_grid(State& s);      // p^{n+1} = p^n + dt f, then apply_velocity_bcs
-void apply_velocity_bcs(State& s);  // prescribed v at t^{n+1} (E2) and its external work
-void update_particle_velocity_and_remap(State& s);  // FLIP/PIC blend + MUSL re-map (scatter)
-void remapped_grid_velocity(State& s);              // MUSL: v_i = remapped p_i / m_i, BCs
-// Stress update with the velocity in (gvx, gvy) (E5); optionally update velocity (USL) and
-// move particles with the t^{n+1} grid velocity.
-enum class G2PMode { stress_and_move, stress_velocity_and_move, stress_only, velocity_and_move };
-void grid_to_particles(State& s, const double* gvx, const double* gvy, G2PMode mode);
 
 }  // namespace rupture

@@ -1,0 +1,87 @@
+// rupture/solver/particle_sort.cpp
+// Keeping particles sorted by strips for the race-free scatter (ScatterPlan, solver/state.hpp),
+// and the GIMP contract check on graded grids done at every re-sort.
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "core/errors.hpp"
+#include "solver/stencil_batch.hpp"
+#include "solver/transfer.hpp"
+
+namespace rupture {
+using namespace detail;
+namespace {
+
+// The GIMP contract of grid/grid.hpp (count_stencil_overflows), checked at every re-sort on a
+// graded grid: a particle breaking it would silently lose a node of its weights.
+void check_gimp_contract(const State& s) {
+  if (!s.grid.graded()) return;
+  const Particles& P = s.particles;
+  const Axis* axes[2] = {&s.grid.x, &s.grid.y};
+  const double* pos[2] = {P.x.data(), P.y.data()};
+  const double* half[2] = {P.half_x.data(), P.half_y.data()};
+  for (int d = 0; d < 2; ++d) {
+    const Axis& a = *axes[d];
+    if (count_stencil_overflows(a, pos[d], half[d], P.size()) == 0) continue;
+    std::size_t p = 0;
+    while (p < P.size() && !stencil_overflows(a, pos[d][p], half[d][p])) ++p;
+    if (p == P.size()) continue;  // cannot happen: both tests share their arithmetic
+    const double lp = half[d][p], lo = pos[d][p] - lp, hi = pos[d][p] + lp;
+    int cell = a.cell_of(lo) + 1;  // the narrowest cell wholly inside the box
+    for (int c = cell; c + 1 <= a.cells && a.node(c + 1) <= hi; ++c)
+      if (a.width(c) < a.width(cell)) cell = c;
+    const char* name = d == 0 ? "x" : "y";
+    const int col = d == 0 ? cell : s.grid.x.cell_of(P.x[p]);
+    const int row = d == 1 ? cell : s.grid.y.cell_of(P.y[p]);
+    throw SimulationError(fmt::format(
+        "GIMP contract broken at step {}, t = {:.6g} s: particle {} (field {}) at (x, y) = "
+        "({:.6g}, {:.6g}) m with half-widths (l_x, l_y) = ({:.4g}, {:.4g}) m spans, along {}, "
+        "[{:.6g}, {:.6g}] m, which holds cell (column {}, row {}) of width {:.4g} m whole: its "
+        "3-node stencil (SPEC E3) loses a node: the box may overlap at most two cells, so 2 l_p "
+        "must not exceed the width of a cell it reaches. A particle keeps the size of the cell "
+        "it was made in (l_p = a quarter of it at 2 x 2 per cell), so this one came from cells "
+        "more than twice as wide. Move the refinement-box transition further from moving "
+        "material (larger [grid.refine] boxes, so that material stays in cells at most 2x "
+        "finer than where it started), or refine where it starts as well",
+        s.step, s.time, P.id[p], int(P.field[p]), P.x[p], P.y[p], P.half_x[p], P.half_y[p], name,
+        lo, hi, col, row, a.width(cell)));
+  }
+}
+
+}  // namespace
+
+void sort_particles(State& s) {
+  check_gimp_contract(s);
+  ScatterPlan& plan = s.plan;
+  Particles& P = s.particles;
+  const std::size_t n = P.size();
+  const int cx = s.grid.x.cells, cy = s.grid.y.cells, width = plan.strip_cells;
+  plan.num_strips = (cx + width - 1) / width;
+  // Bucket (strip, row): strip-major, so every strip is one contiguous particle range.
+  auto bucket_of = [&](std::size_t p) {
+    const int col = std::clamp(s.grid.x.cell_of(P.x[p]), 0, cx - 1);
+    const int row = std::clamp(s.grid.y.cell_of(P.y[p]), 0, cy - 1);
+    return std::size_t(col / width) * std::size_t(cy) + std::size_t(row);
+  };
+  const std::size_t buckets = std::size_t(plan.num_strips) * std::size_t(cy);
+  plan.bucket.assign(buckets + 1, 0);
+  for (std::size_t p = 0; p < n; ++p) ++plan.bucket[bucket_of(p) + 1];
+  for (std::size_t k = 0; k < buckets; ++k) plan.bucket[k + 1] += plan.bucket[k];
+  plan.strip_begin.resize(std::size_t(plan.num_strips) + 1);
+  for (int k = 0; k <= plan.num_strips; ++k)
+    plan.strip_begin[std::size_t(k)] = plan.bucket[std::size_t(k) * std::size_t(cy)];
+  // Stable counting sort: particles keep their previous relative order inside a bucket.
+  plan.order.resize(n);
+  for (std::size_t p = 0; p < n; ++p) plan.order[plan.bucket[bucket_of(p)]++] = std::uint32_t(p);
+  P.permute(plan.order, plan.scratch);
+  plan.valid = true;
+  plan.sorted_step = s.step;
+}
+
+void build_scatter_plan(State& s) {
+  const ScatterPlan& plan = s.plan;
+  if (!plan.valid || s.step - plan.sorted_step >= plan.sort_interval) sort_particles(s);
+}
+
+}  // namespace rupture

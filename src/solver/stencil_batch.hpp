@@ -1,0 +1,127 @@
+// rupture/solver/stencil_batch.hpp
+// The particle-loop machinery shared by the transfers (solver/transfer.cpp) and the particle
+// sort (solver/particle_sort.cpp): GIMP stencils of 16 particles at a time, computed SIMD
+// over particles (SPEC E3), and the two-colour strip loop of ScatterPlan (solver/state.hpp).
+// Internal to solver/.
+#pragma once
+#include <algorithm>
+#include <cassert>
+#include <cstddef>
+#include <limits>
+
+#include "shape/gimp.hpp"
+#include "solver/state.hpp"
+
+namespace rupture::detail {
+
+inline constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
+
+// Stencils of a batch of consecutive particles, computed SIMD over particles (the weights are
+// then reused across the batch's node loops). For particle k: weights sx[a][k], sy[b][k] of
+// node (first_x + a, first_y + b) and their derivatives; base[k] = field offset + index of
+// node (first_x, first_y).
+constexpr int kBatch = 16;
+struct StencilBatch {
+  alignas(64) double sx[3][kBatch];
+  alignas(64) double dsx[3][kBatch];
+  alignas(64) double sy[3][kBatch];
+  alignas(64) double dsy[3][kBatch];
+  std::size_t base[kBatch];
+};
+
+// One axis for n <= kBatch particles: the stencil rule of grid/grid.hpp (stencil()), with
+// the weights of gimp_uniform_node written out over plain arrays so the loop vectorizes.
+inline void axis_stencils(const Axis& ax, const double* __restrict xp, const double* __restrict lp,
+                          int n, double (&w)[3][kBatch], double (&dw)[3][kBatch],
+                          int* __restrict first) {
+  double* __restrict w0 = w[0];
+  double* __restrict w1 = w[1];
+  double* __restrict w2 = w[2];
+  double* __restrict d0 = dw[0];
+  double* __restrict d1 = dw[1];
+  double* __restrict d2 = dw[2];
+  if (ax.graded()) {
+    // Graded axis (SPEC E3): the first node and its local cell size per particle (a table
+    // lookup), then the uniform form, vectorized, for every particle; the few whose stencil
+    // straddles a change of cell size are redone with the graded form.
+    double x0[kBatch], inv_hl[kBatch];
+    bool straddles = false;
+    for (int k = 0; k < n; ++k) {
+      const int c = ax.cell_of(xp[k] - lp[k]);
+      first[k] = c;
+      x0[k] = ax.node(c);
+      inv_hl[k] = 1.0 / ax.width(c);
+      straddles |= !ax.uniform_from[std::size_t(c)];
+    }
+#pragma omp simd
+    for (int k = 0; k < n; ++k) {
+      const double u = (xp[k] - x0[k]) * inv_hl[k], l = lp[k] * inv_hl[k], inv_2l = 0.5 / l;
+      gimp_uniform_node(u, l, inv_2l, inv_hl[k], w0[k], d0[k]);
+      gimp_uniform_node(u - 1.0, l, inv_2l, inv_hl[k], w1[k], d1[k]);
+      gimp_uniform_node(u - 2.0, l, inv_2l, inv_hl[k], w2[k], d2[k]);
+    }
+    if (straddles)
+      for (int k = 0; k < n; ++k) {
+        if (ax.uniform_from[std::size_t(first[k])]) continue;
+        Stencil1D st;
+        stencil(ax, xp[k], lp[k], st);
+        for (int j = 0; j < 3; ++j) w[j][k] = st.s[j], dw[j][k] = st.ds[j];
+      }
+    return;
+  }
+  const double inv_h = 1.0 / ax.h, origin = ax.origin;
+  double fl[kBatch];
+#pragma omp simd
+  for (int k = 0; k < n; ++k) {
+    const double xi = (xp[k] - origin) * inv_h;
+    // xi > 0 for every particle (the grid keeps its ghost cells around them: checked after each
+    // move), so truncation is floor; unlike std::floor it vectorizes without -ffast-math.
+    const double cell = double(int(xi));
+    const double f = (xi - cell < 0.5) ? cell - 1.0 : cell;
+    fl[k] = f;
+    const double u = xi - f, l = lp[k] * inv_h, inv_2l = 0.5 / l;
+    gimp_uniform_node(u, l, inv_2l, inv_h, w0[k], d0[k]);
+    gimp_uniform_node(u - 1.0, l, inv_2l, inv_h, w1[k], d1[k]);
+    gimp_uniform_node(u - 2.0, l, inv_2l, inv_h, w2[k], d2[k]);
+  }
+  for (int k = 0; k < n; ++k) first[k] = int(fl[k]);
+}
+
+inline void batch_stencils(const State& s, std::size_t p0, int n, StencilBatch& B) {
+  const Particles& P = s.particles;
+  int fx[kBatch], fy[kBatch];
+  axis_stencils(s.grid.x, P.x.data() + p0, P.half_x.data() + p0, n, B.sx, B.dsx, fx);
+  axis_stencils(s.grid.y, P.y.data() + p0, P.half_y.data() + p0, n, B.sy, B.dsy, fy);
+  const std::size_t nx = std::size_t(s.grid.nodes_x()), nn = s.fields.num_nodes;
+  for (int k = 0; k < n; ++k) {
+    // Debug builds: the 3 x 3 stencil lies in the grid (the gathers index it directly).
+    assert(fx[k] >= 0 && fx[k] + 2 < s.grid.nodes_x() && fy[k] >= 0 &&
+           fy[k] + 2 < s.grid.nodes_y());
+    B.base[k] = std::size_t(P.field[p0 + std::size_t(k)]) * nn + std::size_t(fy[k]) * nx +
+                std::size_t(fx[k]);
+  }
+}
+
+// Runs body(p, k, B) for particles [begin, end), batch by batch (k: index in the batch B).
+template <class Body>
+inline void for_each_in_batches(const State& s, std::size_t begin, std::size_t end, Body&& body) {
+  StencilBatch B;
+  for (std::size_t p0 = begin; p0 < end; p0 += kBatch) {
+    const int n = int(std::min<std::size_t>(kBatch, end - p0));
+    batch_stencils(s, p0, n, B);
+    for (int k = 0; k < n; ++k) body(p0 + std::size_t(k), k, B);
+  }
+}
+
+// Runs body(strip, begin, end) over the particle range of every strip, strips of one colour
+// in parallel (see ScatterPlan).
+template <class Body>
+void for_each_strip_coloured(const ScatterPlan& plan, Body&& body) {
+  for (int colour = 0; colour < 2; ++colour) {
+#pragma omp parallel for schedule(dynamic, 1)
+    for (int strip = colour; strip < plan.num_strips; strip += 2)
+      body(strip, plan.strip_begin[std::size_t(strip)], plan.strip_begin[std::size_t(strip) + 1]);
+  }
+}
+
+}  // namespace rupture::detail

@@ -1,0 +1,400 @@
+// rupture/solver/transfer.cpp
+// Particle <-> grid transfers of the time step (SPEC E4, E5). Scatters (particle -> grid) go
+// through the two-colour strip plan of ScatterPlan; gathers (grid -> particle) are plain
+// parallel loops. Stencils: solver/stencil_batch.hpp.
+#include "solver/transfer.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <limits>
+
+#include "core/errors.hpp"
+#include "solver/stencil_batch.hpp"
+
+namespace rupture {
+using namespace detail;
+namespace {
+
+// A failure spreads through the grid within one step, so the diagnosis reports every bad
+// particle's extent (where it started lies inside) and the worst one, not just the first index.
+std::string diagnose_bad_particles(const State& s, double xlo, double xhi, double ylo, double yhi) {
+  const Particles& P = s.particles;
+  std::size_t nonfinite = 0, outside = 0, first = kNone;
+  double bx0 = INFINITY, bx1 = -INFINITY, by0 = INFINITY, by1 = -INFINITY;
+  const char* quantity = "velocity";
+  for (std::size_t p = 0; p < P.size(); ++p) {
+    const bool v_ok = std::isfinite(P.vx[p] + P.vy[p]);
+    const bool s_ok = std::isfinite(P.sxx[p] + P.syy[p] + P.sxy[p]);
+    const bool in = P.x[p] > xlo && P.x[p] < xhi && P.y[p] > ylo && P.y[p] < yhi;
+    if (v_ok && s_ok && in) continue;
+    if (first == kNone) first = p;
+    if (!v_ok || !s_ok) {
+      ++nonfinite;
+      if (!s_ok && v_ok) quantity = "stress";
+    } else {
+      ++outside;
+    }
+    if (std::isfinite(P.x[p]) && std::isfinite(P.y[p])) {
+      bx0 = std::min(bx0, P.x[p]), bx1 = std::max(bx1, P.x[p]);
+      by0 = std::min(by0, P.y[p]), by1 = std::max(by1, P.y[p]);
+    }
+  }
+  const std::string where = fmt::format(
+      "at step {}, t = {:.6g} s; affected region x in [{:.6g}, {:.6g}], y in [{:.6g}, {:.6g}] m; "
+      "first: particle {} (field {}) at (x, y) = ({:.6g}, {:.6g}) m, v = ({:.4g}, {:.4g}) m/s",
+      s.step, s.time, bx0, bx1, by0, by1, P.id[first], int(P.field[first]), P.x[first], P.y[first],
+      P.vx[first], P.vy[first]);
+  if (nonfinite > 0)
+    return fmt::format(
+        "unstable: non-finite {} in {} particle(s) {}; reduce time.cfl or check the loading",
+        quantity, nonfinite, where);
+  return fmt::format(
+      "particle left the grid: {} particle(s) {}; the grid with its ghost cells spans x in "
+      "[{:.6g}, {:.6g}], y in [{:.6g}, {:.6g}] m",
+      outside, where, xlo, xhi, ylo, yhi);
+}
+
+}  // namespace
+
+namespace {
+
+// Strip tiles. Each particle loop works on one strip at a time through a small node-major
+// tile that holds, per node, the few values the loop needs packed in one vector (Lane4/Lane8):
+// a particle-node pair is then one to three vector FMAs instead of several scalar loads or
+// read-modify-writes on separate arrays. Gathers pack the tile from the grid arrays first;
+// scatters add the tile to the grid arrays after. A tile spans the strip's node columns (with
+// the one-column drift tolerance of ScatterPlan) and, per field, the node rows its particles
+// touch.
+using Lane8 = double __attribute__((vector_size(64)));
+using Lane4 = double __attribute__((vector_size(32)));
+
+struct TileLayout {
+  int col0 = 0, cols = 0;          // first node column, number of columns
+  std::vector<int> row0, rows;     // per field: first node row, number of rows (0: absent)
+  std::vector<std::size_t> start;  // per field: offset of its first node in the tile
+  std::size_t size() const { return start.back(); }
+  // Tile index of the node with grid index `base` (field offset included) of field f: the
+  // first node of a particle's 3 x 3 stencil. Debug builds check that the whole stencil lies
+  // in the tile; a particle breaking the GIMP contract (grid/grid.hpp) could write outside it.
+  std::size_t index(const State& s, std::size_t f, std::size_t base) const {
+    const std::size_t nx = std::size_t(s.grid.nodes_x());
+    assert(f < rows.size() && base >= s.fields.offset(int(f)));
+    const std::size_t local = base - s.fields.offset(int(f));
+    const int gx = int(local % nx), gy = int(local / nx);
+    assert(gy >= row0[f] && gy + 2 < row0[f] + rows[f] && "stencil rows outside the tile");
+    assert(gx >= col0 && gx + 2 < col0 + cols && "stencil columns outside the tile");
+    const std::size_t t =
+        start[f] + std::size_t(gy - row0[f]) * std::size_t(cols) + std::size_t(gx - col0);
+    assert(t + 2 * std::size_t(cols) + 2 < size());
+    return t;
+  }
+};
+
+void tile_layout(const State& s, int strip, std::size_t begin, std::size_t end, TileLayout& T) {
+  const Particles& P = s.particles;
+  const int fields = s.fields.num_fields;
+  const double oy = s.grid.y.origin, inv_hy = 1.0 / s.grid.y.h;
+  const bool graded = s.grid.y.graded();
+  T.col0 = strip * s.plan.strip_cells - 2;
+  T.cols = s.plan.strip_cells + 5;
+  // Node rows per field: a particle in cell row r touches node rows r-1 .. r+2.
+  T.row0.assign(std::size_t(fields), std::numeric_limits<int>::max());
+  T.rows.assign(std::size_t(fields), std::numeric_limits<int>::min());  // last row, then count
+  for (std::size_t p = begin; p < end; ++p) {
+    const int r =
+        graded ? s.grid.y.cell_of(P.y[p]) : int((P.y[p] - oy) * inv_hy);  // > 0: trunc = floor
+    const std::size_t f = P.field[p];
+    T.row0[f] = std::min(T.row0[f], r - 1);
+    T.rows[f] = std::max(T.rows[f], r + 2);
+  }
+  T.start.assign(std::size_t(fields) + 1, 0);
+  for (std::size_t f = 0; f < std::size_t(fields); ++f) {
+    T.rows[f] = T.rows[f] >= T.row0[f] ? T.rows[f] - T.row0[f] + 1 : 0;
+    T.start[f + 1] = T.start[f] + std::size_t(T.rows[f]) * std::size_t(T.cols);
+  }
+}
+
+// Calls visit(tile_index, grid_index) for every tile node that lies inside the grid.
+template <class Visit>
+void for_each_tile_node(const State& s, const TileLayout& T, Visit&& visit) {
+  const int nxi = s.grid.nodes_x(), nyi = s.grid.nodes_y();
+  const std::size_t nx = std::size_t(nxi);
+  for (std::size_t f = 0; f < T.rows.size(); ++f) {
+    for (int r = 0; r < T.rows[f]; ++r) {
+      const int gy = T.row0[f] + r;
+      if (gy < 0 || gy >= nyi) continue;
+      const std::size_t t = T.start[f] + std::size_t(r) * std::size_t(T.cols);
+      const std::size_t row = s.fields.offset(int(f)) + std::size_t(gy) * nx;
+      for (int c = 0; c < T.cols; ++c) {
+        const int gx = T.col0 + c;
+        if (gx >= 0 && gx < nxi) visit(t + std::size_t(c), row + std::size_t(gx));
+      }
+    }
+  }
+}
+
+template <class Lane>
+Lane* tile_buffer(std::vector<Lane>& buffer, std::size_t size, bool zero) {
+  if (buffer.size() < size) buffer.resize(size);
+  if (zero) std::fill(buffer.begin(), buffer.begin() + std::ptrdiff_t(size), Lane{});
+  return buffer.data();
+}
+
+template <bool kWithForce>
+void scatter_mass_momentum_force(State& s) {
+  GridFields& G = s.fields;
+  const Particles& P = s.particles;
+  for_each_strip_coloured(s.plan, [&](int strip, std::size_t begin, std::size_t end) {
+    if (begin == end) return;
+    thread_local TileLayout T;
+    thread_local std::vector<Lane8> buffer;
+    tile_layout(s, strip, begin, end, T);
+    Lane8* tile = tile_buffer(buffer, T.size(), true);
+    const std::size_t cols = std::size_t(T.cols);
+    for_each_in_batches(s, begin, end, [&](std::size_t p, int k, const StencilBatch& B) {
+      const double m = P.mass[p], V = P.volume[p];
+      const Lane8 A = {m, m * P.vx[p], m * P.vy[p], 0, 0, 0, 0, 0};
+      const double vsxx = V * P.sxx[p], vsyy = V * P.syy[p], vsxy = V * P.sxy[p];
+      // SPEC E4: f_i = -sum_p V_p sigma_p . grad S_ip
+      const Lane8 Fx = {0, 0, 0, -vsxx, -vsxy, 0, 0, 0};
+      const Lane8 Fy = {0, 0, 0, -vsxy, -vsyy, 0, 0, 0};
+      Lane8* t0 = tile + T.index(s, P.field[p], B.base[k]);
+      for (int b = 0; b < 3; ++b) {
+        Lane8* t = t0 + std::size_t(b) * cols;
+        const double wy = B.sy[b][k], gy_b = B.dsy[b][k];
+        for (int a = 0; a < 3; ++a) {
+          if constexpr (kWithForce) {
+            t[a] += (B.sx[a][k] * wy) * A + (B.dsx[a][k] * wy) * Fx + (B.sx[a][k] * gy_b) * Fy;
+          } else {
+            t[a] += (B.sx[a][k] * wy) * A;
+          }
+        }
+      }
+    });
+    // Strips of one colour never share a node: no race.
+    for_each_tile_node(s, T, [&](std::size_t t, std::size_t n) {
+      const Lane8 v = tile[t];
+      G.mass[n] += v[0];
+      G.mom_x[n] += v[1];
+      G.mom_y[n] += v[2];
+      if constexpr (kWithForce) {
+        G.force_x[n] += v[3];
+        G.force_y[n] += v[4];
+      }
+    });
+  });
+}
+
+}  // namespace
+
+void particles_to_grid(State& s, bool with_force) {
+  GridFields& G = s.fields;
+  std::fill(G.mass.begin(), G.mass.end(), 0.0);
+  std::fill(G.mom_x.begin(), G.mom_x.end(), 0.0);
+  std::fill(G.mom_y.begin(), G.mom_y.end(), 0.0);
+  std::fill(G.force_x.begin(), G.force_x.end(), 0.0);
+  std::fill(G.force_y.begin(), G.force_y.end(), 0.0);
+  if (with_force)
+    scatter_mass_momentum_force<true>(s);
+  else
+    scatter_mass_momentum_force<false>(s);
+}
+
+void particles_to_grid_force(State& s) {
+  GridFields& G = s.fields;
+  std::fill(G.force_x.begin(), G.force_x.end(), 0.0);
+  std::fill(G.force_y.begin(), G.force_y.end(), 0.0);
+  const Particles& P = s.particles;
+  const std::size_t nx = std::size_t(s.grid.nodes_x());
+  double* fx = G.force_x.data();
+  double* fy = G.force_y.data();
+  for_each_strip_coloured(s.plan, [&](int, std::size_t begin, std::size_t end) {
+    for_each_in_batches(s, begin, end, [&](std::size_t p, int k, const StencilBatch& B) {
+      const double V = P.volume[p], sxx = P.sxx[p], syy = P.syy[p], sxy = P.sxy[p];
+      for (int b = 0; b < 3; ++b) {
+        const std::size_t row = B.base[k] + std::size_t(b) * nx;
+        for (int a = 0; a < 3; ++a) {
+          const double gx = B.dsx[a][k] * B.sy[b][k], gy = B.sx[a][k] * B.dsy[b][k];
+          fx[row + a] -= V * (sxx * gx + sxy * gy);
+          fy[row + a] -= V * (sxy * gx + syy * gy);
+        }
+      }
+    });
+  });
+}
+
+namespace {
+
+// kPureFlip: flip == 1, so the PIC part (the gathered velocity) is not needed.
+// kPureFlip: flip == 1, so the PIC part (the gathered velocity) is not needed.
+template <bool kPureFlip>
+void velocity_update_and_remap(State& s) {
+  GridFields& G = s.fields;
+  Particles& P = s.particles;
+  const double flip = s.flip;
+  for_each_strip_coloured(s.plan, [&](int strip, std::size_t begin, std::size_t end) {
+    if (begin == end) return;
+    thread_local TileLayout T;
+    thread_local std::vector<Lane4> gather_buffer, scatter_buffer;
+    tile_layout(s, strip, begin, end, T);
+    Lane4* in = tile_buffer(gather_buffer, T.size(), false);
+    Lane4* out = tile_buffer(scatter_buffer, T.size(), true);
+    for_each_tile_node(s, T, [&](std::size_t t, std::size_t n) {
+      in[t] = Lane4{G.dvel_x[n], G.dvel_y[n], G.vel_x[n], G.vel_y[n]};
+    });
+    const std::size_t cols = std::size_t(T.cols);
+    for_each_in_batches(s, begin, end, [&](std::size_t p, int k, const StencilBatch& B) {
+      const std::size_t t0 = T.index(s, P.field[p], B.base[k]);
+      Lane4 acc = {0, 0, 0, 0};  // dv x, dv y, v x, v y
+      for (int b = 0; b < 3; ++b)
+        for (int a = 0; a < 3; ++a)
+          acc += (B.sx[a][k] * B.sy[b][k]) * in[t0 + std::size_t(b) * cols + std::size_t(a)];
+      // FLIP/PIC blend of the particle velocity update.
+      double vx, vy;
+      if constexpr (kPureFlip) {
+        vx = P.vx[p] + acc[0];
+        vy = P.vy[p] + acc[1];
+      } else {
+        vx = flip * (P.vx[p] + acc[0]) + (1.0 - flip) * acc[2];
+        vy = flip * (P.vy[p] + acc[1]) + (1.0 - flip) * acc[3];
+      }
+      P.vx[p] = vx;
+      P.vy[p] = vy;
+      const double m = P.mass[p];
+      const Lane4 mv = {m * vx, m * vy, 0, 0};
+      for (int b = 0; b < 3; ++b)
+        for (int a = 0; a < 3; ++a)
+          out[t0 + std::size_t(b) * cols + std::size_t(a)] += (B.sx[a][k] * B.sy[b][k]) * mv;
+    });
+    for_each_tile_node(s, T, [&](std::size_t t, std::size_t n) {
+      G.remap_x[n] += out[t][0];
+      G.remap_y[n] += out[t][1];
+    });
+  });
+}
+
+}  // namespace
+
+void update_particle_velocity_and_remap(State& s) {
+  GridFields& G = s.fields;
+  std::fill(G.remap_x.begin(), G.remap_x.end(), 0.0);
+  std::fill(G.remap_y.begin(), G.remap_y.end(), 0.0);
+  if (s.flip == 1.0)
+    velocity_update_and_remap<true>(s);
+  else
+    velocity_update_and_remap<false>(s);
+}
+
+namespace {
+
+// One specialization per G2PMode, so the node loop carries no mode tests.
+template <G2PMode kMode>
+void grid_to_particles_impl(State& s, const double* gvx, const double* gvy) {
+  Particles& P = s.particles;
+  const GridFields& G = s.fields;
+  const std::size_t nx = std::size_t(s.grid.nodes_x());
+  const double dt = s.dt, flip = s.flip;
+  constexpr bool do_velocity =
+      kMode == G2PMode::stress_velocity_and_move || kMode == G2PMode::velocity_and_move;
+  constexpr bool do_stress = kMode != G2PMode::velocity_and_move;
+  constexpr bool do_move = kMode != G2PMode::stress_only;
+  // Particles must keep their whole 3-node stencil inside the grid: the stencil starts at the
+  // cell of x - lp, so on the high side the particle stays out of the last cell (there the
+  // stencil would reach node cells + 1); on the low side lp <= half a cell suffices.
+  const Axis& ax = s.grid.x;
+  const Axis& ay = s.grid.y;
+  const double xlo = ax.node(0) + 0.5 * ax.width(0);
+  const double xhi = ax.node(ax.cells - 1);
+  const double ylo = ay.node(0) + 0.5 * ay.width(0);
+  const double yhi = ay.node(ay.cells - 1);
+  const ScatterPlan& plan = s.plan;
+  const int width = plan.strip_cells;
+  std::size_t bad = kNone;
+  bool drifted = false;
+#pragma omp parallel for schedule(dynamic, 1) reduction(min : bad) reduction(|| : drifted)
+  for (int strip = 0; strip < plan.num_strips; ++strip) {
+    // Drift tolerance of the scatter plan: one cell column either side of the strip.
+    const double col_lo = double(strip * width - 1), col_hi = double(strip * width + width);
+    const std::size_t end = plan.strip_begin[std::size_t(strip) + 1];
+    for_each_in_batches(
+        s, plan.strip_begin[std::size_t(strip)], end,
+        [&](std::size_t p, int k, const StencilBatch& B) {
+          double L00 = 0, L01 = 0, L10 = 0, L11 = 0;  // velocity gradient L_ij = dv_i/dx_j
+          double pic_x = 0, pic_y = 0, dvx = 0, dvy = 0, mvx = 0, mvy = 0;
+          for (int b = 0; b < 3; ++b) {
+            const std::size_t row = B.base[k] + std::size_t(b) * nx;
+            for (int a = 0; a < 3; ++a) {
+              const std::size_t i = row + std::size_t(a);
+              const double w = B.sx[a][k] * B.sy[b][k];
+              if constexpr (do_stress) {
+                const double gx = B.dsx[a][k] * B.sy[b][k], gy = B.sx[a][k] * B.dsy[b][k];
+                L00 += gvx[i] * gx;
+                L01 += gvx[i] * gy;
+                L10 += gvy[i] * gx;
+                L11 += gvy[i] * gy;
+              }
+              if constexpr (do_velocity) {
+                pic_x += w * G.vel_x[i];
+                pic_y += w * G.vel_y[i];
+                dvx += w * G.dvel_x[i];
+                dvy += w * G.dvel_y[i];
+              }
+              if constexpr (do_move) {
+                mvx += w * G.vel_x[i];
+                mvy += w * G.vel_y[i];
+              }
+            }
+          }
+          if constexpr (do_velocity) {
+            P.vx[p] = flip * (P.vx[p] + dvx) + (1.0 - flip) * pic_x;
+            P.vy[p] = flip * (P.vy[p] + dvy) + (1.0 - flip) * pic_y;
+          }
+          if constexpr (do_stress) {
+            // SPEC E5: eps_dot = sym(L), sigma_dot = C : eps_dot (small strain, plane mode in C).
+            const ElasticStiffness& C = s.stiffness[P.material[p]];
+            const double dexx = L00 * dt, deyy = L11 * dt, dexy = 0.5 * (L01 + L10) * dt;
+            P.exx[p] += dexx;
+            P.eyy[p] += deyy;
+            P.exy[p] += dexy;
+            P.sxx[p] += C.c11 * dexx + C.c12 * deyy;
+            P.syy[p] += C.c12 * dexx + C.c11 * deyy;
+            P.sxy[p] += 2.0 * C.mu * dexy;
+            P.szz[p] += C.cz * (dexx + deyy);
+            P.volume[p] = P.volume0[p] * (1.0 + P.exx[p] + P.eyy[p]);
+          }
+          if constexpr (do_move) {
+            P.x[p] += dt * mvx;
+            P.y[p] += dt * mvy;
+            if (std::isfinite(P.x[p])) {  // a non-finite particle is diagnosed below
+              const double col = double(ax.cell_of(P.x[p]));
+              if (col < col_lo || col > col_hi) drifted = true;
+            }
+          }
+          const bool finite = std::isfinite(P.vx[p] + P.vy[p] + P.sxx[p] + P.syy[p] + P.sxy[p]);
+          const bool inside = P.x[p] > xlo && P.x[p] < xhi && P.y[p] > ylo && P.y[p] < yhi;
+          if (!finite || !inside) bad = std::min(bad, p);
+        });
+  }
+  if (drifted) s.plan.valid = false;
+  if (bad != kNone) throw SimulationError(diagnose_bad_particles(s, xlo, xhi, ylo, yhi));
+}
+
+}  // namespace
+
+void grid_to_particles(State& s, const double* gvx, const double* gvy, G2PMode mode) {
+  switch (mode) {
+    case G2PMode::stress_and_move:
+      return grid_to_particles_impl<G2PMode::stress_and_move>(s, gvx, gvy);
+    case G2PMode::stress_velocity_and_move:
+      return grid_to_particles_impl<G2PMode::stress_velocity_and_move>(s, gvx, gvy);
+    case G2PMode::stress_only:
+      return grid_to_particles_impl<G2PMode::stress_only>(s, gvx, gvy);
+    case G2PMode::velocity_and_move:
+      return grid_to_particles_impl<G2PMode::velocity_and_move>(s, gvx, gvy);
+  }
+}
+
+}  // namespace rupture

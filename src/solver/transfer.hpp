@@ -1,0 +1,22 @@
+// rupture/solver/transfer.hpp
+// Particle <-> grid transfers of the time step (SPEC E3-E5), each a free function over the
+// State's plain arrays, per velocity field: the scatters use the race-free strip plan
+// (ScatterPlan, kept up to date by build_scatter_plan), the gathers plain parallel loops.
+// grid_to_particles throws SimulationError (what, where, when) on a non-finite particle or one
+// leaving the grid; a re-sort checks the GIMP contract on graded grids.
+#pragma once
+#include "solver/state.hpp"
+
+namespace rupture {
+
+void build_scatter_plan(State& s);  // re-sort the particles when due (solver/particle_sort.cpp)
+void sort_particles(State& s);
+void particles_to_grid(State& s, bool with_force);  // mass, momentum [, internal force] (E4)
+void particles_to_grid_force(State& s);             // internal force only (USF)
+void update_particle_velocity_and_remap(State& s);  // FLIP/PIC blend + MUSL re-map (scatter)
+// Stress update with the velocity in (gvx, gvy) (E5); optionally update velocity (USL) and
+// move particles with the t^{n+1} grid velocity.
+enum class G2PMode { stress_and_move, stress_velocity_and_move, stress_only, velocity_and_move };
+void grid_to_particles(State& s, const double* gvx, const double* gvy, G2PMode mode);
+
+}  // namespace rupture
