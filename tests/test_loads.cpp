@@ -245,6 +245,15 @@ max = [0.01, 0.001]
 material = "homalite"
 min = [0.0, 0.001]
 max = [0.01, 0.002]
+[interface.crack]
+upper_body = "upper"
+lower_body = "lower"
+y = 0.001
+start = 0.0
+end = 0.01
+segments = 40
+law = "contact"
+contact_stiffness = 1e14
 [time]
 end = 1e-6
 [loads.open]
@@ -273,7 +282,8 @@ bodies = ["upper"]
   for (std::size_t k = 0; k < s.particles.size(); ++k)
     (s.particles.field[k] == 1 ? upper : lower) += s.particles.mass[k] * s.particles.vy[k];
   EXPECT_GT(upper, 0.0) << "compression on the upper face pushes the upper body up";
-  EXPECT_EQ(lower, 0.0) << "the lower body is not loaded";
+  // The lower body is not loaded: it only feels the contact of the faces, which open.
+  EXPECT_LT(std::fabs(lower), 1e-3 * upper) << "the lower body is not loaded";
   // Without `bodies` the segment has material on both sides; the message says what to do.
   std::string both = t.substr(0, b) + bodies + t.substr(o);
   both.erase(both.find("bodies = [\"upper\"]"), 18);

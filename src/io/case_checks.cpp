@@ -113,12 +113,13 @@ void check_boundary_conflicts(Case& c) {
 }
 
 constexpr const char* kPassThrough =
-    "they are two velocity fields, so they will pass through each other. Join them with an "
-    "[interface.NAME] (upper_body, lower_body; bonded_to ties a stretch), or give them the same "
-    "bodies.NAME.field to make them one continuum";
+    "they are two velocity fields, so they would pass through each other. Join them with an "
+    "[interface.NAME] (upper_body, lower_body): a cohesive law, law = \"contact\" for faces "
+    "that only press and rub (friction), bonded_points / bonded_to to tie a stretch; or give "
+    "them the same bodies.NAME.field to make them one continuum";
 
 // Two plain rectangles touch along a segment of a line x = const or y = const.
-void warn_touching_rectangles(Case& c, const BodySpec& a, const BodySpec& b) {
+void check_touching_rectangles(const Case& c, const BodySpec& a, const BodySpec& b) {
   const double tol = 1e-9 * c.grid.cell_size;
   for (int d = 0; d < 2; ++d) {  // contact across a line of constant coordinate d
     const int e = 1 - d;
@@ -127,7 +128,7 @@ void warn_touching_rectangles(Case& c, const BodySpec& a, const BodySpec& b) {
     const bool a_below = std::fabs(a.max[d] - b.min[d]) <= tol;
     if (a_below || std::fabs(b.max[d] - a.min[d]) <= tol) {
       const double line = a_below ? a.max[d] : a.min[d];
-      c.warnings.push_back(fmt::format(
+      throw InputError(fmt::format(
           "bodies.{} and bodies.{} touch along {} = {:g} m, {} in [{:g}, {:g}] m, but no "
           "[interface] joins them: {}",
           a.name, b.name, d == 0 ? "x" : "y", line, e == 0 ? "x" : "y", lo, hi, kPassThrough));
@@ -138,7 +139,7 @@ void warn_touching_rectangles(Case& c, const BodySpec& a, const BodySpec& b) {
 // Any other shapes touch where a particle box of one shares a stretch of edge with (or
 // overlaps) a particle box of the other. Boxes are bucketed by grid cell: a box touching
 // another has its centre in the same or a neighbouring cell.
-void warn_touching_shapes(Case& c, const Grid& grid, const BodySpec& a, const BodySpec& b) {
+void check_touching_shapes(const Case& c, const Grid& grid, const BodySpec& a, const BodySpec& b) {
   const int ppc = c.grid.particles_per_cell;
   const double gap = c.grid.refined() ? c.grid.coarse_cell_size : c.grid.cell_size;
   if (!boxes_overlap(bounding_box(a.region), bounding_box(b.region), gap)) return;
@@ -170,16 +171,17 @@ void warn_touching_shapes(Case& c, const Grid& grid, const BodySpec& a, const Bo
   const Point near = *std::min_element(contacts.begin(), contacts.end(), [&](const Point& u, const Point& v) {
     return std::hypot(u.x - mean.x, u.y - mean.y) < std::hypot(v.x - mean.x, v.y - mean.y);
   });
-  c.warnings.push_back(fmt::format(
+  throw InputError(fmt::format(
       "bodies.{} and bodies.{} touch near ({:g}, {:g}) m ({} particle faces in contact), but no "
       "[interface] joins them: {}",
       a.name, b.name, near.x, near.y, contacts.size(), kPassThrough));
 }
 
-// Bodies of two velocity fields (SPEC §3) interact only through a cohesive interface between
-// their fields. Touching without one, they pass through each other. Bodies of one field are
-// one continuum: touching is what they are for.
-void warn_touching_bodies(Case& c) {
+// Bodies of two velocity fields (SPEC §3) interact only through an interface between their
+// fields. Touching without one, they would pass through each other: an input error (the user
+// asks for contact with an interface of law = "contact"). Bodies of one field are one
+// continuum: touching is what they are for.
+void check_touching_bodies(const Case& c) {
   std::optional<Grid> grid;  // built only if a shape other than a plain rectangle needs it
   for (std::size_t i = 0; i < c.bodies.size(); ++i)
     for (std::size_t j = i + 1; j < c.bodies.size(); ++j) {
@@ -192,11 +194,11 @@ void warn_touching_bodies(Case& c) {
           });
       if (joined) continue;
       if (a.plain_rectangle() && b.plain_rectangle()) {
-        warn_touching_rectangles(c, a, b);
+        check_touching_rectangles(c, a, b);
         continue;
       }
       if (!grid) grid = build_grid(c.grid);
-      warn_touching_shapes(c, *grid, a, b);
+      check_touching_shapes(c, *grid, a, b);
     }
 }
 
@@ -217,7 +219,7 @@ void warn_long_run(Case& c) {
 
 void check_case_consistency(Case& c) {
   check_boundary_conflicts(c);
-  warn_touching_bodies(c);
+  check_touching_bodies(c);
   warn_long_run(c);
 }
 

@@ -5,7 +5,8 @@
 //    naming both keys, their values and what is allowed (identical ones: a warning);
 //  - bodies of different velocity fields that touch along a segment of nonzero length (two
 //    rectangles: along x or y = const; other shapes: particle boxes sharing an edge) with no
-//    [interface] between their fields: a warning (they would pass through each other);
+//    [interface] between their fields: InputError (they would pass through each other; an
+//    interface of law = "contact" asks for contact);
 //  - a run of more than 1e7 time steps: a warning.
 // Warnings are appended to Case::warnings; the CLI prints them as `warning: ...` on stderr.
 #pragma once
