@@ -99,7 +99,7 @@ TEST(CrackTip, speeds_of_a_tip_moving_at_constant_speed_are_exact) {
   mean /= count;
   EXPECT_EQ(count, 200 - 30) << "the centred 31-point window fits 170 of 200 samples";
   EXPECT_NEAR(mean, v, 0.02 * v) << "E11 speed of a staircase with mean slope v";
-  const CrackSummary sum = tracker.summarize(c, kHomalite, 2e-6);
+  const CrackSummary sum = tracker.summarize(c, kHomalite, 4e-6);
   EXPECT_NEAR(sum.sustained_speed, v, 0.02 * v);
   EXPECT_EQ(sum.regime, "intersonic");
   EXPECT_NEAR(sum.initiation_time, 0.0, 1e-15);
@@ -186,4 +186,48 @@ TEST(CrackTip, node_crack_time_is_interpolated_inside_the_step) {
   evaluate_interface(c, 1.0e-6, 0.9e-6);
   EXPECT_NEAR(c.node_crack_time[7], 0.95e-6, 1e-15);
   EXPECT_LT(c.node_crack_time[6], 0.0);
+}
+
+// A closed line has no start: the crack is followed from the node that cracked first, both
+// ways, through node 0 without a jump. Here a square of 16 mm perimeter (64 segments of 0.25 mm,
+// node k at s = k/4 mm) cracks from node 12 (s = 3 mm) outwards at v both ways: at time t the
+// tip is at s = 3 mm + v t and the back tip at 3 mm - v t (node resolution), continuing past
+// node 0 to negative s; a single stretch, whose ends agree with the tips.
+TEST(CrackTip, a_crack_on_a_closed_line_runs_both_ways_through_node_zero) {
+  InterfaceSpec spec;
+  spec.line.x = {0.0, 0.004, 0.004, 0.0};
+  spec.line.y = {0.0, 0.0, 0.004, 0.004};
+  spec.line.closed = true;
+  spec.segments = 64;
+  XuNeedleman law;
+  law.sigma_max = law.tau_max = 24e6;
+  law.delta_n = 0.4e-6;
+  law.delta_t = 1e-6;
+  spec.law = law;
+  CohesiveInterface c = make_interface(spec);
+  ASSERT_EQ(c.num_nodes(), 64u);
+  ASSERT_EQ(c.num_segments(), 64u);
+  const double v = 1000.0, mm = 1e-3;
+  for (std::size_t k = 0; k < 64; ++k) {
+    const std::size_t forward = (k + 64 - 12) % 64, backward = (12 + 64 - k) % 64;
+    c.node_crack_time[k] = double(std::min(forward, backward)) * 0.25 * mm / v;
+  }
+  CrackTracker tracker(c);
+  const double dt = 0.05e-6;
+  for (int n = 0; n <= 140; ++n) tracker.sample(c, n * dt);  // to 7 us: 7 mm each way
+  const CrackSample& at5 = tracker.samples()[101];          // 5.05 us: 5 nodes each way
+  EXPECT_NEAR(at5.tip, 8 * mm, 1e-12);
+  EXPECT_NEAR(at5.back, -2 * mm, 1e-12) << "past node 0: s continues below 0";
+  ASSERT_EQ(at5.stretch_begin.size(), 1u) << "one stretch, not split at node 0";
+  EXPECT_NEAR(at5.stretch_end[0] - at5.stretch_begin[0], 10 * mm, 1e-12);
+  double x, y;
+  tracker.position(at5.back, x, y);  // s = -2 mm is s = 14 mm: on the left side, y = 2 mm
+  EXPECT_NEAR(x, 0.0, 1e-12);
+  EXPECT_NEAR(y, 2 * mm, 1e-12);
+  const CrackSummary sum = tracker.summarize(c, kHomalite, 4e-6);
+  EXPECT_NEAR(sum.initiation_s, 3 * mm, 1e-12);
+  EXPECT_NEAR(sum.sustained_speed, v, 0.05 * v);
+  EXPECT_NEAR(sum.back_speed, v, 0.05 * v);
+  EXPECT_LT(sum.end_reached_time, 0.0) << "a closed line has no end";
+  EXPECT_LT(sum.daughter_time, 0.0);
 }

@@ -22,13 +22,18 @@ double least_squares_slope(const double* t, const double* y, std::size_t n) {
 }
 
 CrackTracker::CrackTracker(const CohesiveInterface& c, double end_tolerance)
-    : x0_(c.x0), y0_(c.y0), s0_(c.s0), end_tolerance_(end_tolerance) {}
+    : x0_(c.x0),
+      y0_(c.y0),
+      s0_(c.s0),
+      length_(c.closed ? c.length() : 0.0),
+      end_tolerance_(end_tolerance) {}
 
 void CrackTracker::position(double s, double& x, double& y) const {
   if (s0_.empty()) {
     x = y = NAN;
     return;
   }
+  if (length_ > 0.0) s -= length_ * std::floor(s / length_);  // closed line: s modulo its length
   const auto it = std::lower_bound(s0_.begin(), s0_.end(), s);
   const std::size_t k = std::size_t(it - s0_.begin());
   if (k < s0_.size() && s0_[k] == s) {
@@ -93,7 +98,66 @@ void zone_lengths(const CohesiveInterface& c, const Law& law, std::size_t first,
 
 }  // namespace
 
+// A closed line (cohesive/polyline.hpp) has no start: the crack is followed from the node that
+// cracked first (the initiation point). Its stretch runs forward (increasing s, the tip) and
+// backward (the back tip) from there, unwrapped through node 0 so both move continuously
+// (tip - back reaches the line's length when the whole ring has cracked); the other stretches
+// are listed going round from an intact node, so none is split at node 0.
+void CrackTracker::sample_closed(const CohesiveInterface& c, double t, CrackSample& s) {
+  const std::size_t n = c.num_nodes();
+  const double L = c.length();
+  auto cracked_by = [&](std::size_t k) {
+    return c.node_crack_time[k] >= 0.0 && c.node_crack_time[k] <= t;
+  };
+  std::size_t first = n;
+  for (std::size_t k = 0; k < n; ++k)
+    if (cracked_by(k) && (first == n || c.node_crack_time[k] < c.node_crack_time[first])) first = k;
+  if (first == n) return;  // intact: tip = back = 0
+  std::size_t ahead = 0, behind = 0;
+  while (ahead + 1 < n && cracked_by((first + ahead + 1) % n)) ++ahead;
+  while (behind + ahead + 1 < n && cracked_by((first + n - behind - 1) % n)) ++behind;
+  auto arc = [&](std::size_t from, std::size_t steps, int dir) {  // arc length walked, m
+    double d = 0.0;
+    for (std::size_t k = 0; k < steps; ++k) {
+      const std::size_t seg = dir > 0 ? (from + k) % n : (from + n - k - 1) % n;
+      d += c.seg_length[seg];
+    }
+    return d;
+  };
+  s.tip = c.s0[first] + arc(first, ahead, +1);
+  s.back = c.s0[first] - arc(first, behind, -1);
+  // Stretches, going round from an intact node.
+  std::size_t start = 0;
+  while (start < n && cracked_by(start)) ++start;
+  if (start == n) {
+    s.stretch_begin.push_back(s.back), s.stretch_end.push_back(s.tip);
+    return;
+  }
+  bool in = false;
+  double begin = 0.0, offset = 0.0;
+  for (std::size_t j = 1; j <= n; ++j) {
+    const std::size_t k = (start + j) % n;
+    if (k == 0 && j > 0) offset = L;  // went through node 0: keep s increasing
+    const bool cracked = j < n && cracked_by(k);
+    const double sk = c.s0[k] + offset;
+    if (cracked && !in) begin = sk;
+    if (!cracked && in) {
+      const std::size_t prev = (k + n - 1) % n;
+      s.stretch_begin.push_back(begin);
+      s.stretch_end.push_back(c.s0[prev] + (prev > k ? offset - L : offset));
+    }
+    in = cracked;
+  }
+}
+
 void CrackTracker::sample(const CohesiveInterface& c, double t) {
+  if (c.closed) {
+    CrackSample s;
+    s.time = t;
+    sample_closed(c, t, s);
+    samples_.push_back(std::move(s));
+    return;
+  }
   CrackSample s;
   s.time = t;
   s.tip = 0.0;

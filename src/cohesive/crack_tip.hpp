@@ -95,6 +95,8 @@ class CrackTracker {
   friend struct CheckpointAccess;  // every member below must also be written in io/checkpoint.cpp
   std::vector<CrackSample> samples_;
   std::vector<double> x0_, y0_, s0_;  // the interface's nodes (from the case, not stored)
+  double length_ = 0.0;               // a closed line's length (0: open), m
+  void sample_closed(const CohesiveInterface& c, double t, CrackSample& s);
   double end_tolerance_ = 0.0;
   double end_reached_time_ = -1.0;
 };
