@@ -565,7 +565,8 @@ void grid_to_particles_impl(State& s, const double* gvx, const double* gvy) {
   const int width = plan.strip_cells;
   std::size_t bad = kNone;
   bool drifted = false;
-#pragma omp parallel for schedule(dynamic, 1) reduction(min : bad) reduction(|| : drifted)
+  double strain_lag = 0.0;
+#pragma omp parallel for schedule(dynamic, 1) reduction(min : bad) reduction(|| : drifted) reduction(+ : strain_lag)
   for (int strip = 0; strip < plan.num_strips; ++strip) {
     // Drift tolerance of the scatter plan: one cell column either side of the strip.
     const double col_lo = double(strip * width - 1), col_hi = double(strip * width + width);
@@ -614,6 +615,8 @@ void grid_to_particles_impl(State& s, const double* gvx, const double* gvy) {
         P.sxy[p] += 2.0 * C.mu * dexy;
         P.szz[p] += C.cz * (dexx + deyy);
         P.volume[p] = P.volume0[p] * (1.0 + P.exx[p] + P.eyy[p]);
+        if constexpr (kMode != G2PMode::stress_only)  // strain from the velocity after the kick
+          strain_lag += 0.5 * P.volume0[p] * (P.sxx[p] * dexx + P.syy[p] * deyy + 2.0 * P.sxy[p] * dexy);
       }
       if constexpr (do_move) {
         P.x[p] += dt * mvx;
@@ -628,6 +631,7 @@ void grid_to_particles_impl(State& s, const double* gvx, const double* gvy) {
       if (!finite || !inside) bad = std::min(bad, p);
     });
   }
+  if constexpr (do_stress) s.strain_energy_lag = strain_lag;  // 0 for USF (see State)
   if (drifted) s.plan.valid = false;
   if (bad != kNone) throw SimulationError(diagnose_bad_particles(s, xlo, xhi, ylo, yhi));
 }
