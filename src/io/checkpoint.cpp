@@ -306,7 +306,7 @@ void fields(A& a, Particles& p) {
 }
 
 // The particle order and the strips it was sorted into fix the summation order: both stored.
-// order, bucket, scratch are scratch of the sort; strip_sum of the gathers.
+// order, bucket, scratch are scratch of the sort.
 template <class A>
 void fields(A& a, ScatterPlan& p) {
   a("strip_cells", p.strip_cells);
@@ -391,7 +391,6 @@ void fields(A& a, State& s) {
   a("mass_floor", s.mass_floor);
   a("cohesive_seconds", s.cohesive_seconds);
   a("external_work", s.external_work);
-  a("strain_energy_lag", s.strain_energy_lag);
   a("initial_energy", s.initial_energy);
 }
 

@@ -1,8 +1,6 @@
 // rupture/solver/energy.cpp
 #include "solver/energy.hpp"
 
-#include "solver/state.hpp"
-
 namespace rupture {
 
 double kinetic_energy(const Particles& p) {
@@ -23,7 +21,5 @@ double strain_energy(const Particles& p) {
          (p.sxx[i] * p.exx[i] + p.syy[i] * p.eyy[i] + 2.0 * p.sxy[i] * p.exy[i]);
   return e;
 }
-
-double strain_energy(const State& s) { return strain_energy(s.particles) - s.strain_energy_lag; }
 
 }  // namespace rupture

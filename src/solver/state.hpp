@@ -38,7 +38,6 @@ struct ScatterPlan {
   std::vector<std::uint32_t> order;      // scratch for the sort
   std::vector<std::uint32_t> bucket;     // scratch: count per (strip, row)
   std::vector<double> scratch;           // scratch for the permutation
-  std::vector<double> strip_sum;         // scratch: one partial sum per strip (fixed-order sums)
 };
 
 // Every member must also be written in io/checkpoint.cpp.
@@ -103,11 +102,6 @@ struct State {
   double cohesive_seconds = 0.0;  // wall time spent in the cohesive phases so far, s
   double external_work = 0.0;  // work of the prescribed velocities and loads so far, J (per unit thickness)
   double initial_energy = 0.0; // kinetic + strain energy at t = 0, J
-  // 1/2 sum V0 sigma^{n+1} : (eps^{n+1} - eps^n) of the last stress update, J. MUSL and USL
-  // update the strain with the velocity after the kick, v^{n+1/2} in central-difference terms;
-  // the energy the scheme conserves pairs that kinetic energy with 1/2 V0 sigma^{n+1} : eps^n
-  // (solver/energy.hpp, docs/time_step.md). USF strains with the velocity before the kick: 0.
-  double strain_energy_lag = 0.0;
 };
 
 // Builds grid, particles (one velocity field per body), stiffnesses, boundary nodes and the

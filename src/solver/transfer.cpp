@@ -314,16 +314,11 @@ void grid_to_particles_impl(State& s, const double* gvx, const double* gvy) {
   const int width = plan.strip_cells;
   std::size_t bad = kNone;
   bool drifted = false;
-  // The strain-energy lag is summed per strip, then over the strips in order: a reduction
-  // over a dynamic schedule would add in a different order each run (restart is bitwise).
-  std::vector<double>& strip_lag = s.plan.strip_sum;
-  strip_lag.assign(std::size_t(plan.num_strips), 0.0);
 #pragma omp parallel for schedule(dynamic, 1) reduction(min : bad) reduction(|| : drifted)
   for (int strip = 0; strip < plan.num_strips; ++strip) {
     // Drift tolerance of the scatter plan: one cell column either side of the strip.
     const double col_lo = double(strip * width - 1), col_hi = double(strip * width + width);
     const std::size_t end = plan.strip_begin[std::size_t(strip) + 1];
-    double strain_lag = 0.0;
     for_each_in_batches(
         s, plan.strip_begin[std::size_t(strip)], end,
         [&](std::size_t p, int k, const StencilBatch& B) {
@@ -369,9 +364,6 @@ void grid_to_particles_impl(State& s, const double* gvx, const double* gvy) {
             P.sxy[p] += 2.0 * C.mu * dexy;
             P.szz[p] += C.cz * (dexx + deyy);
             P.volume[p] = P.volume0[p] * (1.0 + P.exx[p] + P.eyy[p]);
-            if constexpr (kMode != G2PMode::stress_only)  // strain from the velocity after the kick
-              strain_lag +=
-                  0.5 * P.volume0[p] * (P.sxx[p] * dexx + P.syy[p] * deyy + 2.0 * P.sxy[p] * dexy);
           }
           if constexpr (do_move) {
             P.x[p] += dt * mvx;
@@ -385,12 +377,6 @@ void grid_to_particles_impl(State& s, const double* gvx, const double* gvy) {
           const bool inside = P.x[p] > xlo && P.x[p] < xhi && P.y[p] > ylo && P.y[p] < yhi;
           if (!finite || !inside) bad = std::min(bad, p);
         });
-    strip_lag[std::size_t(strip)] = strain_lag;
-  }
-  if constexpr (do_stress) {  // 0 for USF (see State)
-    double lag = 0.0;
-    for (double v : strip_lag) lag += v;
-    s.strain_energy_lag = lag;
   }
   if (drifted) s.plan.valid = false;
   if (bad != kNone) throw SimulationError(diagnose_bad_particles(s, xlo, xhi, ylo, yhi));
