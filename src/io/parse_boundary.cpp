@@ -74,6 +74,24 @@ void set_automatic_margin(Case& c) {
       m = std::max(m, std::fabs(r.displacement(c.time.end * k / 1000.0)));
   for (const BodySpec& b : c.bodies)
     m = std::max(m, std::hypot(b.velocity[0], b.velocity[1]) * c.time.end);
+  // A traction T f(t) on a surface drives it at the plane-wave speed T f / (rho c_D) of the
+  // most compliant material (the lowest impedance): it moves by T F(t) / (rho c_D), F the
+  // integral of f. A body force g f(t) moves a free body by at most |g| F(t) t.
+  double impedance = INFINITY;  // rho c_D, Pa s/m
+  for (const ElasticMaterial& mat : c.materials)
+    impedance = std::min(impedance, mat.density * wave_speeds(mat, c.plane).dilatational);
+  for (const TractionLoad& l : c.loads.tractions) {
+    const double T = l.global ? std::hypot(l.traction[0], l.traction[1]) : std::hypot(l.normal, l.shear);
+    for (int k = 1; k <= 1000; ++k)
+      m = std::max(m, T * std::fabs(l.factor.displacement(c.time.end * k / 1000.0)) / impedance);
+  }
+  for (const BodyForceLoad& l : c.loads.body_forces) {
+    const double g = std::hypot(l.acceleration[0], l.acceleration[1]);
+    for (int k = 1; k <= 1000; ++k) {
+      const double t = c.time.end * k / 1000.0;
+      m = std::max(m, g * std::fabs(l.factor.displacement(t)) * t);
+    }
+  }
   // Capped like an explicit grid.margin: a long run with a constant velocity would otherwise
   // ask for an unbounded grid; a surface moving farther is caught as "particle left the grid".
   c.grid.margin = std::min(m, c.grid.max_margin());

@@ -325,7 +325,11 @@ void advance_interfaces(State& s, const double* vel_x, const double* vel_y) {
       c.ux_up[k] += dt * vax, c.uy_up[k] += dt * vay;
       c.ux_lo[k] += dt * vbx, c.uy_lo[k] += dt * vby;
       // Instability watch on the intact part (an opened crack moves freely).
-      const double inc_n = dt * (vay - vby), inc_t = dt * (vax - vbx);
+      // The jump increment in the node's frame (n, t = (n_y, -n_x)): exactly (y, x) on a line
+      // drawn in +x.
+      const double dvx = dt * (vax - vbx), dvy = dt * (vay - vby);
+      const double inc_n = c.node_nx[k] * dvx + c.node_ny[k] * dvy;
+      const double inc_t = c.node_ny[k] * dvx - c.node_nx[k] * dvy;
       const double last_n = c.last_increment_n[k], last_t = c.last_increment_t[k];
       const double size = std::hypot(inc_n, inc_t), last = std::hypot(last_n, last_t);
       const bool reverses = inc_n * last_n + inc_t * last_t < 0.0;
