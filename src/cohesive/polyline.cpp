@@ -129,6 +129,15 @@ bool segments_intersect(double ax0, double ay0, double ax1, double ay1, double b
   return false;
 }
 
+bool segments_cross(double ax0, double ay0, double ax1, double ay1, double bx0, double by0,
+                    double bx1, double by1) {
+  const int o1 = orientation(ax0, ay0, ax1, ay1, bx0, by0);
+  const int o2 = orientation(ax0, ay0, ax1, ay1, bx1, by1);
+  const int o3 = orientation(bx0, by0, bx1, by1, ax0, ay0);
+  const int o4 = orientation(bx0, by0, bx1, by1, ax1, ay1);
+  return o1 * o2 < 0 && o3 * o4 < 0;
+}
+
 PieceCrossing first_self_crossing(const Polyline& line) {
   const std::size_t n = line.num_pieces();
   for (std::size_t i = 0; i < n; ++i)

@@ -51,6 +51,11 @@ struct PieceCrossing {
 };
 PieceCrossing first_self_crossing(const Polyline& line);
 
+// Whether two segments cross properly: each one's ends lie strictly on both sides of the
+// other (touching at an end, or overlapping along a line, does not count).
+bool segments_cross(double ax0, double ay0, double ax1, double ay1, double bx0, double by0,
+                    double bx1, double by1);
+
 // Whether two segments [a0, a1] and [b0, b1] intersect (touching counts).
 bool segments_intersect(double ax0, double ay0, double ax1, double ay1, double bx0, double by0,
                         double bx1, double by1);

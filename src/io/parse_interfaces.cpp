@@ -289,6 +289,32 @@ void parse_interface_law(Section& f, InterfaceSpec& is) {
          "must be > 0 (Pa/m; the law's penalty is 0 here: give it)");
 }
 
+// Interfaces may meet at their ends (a kinked crack of two interfaces) but not cross: where two
+// lines cross, a point of one would lie inside the other's faces. Bonded lines count too.
+void check_no_crossing(Section& f, const InterfaceSpec& is, const Case& c) {
+  const Polyline mine[2] = {is.geometry(), is.tie_geometry()};
+  for (std::size_t k = 0; k < c.interfaces.size(); ++k) {
+    const Polyline theirs[2] = {c.interfaces[k].geometry(), c.interfaces[k].tie_geometry()};
+    for (const Polyline& a : mine)
+      for (const Polyline& b : theirs) {
+        if (a.num_vertices() < 2 || b.num_vertices() < 2) continue;
+        for (std::size_t i = 0; i < a.num_pieces(); ++i)
+          for (std::size_t j = 0; j < b.num_pieces(); ++j) {
+            const std::size_t i1 = a.piece_end(i), j1 = b.piece_end(j);
+            if (!segments_cross(a.x[i], a.y[i], a.x[i1], a.y[i1], b.x[j], b.y[j], b.x[j1], b.y[j1]))
+              continue;
+            fail(f.key(is.line.num_vertices() >= 2 ? "points" : "y"),
+                 fmt::format("(piece from [{:g}, {:g}] to [{:g}, {:g}])", a.x[i], a.y[i], a.x[i1],
+                             a.y[i1]),
+                 fmt::format(
+                     "crosses interface.{} (piece from [{:g}, {:g}] to [{:g}, {:g}]); interfaces "
+                     "may meet at their ends but not cross",
+                     c.interface_names[k], b.x[j], b.y[j], b.x[j1], b.y[j1]));
+          }
+      }
+  }
+}
+
 }  // namespace
 
 void parse_interfaces(Section& top, Case& c, ParseContext& ctx) {
@@ -321,6 +347,7 @@ void parse_interfaces(Section& top, Case& c, ParseContext& ctx) {
                        up.name, lo.name, c.field_names[std::size_t(up.field)]));
     parse_interface_geometry(f, is, c, up, lo);
     parse_interface_law(f, is);
+    check_no_crossing(f, is, c);
     c.interfaces.push_back(is);
     c.interface_names.push_back(name);
   }
