@@ -3,6 +3,8 @@
 
 Reads what `rupture run` wrote in DIR and writes PNGs to DIR/figures/:
   crack_tip.png         tip position and E11 speed vs time, with c_R, c_S, sqrt(2) c_S, c_D
+  crack_tip_NAME.png    per interface: tip and back tip along s and their speeds
+  rupture_time_NAME.png per interface: the time each node cracked along s
   tau_max_fringes.png   tau_max = (sigma_1 - sigma_2)/2 around the crack tip (SPEC E13,
                         the paper's Fig. 7 look: banded contours read like isochromatics)
   cohesive_profiles.png tangential and normal cohesive tractions and nodal forces along the
@@ -173,6 +175,51 @@ def plot_profiles(d, out, max_curves=4):
     save(fig, out)
 
 
+def plot_interfaces(d, fig_dir):
+    """Per interface (run.json "cracks", input order): crack_tip_NAME.png (tip and back tip along
+    the arc length s, and their E11 speeds against every material's c_R, c_S, c_D) and
+    rupture_time_NAME.png (when each node cracked along s: the rupture-time profile)."""
+    with open(os.path.join(d, "run.json")) as f:
+        run = json.load(f)
+    for crack in run.get("cracks", []):
+        name = crack["interface"]
+        tip = read_csv(os.path.join(d, f"crack_tip_{name}.csv"))
+        if tip:
+            fig, (ax_s, ax_v) = plt.subplots(2, 1, figsize=(7, 7.5), sharex=True)
+            t_us = 1e6 * tip["time"]
+            ax_s.plot(t_us, 1e3 * tip["tip_s"], label="tip")
+            ax_s.plot(t_us, 1e3 * tip["back_s"], label="back tip", ls="--")
+            ax_s.set_ylabel("position along the interface s (mm)")
+            ax_s.legend(fontsize=8)
+            ax_s.grid(alpha=0.3)
+            ax_v.plot(t_us, tip["speed"], label="tip")
+            ax_v.plot(t_us, tip["back_speed"], label="back tip", ls="--")
+            top = 0.0
+            for material, w in run["wave_speeds"].items():
+                for value, label, style in [(w["rayleigh"], "$c_R$", ":"), (w["shear"], "$c_S$", "--"),
+                                            (w["dilatational"], "$c_D$", "-")]:
+                    ax_v.axhline(value, color="k", lw=0.7, ls=style)
+                    ax_v.text(ax_v.get_xlim()[0], value, f" {label} {material} = {value:.0f} m/s",
+                              va="bottom", fontsize=7)
+                top = max(top, w["dilatational"])
+            ax_v.set_ylim(0, 1.1 * top)
+            ax_v.set_xlabel("time (µs)")
+            ax_v.set_ylabel("speed along the interface (m/s, E11)")
+            ax_v.grid(alpha=0.3)
+            fig.suptitle(f"interface {name}: {crack.get('upper_body', '')} / {crack.get('lower_body', '')}")
+            save(fig, os.path.join(fig_dir, f"crack_tip_{name}.png"))
+        times = read_csv(os.path.join(d, f"rupture_time_{name}.csv"))
+        if times:
+            cracked = times["crack_time"] >= 0
+            fig, ax = plt.subplots(figsize=(7, 4))
+            ax.plot(1e3 * times["s"][cracked], 1e6 * times["crack_time"][cracked], ".", ms=2)
+            ax.set_xlabel("position along the interface s (mm)")
+            ax.set_ylabel("time the node cracked (µs)")
+            ax.set_title(f"interface {name}: rupture-time profile ({int(cracked.sum())} of {len(cracked)} nodes cracked)")
+            ax.grid(alpha=0.3)
+            save(fig, os.path.join(fig_dir, f"rupture_time_{name}.png"))
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
     ap.add_argument("dir", help="run directory written by `rupture run`")
@@ -191,6 +238,7 @@ def main():
     plot_crack_tip(dirs, labels, os.path.join(fig_dir, "crack_tip.png"))
     plot_fringes(args.dir, os.path.join(fig_dir, "tau_max_fringes.png"))
     plot_profiles(args.dir, os.path.join(fig_dir, "cohesive_profiles.png"))
+    plot_interfaces(args.dir, fig_dir)
 
 
 if __name__ == "__main__":
