@@ -180,7 +180,7 @@ TEST(CrackTip, samples_at_exact_times_see_only_nodes_cracked_by_then) {
 // time: a jump that went from 0.8 to 1.2 x the criterion over [0.9, 1.0] us cracked at 0.95 us.
 TEST(CrackTip, node_crack_time_is_interpolated_inside_the_step) {
   CohesiveInterface c = line();
-  const double crit = crack_threshold(std::get<XuNeedleman>(c.spec.law), c.spec.separation_factor);
+  const double crit = std::get<XuNeedleman>(c.spec.law).crack_threshold(c.spec.separation_factor);
   c.jump_before[7] = 0.8 * crit;
   c.ux_up[7] = 0.6 * crit, c.ux_lo[7] = -0.6 * crit;  // jump 1.2 crit now
   evaluate_interface(c, 1.0e-6, 0.9e-6);

@@ -64,6 +64,13 @@ struct BilinearLaw {
     return kappa >= 1.0 ? 0.0 : (1.0 - kappa) / ((1.0 - lambda0) * kappa);
   }
   bool separated(const GaussHistory& h) const { return h.damage >= 1.0; }
+  // Crack tracking (E10): a node has cracked once its effective opening reaches 1 (full
+  // softening); it softens beyond lambda0; lambda0 x the smaller critical opening is the
+  // law's small opening scale (the instability watch's floor).
+  double crack_measure(double dn, double dt) const { return effective_opening(dn, dt); }
+  double crack_threshold(double /*separation_factor*/) const { return 1.0; }
+  bool softening(double dn, double dt) const { return effective_opening(dn, dt) >= lambda0; }
+  double opening_scale() const { return lambda0 * std::min(delta_nc, delta_tc); }
 
   // Traction at (dn, dt) after updating the damage S = max(S, lambda) (irreversible).
   LawResponse respond(double dn, double dt, GaussHistory& h) const {

@@ -52,15 +52,6 @@ void CrackTracker::position(double s, double& x, double& y) const {
 
 namespace {
 
-// Past the peak traction (softening): Xu-Needleman, beyond the opening of peak shear traction,
-// delta_t / sqrt 2; bilinear, beyond the elastic opening lambda0.
-bool softening(const XuNeedleman& law, double dn, double dt) {
-  return std::hypot(dn, dt) >= law.delta_t / std::sqrt(2.0);
-}
-bool softening(const BilinearLaw& law, double dn, double dt) {
-  return law.effective_opening(dn, dt) >= law.lambda0;
-}
-
 // The traction of an undamaged point at this opening, as a fraction of its strength.
 template <class Law>
 double load_fraction(const Law& law, double dn, double dt) {
@@ -80,7 +71,7 @@ void zone_lengths(const CohesiveInterface& c, const Law& law, std::size_t first,
   double zone_end = s.tip;
   for (std::size_t k = first; k < c.num_nodes(); ++k) {
     if (cracked_by(k)) continue;
-    if (softening(law, c.jump_normal(k), c.jump_tangential(k))) zone_end = c.s0[k];
+    if (law.softening(c.jump_normal(k), c.jump_tangential(k))) zone_end = c.s0[k];
   }
   s.cohesive_zone = zone_end - s.tip;
   double loaded_end = s.tip;
@@ -89,7 +80,7 @@ void zone_lengths(const CohesiveInterface& c, const Law& law, std::size_t first,
     // Softening nodes belong to the zone whatever their (decaying) traction; ahead of them,
     // the zone goes on while the rising-branch traction stays above the fraction.
     const double dn = c.jump_normal(k), dt = c.jump_tangential(k);
-    if (!softening(law, dn, dt) && load_fraction(law, dn, dt) < CrackTracker::kTractionZoneFraction)
+    if (!law.softening(dn, dt) && load_fraction(law, dn, dt) < CrackTracker::kTractionZoneFraction)
       break;
     loaded_end = c.s0[k];
   }

@@ -113,8 +113,8 @@ struct CohesiveInterface {
   double jump_tangential(std::size_t k) const {
     return node_ny[k] * jump_x(k) - node_nx[k] * jump_y(k);
   }
-  // The node crack criterion (E10): a node has cracked once crack_measure(law, jumps) reaches
-  // crack_threshold(law, separation_factor) (Xu-Needleman: |jump| >= 5 delta_t; bilinear:
+  // The node crack criterion (E10): a node has cracked once law.crack_measure(jumps) reaches
+  // law.crack_threshold(separation_factor) (Xu-Needleman: |jump| >= 5 delta_t; bilinear:
   // effective opening lambda >= 1, full softening).
   // Energy stored in intact Gauss points (potential of the law), J/m.
   double stored_energy() const;
@@ -122,23 +122,9 @@ struct CohesiveInterface {
 
 CohesiveInterface make_interface(const InterfaceSpec& spec);
 
-inline double crack_measure(const XuNeedleman&, double dn, double dt) {
-  return std::hypot(dn, dt);
-}
-inline double crack_threshold(const XuNeedleman& law, double separation_factor) {
-  return separation_factor * law.delta_t;
-}
-inline double crack_measure(const BilinearLaw& law, double dn, double dt) {
-  return law.effective_opening(dn, dt);
-}
-inline double crack_threshold(const BilinearLaw&, double) {
-  return 1.0;
-}
-// An opening small against the law's own scale (m): the floor of the instability watch.
+// An opening small against the interface law's own scale (m): the instability watch's floor.
 inline double opening_scale(const CohesiveLaw& law) {
-  if (const auto* xn = std::get_if<XuNeedleman>(&law)) return xn->delta_n;
-  const BilinearLaw& b = std::get<BilinearLaw>(law);
-  return b.lambda0 * std::min(b.delta_nc, b.delta_tc);
+  return std::visit([](const auto& l) { return l.opening_scale(); }, law);
 }
 
 }  // namespace rupture

@@ -24,6 +24,12 @@
 //   bool L::separated(const GaussHistory& h) const;
 //       True once the law carries no cohesion (irreversible). XuNeedleman answers false: its
 //       criterion (|Delta| >= 5 delta_t, SPEC §3) is the interface's.
+//   double L::crack_measure(double dn, double dt) const;  double L::crack_threshold(double f)
+//   const;
+//       A node has cracked (E10) once crack_measure of its jumps reaches crack_threshold
+//       (f = the interface's separation factor, used by Xu-Needleman only).
+//   bool L::softening(double dn, double dt) const;   past the peak traction (cohesive zone)
+//   double L::opening_scale() const;                 a small opening of the law's own scale, m
 // No allocation, no virtual call: every member is inline and the structs are plain data.
 //
 // To add a law: one header (+ .cpp for validate()) with a struct keeping the contract, its
@@ -47,6 +53,10 @@ concept TractionLaw = requires(const L& law, double d, GaussHistory& h, const Ga
   { law.fracture_energy_tangential() } -> std::same_as<double>;
   { law.initial_stiffness() } -> std::same_as<double>;
   { law.separated(ch) } -> std::same_as<bool>;
+  { law.crack_measure(d, d) } -> std::same_as<double>;
+  { law.crack_threshold(d) } -> std::same_as<double>;
+  { law.softening(d, d) } -> std::same_as<bool>;
+  { law.opening_scale() } -> std::same_as<double>;
 };
 
 using CohesiveLaw = std::variant<XuNeedleman, BilinearLaw>;

@@ -58,21 +58,27 @@ struct XuNeedleman {
   CohesiveTraction traction(const Openings& o, double dn) const {
     const double pn = phi_n();
     CohesiveTraction T;
-    T.normal = (pn / delta_n) * o.en * (o.xn * o.et + (1.0 - q) / (r - 1.0) * (1.0 - o.et) * (r - o.xn));
-    T.tangential = (pn / delta_n) * (2.0 * delta_n / delta_t) * o.xt * (q + (r - q) / (r - 1.0) * o.xn) * o.en * o.et;
+    T.normal =
+        (pn / delta_n) * o.en * (o.xn * o.et + (1.0 - q) / (r - 1.0) * (1.0 - o.et) * (r - o.xn));
+    T.tangential = (pn / delta_n) * (2.0 * delta_n / delta_t) * o.xt *
+                   (q + (r - q) / (r - 1.0) * o.xn) * o.en * o.et;
     if (dn < 0.0) T.normal += penalty_stiffness() * dn;
     return T;
   }
 
   // dT^/dDelta of E7 (+ E8 when compressed), differentiated in closed form.
-  CohesiveTangent tangent(double dn, double dt) const { return tangent(openings(dn, dt), dn < 0.0); }
+  CohesiveTangent tangent(double dn, double dt) const {
+    return tangent(openings(dn, dt), dn < 0.0);
+  }
   CohesiveTangent tangent(const Openings& o, bool compressed) const {
     const double pn = phi_n();
     const double a = (1.0 - q) / (r - 1.0), b = (r - q) / (r - 1.0);
     CohesiveTangent K;
-    K.nn = pn / (delta_n * delta_n) * o.en * (o.et * (1.0 - o.xn) - a * (1.0 - o.et) * (1.0 + r - o.xn));
+    K.nn = pn / (delta_n * delta_n) * o.en *
+           (o.et * (1.0 - o.xn) - a * (1.0 - o.et) * (1.0 + r - o.xn));
     K.nt = 2.0 * pn / (delta_n * delta_t) * o.xt * o.en * o.et * (b - q - b * o.xn);
-    K.tt = 2.0 * pn / (delta_t * delta_t) * (q + b * o.xn) * o.en * o.et * (1.0 - 2.0 * o.xt * o.xt);
+    K.tt =
+        2.0 * pn / (delta_t * delta_t) * (q + b * o.xn) * o.en * o.et * (1.0 - 2.0 * o.xt * o.xt);
     if (compressed) K.nn += penalty_stiffness();
     return K;
   }
@@ -81,7 +87,9 @@ struct XuNeedleman {
   // the largest tangent eigenvalue, taken also on the compressed side of Dn = 0 when the face
   // is open or just closed, since the penalty (E8) switches on there and a step's round-off
   // moves a closed face across the kink.
-  double stability_stiffness(double dn, double dt) const { return stability_stiffness(openings(dn, dt), dn); }
+  double stability_stiffness(double dn, double dt) const {
+    return stability_stiffness(openings(dn, dt), dn);
+  }
   double stability_stiffness(const Openings& o, double dn) const {
     const double here = tangent(o, dn < 0.0).max_eigenvalue();
     if (dn < 0.0) return here;
@@ -115,6 +123,15 @@ struct XuNeedleman {
   double fracture_energy_normal() const { return phi_n(); }
   double fracture_energy_tangential() const { return phi_t(); }
   bool separated(const GaussHistory& /*unused*/) const { return false; }
+  // Crack tracking (E10, SPEC §3): a node has cracked once |jump| reaches separation_factor x
+  // delta_t; past the peak shear traction (delta_t / sqrt 2) it is softening; delta_n is the
+  // law's small opening scale (the instability watch's floor).
+  double crack_measure(double dn, double dt) const { return std::hypot(dn, dt); }
+  double crack_threshold(double separation_factor) const { return separation_factor * delta_t; }
+  bool softening(double dn, double dt) const {
+    return std::hypot(dn, dt) >= delta_t / std::sqrt(2.0);
+  }
+  double opening_scale() const { return delta_n; }
 };
 
 }  // namespace rupture

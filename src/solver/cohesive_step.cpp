@@ -77,7 +77,7 @@ namespace {
 template <class Law>
 void evaluate_with(CohesiveInterface& c, const Law& law, double t, double t_before) {
   constexpr bool kXuNeedleman = std::is_same_v<Law, XuNeedleman>;
-  const double crit = crack_threshold(law, c.spec.separation_factor);
+  const double crit = law.crack_threshold(c.spec.separation_factor);
   const bool contact = c.spec.contact;
   const ContactLaw& contact_law = c.spec.contact_law;
   const long nseg = long(c.num_segments());
@@ -138,7 +138,7 @@ void evaluate_with(CohesiveInterface& c, const Law& law, double t, double t_befo
     if (has_prev) fx += c.seg_fb_x[prev], fy += c.seg_fb_y[prev], stiff += c.seg_kb[prev];
     if (k <= last_seg) fx += c.seg_fa_x[k], fy += c.seg_fa_y[k], stiff += c.seg_ka[k];
     c.fx_node[k] = fx, c.fy_node[k] = fy, c.stiffness_node[k] = stiff;
-    const double opening = crack_measure(law, c.jump_normal(k), c.jump_tangential(k));
+    const double opening = law.crack_measure(c.jump_normal(k), c.jump_tangential(k));
     if (c.node_crack_time[k] < 0.0 && opening >= crit) {
       // Linear in time between the step's ends: the E10 tip is then sampled at exact times.
       const double before = c.jump_before[k];
@@ -161,7 +161,7 @@ void record_openings(CohesiveInterface& c) {
   std::visit(
       [&](const auto& law) {
         for (std::size_t k = 0; k < c.num_nodes(); ++k)
-          c.jump_before[k] = crack_measure(law, c.jump_normal(k), c.jump_tangential(k));
+          c.jump_before[k] = law.crack_measure(c.jump_normal(k), c.jump_tangential(k));
       },
       c.spec.law);
 }
