@@ -11,6 +11,7 @@
 
 #include "core/errors.hpp"
 #include "io/input_schema.hpp"
+#include "io/toml_section.hpp"
 
 namespace rupture {
 
@@ -67,21 +68,6 @@ std::vector<std::string> components(const std::string& path) {
   }
   if (path.back() == '.') out.push_back("");
   return out;
-}
-
-std::size_t edit_distance(const std::string& a, const std::string& b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diag = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] != b[j - 1])});
-      diag = up;
-    }
-  }
-  return row[b.size()];
 }
 
 std::string heading(const KeyDoc& t) {

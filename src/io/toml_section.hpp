@@ -18,6 +18,9 @@
 
 namespace rupture {
 
+// Levenshtein distance between two keys (for "did you mean" hints).
+std::size_t edit_distance(const std::string& a, const std::string& b);
+
 inline std::string show(const toml::node& n) {
   std::ostringstream os;
   if (auto s = n.as_string()) {
@@ -154,21 +157,6 @@ class Section {
  private:
   const toml::table& t_;
   std::string path_;
-
-  static std::size_t edit_distance(const std::string& a, const std::string& b) {
-    std::vector<std::size_t> row(b.size() + 1);
-    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-    for (std::size_t i = 1; i <= a.size(); ++i) {
-      std::size_t diag = row[0];
-      row[0] = i;
-      for (std::size_t j = 1; j <= b.size(); ++j) {
-        const std::size_t up = row[j];
-        row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] != b[j - 1])});
-        diag = up;
-      }
-    }
-    return row[b.size()];
-  }
 };
 
 inline bool inside(double a, double lo, double hi, double tol) {
