@@ -11,18 +11,25 @@ inline double bc_value(const State& s, const NodeBC& e, double t) {
   return s.boundary[std::size_t(e.condition)].velocity(t);
 }
 
-}  // namespace
-
-void grid_velocity_from_momentum(State& s, double t) {
+// The re-map arrays hold v = p / m of the momentum (px, py) (in place when px is remap_x);
+// nodes lighter than the mass floor are empty: velocity 0.
+void velocity_into_remap(State& s, const double* px, const double* py) {
   GridFields& G = s.fields;
   const long n = long(G.mass.size());
   const double floor = s.mass_floor;
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < n; ++i) {
     const double m = G.mass[i];
-    G.remap_x[i] = m > floor ? G.mom_x[i] / m : 0.0;
-    G.remap_y[i] = m > floor ? G.mom_y[i] / m : 0.0;
+    G.remap_x[i] = m > floor ? px[i] / m : 0.0;
+    G.remap_y[i] = m > floor ? py[i] / m : 0.0;
   }
+}
+
+}  // namespace
+
+void grid_velocity_from_momentum(State& s, double t) {
+  GridFields& G = s.fields;
+  velocity_into_remap(s, G.mom_x.data(), G.mom_y.data());
   for (const NodeBC& e : s.bc_nodes) {
     const std::size_t i = G.offset(e.field) + e.node;
     (e.component == 0 ? G.remap_x : G.remap_y)[i] = bc_value(s, e, t);
@@ -70,14 +77,8 @@ void apply_velocity_bcs(State& s) {
 
 void remapped_grid_velocity(State& s) {
   GridFields& G = s.fields;
-  const long n = long(G.mass.size());
+  velocity_into_remap(s, G.remap_x.data(), G.remap_y.data());  // in place: re-mapped momentum
   const double floor = s.mass_floor;
-#pragma omp parallel for schedule(static)
-  for (long i = 0; i < n; ++i) {
-    const double m = G.mass[i];
-    G.remap_x[i] = m > floor ? G.remap_x[i] / m : 0.0;
-    G.remap_y[i] = m > floor ? G.remap_y[i] / m : 0.0;
-  }
   const double t1 = s.time + s.dt;
   for (const NodeBC& e : s.bc_nodes) {
     const std::size_t i = G.offset(e.field) + e.node;
