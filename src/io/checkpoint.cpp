@@ -300,6 +300,7 @@ void fields(A& a, Particles& p) {
   a("exx", p.exx);
   a("eyy", p.eyy);
   a("exy", p.exy);
+  a("strain_work", p.strain_work);
   a("field", p.field);
   a("material", p.material);
   a("id", p.id);

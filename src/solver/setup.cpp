@@ -22,6 +22,7 @@ void prestress(Particles& P, std::size_t first, std::size_t last, const BodySpec
   for (std::size_t p = first; p < last; ++p) {
     P.sxx[p] = e.sxx, P.syy[p] = e.syy, P.sxy[p] = e.sxy, P.szz[p] = e.szz;
     P.exx[p] = e.exx, P.eyy[p] = e.eyy, P.exy[p] = e.exy;
+    P.strain_work[p] = elastic_energy(P, p);  // stored from the natural (stress-free) state
   }
 }
 

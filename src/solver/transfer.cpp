@@ -4,6 +4,8 @@
 // parallel loops. Stencils: solver/stencil_batch.hpp.
 #include "solver/transfer.hpp"
 
+#include "solver/energy.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -12,6 +14,7 @@
 #include <limits>
 
 #include "core/errors.hpp"
+#include "solver/energy.hpp"
 #include "solver/stencil_batch.hpp"
 
 namespace rupture {
@@ -356,12 +359,17 @@ void grid_to_particles_impl(State& s, const double* gvx, const double* gvy) {
             // SPEC E5: eps_dot = sym(L), sigma_dot = C : eps_dot (small strain, plane mode in C).
             const ElasticStiffness& C = s.stiffness[P.material[p]];
             const double dexx = L00 * dt, deyy = L11 * dt, dexy = 0.5 * (L01 + L10) * dt;
+            const double dsxx = C.c11 * dexx + C.c12 * deyy, dsyy = C.c12 * dexx + C.c11 * deyy,
+                         dsxy = 2.0 * C.mu * dexy;
+            // E14's strain energy: the work of this increment (solver/energy.hpp).
+            P.strain_work[p] += stress_work(P.volume0[p], P.exx[p] + P.eyy[p], P.sxx[p], P.syy[p],
+                                            P.sxy[p], dexx, deyy, dexy, dsxx, dsyy, dsxy);
             P.exx[p] += dexx;
             P.eyy[p] += deyy;
             P.exy[p] += dexy;
-            P.sxx[p] += C.c11 * dexx + C.c12 * deyy;
-            P.syy[p] += C.c12 * dexx + C.c11 * deyy;
-            P.sxy[p] += 2.0 * C.mu * dexy;
+            P.sxx[p] += dsxx;
+            P.syy[p] += dsyy;
+            P.sxy[p] += dsxy;
             P.szz[p] += C.cz * (dexx + deyy);
             P.volume[p] = P.volume0[p] * (1.0 + P.exx[p] + P.eyy[p]);
           }
