@@ -95,6 +95,8 @@ void print_check(const std::string& path, const Case& c) {
   }
   fmt::print("cells={}\n", s.cells);
   fmt::print("nodes={}\n", s.nodes);
+  fmt::print("field_nodes={} ({} fields; {:.2f} x the grid)\n", s.field_nodes, s.fields,
+             double(s.field_nodes) / double(s.nodes));
   fmt::print("ghost_cells={} (margin {:.3g} mm for free surfaces to move into)\n", s.ghost_cells,
              1e3 * c.grid.margin);
   fmt::print("particles={}\n", s.particles);

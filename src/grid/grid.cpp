@@ -2,6 +2,7 @@
 #include "grid/grid.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <array>
 #include <cmath>
 #include <fmt/format.h>
@@ -173,16 +174,31 @@ Grid make_graded_grid(const double min[2], const double max[2], double coarse, d
   return g;
 }
 
-void GridFields::resize(int fields, std::size_t nodes) {
-  num_fields = fields;
-  num_nodes = nodes;
-  const std::size_t n = std::size_t(fields) * nodes;
+void GridFields::resize(int fields, std::size_t nx, std::size_t ny) {
+  set_bands(nx, ny, std::vector<int>(std::size_t(fields), 0),
+            std::vector<int>(std::size_t(fields), int(ny)));
+}
+
+void GridFields::set_bands(std::size_t nx, std::size_t ny, const std::vector<int>& first,
+                           const std::vector<int>& count) {
+  num_fields = int(first.size());
+  num_nodes = nx * ny;
+  nodes_x = nx;
+  row0 = first;
+  rows = count;
+  start.assign(first.size() + 1, 0);
+  offsets.assign(first.size(), 0);
+  for (std::size_t f = 0; f < first.size(); ++f) {
+    assert(first[f] >= 0 && count[f] > 0 && std::size_t(first[f] + count[f]) <= ny);
+    start[f + 1] = start[f] + std::size_t(count[f]) * nx;
+    offsets[f] = start[f] - std::size_t(first[f]) * nx;  // modular: see grid.hpp
+  }
   for (auto* v : {&mass, &mom_x, &mom_y, &force_x, &force_y, &vel_x, &vel_y, &dvel_x, &dvel_y,
                   &remap_x, &remap_y}) {
-    v->assign(n, 0.0);
+    v->assign(start.back(), 0.0);
   }
 }
 
-std::size_t GridFields::bytes() const { return 11 * sizeof(double) * num_nodes * num_fields; }
+std::size_t GridFields::bytes() const { return 11 * sizeof(double) * size(); }
 
 }  // namespace rupture

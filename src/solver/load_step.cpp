@@ -77,6 +77,8 @@ void prepare_loads(State& s) {
         L.region_index[k][j] = L.slot_of_id[L.region_ids[k][j]];
     L.indexed_sort = s.plan.sorted_step;
   }
+  // Stamps per field node: re-made when the bands were re-fitted (solver/field_bands.hpp).
+  if (L.node_stamp.size() != s.fields.size()) L.node_stamp.assign(s.fields.size(), 0);
   // Nodes the region particles touch at t^n, each listed once (in input and id order).
   L.region_nodes.clear();  // keeps its capacity: no allocation
   const long stamp = s.step + 1;
@@ -94,8 +96,8 @@ void add_external_forces(State& s) {
   if (!L.has_forces()) return;
   const Particles& P = s.particles;
   const double t = s.time;
-  std::fill(L.ext_fx.begin(), L.ext_fx.end(), 0.0);
-  std::fill(L.ext_fy.begin(), L.ext_fy.end(), 0.0);
+  L.ext_fx.assign(s.fields.size(), 0.0);  // same size as the bands: no allocation
+  L.ext_fy.assign(s.fields.size(), 0.0);
   // Body forces: f_p = m_p g(t), per field (one field per body).
   if (!L.spec.body_forces.empty()) {
     std::fill(L.accel_x.begin(), L.accel_x.end(), 0.0);

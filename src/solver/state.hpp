@@ -98,6 +98,7 @@ struct State {
   double time = 0.0;     // s
   long step = 0;
   double mass_floor = 0.0;  // nodes lighter than this are treated as empty, kg
+  long bands_checked_step = -2;  // step of the last fit_field_bands (solver/field_bands.hpp)
 
   double cohesive_seconds = 0.0;  // wall time spent in the cohesive phases so far, s
   double external_work = 0.0;  // work of the prescribed velocities and loads so far, J (per unit thickness)

@@ -19,7 +19,7 @@ inline constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
 // Stencils of a batch of consecutive particles, computed SIMD over particles (the weights are
 // then reused across the batch's node loops). For particle k: weights sx[a][k], sy[b][k] of
 // node (first_x + a, first_y + b) and their derivatives; base[k] = field offset + index of
-// node (first_x, first_y).
+// node (first_x, first_y) (the field's band holds all nine: solver/field_bands.hpp).
 constexpr int kBatch = 16;
 struct StencilBatch {
   alignas(64) double sx[3][kBatch];
@@ -92,13 +92,13 @@ inline void batch_stencils(const State& s, std::size_t p0, int n, StencilBatch& 
   int fx[kBatch], fy[kBatch];
   axis_stencils(s.grid.x, P.x.data() + p0, P.half_x.data() + p0, n, B.sx, B.dsx, fx);
   axis_stencils(s.grid.y, P.y.data() + p0, P.half_y.data() + p0, n, B.sy, B.dsy, fy);
-  const std::size_t nx = std::size_t(s.grid.nodes_x()), nn = s.fields.num_nodes;
+  const std::size_t nx = std::size_t(s.grid.nodes_x());
+  const std::size_t* offset = s.fields.offsets.data();  // per field (grid/grid.hpp)
   for (int k = 0; k < n; ++k) {
     // Debug builds: the 3 x 3 stencil lies in the grid (the gathers index it directly).
     assert(fx[k] >= 0 && fx[k] + 2 < s.grid.nodes_x() && fy[k] >= 0 &&
            fy[k] + 2 < s.grid.nodes_y());
-    B.base[k] = std::size_t(P.field[p0 + std::size_t(k)]) * nn + std::size_t(fy[k]) * nx +
-                std::size_t(fx[k]);
+    B.base[k] = offset[P.field[p0 + std::size_t(k)]] + std::size_t(fy[k]) * nx + std::size_t(fx[k]);
   }
 }
 

@@ -7,6 +7,7 @@
 #include "grid/grid.hpp"
 #include "particles/particles.hpp"
 #include "particles/seed.hpp"
+#include "solver/field_bands.hpp"
 #include "solver/time_step.hpp"
 
 namespace rupture {
@@ -111,7 +112,18 @@ CaseSummary summarize(const Case& c) {
     }
   }
   s.fields = int(c.field_names.size());
-  // 11 nodal arrays per field (grid/grid.hpp) + particle arrays + sort scratch (order, one
+  // Each field holds the node rows of its bodies plus stencil and margin (solver/field_bands).
+  std::vector<double> ylo(std::size_t(s.fields), INFINITY), yhi(std::size_t(s.fields), -INFINITY);
+  for (const BodySpec& b : c.bodies) {
+    const Box box = bounding_box(b.region);
+    ylo[std::size_t(b.field)] = std::min(ylo[std::size_t(b.field)], box.min[1]);
+    yhi[std::size_t(b.field)] = std::max(yhi[std::size_t(b.field)], box.max[1]);
+  }
+  s.field_nodes = 0;
+  for (std::size_t f = 0; f < ylo.size(); ++f)
+    if (ylo[f] <= yhi[f])
+      s.field_nodes += long(band_rows_estimate(grid, ylo[f], yhi[f])) * long(grid.nodes_x());
+  // 11 nodal arrays per field node (grid/grid.hpp) + particle arrays + sort scratch (order, one
   // double array for the permutation).
   std::size_t interface_bytes = 0;
   for (const InterfaceSpec& is : c.interfaces)
@@ -119,7 +131,7 @@ CaseSummary summarize(const Case& c) {
         std::size_t(is.segments) * (4 * 4 * sizeof(double) + 4 + 4 * sizeof(double)) +
         std::size_t(is.segments + 1) * 8 * sizeof(double);
   s.memory_bytes = interface_bytes +
-                   std::size_t(s.nodes) * std::size_t(s.fields) * 11 * sizeof(double) +
+                   std::size_t(s.field_nodes) * 11 * sizeof(double) +
                    std::size_t(s.particles) * (Particles::bytes_per_particle() + 12);
   return s;
 }

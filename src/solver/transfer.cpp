@@ -4,8 +4,6 @@
 // parallel loops. Stencils: solver/stencil_batch.hpp.
 #include "solver/transfer.hpp"
 
-#include "solver/energy.hpp"
-
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -15,6 +13,7 @@
 
 #include "core/errors.hpp"
 #include "solver/energy.hpp"
+#include "solver/field_bands.hpp"
 #include "solver/stencil_batch.hpp"
 
 namespace rupture {
@@ -84,8 +83,9 @@ struct TileLayout {
   // in the tile; a particle breaking the GIMP contract (grid/grid.hpp) could write outside it.
   std::size_t index(const State& s, std::size_t f, std::size_t base) const {
     const std::size_t nx = std::size_t(s.grid.nodes_x());
-    assert(f < rows.size() && base >= s.fields.offset(int(f)));
-    const std::size_t local = base - s.fields.offset(int(f));
+    assert(f < rows.size());
+    const std::size_t local = base - s.fields.offset(int(f));  // modular: the grid node index
+    assert(s.fields.holds(int(f), local) && s.fields.holds(int(f), local + 2 * nx));
     const int gx = int(local % nx), gy = int(local / nx);
     assert(gy >= row0[f] && gy + 2 < row0[f] + rows[f] && "stencil rows outside the tile");
     assert(gx >= col0 && gx + 2 < col0 + cols && "stencil columns outside the tile");
@@ -317,6 +317,12 @@ void grid_to_particles_impl(State& s, const double* gvx, const double* gvy) {
   const int width = plan.strip_cells;
   std::size_t bad = kNone;
   bool drifted = false;
+  // Cell rows each field's particles may reach without leaving its band (solver/field_bands).
+  thread_local std::vector<int> safe_lo, safe_hi;
+  safe_lo.resize(std::size_t(G.num_fields)), safe_hi.resize(std::size_t(G.num_fields));
+  for (int f = 0; f < G.num_fields; ++f) band_safe_rows(G, f, safe_lo[std::size_t(f)], safe_hi[std::size_t(f)]);
+  const int* row_lo = safe_lo.data();
+  const int* row_hi = safe_hi.data();
 #pragma omp parallel for schedule(dynamic, 1) reduction(min : bad) reduction(|| : drifted)
   for (int strip = 0; strip < plan.num_strips; ++strip) {
     // Drift tolerance of the scatter plan: one cell column either side of the strip.
@@ -376,9 +382,11 @@ void grid_to_particles_impl(State& s, const double* gvx, const double* gvy) {
           if constexpr (do_move) {
             P.x[p] += dt * mvx;
             P.y[p] += dt * mvy;
-            if (std::isfinite(P.x[p])) {  // a non-finite particle is diagnosed below
+            if (std::isfinite(P.x[p] + P.y[p])) {  // a non-finite particle is diagnosed below
               const double col = double(ax.cell_of(P.x[p]));
               if (col < col_lo || col > col_hi) drifted = true;
+              const int row = ay.cell_of(P.y[p]);
+              if (row < row_lo[P.field[p]] || row > row_hi[P.field[p]]) drifted = true;
             }
           }
           const bool finite = std::isfinite(P.vx[p] + P.vy[p] + P.sxx[p] + P.syy[p] + P.sxy[p]);
