@@ -175,23 +175,23 @@ Grid make_graded_grid(const double min[2], const double max[2], double coarse, d
 }
 
 void GridFields::resize(int fields, std::size_t nx, std::size_t ny) {
-  set_bands(nx, ny, std::vector<int>(std::size_t(fields), 0),
-            std::vector<int>(std::size_t(fields), int(ny)));
+  const std::size_t n = std::size_t(fields);
+  set_windows(nx, ny, std::vector<int>(n, 0), std::vector<int>(n, int(nx)),
+              std::vector<int>(n, 0), std::vector<int>(n, int(ny)));
 }
 
-void GridFields::set_bands(std::size_t nx, std::size_t ny, const std::vector<int>& first,
-                           const std::vector<int>& count) {
-  num_fields = int(first.size());
+void GridFields::set_windows(std::size_t nx, std::size_t ny, const std::vector<int>& c0,
+                             const std::vector<int>& nc, const std::vector<int>& r0,
+                             const std::vector<int>& nr) {
+  num_fields = int(c0.size());
   num_nodes = nx * ny;
   nodes_x = nx;
-  row0 = first;
-  rows = count;
-  start.assign(first.size() + 1, 0);
-  offsets.assign(first.size(), 0);
-  for (std::size_t f = 0; f < first.size(); ++f) {
-    assert(first[f] >= 0 && count[f] > 0 && std::size_t(first[f] + count[f]) <= ny);
-    start[f + 1] = start[f] + std::size_t(count[f]) * nx;
-    offsets[f] = start[f] - std::size_t(first[f]) * nx;  // modular: see grid.hpp
+  col0 = c0, cols = nc, row0 = r0, rows = nr;
+  start.assign(c0.size() + 1, 0);
+  for (std::size_t f = 0; f < c0.size(); ++f) {
+    assert(c0[f] >= 0 && nc[f] > 0 && std::size_t(c0[f] + nc[f]) <= nx);
+    assert(r0[f] >= 0 && nr[f] > 0 && std::size_t(r0[f] + nr[f]) <= ny);
+    start[f + 1] = start[f] + std::size_t(nc[f]) * std::size_t(nr[f]);
   }
   for (auto* v : {&mass, &mom_x, &mom_y, &force_x, &force_y, &vel_x, &vel_y, &dvel_x, &dvel_y,
                   &remap_x, &remap_y}) {

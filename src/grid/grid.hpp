@@ -4,7 +4,7 @@
 // (n = j * nodes_x + i). Ghost cells (two, or more: see make_uniform_grid) surround the physical
 // domain so particles on a free
 // edge can bulge outward without leaving the grid. Nodal data are stored field-major, each
-// field only over its band of node rows (GridFields): memory grows with the fields' extents,
+// field only over its window of nodes (GridFields): memory grows with the fields' extents,
 // not with fields x whole grid.
 #pragma once
 #include <cmath>
@@ -143,22 +143,20 @@ struct RefineBox {
 Grid make_graded_grid(const double min[2], const double max[2], double coarse, double finest,
                       const std::vector<RefineBox>& boxes, double margin = 0.0);
 
-// Per-field nodal arrays, field-major. Field f holds the full-width node rows
-// [row0[f], row0[f] + rows[f]) only (its band), contiguous from start[f]: the rows its
-// particles' stencils, its interface faces and its tied nodes reach, plus a margin; the solver
-// keeps the bands fitted (solver/field_bands.hpp). A local field (an inclusion, one of several
-// strips) therefore costs its own rows, and the arrays hold sum_f rows[f] x nodes_x nodes, not
-// fields x whole grid. Node n = j nodes_x + i of field f is element offset(f) + n, for rows j
-// inside the band only (holds(f, n)); offset() is start[f] - row0[f] nodes_x in modular
-// (size_t) arithmetic, so the sum is exact whenever the row is held.
+// Per-field nodal arrays, field-major. Field f holds only its window of nodes: columns
+// [col0[f], col0[f] + cols[f]) x rows [row0[f], row0[f] + rows[f]), row by row, contiguous
+// from start[f]. The window covers what its particles' stencils, its interface faces and its
+// tied nodes reach, plus a margin; the solver keeps it fitted (solver/field_windows.hpp). A
+// local field (an inclusion, one of several strips or blocks) therefore costs its own nodes,
+// and the arrays hold sum_f cols[f] x rows[f] nodes, not fields x whole grid. Grid node (i, j)
+// of field f is element index(f, i, j), valid only inside the window (holds(f, i, j)).
 // See solver/ for when each array is valid.
 struct GridFields {
   int num_fields = 0;
   std::size_t num_nodes = 0;  // nodes of the whole grid
-  std::size_t nodes_x = 0;    // nodes per row
-  std::vector<int> row0, rows;       // per field: first node row of its band, number of rows
-  std::vector<std::size_t> start;    // per field: first element; start[num_fields] = size()
-  std::vector<std::size_t> offsets;  // per field: offset(f), cached for the particle loops
+  std::size_t nodes_x = 0;    // nodes per grid row (a grid node n is i + j nodes_x)
+  std::vector<int> col0, cols, row0, rows;  // per field: its window
+  std::vector<std::size_t> start;           // per field: first element; start[num_fields] = size()
   std::vector<double> mass;          // lumped nodal mass m_i, kg
   std::vector<double> mom_x, mom_y;  // momentum p_i at t^n, kg m/s
   std::vector<double> force_x, force_y;  // total nodal force f_i, N (per unit thickness)
@@ -166,17 +164,28 @@ struct GridFields {
   std::vector<double> dvel_x, dvel_y;    // velocity increment over the step (dt * a_i), m/s
   std::vector<double> remap_x, remap_y;  // MUSL re-mapped momentum, then velocity
 
-  // Every field over the whole grid (nodes_y rows each).
+  // Every field over the whole grid.
   void resize(int fields, std::size_t nodes_x, std::size_t nodes_y);
-  // Bands: field f gets rows [row0[f], row0[f] + rows[f]) (rows > 0, inside the grid). The
-  // arrays are re-allocated and zeroed: they hold no state between time steps.
-  void set_bands(std::size_t nodes_x, std::size_t nodes_y, const std::vector<int>& row0,
-                 const std::vector<int>& rows);
-  std::size_t offset(int field) const { return offsets[std::size_t(field)]; }
-  bool holds(int field, std::size_t node) const {
-    const long j = long(node / nodes_x), r0 = row0[std::size_t(field)];
-    return j >= r0 && j < r0 + rows[std::size_t(field)];
+  // Windows (non-empty, inside the grid). The arrays are re-allocated and zeroed: they hold no
+  // state from one time step to the next.
+  void set_windows(std::size_t nodes_x, std::size_t nodes_y, const std::vector<int>& col0,
+                   const std::vector<int>& cols, const std::vector<int>& row0,
+                   const std::vector<int>& rows);
+  bool holds(int f, int i, int j) const {
+    const std::size_t k = std::size_t(f);
+    return i >= col0[k] && i < col0[k] + cols[k] && j >= row0[k] && j < row0[k] + rows[k];
   }
+  bool holds(int f, std::size_t node) const {
+    return holds(f, int(node % nodes_x), int(node / nodes_x));
+  }
+  std::size_t index(int f, int i, int j) const {
+    const std::size_t k = std::size_t(f);
+    return start[k] + std::size_t(j - row0[k]) * std::size_t(cols[k]) + std::size_t(i - col0[k]);
+  }
+  std::size_t index(int f, std::size_t node) const {
+    return index(f, int(node % nodes_x), int(node / nodes_x));
+  }
+  std::size_t stride(int f) const { return std::size_t(cols[std::size_t(f)]); }  // one row up
   std::size_t size() const { return mass.size(); }
   std::size_t bytes() const;
 };

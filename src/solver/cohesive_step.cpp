@@ -22,7 +22,7 @@ constexpr double kW[kG] = {0.3478548451374538, 0.6521451548625461, 0.65214515486
 
 // Bilinear hat weights of the point (x, y): nodes (i, j), (i+1, j), (i, j+1), (i+1, j+1).
 struct PointStencil {
-  std::size_t node;  // index of node (i, j)
+  int i, j;  // the node at the lower left of the point's cell
   double wx[2], wy[2];
 };
 
@@ -30,12 +30,12 @@ inline PointStencil point_stencil(const Grid& g, double x, double y) {
   if (g.graded()) {
     const int i = g.x.cell_of(x), j = g.y.cell_of(y);
     const double ax = (x - g.x.node(i)) / g.x.width(i), ay = (y - g.y.node(j)) / g.y.width(j);
-    return {g.node_index(i, j), {1.0 - ax, ax}, {1.0 - ay, ay}};
+    return {i, j, {1.0 - ax, ax}, {1.0 - ay, ay}};
   }
   const double fx = (x - g.x.origin) / g.x.h, fy = (y - g.y.origin) / g.y.h;
   const int i = int(std::floor(fx)), j = int(std::floor(fy));
   const double ax = fx - i, ay = fy - j;
-  return {g.node_index(i, j), {1.0 - ax, ax}, {1.0 - ay, ay}};
+  return {i, j, {1.0 - ax, ax}, {1.0 - ay, ay}};
 }
 
 // A face point moves with, and loads, its own field's nodes around it, weighted by bilinear
@@ -45,15 +45,14 @@ inline PointStencil point_stencil(const Grid& g, double x, double y) {
 // neither receives a force it cannot carry nor lends the face its huge f/m velocity. With
 // plain bilinear weights, a face drifting a nanometre across its node row picked up such
 // nodes and blew up within a few steps. Power is consistent: sum_i f c_i . v_i = f . v_face.
-inline FaceStencil face_stencil(const State& s, std::size_t field_offset, double x, double y) {
+inline FaceStencil face_stencil(const State& s, int field, double x, double y) {
   const PointStencil p = point_stencil(s.grid, x, y);
-  const std::size_t nx = std::size_t(s.grid.nodes_x());
   FaceStencil f;
   double sum = 0.0;
   for (int jj = 0; jj < 2; ++jj)
     for (int ii = 0; ii < 2; ++ii) {
       const int q = 2 * jj + ii;
-      f.node[q] = field_offset + p.node + std::size_t(jj) * nx + std::size_t(ii);
+      f.node[q] = s.fields.index(field, p.i + ii, p.j + jj);  // in the window: field_windows
       const double m = s.fields.mass[f.node[q]];
       f.c[q] = m > s.mass_floor ? p.wx[ii] * p.wy[jj] * m : 0.0;
       sum += f.c[q];
@@ -169,8 +168,7 @@ void record_openings(CohesiveInterface& c) {
 
 void update_face_stencils(State& s) {
   for (CohesiveInterface& c : s.interfaces) {
-    const std::size_t up = s.fields.offset(c.spec.upper_field),
-                      lo = s.fields.offset(c.spec.lower_field);
+    const int up = c.spec.upper_field, lo = c.spec.lower_field;
     const long n = long(c.num_nodes());
     c.face_up.resize(c.num_nodes());
     c.face_lo.resize(c.num_nodes());
@@ -254,10 +252,10 @@ std::vector<std::size_t> bonded_nodes(const Grid& g, const InterfaceSpec& spec) 
 void tie_bonded_nodes(State& s, TieWhat what) {
   GridFields& G = s.fields;
   for (std::size_t c = 0; c < s.interfaces.size(); ++c) {
-    const std::size_t up = G.offset(s.interfaces[c].spec.upper_field);
-    const std::size_t lo = G.offset(s.interfaces[c].spec.lower_field);
+    const int up = s.interfaces[c].spec.upper_field, lo = s.interfaces[c].spec.lower_field;
     auto tie = [&](std::vector<double>& v, std::size_t n) {
-      v[up + n] = v[lo + n] = v[up + n] + v[lo + n];
+      const std::size_t a = G.index(up, n), b = G.index(lo, n);  // in both windows
+      v[a] = v[b] = v[a] + v[b];
     };
     for (std::size_t n : s.bonded[c]) {
       if (what == TieWhat::mass_momentum) {

@@ -31,8 +31,8 @@ void grid_velocity_from_momentum(State& s, double t) {
   GridFields& G = s.fields;
   velocity_into_remap(s, G.mom_x.data(), G.mom_y.data());
   for (const NodeBC& e : s.bc_nodes) {
-    if (!G.holds(e.field, e.node)) continue;  // outside the field's band: no mass there
-    const std::size_t i = G.offset(e.field) + e.node;
+    if (!G.holds(e.field, e.node)) continue;  // outside the field's window: no mass there
+    const std::size_t i = G.index(e.field, e.node);
     (e.component == 0 ? G.remap_x : G.remap_y)[i] = bc_value(s, e, t);
   }
 }
@@ -62,8 +62,8 @@ void apply_velocity_bcs(State& s) {
   GridFields& G = s.fields;
   const double t0 = s.time, t1 = s.time + s.dt;
   for (const NodeBC& e : s.bc_nodes) {
-    if (!G.holds(e.field, e.node)) continue;  // outside the field's band: no mass there
-    const std::size_t i = G.offset(e.field) + e.node;
+    if (!G.holds(e.field, e.node)) continue;  // outside the field's window: no mass there
+    const std::size_t i = G.index(e.field, e.node);
     const double m = G.mass[i];
     if (m <= s.mass_floor) continue;
     const double v0 = bc_value(s, e, t0), v1 = bc_value(s, e, t1);
@@ -83,8 +83,8 @@ void remapped_grid_velocity(State& s) {
   const double floor = s.mass_floor;
   const double t1 = s.time + s.dt;
   for (const NodeBC& e : s.bc_nodes) {
-    if (!G.holds(e.field, e.node)) continue;  // outside the field's band: no mass there
-    const std::size_t i = G.offset(e.field) + e.node;
+    if (!G.holds(e.field, e.node)) continue;  // outside the field's window: no mass there
+    const std::size_t i = G.index(e.field, e.node);
     if (G.mass[i] <= floor) continue;
     (e.component == 0 ? G.remap_x : G.remap_y)[i] = bc_value(s, e, t1);
   }

@@ -19,11 +19,11 @@ inline void for_each_weight(const State& s, std::size_t p, Visit&& visit) {
   Stencil1D sx, sy;
   stencil(s.grid.x, P.x[p], P.half_x[p], sx);
   stencil(s.grid.y, P.y[p], P.half_y[p], sy);
-  const std::size_t base = s.fields.offset(P.field[p]);
+  const int f = P.field[p];
   for (int b = 0; b < 3; ++b)
     for (int a = 0; a < 3; ++a) {
       const double w = sx.s[a] * sy.s[b];
-      if (w > 0.0) visit(base + s.grid.node_index(sx.first + a, sy.first + b), w);
+      if (w > 0.0) visit(s.fields.index(f, sx.first + a, sy.first + b), w);
     }
 }
 
@@ -77,7 +77,7 @@ void prepare_loads(State& s) {
         L.region_index[k][j] = L.slot_of_id[L.region_ids[k][j]];
     L.indexed_sort = s.plan.sorted_step;
   }
-  // Stamps per field node: re-made when the bands were re-fitted (solver/field_bands.hpp).
+  // Stamps per field node: re-made when the windows were re-fitted (solver/field_windows.hpp).
   if (L.node_stamp.size() != s.fields.size()) L.node_stamp.assign(s.fields.size(), 0);
   // Nodes the region particles touch at t^n, each listed once (in input and id order).
   L.region_nodes.clear();  // keeps its capacity: no allocation

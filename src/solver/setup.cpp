@@ -5,7 +5,7 @@
 
 #include "particles/seed.hpp"
 #include "solver/energy.hpp"
-#include "solver/field_bands.hpp"
+#include "solver/field_windows.hpp"
 #include "solver/state.hpp"
 #include "solver/step.hpp"
 #include "solver/cohesive_step.hpp"
@@ -33,7 +33,7 @@ State make_state(const Case& c) {
   State s;
   s.grid = build_grid(c.grid);
   const int num_fields = int(c.field_names.size());  // bodies sharing a field share its arrays
-  // Whole-grid fields until the particles exist; fitted to bands below (solver/field_bands.hpp).
+  // Whole-grid fields until the particles exist; fitted to windows below (solver/field_windows.hpp).
   s.fields.resize(num_fields, std::size_t(s.grid.nodes_x()), std::size_t(s.grid.nodes_y()));
 
   for (const ElasticMaterial& m : c.materials) s.stiffness.push_back(stiffness(m, c.plane));
@@ -80,8 +80,8 @@ State make_state(const Case& c) {
   s.initial_energy = kinetic_energy(s.particles) + strain_energy(s.particles);
   // Sorted from the start, so particle indices are stable until the first re-sort.
   build_scatter_plan(s);
-  fit_field_bands(s);
-  s.bands_checked_step = -2;  // the first step measures again
+  fit_field_windows(s);
+  s.windows_checked_step = -2;  // the first step measures again
   set_up_loads(s, c.loads, c.grid.cell_size);
   return s;
 }

@@ -98,7 +98,11 @@ struct State {
   double time = 0.0;     // s
   long step = 0;
   double mass_floor = 0.0;  // nodes lighter than this are treated as empty, kg
-  long bands_checked_step = -2;  // step of the last fit_field_bands (solver/field_bands.hpp)
+  // Field windows (solver/field_windows.hpp): not checkpointed, re-fitted after a restore.
+  long windows_checked_step = -2;  // step of the last fit_field_windows
+  long window_fits = 0;            // re-fits (re-allocations) so far
+  bool windows_stale = false;      // a particle left the cells its window allows
+  bool whole_grid_fields = false;  // tests: every field over the whole grid (same results)
 
   double cohesive_seconds = 0.0;  // wall time spent in the cohesive phases so far, s
   double external_work = 0.0;  // work of the prescribed velocities and loads so far, J (per unit thickness)

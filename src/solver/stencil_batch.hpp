@@ -18,8 +18,9 @@ inline constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
 
 // Stencils of a batch of consecutive particles, computed SIMD over particles (the weights are
 // then reused across the batch's node loops). For particle k: weights sx[a][k], sy[b][k] of
-// node (first_x + a, first_y + b) and their derivatives; base[k] = field offset + index of
-// node (first_x, first_y) (the field's band holds all nine: solver/field_bands.hpp).
+// node (first_x + a, first_y + b) and their derivatives; base[k] = the element of node
+// (first_x, first_y) in the particle's field, stride[k] = elements from one node row to the
+// next there (the field's window holds all nine nodes: solver/field_windows.hpp).
 constexpr int kBatch = 16;
 struct StencilBatch {
   alignas(64) double sx[3][kBatch];
@@ -27,6 +28,8 @@ struct StencilBatch {
   alignas(64) double sy[3][kBatch];
   alignas(64) double dsy[3][kBatch];
   std::size_t base[kBatch];
+  std::size_t stride[kBatch];
+  int first_x[kBatch], first_y[kBatch];
 };
 
 // One axis for n <= kBatch particles: the stencil rule of grid/grid.hpp (stencil()), with
@@ -92,13 +95,15 @@ inline void batch_stencils(const State& s, std::size_t p0, int n, StencilBatch& 
   int fx[kBatch], fy[kBatch];
   axis_stencils(s.grid.x, P.x.data() + p0, P.half_x.data() + p0, n, B.sx, B.dsx, fx);
   axis_stencils(s.grid.y, P.y.data() + p0, P.half_y.data() + p0, n, B.sy, B.dsy, fy);
-  const std::size_t nx = std::size_t(s.grid.nodes_x());
-  const std::size_t* offset = s.fields.offsets.data();  // per field (grid/grid.hpp)
+  const GridFields& G = s.fields;
   for (int k = 0; k < n; ++k) {
-    // Debug builds: the 3 x 3 stencil lies in the grid (the gathers index it directly).
-    assert(fx[k] >= 0 && fx[k] + 2 < s.grid.nodes_x() && fy[k] >= 0 &&
-           fy[k] + 2 < s.grid.nodes_y());
-    B.base[k] = offset[P.field[p0 + std::size_t(k)]] + std::size_t(fy[k]) * nx + std::size_t(fx[k]);
+    const int f = P.field[p0 + std::size_t(k)];
+    // Debug builds: the 3 x 3 stencil lies in the field's window (the gathers index it
+    // directly).
+    assert(G.holds(f, fx[k], fy[k]) && G.holds(f, fx[k] + 2, fy[k] + 2));
+    B.first_x[k] = fx[k], B.first_y[k] = fy[k];
+    B.base[k] = G.index(f, fx[k], fy[k]);
+    B.stride[k] = G.stride(f);
   }
 }
 

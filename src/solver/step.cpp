@@ -8,7 +8,7 @@
 #include <chrono>
 
 #include "solver/cohesive_step.hpp"
-#include "solver/field_bands.hpp"
+#include "solver/field_windows.hpp"
 #include "solver/load_step.hpp"
 #include "solver/time_step.hpp"
 
@@ -104,7 +104,7 @@ void step_usf(State& s) {
 
 void step(State& s) {
   build_scatter_plan(s);
-  fit_field_bands(s);  // every field's rows cover its particles, faces and ties
+  fit_field_windows(s);  // every field's window covers its particles, faces and ties
   // A driven edge that has moved onto another grid line takes its condition with it (E2).
   if (update_edge_lines(s.boundary, s.grid, s.time, s.bc_lines))
     s.bc_nodes = resolve_nodes(s.boundary, s.grid, s.fields.num_fields, s.bc_lines);

@@ -7,7 +7,7 @@
 #include "grid/grid.hpp"
 #include "particles/particles.hpp"
 #include "particles/seed.hpp"
-#include "solver/field_bands.hpp"
+#include "solver/field_windows.hpp"
 #include "solver/time_step.hpp"
 
 namespace rupture {
@@ -112,17 +112,17 @@ CaseSummary summarize(const Case& c) {
     }
   }
   s.fields = int(c.field_names.size());
-  // Each field holds the node rows of its bodies plus stencil and margin (solver/field_bands).
-  std::vector<double> ylo(std::size_t(s.fields), INFINITY), yhi(std::size_t(s.fields), -INFINITY);
+  // Each field holds the nodes of its bodies' box plus stencil and margin (solver/field_windows).
+  std::vector<Box> field_box(std::size_t(s.fields), Box{{INFINITY, INFINITY}, {-INFINITY, -INFINITY}});
   for (const BodySpec& b : c.bodies) {
     const Box box = bounding_box(b.region);
-    ylo[std::size_t(b.field)] = std::min(ylo[std::size_t(b.field)], box.min[1]);
-    yhi[std::size_t(b.field)] = std::max(yhi[std::size_t(b.field)], box.max[1]);
+    Box& f = field_box[std::size_t(b.field)];
+    for (int d = 0; d < 2; ++d)
+      f.min[d] = std::min(f.min[d], box.min[d]), f.max[d] = std::max(f.max[d], box.max[d]);
   }
   s.field_nodes = 0;
-  for (std::size_t f = 0; f < ylo.size(); ++f)
-    if (ylo[f] <= yhi[f])
-      s.field_nodes += long(band_rows_estimate(grid, ylo[f], yhi[f])) * long(grid.nodes_x());
+  for (const Box& box : field_box)
+    if (box.min[0] <= box.max[0]) s.field_nodes += long(window_nodes_estimate(grid, box));
   // 11 nodal arrays per field node (grid/grid.hpp) + particle arrays + sort scratch (order, one
   // double array for the permutation).
   std::size_t interface_bytes = 0;

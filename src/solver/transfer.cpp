@@ -7,13 +7,14 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <cmath>
 #include <limits>
 
 #include "core/errors.hpp"
 #include "solver/energy.hpp"
-#include "solver/field_bands.hpp"
+#include "solver/field_windows.hpp"
 #include "solver/stencil_batch.hpp"
 
 namespace rupture {
@@ -78,15 +79,11 @@ struct TileLayout {
   std::vector<int> row0, rows;     // per field: first node row, number of rows (0: absent)
   std::vector<std::size_t> start;  // per field: offset of its first node in the tile
   std::size_t size() const { return start.back(); }
-  // Tile index of the node with grid index `base` (field offset included) of field f: the
-  // first node of a particle's 3 x 3 stencil. Debug builds check that the whole stencil lies
-  // in the tile; a particle breaking the GIMP contract (grid/grid.hpp) could write outside it.
-  std::size_t index(const State& s, std::size_t f, std::size_t base) const {
-    const std::size_t nx = std::size_t(s.grid.nodes_x());
+  // Tile index of grid node (gx, gy) of field f: the first node of a particle's 3 x 3 stencil.
+  // Debug builds check that the whole stencil lies in the tile; a particle breaking the GIMP
+  // contract (grid/grid.hpp) could write outside it.
+  std::size_t index(std::size_t f, int gx, int gy) const {
     assert(f < rows.size());
-    const std::size_t local = base - s.fields.offset(int(f));  // modular: the grid node index
-    assert(s.fields.holds(int(f), local) && s.fields.holds(int(f), local + 2 * nx));
-    const int gx = int(local % nx), gy = int(local / nx);
     assert(gy >= row0[f] && gy + 2 < row0[f] + rows[f] && "stencil rows outside the tile");
     assert(gx >= col0 && gx + 2 < col0 + cols && "stencil columns outside the tile");
     const std::size_t t =
@@ -120,21 +117,20 @@ void tile_layout(const State& s, int strip, std::size_t begin, std::size_t end, 
   }
 }
 
-// Calls visit(tile_index, grid_index) for every tile node that lies inside the grid.
+// Calls visit(tile_index, element) for every tile node that lies inside its field's window
+// (the window lies inside the grid; the particles' nodes lie inside it).
 template <class Visit>
 void for_each_tile_node(const State& s, const TileLayout& T, Visit&& visit) {
-  const int nxi = s.grid.nodes_x(), nyi = s.grid.nodes_y();
-  const std::size_t nx = std::size_t(nxi);
+  const GridFields& G = s.fields;
   for (std::size_t f = 0; f < T.rows.size(); ++f) {
-    for (int r = 0; r < T.rows[f]; ++r) {
-      const int gy = T.row0[f] + r;
-      if (gy < 0 || gy >= nyi) continue;
-      const std::size_t t = T.start[f] + std::size_t(r) * std::size_t(T.cols);
-      const std::size_t row = s.fields.offset(int(f)) + std::size_t(gy) * nx;
-      for (int c = 0; c < T.cols; ++c) {
-        const int gx = T.col0 + c;
-        if (gx >= 0 && gx < nxi) visit(t + std::size_t(c), row + std::size_t(gx));
-      }
+    const int fi = int(f);
+    const int r_lo = std::max(T.row0[f], G.row0[f]), r_hi = std::min(T.row0[f] + T.rows[f], G.row0[f] + G.rows[f]);
+    const int c_lo = std::max(T.col0, G.col0[f]), c_hi = std::min(T.col0 + T.cols, G.col0[f] + G.cols[f]);
+    for (int gy = r_lo; gy < r_hi; ++gy) {
+      const std::size_t t = T.start[f] + std::size_t(gy - T.row0[f]) * std::size_t(T.cols) +
+                            std::size_t(c_lo - T.col0);
+      const std::size_t e = G.index(fi, c_lo, gy);
+      for (int c = 0; c < c_hi - c_lo; ++c) visit(t + std::size_t(c), e + std::size_t(c));
     }
   }
 }
@@ -164,7 +160,7 @@ void scatter_mass_momentum_force(State& s) {
       // SPEC E4: f_i = -sum_p V_p sigma_p . grad S_ip
       const Lane8 Fx = {0, 0, 0, -vsxx, -vsxy, 0, 0, 0};
       const Lane8 Fy = {0, 0, 0, -vsxy, -vsyy, 0, 0, 0};
-      Lane8* t0 = tile + T.index(s, P.field[p], B.base[k]);
+      Lane8* t0 = tile + T.index(P.field[p], B.first_x[k], B.first_y[k]);
       for (int b = 0; b < 3; ++b) {
         Lane8* t = t0 + std::size_t(b) * cols;
         const double wy = B.sy[b][k], gy_b = B.dsy[b][k];
@@ -211,14 +207,13 @@ void particles_to_grid_force(State& s) {
   std::fill(G.force_x.begin(), G.force_x.end(), 0.0);
   std::fill(G.force_y.begin(), G.force_y.end(), 0.0);
   const Particles& P = s.particles;
-  const std::size_t nx = std::size_t(s.grid.nodes_x());
   double* fx = G.force_x.data();
   double* fy = G.force_y.data();
   for_each_strip_coloured(s.plan, [&](int, std::size_t begin, std::size_t end) {
     for_each_in_batches(s, begin, end, [&](std::size_t p, int k, const StencilBatch& B) {
       const double V = P.volume[p], sxx = P.sxx[p], syy = P.syy[p], sxy = P.sxy[p];
       for (int b = 0; b < 3; ++b) {
-        const std::size_t row = B.base[k] + std::size_t(b) * nx;
+        const std::size_t row = B.base[k] + std::size_t(b) * B.stride[k];
         for (int a = 0; a < 3; ++a) {
           const double gx = B.dsx[a][k] * B.sy[b][k], gy = B.sx[a][k] * B.dsy[b][k];
           fx[row + a] -= V * (sxx * gx + sxy * gy);
@@ -250,7 +245,7 @@ void velocity_update_and_remap(State& s) {
     });
     const std::size_t cols = std::size_t(T.cols);
     for_each_in_batches(s, begin, end, [&](std::size_t p, int k, const StencilBatch& B) {
-      const std::size_t t0 = T.index(s, P.field[p], B.base[k]);
+      const std::size_t t0 = T.index(P.field[p], B.first_x[k], B.first_y[k]);
       Lane4 acc = {0, 0, 0, 0};  // dv x, dv y, v x, v y
       for (int b = 0; b < 3; ++b)
         for (int a = 0; a < 3; ++a)
@@ -298,7 +293,6 @@ template <G2PMode kMode>
 void grid_to_particles_impl(State& s, const double* gvx, const double* gvy) {
   Particles& P = s.particles;
   const GridFields& G = s.fields;
-  const std::size_t nx = std::size_t(s.grid.nodes_x());
   const double dt = s.dt, flip = s.flip;
   constexpr bool do_velocity =
       kMode == G2PMode::stress_velocity_and_move || kMode == G2PMode::velocity_and_move;
@@ -316,14 +310,18 @@ void grid_to_particles_impl(State& s, const double* gvx, const double* gvy) {
   const ScatterPlan& plan = s.plan;
   const int width = plan.strip_cells;
   std::size_t bad = kNone;
-  bool drifted = false;
-  // Cell rows each field's particles may reach without leaving its band (solver/field_bands).
-  thread_local std::vector<int> safe_lo, safe_hi;
-  safe_lo.resize(std::size_t(G.num_fields)), safe_hi.resize(std::size_t(G.num_fields));
-  for (int f = 0; f < G.num_fields; ++f) band_safe_rows(G, f, safe_lo[std::size_t(f)], safe_hi[std::size_t(f)]);
-  const int* row_lo = safe_lo.data();
-  const int* row_hi = safe_hi.data();
-#pragma omp parallel for schedule(dynamic, 1) reduction(min : bad) reduction(|| : drifted)
+  bool drifted = false, left_window = false;
+  // Cells each field's particles may reach without leaving its window (solver/field_windows):
+  // per field, column lo, column hi, row lo, row hi.
+  thread_local std::vector<std::array<int, 4>> safe;
+  safe.resize(std::size_t(G.num_fields));
+  for (int f = 0; f < G.num_fields; ++f) {
+    int lo[2], hi[2];
+    window_safe_cells(G, f, lo, hi);
+    safe[std::size_t(f)] = {lo[0], hi[0], lo[1], hi[1]};
+  }
+  const std::array<int, 4>* safe_cells = safe.data();
+#pragma omp parallel for schedule(dynamic, 1) reduction(min : bad) reduction(|| : drifted, left_window)
   for (int strip = 0; strip < plan.num_strips; ++strip) {
     // Drift tolerance of the scatter plan: one cell column either side of the strip.
     const double col_lo = double(strip * width - 1), col_hi = double(strip * width + width);
@@ -334,7 +332,7 @@ void grid_to_particles_impl(State& s, const double* gvx, const double* gvy) {
           double L00 = 0, L01 = 0, L10 = 0, L11 = 0;  // velocity gradient L_ij = dv_i/dx_j
           double pic_x = 0, pic_y = 0, dvx = 0, dvy = 0, mvx = 0, mvy = 0;
           for (int b = 0; b < 3; ++b) {
-            const std::size_t row = B.base[k] + std::size_t(b) * nx;
+            const std::size_t row = B.base[k] + std::size_t(b) * B.stride[k];
             for (int a = 0; a < 3; ++a) {
               const std::size_t i = row + std::size_t(a);
               const double w = B.sx[a][k] * B.sy[b][k];
@@ -383,10 +381,10 @@ void grid_to_particles_impl(State& s, const double* gvx, const double* gvy) {
             P.x[p] += dt * mvx;
             P.y[p] += dt * mvy;
             if (std::isfinite(P.x[p] + P.y[p])) {  // a non-finite particle is diagnosed below
-              const double col = double(ax.cell_of(P.x[p]));
-              if (col < col_lo || col > col_hi) drifted = true;
-              const int row = ay.cell_of(P.y[p]);
-              if (row < row_lo[P.field[p]] || row > row_hi[P.field[p]]) drifted = true;
+              const int col = ax.cell_of(P.x[p]), row = ay.cell_of(P.y[p]);
+              const std::array<int, 4>& w = safe_cells[P.field[p]];
+              if (double(col) < col_lo || double(col) > col_hi) drifted = true;
+              if (col < w[0] || col > w[1] || row < w[2] || row > w[3]) left_window = true;
             }
           }
           const bool finite = std::isfinite(P.vx[p] + P.vy[p] + P.sxx[p] + P.syy[p] + P.sxy[p]);
@@ -395,6 +393,9 @@ void grid_to_particles_impl(State& s, const double* gvx, const double* gvy) {
         });
   }
   if (drifted) s.plan.valid = false;
+  // Measured again before the next scatter; not a re-sort, which would change the summation
+  // order: the windows are storage and must not change a result.
+  if (left_window) s.windows_stale = true;
   if (bad != kNone) throw SimulationError(diagnose_bad_particles(s, xlo, xhi, ylo, yhi));
 }
 
