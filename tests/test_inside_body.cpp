@@ -40,7 +40,8 @@ end = 1e-6
 material = "homalite"
 min = [0.0, -0.01]
 max = [0.02, 0.01]
-)") + bodies + rest;
+)") + bodies +
+         rest;
 }
 
 std::string interface(const std::string& name, const std::string& where, int segments = 40) {
@@ -76,7 +77,8 @@ std::map<std::pair<long, long>, int> particle_fields(const State& s) {
 }  // namespace
 
 TEST(InsideBody, an_edge_crack_in_one_body_is_the_two_body_case_with_its_bonded_stretch) {
-  const Case one = parse_case(plate_case(interface("weak", "body = \"plate\"\ny = 0.0\nstart = 0.0\nend = 0.012")));
+  const Case one = parse_case(
+      plate_case(interface("weak", "body = \"plate\"\ny = 0.0\nstart = 0.0\nend = 0.012")));
   const std::string halves = R"(
 [bodies.upper]
 material = "homalite"
@@ -87,10 +89,13 @@ material = "homalite"
 min = [0.0, -0.01]
 max = [0.02, 0.0]
 )";
-  std::string two_text = plate_case(interface("weak", "upper_body = \"upper\"\nlower_body = \"lower\"\n"
-                                                      "y = 0.0\nstart = 0.0\nend = 0.012\nbonded_to = 0.02"),
-                                    halves);
-  two_text.erase(two_text.find("[bodies.plate]"), two_text.find("[bodies.upper]") - two_text.find("[bodies.plate]"));
+  std::string two_text =
+      plate_case(interface("weak",
+                           "upper_body = \"upper\"\nlower_body = \"lower\"\n"
+                           "y = 0.0\nstart = 0.0\nend = 0.012\nbonded_to = 0.02"),
+                 halves);
+  two_text.erase(two_text.find("[bodies.plate]"),
+                 two_text.find("[bodies.upper]") - two_text.find("[bodies.plate]"));
   const Case two = parse_case(two_text);
   ASSERT_EQ(one.bodies.size(), 2u);
   EXPECT_EQ(one.bodies[0].name, "plate");
@@ -115,7 +120,8 @@ max = [0.02, 0.0]
 }
 
 TEST(InsideBody, a_centre_crack_is_tied_beyond_both_ends) {
-  const Case c = parse_case(plate_case(interface("centre", "body = \"plate\"\npoints = [[0.006, 0.0], [0.014, 0.0]]")));
+  const Case c = parse_case(
+      plate_case(interface("centre", "body = \"plate\"\npoints = [[0.006, 0.0], [0.014, 0.0]]")));
   const std::vector<Polyline> ties = c.interfaces[0].tie_geometries();
   ASSERT_EQ(ties.size(), 2u);
   EXPECT_EQ(ties[0].x, (std::vector<double>{0.0, 0.006}));  // in the line's direction
@@ -125,13 +131,15 @@ TEST(InsideBody, a_centre_crack_is_tied_beyond_both_ends) {
   const State s = make_state(c);
   std::vector<double> xs;
   for (std::size_t n : s.bonded[0]) {
-    const int i = int(n % std::size_t(s.grid.nodes_x())), j = int(n / std::size_t(s.grid.nodes_x()));
+    const int i = int(n % std::size_t(s.grid.nodes_x())),
+              j = int(n / std::size_t(s.grid.nodes_x()));
     EXPECT_NEAR(s.grid.y.node(j), 0.0, 1e-15);
     xs.push_back(s.grid.x.node(i));
   }
   EXPECT_EQ(xs.size(), 41u - 15u);  // 41 nodes on the line, 15 strictly inside the crack
   // An inclined crack inside: both ties run along its direction to the plate's edge.
-  const Case inclined = parse_case(plate_case(interface("tilted", "body = \"plate\"\npoints = [[0.006, -0.002], [0.014, 0.002]]")));
+  const Case inclined = parse_case(plate_case(
+      interface("tilted", "body = \"plate\"\npoints = [[0.006, -0.002], [0.014, 0.002]]")));
   const std::vector<Polyline> t2 = inclined.interfaces[0].tie_geometries();
   ASSERT_EQ(t2.size(), 2u);
   EXPECT_EQ(t2[0].x[0], 0.0);  // the left edge, exactly
@@ -142,9 +150,11 @@ TEST(InsideBody, a_centre_crack_is_tied_beyond_both_ends) {
 
 TEST(InsideBody, a_closed_line_makes_its_inside_a_new_body) {
   for (const bool ccw : {true, false}) {
-    const std::string square = ccw ? "[[0.006, -0.004], [0.014, -0.004], [0.014, 0.004], [0.006, 0.004]]"
-                                   : "[[0.006, -0.004], [0.006, 0.004], [0.014, 0.004], [0.014, -0.004]]";
-    const Case c = parse_case(plate_case(interface("rim", "body = \"plate\"\nclosed = true\npoints = " + square)));
+    const std::string square =
+        ccw ? "[[0.006, -0.004], [0.014, -0.004], [0.014, 0.004], [0.006, 0.004]]"
+            : "[[0.006, -0.004], [0.006, 0.004], [0.014, 0.004], [0.014, -0.004]]";
+    const Case c = parse_case(
+        plate_case(interface("rim", "body = \"plate\"\nclosed = true\npoints = " + square)));
     ASSERT_EQ(c.bodies.size(), 2u);
     EXPECT_EQ(c.bodies[1].name, "plate.inside.rim");
     // The normal (direction turned +90 degrees) points inside for a counter-clockwise line.
@@ -155,7 +165,8 @@ TEST(InsideBody, a_closed_line_makes_its_inside_a_new_body) {
     for (std::size_t k = 0; k < s.particles.size(); ++k) inside += s.particles.field[k] == 1;
     EXPECT_EQ(inside, 32 * 32);  // 8 x 8 mm at 0.25 mm particle spacing
   }
-  const Case circle = parse_case(plate_case(interface("disc", "body = \"plate\"\ncenter = [0.01, 0.0]\nradius = 0.004", 64)));
+  const Case circle = parse_case(
+      plate_case(interface("disc", "body = \"plate\"\ncenter = [0.01, 0.0]\nradius = 0.004", 64)));
   EXPECT_EQ(circle.bodies[1].name, "plate.inside.disc");
   EXPECT_EQ(circle.bodies[1].region.sides[0].shape.kind, ShapeKind::circle);
   EXPECT_EQ(circle.interfaces[0].upper_body, 1);
@@ -164,8 +175,9 @@ TEST(InsideBody, a_closed_line_makes_its_inside_a_new_body) {
 TEST(InsideBody, lines_split_in_turn_and_names_mean_all_their_parts) {
   // Two full-width planes in one plate, the upper one given first: the second lies in the part
   // below the first, and the first plane's lower face moves to the part below the second.
-  const std::string rest = interface("top", "body = \"plate\"\ny = 0.004\nstart = 0.0\nend = 0.02") +
-                           interface("bottom", "body = \"plate\"\ny = -0.002\nstart = 0.0\nend = 0.02") + R"(
+  const std::string rest =
+      interface("top", "body = \"plate\"\ny = 0.004\nstart = 0.0\nend = 0.02") +
+      interface("bottom", "body = \"plate\"\ny = -0.002\nstart = 0.0\nend = 0.02") + R"(
 [boundary.all]
 edge = "left"
 component = "x"
@@ -180,7 +192,8 @@ velocity = 1.0
   const Case c = parse_case(plate_case(rest));
   std::vector<std::string> names;
   for (const BodySpec& b : c.bodies) names.push_back(b.name);
-  EXPECT_EQ(names, (std::vector<std::string>{"plate", "plate.below.top", "plate.below.top.below.bottom"}));
+  EXPECT_EQ(names,
+            (std::vector<std::string>{"plate", "plate.below.top", "plate.below.top.below.bottom"}));
   EXPECT_EQ(c.field_names, names);  // numbered in the bodies' order
   EXPECT_EQ(c.interfaces[0].upper_body, 0);
   EXPECT_EQ(c.interfaces[0].lower_body, 1);
@@ -191,8 +204,9 @@ velocity = 1.0
   EXPECT_EQ(all, (std::vector<int>{0, 1, 2}));
   EXPECT_EQ(c.boundary[1].fields, (std::vector<int>{1}));
   // Given the other way round, the first plane's upper face moves to the new middle part.
-  const Case d = parse_case(plate_case(interface("bottom", "body = \"plate\"\ny = -0.002\nstart = 0.0\nend = 0.02") +
-                                       interface("top", "body = \"plate\"\ny = 0.004\nstart = 0.0\nend = 0.02")));
+  const Case d = parse_case(
+      plate_case(interface("bottom", "body = \"plate\"\ny = -0.002\nstart = 0.0\nend = 0.02") +
+                 interface("top", "body = \"plate\"\ny = 0.004\nstart = 0.0\nend = 0.02")));
   names.clear();
   for (const BodySpec& b : d.bodies) names.push_back(b.name);
   EXPECT_EQ(names, (std::vector<std::string>{"plate", "plate.below.top", "plate.below.bottom"}));
@@ -208,28 +222,45 @@ TEST(InsideBody, every_bad_input_is_reported_with_key_value_and_rule) {
   expect_message(plate_case(interface("w", "body = \"plate\"\nupper_body = \"plate\"\n" + edge)),
                  {"interface.w.upper_body", "\"plate\"", "either interface.w.body", "not both"});
   expect_message(plate_case(interface("w", "body = \"plate\"\nbonded_to = 0.02\n" + edge)),
-                 {"interface.w.bonded_to", "0.02", "not allowed with interface.w.body", "tied there automatically"});
+                 {"interface.w.bonded_to", "0.02", "not allowed with interface.w.body",
+                  "tied there automatically"});
   expect_message(plate_case(interface("w", "body = \"plates\"\n" + edge)),
-                 {"interface.w.body", "\"plates\"", "must name a body among \"plate\"", "did you mean \"plate\"?"});
+                 {"interface.w.body", "\"plates\"", "must name a body among \"plate\"",
+                  "did you mean \"plate\"?"});
+  expect_message(plate_case(interface("w", "body = \"plate\"\nclosed = true\n" + edge)),
+                 {"interface.w.closed", "true", "only allowed with points"});
+  expect_message(plate_case(interface("w", "body = \"plate\"\ny = 0.0\nstart = 0.01\nend = 0.004")),
+                 {"interface.w.end", "0.004", "must be > start = 0.01 m"});
   expect_message(plate_case(interface("w", "lower_body = \"plate\"\n" + edge)),
-                 {"interface.w.upper_body", "(missing)", "upper_body and lower_body", "interface.w.body alone"});
+                 {"interface.w.upper_body", "(missing)", "upper_body and lower_body",
+                  "interface.w.body alone"});
   // A line leaving the body's material (through a hole).
-  expect_message(plate_case(interface("w", "body = \"plate\"\npoints = [[0.004, 0.0], [0.016, 0.0]]"),
-                            "[[bodies.plate.minus]]\nshape = \"circle\"\ncenter = [0.01, 0.0]\nradius = 0.002\n"),
-                 {"interface.w.points", "[[0.004, 0], [0.016, 0]]", "must lie inside bodies.plate",
-                  "is outside it"});
+  expect_message(
+      plate_case(
+          interface("w", "body = \"plate\"\npoints = [[0.004, 0.0], [0.016, 0.0]]"),
+          "[[bodies.plate.minus]]\nshape = \"circle\"\ncenter = [0.01, 0.0]\nradius = 0.002\n"),
+      {"interface.w.points", "[[0.004, 0], [0.016, 0]]", "must lie inside bodies.plate",
+       "is outside it"});
   // Through two parts made by an earlier line, and a T-junction.
   const std::string first = interface("a", "body = \"plate\"\ny = 0.0\nstart = 0.0\nend = 0.02");
-  expect_message(plate_case(first + interface("b", "body = \"plate\"\npoints = [[0.01, -0.004], [0.01, 0.004]]")),
-                 {"interface.b.points", "runs through two parts of bodies.plate", "bodies.plate.below.a"});
-  expect_message(plate_case(first + interface("b", "body = \"plate\"\npoints = [[0.01, 0.002], [0.01, 0.006]]")),
-                 {"interface.b.points", "splits bodies.plate across the upper face of interface.a",
-                  "no T-junctions"});
+  expect_message(
+      plate_case(first +
+                 interface("b", "body = \"plate\"\npoints = [[0.01, -0.004], [0.01, 0.004]]")),
+      {"interface.b.points", "runs through two parts of bodies.plate", "bodies.plate.below.a"});
+  expect_message(
+      plate_case(first +
+                 interface("b", "body = \"plate\"\npoints = [[0.01, 0.002], [0.01, 0.006]]")),
+      {"interface.b.points", "splits bodies.plate across the upper face of interface.a",
+       "no T-junctions"});
   // A line whose extensions come back across it.
-  expect_message(plate_case(interface("w", "body = \"plate\"\npoints = [[0.006, 0.0], [0.014, 0.0], [0.014, 0.004], [0.01, 0.004], [0.01, 0.002]]")),
+  expect_message(plate_case(interface("w",
+                                      "body = \"plate\"\npoints = [[0.006, 0.0], [0.014, 0.0], "
+                                      "[0.014, 0.004], [0.01, 0.004], [0.01, 0.002]]")),
                  {"interface.w.points", "crosses itself", "does not cut bodies.plate in two"});
   // An interface between two bodies naming a split body: it must name a part.
-  expect_message(plate_case(first + interface("c", "upper_body = \"plate\"\nlower_body = \"plate.below.a\"\n"
-                                                  "y = 0.0\nstart = 0.0\nend = 0.02")),
-                 {"interface.c.upper_body", "\"plate\"", "has been split", "\"plate\", \"plate.below.a\""});
+  expect_message(
+      plate_case(first + interface("c",
+                                   "upper_body = \"plate\"\nlower_body = \"plate.below.a\"\n"
+                                   "y = 0.0\nstart = 0.0\nend = 0.02")),
+      {"interface.c.upper_body", "\"plate\"", "has been split", "\"plate\", \"plate.below.a\""});
 }

@@ -221,8 +221,8 @@ void edge_crossing(const Point& a, const Point& b, const Point& p, const Point& 
 void shape_crossings(const Shape& s, const Point& a, const Point& b, std::vector<Crossing>& out) {
   switch (s.kind) {
     case ShapeKind::rectangle: {
-      const Point c[4] = {{s.min[0], s.min[1]}, {s.max[0], s.min[1]}, {s.max[0], s.max[1]},
-                          {s.min[0], s.max[1]}};
+      const Point c[4] = {
+          {s.min[0], s.min[1]}, {s.max[0], s.min[1]}, {s.max[0], s.max[1]}, {s.min[0], s.max[1]}};
       for (int k = 0; k < 4; ++k) edge_crossing(a, b, c[k], c[(k + 1) % 4], out);
       return;
     }
@@ -260,8 +260,10 @@ Shape left_part(const Box& frame, const std::vector<Point>& cut) {
   const double last = perimeter_position(frame, cut.back());
   double first = perimeter_position(frame, cut.front());
   if (first <= last) first += 4.0;
-  const Point corner[4] = {{frame.min[0], frame.min[1]}, {frame.max[0], frame.min[1]},
-                           {frame.max[0], frame.max[1]}, {frame.min[0], frame.max[1]}};
+  const Point corner[4] = {{frame.min[0], frame.min[1]},
+                           {frame.max[0], frame.min[1]},
+                           {frame.max[0], frame.max[1]},
+                           {frame.min[0], frame.max[1]}};
   // Counter-clockwise along the frame from the cut's end back to its start: with the cut
   // walked forwards, what lies on its left is enclosed.
   for (int k = int(std::floor(last)) + 1; double(k) < first; ++k) {

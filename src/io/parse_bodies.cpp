@@ -199,7 +199,8 @@ void check_body_seeding(const Case& c) {
     // Particles of the outer shape, and how many each cut-out removes.
     long kept = 0;
     std::vector<long> removed(b.region.minus.size(), 0);
-    for_each_seed_point(grid, Region{b.region.outer, {}, b.region.sides}, ppc, [&](const SeedPoint& s) {
+    const Region uncut{b.region.outer, {}, b.region.sides};  // the body before its cut-outs
+    for_each_seed_point(grid, uncut, ppc, [&](const SeedPoint& s) {
       bool in_hole = false;
       for (std::size_t k = 0; k < b.region.minus.size(); ++k)
         if (contains(b.region.minus[k], s.x, s.y)) ++removed[k], in_hole = true;

@@ -101,7 +101,7 @@ struct Split {
   bool new_part_is_upper = false;  // the line's normal points into the new part
   const char* new_side = "below";  // names: NAME.<new_side>.IFACE, NAME.<kept_side>.IFACE
   const char* kept_side = "above";
-  std::vector<Polyline> ties;      // the extensions' stretches through the body, tied
+  std::vector<Polyline> ties;  // the extensions' stretches through the body, tied
 };
 
 Split plan_split(Section& f, const std::string& key, const Polyline& line,
@@ -127,11 +127,13 @@ Split plan_split(Section& f, const std::string& key, const Polyline& line,
   // A frame around the body and the line with room to spare: the extensions run out to it.
   Box frame = bounding_box(body.region);
   for (std::size_t k = 0; k < line.num_vertices(); ++k) {
-    frame.min[0] = std::min(frame.min[0], line.x[k]), frame.max[0] = std::max(frame.max[0], line.x[k]);
-    frame.min[1] = std::min(frame.min[1], line.y[k]), frame.max[1] = std::max(frame.max[1], line.y[k]);
+    frame.min[0] = std::min(frame.min[0], line.x[k]),
+    frame.max[0] = std::max(frame.max[0], line.x[k]);
+    frame.min[1] = std::min(frame.min[1], line.y[k]),
+    frame.max[1] = std::max(frame.max[1], line.y[k]);
   }
-  const double pad = c.grid.cell_size + 0.01 * std::max(frame.max[0] - frame.min[0],
-                                                        frame.max[1] - frame.min[1]);
+  const double pad =
+      c.grid.cell_size + 0.01 * std::max(frame.max[0] - frame.min[0], frame.max[1] - frame.min[1]);
   for (int d = 0; d < 2; ++d) frame.min[d] -= pad, frame.max[d] += pad;
   const std::size_t n = line.num_vertices();
   const Point first{line.x[0], line.y[0]}, last{line.x[n - 1], line.y[n - 1]};
@@ -166,8 +168,8 @@ Split plan_split(Section& f, const std::string& key, const Polyline& line,
 }
 
 // Adds the new part after body b and points the interface at both parts; returns its index.
-int apply_split(Section& f, InterfaceSpec& is, Case& c, ParseContext& ctx,
-                const std::string& iface, int b, const Split& s) {
+int apply_split(Section& f, InterfaceSpec& is, Case& c, ParseContext& ctx, const std::string& iface,
+                int b, const Split& s) {
   const std::string base = c.bodies[std::size_t(b)].name;
   const std::string part = base + "." + s.new_side + "." + iface;
   const std::string kept = base + "." + s.kept_side + "." + iface;
@@ -237,8 +239,8 @@ void move_earlier_faces(Section& f, const std::string& key, const Polyline& line
                          "may split it only where every other interface keeps one body on each "
                          "side (no T-junctions)",
                          c.bodies[std::size_t(b)].name, side > 0 ? "upper" : "lower",
-                         c.interface_names[k], c.bodies[std::size_t(b)].name, kept_at.x,
-                         kept_at.y, c.bodies[std::size_t(at)].name, new_at.x, new_at.y));
+                         c.interface_names[k], c.bodies[std::size_t(b)].name, kept_at.x, kept_at.y,
+                         c.bodies[std::size_t(at)].name, new_at.x, new_at.y));
       body = at;
       (side > 0 ? e.upper_field : e.lower_field) = c.bodies[std::size_t(at)].field;
     }

@@ -117,7 +117,10 @@ InterfaceLine parse_interface_geometry(Section& f, InterfaceSpec& is, const Case
     is.y = f.number("y");
     is.start = f.number("start");
     is.end = f.number("end");
-    if (!(is.end > is.start)) fail(f.key("end"), is.end, fmt::format("must be > start = {:g} m", is.start));
+    if (!(is.end > is.start))
+      fail(f.key("end"), is.end, fmt::format("must be > start = {:g} m", is.start));
+    if (f.has("closed"))
+      fail(f.key("closed"), show(*f.node("closed")), "only allowed with points = [[x, y], ...]");
     check_line(f, "y", is.geometry(), c);
     return info;
   }

@@ -84,13 +84,13 @@ double max_difference(const std::vector<double>& a, const std::vector<double>& b
 TEST(CrackInBody, edge_weak_plane_in_one_plate_equals_two_rectangles_with_bonded_to) {
   const std::string src = RUPTURE_SOURCE_DIR;
   const std::vector<std::string> common = {
-      "grid.cell_size=1e-3",      "time.end=12e-6",
-      "output.snapshot_interval=0", "output.interface_interval=0",
-      "solver.threads=1",         "interface.weak_plane.segments=2000"};
-  std::vector<std::string> two = {"grid.coarse_cell_size=0",         "grid.min=[0.0,-0.06]",
-                                  "grid.max=[0.075,0.04]",           "bodies.upper.max=[0.075,0.04]",
-                                  "bodies.lower.min=[0.0,-0.06]",    "bodies.lower.max=[0.075,0.0]",
-                                  "interface.weak_plane.start=0.0",  "interface.weak_plane.bonded_to=0.075"};
+      "grid.cell_size=1e-3",         "time.end=12e-6",   "output.snapshot_interval=0",
+      "output.interface_interval=0", "solver.threads=1", "interface.weak_plane.segments=2000"};
+  std::vector<std::string> two = {
+      "grid.coarse_cell_size=0",        "grid.min=[0.0,-0.06]",
+      "grid.max=[0.075,0.04]",          "bodies.upper.max=[0.075,0.04]",
+      "bodies.lower.min=[0.0,-0.06]",   "bodies.lower.max=[0.075,0.0]",
+      "interface.weak_plane.start=0.0", "interface.weak_plane.bonded_to=0.075"};
   two.insert(two.end(), common.begin(), common.end());
   const Case rectangles = load_case(src + "/examples/rosakis1999.toml", two);
   const Case plate = load_case(src + "/examples/edge_crack_in_plate.toml", common);
@@ -102,10 +102,11 @@ TEST(CrackInBody, edge_weak_plane_in_one_plate_equals_two_rectangles_with_bonded
   const CrackSummary &p = a.cracks[0], &q = b.cracks[0];
   ASSERT_TRUE(p.initiated);
   EXPECT_GT(p.final_tip, 0.02) << "the crack runs, so the comparison means something";
-  std::printf("initiation %.12g / %.12g s, tip %.9g / %.9g m, peak speed %.9g / %.9g m/s, "
-              "energy error %.9g / %.9g\n",
-              p.initiation_time, q.initiation_time, p.final_tip, q.final_tip, p.peak_speed,
-              q.peak_speed, a.energy_balance_error, b.energy_balance_error);
+  std::printf(
+      "initiation %.12g / %.12g s, tip %.9g / %.9g m, peak speed %.9g / %.9g m/s, "
+      "energy error %.9g / %.9g\n",
+      p.initiation_time, q.initiation_time, p.final_tip, q.final_tip, p.peak_speed, q.peak_speed,
+      a.energy_balance_error, b.energy_balance_error);
   EXPECT_EQ(a.steps, b.steps);
   EXPECT_NEAR(q.initiation_time, p.initiation_time, 1e-9 * p.initiation_time);
   EXPECT_NEAR(q.final_tip, p.final_tip, 1e-12);
@@ -147,9 +148,10 @@ TEST(CrackInBody, centre_crack_with_both_ends_inside_runs_symmetrically) {
     worst = std::max(worst, std::fabs(ahead - behind));
     reach = std::max(reach, ahead);
   }
-  std::printf("tips %.4g mm from the centre at the end; largest |tip - back| difference %.3g m "
-              "(segment %.3g m)\n",
-              1e3 * reach, worst, segment);
+  std::printf(
+      "tips %.4g mm from the centre at the end; largest |tip - back| difference %.3g m "
+      "(segment %.3g m)\n",
+      1e3 * reach, worst, segment);
   EXPECT_GT(reach, 0.005) << "the crack runs beyond the 3 mm loaded stretch";
   EXPECT_LT(reach, 0.015) << "and stays inside the weak plane";
   EXPECT_LE(worst, segment);
@@ -167,16 +169,17 @@ TEST(CrackInBody, centre_crack_with_both_ends_inside_runs_symmetrically) {
   // Mirrored nodes open the same (normal jump even, tangential odd), the tied ends not at all.
   for (const auto& entry : std::filesystem::directory_iterator(run_dir("centre") + "/interface")) {
     const auto p = read_csv(entry.path().string());
-    const std::vector<double> &jn = p.at("jump_n"), &jt = p.at("jump_t");
+    const std::vector<double>&jn = p.at("jump_n"), &jt = p.at("jump_t");
     const double size = max_abs(jn);
     double odd = 0.0, even = 0.0;
     for (std::size_t k = 0; k < jn.size(); ++k) {
       odd = std::max(odd, std::fabs(jn[k] - jn[jn.size() - 1 - k]));
       even = std::max(even, std::fabs(jt[k] + jt[jt.size() - 1 - k]));
     }
-    std::printf("t = %.3g s: largest opening %.3g m, mirror differences %.3g (normal), %.3g "
-                "(tangential) m, end openings %.3g, %.3g m\n",
-                p.at("time")[0], size, odd, even, jn.front(), jn.back());
+    std::printf(
+        "t = %.3g s: largest opening %.3g m, mirror differences %.3g (normal), %.3g "
+        "(tangential) m, end openings %.3g, %.3g m\n",
+        p.at("time")[0], size, odd, even, jn.front(), jn.back());
     EXPECT_LE(odd, 1e-6 * size + 1e-15);
     EXPECT_LE(even, 1e-6 * size + 1e-15);
     EXPECT_LE(std::fabs(jn.front()), 1e-6 * size + 1e-15) << "tied beyond the start";
