@@ -148,6 +148,31 @@ TEST(InsideBody, a_centre_crack_is_tied_beyond_both_ends) {
   EXPECT_NEAR(t2[1].y[1], 0.005, 1e-15);
 }
 
+TEST(InsideBody, an_extension_entering_the_body_again_is_tied_there_too) {
+  // A U (two arms 6 mm wide on a 6 mm base) with a crack from the edge into its left arm: the
+  // extension leaves the arm at x = 6 mm and crosses the right arm from 14 to 20 mm, which is
+  // tied, so the right arm is not cut; the part above the line is the top of both arms.
+  const std::string u = R"(
+[bodies.u]
+material = "homalite"
+shape = "polygon"
+vertices = [[0, -0.01], [0.02, -0.01], [0.02, 0.01], [0.014, 0.01], [0.014, -0.004],
+            [0.006, -0.004], [0.006, 0.01], [0, 0.01]]
+)";
+  std::string text =
+      plate_case(interface("arm", "body = \"u\"\npoints = [[0.0, 0.002], [0.003, 0.002]]"), u);
+  text.erase(text.find("[bodies.plate]"), text.find("[bodies.u]") - text.find("[bodies.plate]"));
+  const Case c = parse_case(text);
+  const std::vector<Polyline> ties = c.interfaces[0].tie_geometries();
+  ASSERT_EQ(ties.size(), 2u);
+  EXPECT_EQ(ties[0].x, (std::vector<double>{0.003, 0.006}));
+  EXPECT_EQ(ties[1].x, (std::vector<double>{0.014, 0.02}));
+  const State s = make_state(c);
+  long above = 0;
+  for (std::size_t k = 0; k < s.particles.size(); ++k) above += s.particles.field[k] == 0;
+  EXPECT_EQ(above, 2 * 24 * 32);  // two arms 6 x 8 mm above y = 2 mm, 16 particles per mm^2
+}
+
 TEST(InsideBody, a_closed_line_makes_its_inside_a_new_body) {
   for (const bool ccw : {true, false}) {
     const std::string square =
@@ -251,7 +276,7 @@ TEST(InsideBody, every_bad_input_is_reported_with_key_value_and_rule) {
       plate_case(first +
                  interface("b", "body = \"plate\"\npoints = [[0.01, 0.002], [0.01, 0.006]]")),
       {"interface.b.points", "splits bodies.plate across the upper face of interface.a",
-       "no T-junctions"});
+       "T-junction"});
   // A line whose extensions come back across it.
   expect_message(plate_case(interface("w",
                                       "body = \"plate\"\npoints = [[0.006, 0.0], [0.014, 0.0], "

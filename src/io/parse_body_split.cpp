@@ -29,7 +29,10 @@ namespace {
 
 constexpr int kSamples = 64;  // points per piece and side, as the two-body check samples
 
-std::string describe_line(const Polyline& l) {
+// The value of the key the line was given by: y (horizontal form), points or center.
+std::string describe_line(const std::string& key, const Polyline& l) {
+  if (key == "y")
+    return fmt::format("{:g} (the line from x = {:g} to {:g})", l.y[0], l.x[0], l.x[1]);
   auto point = [&](std::size_t k) { return fmt::format("[{:g}, {:g}]", l.x[k], l.y[k]); };
   const std::size_t n = l.num_vertices();
   std::string s = "[";
@@ -78,7 +81,7 @@ int part_holding_line(Section& f, const std::string& key, const Polyline& line,
       for (const int p : parts)
         if (body_contains(c.bodies[std::size_t(p)], x, y)) in = p;
       if (in < 0)
-        fail(f.key(key), describe_line(line),
+        fail(f.key(key), describe_line(key, line),
              fmt::format("must lie inside bodies.{} (its ends may lie on the body's edge): the "
                          "point ({:.6g}, {:.6g}) m next to piece {} is outside it",
                          body, x, y, piece));
@@ -86,7 +89,7 @@ int part_holding_line(Section& f, const std::string& key, const Polyline& line,
       if (in != first_part && other.empty())
         other = c.bodies[std::size_t(in)].name, at_other = {x, y};
     });
-  fail(f.key(key), describe_line(line),
+  fail(f.key(key), describe_line(key, line),
        fmt::format("runs through two parts of bodies.{} that earlier lines inside it made: "
                    "bodies.{} (near ({:.6g}, {:.6g}) m) and bodies.{} (near ({:.6g}, {:.6g}) m); "
                    "a line inside a body must lie inside one of its parts (lines may not cross, "
@@ -158,7 +161,7 @@ Split plan_split(Section& f, const std::string& key, const Polyline& line,
   cut.push_back(start);
   s.shape = left_part(frame, cut);
   if (polygon_self_intersection(s.shape.vertices))
-    fail(f.key(key), describe_line(line),
+    fail(f.key(key), describe_line(key, line),
          fmt::format("extended straight beyond its ends (to ({:.6g}, {:.6g}) and ({:.6g}, "
                      "{:.6g}) m), the line crosses itself, so it does not cut bodies.{} in two; a "
                      "line inside a body must not turn so far that its extensions meet it (or "
@@ -232,12 +235,13 @@ void move_earlier_faces(Section& f, const std::string& key, const Polyline& line
         });
       if (on_new == 0) continue;
       if (on_kept > 0)
-        fail(f.key(key), describe_line(line),
+        fail(f.key(key), describe_line(key, line),
              fmt::format("splits bodies.{} across the {} face of interface.{}, which would lie "
                          "partly on bodies.{} (near ({:.6g}, {:.6g}) m) and partly on bodies.{} "
                          "(near ({:.6g}, {:.6g}) m), two velocity fields; a line inside a body "
                          "may split it only where every other interface keeps one body on each "
-                         "side (no T-junctions)",
+                         "side: a line may not end on another (a T-junction), nor run, "
+                         "extended straight, through a region another interface encloses",
                          c.bodies[std::size_t(b)].name, side > 0 ? "upper" : "lower",
                          c.interface_names[k], c.bodies[std::size_t(b)].name, kept_at.x, kept_at.y,
                          c.bodies[std::size_t(at)].name, new_at.x, new_at.y));
