@@ -1,7 +1,7 @@
 // Tests of geometry/ and particles/seed: point-in-shape for every kind, polygon validation,
 // seeded mass converging to rho x area, rectangles seeded identically whatever their form,
-// initial stress (closed form and a released prestressed square), and bodies sharing a
-// velocity field behaving as one body.
+// initial stress (closed form and a released prestressed square), bodies sharing a velocity
+// field behaving as one body, and cutting a region along a line (a body split by a crack).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -239,6 +239,84 @@ TEST(Geometry, a_rectangle_as_a_polygon_seeds_the_same_particles) {
     EXPECT_EQ(differ, 0u) << (refined ? "graded" : "uniform") << " grid: particles differ bitwise";
     std::printf("%s grid: %zu particles, identical\n", refined ? "graded" : "uniform", a.particles.size());
   }
+}
+
+// A body split along a line keeps the side of the cut its normal points to (left_part); the
+// extensions of a line beyond its ends are tied where they run through material
+// (inside_stretches), and their ends on a rectangle's side are that side bitwise.
+TEST(Geometry, left_part_of_a_cut_is_the_side_its_normal_points_to) {
+  const Box frame{{0.0, 0.0}, {10.0, 10.0}};
+  const Shape up = left_part(frame, {{0, 5}, {10, 5}});
+  EXPECT_TRUE(contains(up, 5, 7));
+  EXPECT_FALSE(contains(up, 5, 3));
+  EXPECT_DOUBLE_EQ(signed_area(up.vertices), 50.0);  // counter-clockwise, the upper half
+  const Shape down = left_part(frame, {{10, 5}, {0, 5}});
+  EXPECT_TRUE(contains(down, 5, 3));
+  EXPECT_DOUBLE_EQ(signed_area(down.vertices), 50.0);
+  // A bent cut (area below it: two trapezoids of 17.5), and one leaving through corners.
+  const Shape bent = left_part(frame, {{0, 2}, {5, 5}, {10, 2}});
+  EXPECT_DOUBLE_EQ(signed_area(bent.vertices), 65.0);
+  EXPECT_TRUE(contains(bent, 5, 5.5));
+  EXPECT_FALSE(contains(bent, 1, 2.5));  // the cut is at y = 2.6 there
+  EXPECT_FALSE(polygon_self_intersection(bent.vertices));
+  const Shape diagonal = left_part(frame, {{0, 0}, {10, 10}});
+  EXPECT_DOUBLE_EQ(signed_area(diagonal.vertices), 50.0);
+  EXPECT_TRUE(contains(diagonal, 2, 8));
+  const Point exit = leave_box(frame, {5, 5}, {2, 1});
+  EXPECT_DOUBLE_EQ(exit.x, 10.0);
+  EXPECT_DOUBLE_EQ(exit.y, 7.5);
+}
+
+TEST(Geometry, inside_stretches_of_a_segment_through_a_region) {
+  const Region holed{rectangle(0, 0, 10, 10), {circle(5, 5, 2)}};
+  const std::vector<Stretch> across = inside_stretches(holed, {-1, 5}, {11, 5});
+  ASSERT_EQ(across.size(), 2u);
+  EXPECT_EQ(across[0].from.x, 0.0);  // on the rectangle's side exactly
+  EXPECT_NEAR(across[0].to.x, 3.0, 1e-12);
+  EXPECT_NEAR(across[1].from.x, 7.0, 1e-12);
+  EXPECT_EQ(across[1].to.x, 10.0);
+  EXPECT_EQ(across[1].to.y, 5.0);
+  const std::vector<Stretch> from_inside = inside_stretches(holed, {5, 8.5}, {15.3, 8.5});
+  ASSERT_EQ(from_inside.size(), 1u);
+  EXPECT_EQ(from_inside[0].from.x, 5.0);  // the segment's own end, exactly
+  EXPECT_EQ(from_inside[0].to.x, 10.0);
+  EXPECT_TRUE(inside_stretches(holed, {5, 11}, {15, 11}).empty());
+  // One side of a cut at y = 2 (the part above it): a vertical segment is inside from the cut
+  // (its coordinate exactly) to the top, less the hole.
+  Region above = holed;
+  above.sides.push_back({left_part({{-1, -1}, {11, 11}}, {{-1, 2}, {11, 2}}), true});
+  const std::vector<Stretch> up = inside_stretches(above, {4, -0.5}, {4, 10.5});
+  ASSERT_EQ(up.size(), 2u);
+  EXPECT_EQ(up[0].from.y, 2.0);
+  EXPECT_NEAR(up[0].to.y, 5.0 - std::sqrt(3.0), 1e-12);
+  EXPECT_NEAR(up[1].from.y, 5.0 + std::sqrt(3.0), 1e-12);
+  EXPECT_EQ(up[1].to.y, 10.0);
+}
+
+TEST(Geometry, the_two_sides_of_a_cut_seed_the_body_once) {
+  // An ellipse with a hole, cut by a bent line: each sub-cell centre of the whole region lies
+  // in exactly one side, at the same position (the lattice is the region's, not the side's).
+  const double lo[2] = {0.0, 0.0}, hi[2] = {0.04, 0.03};
+  const Grid g = make_uniform_grid(lo, hi, 0.5e-3);
+  const Region whole{ellipse(0.02, 0.015, 0.018, 0.012, 20), {circle(0.025, 0.015, 0.003)}};
+  const Shape cut = left_part({{-0.01, -0.01}, {0.05, 0.04}},
+                              {{-0.01, 0.012}, {0.021, 0.0147}, {0.05, 0.02}});
+  Region a = whole, b = whole;
+  a.sides.push_back({cut, true});
+  b.sides.push_back({cut, false});
+  std::map<std::pair<double, double>, int> seen;
+  for_each_seed_point(g, whole, 2, [&](const SeedPoint& s) { seen[{s.x, s.y}] += 1; });
+  for (const Region* r : {&a, &b})
+    for_each_seed_point(g, *r, 2, [&](const SeedPoint& s) { seen[{s.x, s.y}] += 10; });
+  const long total = count_seed_points(g, whole, 2);
+  long once = 0;
+  for (const auto& [xy, n] : seen) once += n == 11;
+  std::printf("%ld particles: %ld above the cut, %ld below\n", total, count_seed_points(g, a, 2),
+              count_seed_points(g, b, 2));
+  EXPECT_EQ(once, total) << "every particle of the body in exactly one side, none elsewhere";
+  EXPECT_EQ(long(seen.size()), total);
+  EXPECT_GT(count_seed_points(g, a, 2), total / 4);
+  EXPECT_GT(count_seed_points(g, b, 2), total / 4);
 }
 
 // SPEC E5 with a prestress: sigma_zz = nu (sxx + syy) in plane strain, eps from the compliance,

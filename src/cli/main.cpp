@@ -80,11 +80,13 @@ void print_check(const std::string& path, const Case& c) {
             ? fmt::format("on y = {:g} m, x in [{:g}, {:g}] m", line.y[0], line.x[0], line.x[1])
             : fmt::format("along a {} line of {} points, {:g} m long, from ({:g}, {:g}) m",
                           line.closed ? "closed" : "open", line.num_vertices(), length, line.x[0], line.y[0]);
-    const Polyline tie = is.tie_geometry();
-    fmt::print("interface {}: {} segments of {:.4g} um {}; {}, {}{}{}\n", c.interface_names[k], is.segments,
-               1e6 * length / is.segments, where, law_name(is.law), law_text,
-               is.contact ? fmt::format("; contact, friction {:g}", is.contact_law.friction) : "",
-               tie.num_vertices() >= 2 ? fmt::format("; bonded along {:g} m from ({:g}, {:g}) m", tie.length(), tie.x[0], tie.y[0]) : "");
+    std::string ties;
+    for (const Polyline& tie : is.tie_geometries())
+      ties += fmt::format("; bonded along {:g} m from ({:g}, {:g}) m", tie.length(), tie.x[0], tie.y[0]);
+    fmt::print("interface {}: {} segments of {:.4g} um {}; {}, {}{}{}; bodies {} (upper) and {}\n",
+               c.interface_names[k], is.segments, 1e6 * length / is.segments, where, law_name(is.law),
+               law_text, is.contact ? fmt::format("; contact, friction {:g}", is.contact_law.friction) : "",
+               ties, c.bodies[std::size_t(is.upper_body)].name, c.bodies[std::size_t(is.lower_body)].name);
   }
   if (c.grid.refined()) {
     fmt::print("refined grid: {} levels, level 0 = {:g} m, finest = {:g} m; smallest cell {:g} m\n",

@@ -14,12 +14,12 @@ Polyline InterfaceSpec::geometry() const {
   return p;
 }
 
-Polyline InterfaceSpec::tie_geometry() const {
-  if (bonded_line.num_vertices() >= 2 || !bonded) return bonded_line;
+std::vector<Polyline> InterfaceSpec::tie_geometries() const {
+  if (!bonded_lines.empty() || !bonded) return bonded_lines;
   Polyline p;
   p.x = {bonded_from, bonded_to};
   p.y = {y, y};
-  return p;
+  return {p};
 }
 
 CohesiveInterface make_interface(const InterfaceSpec& spec) {

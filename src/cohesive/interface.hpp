@@ -10,7 +10,7 @@
 // the face position; forces go back to the same grid nodes with the same weights.
 // Separation (SPEC §3): a Gauss point whose jump magnitude reaches separation_factor * delta_t
 // carries no traction from then on; a node whose jump reaches it counts as cracked (E10).
-// Where the two bodies are bonded instead (bonded_line), their fields share every grid node
+// Where the two bodies are bonded instead (bonded_lines), their fields share every grid node
 // near the line (solver/cohesive_step.hpp: tie_bonded_nodes): one continuum there.
 // Units: m, m/s, N per unit thickness (N/m), J/m.
 #pragma once
@@ -44,14 +44,16 @@ struct InterfaceSpec {
   // it a separated point carries no traction (SPEC §3, the paper's choice).
   bool contact = false;
   ContactLaw contact_law;
-  // Where the two fields are bonded (tied). Empty and `bonded`: the horizontal form, along y
-  // from bonded_from to bonded_to.
-  Polyline bonded_line;
+  // Where the two fields are bonded (tied): any number of lines (bonded_points gives one; a
+  // line inside one body that ends inside it gets one beyond each such end, io/). None and
+  // `bonded`: the horizontal form, along y from bonded_from to bonded_to.
+  std::vector<Polyline> bonded_lines;
   bool bonded = false;
   double bonded_from = 0.0, bonded_to = 0.0;  // m
 
-  Polyline geometry() const;      // line, or its horizontal form
-  Polyline tie_geometry() const;  // bonded_line, or its horizontal form (empty if not bonded)
+  Polyline geometry() const;                     // line, or its horizontal form
+  std::vector<Polyline> tie_geometries() const;  // bonded_lines, or the horizontal form (none
+                                                 // if not bonded)
 };
 
 // A face point's grid stencil (solver/cohesive_step.cpp): it moves with, and loads, its own

@@ -83,6 +83,8 @@ bool contains(const Region& r, double x, double y) {
   if (!contains(r.outer, x, y)) return false;
   for (const Shape& m : r.minus)
     if (contains(m, x, y)) return false;
+  for (const Side& side : r.sides)
+    if (contains(side.shape, x, y) != side.inside) return false;
   return true;
 }
 
@@ -162,6 +164,133 @@ std::optional<std::pair<int, int>> polygon_self_intersection(const std::vector<P
       if (segments_meet(a0, a1, b0, b1)) return std::make_pair(i, j);
     }
   return std::nullopt;
+}
+
+Point leave_box(const Box& frame, const Point& p, const Point& d) {
+  // The nearest of the frame's sides ahead of p along d.
+  double t = INFINITY;
+  for (int k = 0; k < 2; ++k) {
+    const double dk = k == 0 ? d.x : d.y, pk = k == 0 ? p.x : p.y;
+    if (dk > 0.0) t = std::min(t, (frame.max[k] - pk) / dk);
+    if (dk < 0.0) t = std::min(t, (frame.min[k] - pk) / dk);
+  }
+  return {p.x + t * d.x, p.y + t * d.y};
+}
+
+namespace {
+
+// Position along the frame's edge, counter-clockwise from the lower-left corner: the corners
+// are at 0, 1, 2, 3 (lower-left, lower-right, upper-right, upper-left), each side spans 1.
+double perimeter_position(const Box& f, const Point& p) {
+  const double w = f.max[0] - f.min[0], h = f.max[1] - f.min[1];
+  const double gap[4] = {std::fabs(p.y - f.min[1]) / h, std::fabs(p.x - f.max[0]) / w,
+                         std::fabs(p.y - f.max[1]) / h, std::fabs(p.x - f.min[0]) / w};
+  const int side = int(std::min_element(gap, gap + 4) - gap);
+  switch (side) {
+    case 0:
+      return (p.x - f.min[0]) / w;
+    case 1:
+      return 1.0 + (p.y - f.min[1]) / h;
+    case 2:
+      return 2.0 + (f.max[0] - p.x) / w;
+    default:
+      return std::fmod(3.0 + (f.max[1] - p.y) / h, 4.0);
+  }
+}
+
+// Where segment a -> b crosses segment p -> q: the parameter t along a -> b in (0, 1), or
+// nothing (parallel segments never count: a ray along an edge is decided by the midpoints).
+struct Crossing {
+  double t;
+  Point at;
+};
+void edge_crossing(const Point& a, const Point& b, const Point& p, const Point& q,
+                   std::vector<Crossing>& out) {
+  const double ux = b.x - a.x, uy = b.y - a.y, vx = q.x - p.x, vy = q.y - p.y;
+  const double den = ux * vy - uy * vx;
+  if (den == 0.0) return;
+  const double wx = p.x - a.x, wy = p.y - a.y;
+  const double t = (wx * vy - wy * vx) / den, s = (wx * uy - wy * ux) / den;
+  if (!(t > 0.0 && t < 1.0 && s >= 0.0 && s <= 1.0)) return;
+  Point at{a.x + t * ux, a.y + t * uy};
+  if (p.x == q.x) at.x = p.x;  // an axis-aligned edge: its coordinate exactly
+  if (p.y == q.y) at.y = p.y;
+  out.push_back({t, at});
+}
+
+void shape_crossings(const Shape& s, const Point& a, const Point& b, std::vector<Crossing>& out) {
+  switch (s.kind) {
+    case ShapeKind::rectangle: {
+      const Point c[4] = {
+          {s.min[0], s.min[1]}, {s.max[0], s.min[1]}, {s.max[0], s.max[1]}, {s.min[0], s.max[1]}};
+      for (int k = 0; k < 4; ++k) edge_crossing(a, b, c[k], c[(k + 1) % 4], out);
+      return;
+    }
+    case ShapeKind::polygon:
+      for (std::size_t i = 0, j = s.vertices.size() - 1; i < s.vertices.size(); j = i++)
+        edge_crossing(a, b, s.vertices[j], s.vertices[i], out);
+      return;
+    case ShapeKind::circle:
+    case ShapeKind::ellipse: {
+      // In the ellipse's own axes, scaled to the unit circle: |u0 + t u1|^2 = 1.
+      const double c = std::cos(s.angle), sn = std::sin(s.angle);
+      auto frame = [&](double x, double y, double& u, double& w) {
+        u = (c * x + sn * y) / s.radii[0];
+        w = (-sn * x + c * y) / s.radii[1];
+      };
+      double u0, w0, u1, w1;
+      frame(a.x - s.center[0], a.y - s.center[1], u0, w0);
+      frame(b.x - a.x, b.y - a.y, u1, w1);
+      const double qa = u1 * u1 + w1 * w1, qb = u0 * u1 + w0 * w1, qc = u0 * u0 + w0 * w0 - 1.0;
+      const double disc = qb * qb - qa * qc;
+      if (qa == 0.0 || disc <= 0.0) return;
+      for (const double t : {(-qb - std::sqrt(disc)) / qa, (-qb + std::sqrt(disc)) / qa})
+        if (t > 0.0 && t < 1.0) out.push_back({t, {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)}});
+      return;
+    }
+  }
+}
+
+}  // namespace
+
+Shape left_part(const Box& frame, const std::vector<Point>& cut) {
+  Shape s;
+  s.kind = ShapeKind::polygon;
+  s.vertices = cut;
+  const double last = perimeter_position(frame, cut.back());
+  double first = perimeter_position(frame, cut.front());
+  if (first <= last) first += 4.0;
+  const Point corner[4] = {{frame.min[0], frame.min[1]},
+                           {frame.max[0], frame.min[1]},
+                           {frame.max[0], frame.max[1]},
+                           {frame.min[0], frame.max[1]}};
+  // Counter-clockwise along the frame from the cut's end back to its start: with the cut
+  // walked forwards, what lies on its left is enclosed.
+  for (int k = int(std::floor(last)) + 1; double(k) < first; ++k) {
+    if (std::fabs(double(k) - last) < 1e-12 || std::fabs(double(k) - first) < 1e-12) continue;
+    s.vertices.push_back(corner[k % 4]);
+  }
+  return s;
+}
+
+std::vector<Stretch> inside_stretches(const Region& r, const Point& a, const Point& b) {
+  std::vector<Crossing> x{{0.0, a}, {1.0, b}};
+  shape_crossings(r.outer, a, b, x);
+  for (const Shape& m : r.minus) shape_crossings(m, a, b, x);
+  for (const Side& side : r.sides) shape_crossings(side.shape, a, b, x);
+  std::sort(x.begin(), x.end(), [](const Crossing& u, const Crossing& v) { return u.t < v.t; });
+  // Between consecutive crossings the segment is wholly in or out: its midpoint says which.
+  std::vector<Stretch> out;
+  bool open = false;
+  for (std::size_t k = 0; k + 1 < x.size(); ++k) {
+    if (x[k + 1].t - x[k].t <= 1e-12) continue;
+    const double tm = 0.5 * (x[k].t + x[k + 1].t);
+    const bool in = contains(r, a.x + tm * (b.x - a.x), a.y + tm * (b.y - a.y));
+    if (in && open) out.back().to = x[k + 1].at;
+    if (in && !open) out.push_back({x[k].at, x[k + 1].at});
+    open = in;
+  }
+  return out;
 }
 
 }  // namespace rupture

@@ -1,7 +1,8 @@
 // rupture/geometry/shape.hpp
 // Plane regions that bodies are made of (units: m, angles in rad): axis-aligned rectangles,
 // simple polygons (either orientation), circles and rotated ellipses, and a Region = one outer
-// shape minus any number of cut-outs. contains() answers whether a point lies inside; points
+// shape minus any number of cut-outs, on one side of any number of cuts (a body split along a
+// line: io/parse_body_split.cpp). contains() answers whether a point lies inside; points
 // within round-off of a boundary may go either way (seeding never asks about them for shapes
 // on grid lines: sub-cell centres sit half a sub-cell inside). Shapes are validated by io/
 // (polygon_self_intersection, signed_area), not here.
@@ -31,11 +32,20 @@ struct Shape {
   double angle = 0.0;           // ellipse: rotation of the a-axis from +x, rad
 };
 
+// One side of a cut through a region: the points inside `shape` (inside = true) or outside it
+// (inside = false). The two sides of one cut test the same shape with the same arithmetic, so
+// every point lies on exactly one of them: splitting a body loses or doubles no particle.
+struct Side {
+  Shape shape;
+  bool inside = true;
+};
+
 // One outer shape with cut-outs (holes, notches): a point is in the region when it is in the
-// outer shape and in none of `minus`.
+// outer shape, in none of `minus` and on its side of every cut in `sides`.
 struct Region {
   Shape outer;
   std::vector<Shape> minus;
+  std::vector<Side> sides{};  // (defaulted: Region{outer, minus} stays complete)
 };
 
 const char* shape_name(ShapeKind k);  // "rectangle", "polygon", "circle", "ellipse"
@@ -57,5 +67,21 @@ double area(const Shape& s);
 // sharing their common vertex (adjacent edges that fold back over each other do count);
 // nothing for a simple polygon. O(n^2).
 std::optional<std::pair<int, int>> polygon_self_intersection(const std::vector<Point>& vertices);
+
+// Cutting a region along a line (a crack inside one body, docs/interfaces.md):
+// Where the ray from `p` (inside `frame`) along the direction `d` (nonzero) leaves the frame.
+Point leave_box(const Box& frame, const Point& p, const Point& d);
+// The part of `frame` left of `cut` (the side its normal, the direction turned +90 degrees,
+// points to): `cut` is a simple polyline whose first and last points lie on the frame's edge
+// and the others inside it. A polygon: the cut, then the frame's corners counter-clockwise
+// from the cut's last point back to its first.
+Shape left_part(const Box& frame, const std::vector<Point>& cut);
+// The stretches of the segment a -> b that lie inside `r`, in order from a. An end where the
+// segment crosses an axis-aligned edge takes that edge's coordinate exactly (a stretch that
+// ends on a rectangle's side ends on it bitwise); the segment's own ends are a and b exactly.
+struct Stretch {
+  Point from, to;
+};
+std::vector<Stretch> inside_stretches(const Region& r, const Point& a, const Point& b);
 
 }  // namespace rupture

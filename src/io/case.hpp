@@ -22,16 +22,19 @@ enum class Scheme { USF, USL, MUSL };
 struct BodySpec {
   std::string name;
   int material = 0;             // index into Case::materials
-  Region region;                // shape and cut-outs (geometry/shape.hpp), m
+  Region region;                // shape and cut-outs (geometry/shape.hpp), m; a body split along
+                                // an interface's line keeps its side of it (region.sides)
   double min[2]{}, max[2]{};    // bounding box of the outer shape (a rectangle: itself), m
   double velocity[2]{};         // initial velocity, m/s
   double stress[3]{};           // initial uniform stress sxx, syy, sxy, Pa (sigma_zz follows
                                 // from the plane mode; the strain from the compliance)
   int field = 0;                // velocity field: index into Case::field_names
 
-  // An axis-aligned rectangle on grid lines without cut-outs: seeded as always (bitwise).
+  // An axis-aligned rectangle on grid lines without cut-outs, not split by a line: seeded as
+  // always (bitwise).
   bool plain_rectangle() const {
-    return region.outer.kind == ShapeKind::rectangle && region.minus.empty();
+    return region.outer.kind == ShapeKind::rectangle && region.minus.empty() &&
+           region.sides.empty();
   }
 };
 

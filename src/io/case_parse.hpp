@@ -15,7 +15,12 @@ namespace rupture {
 // Names already parsed, for the tables that refer to them.
 struct ParseContext {
   std::map<std::string, int> material_index;
-  std::map<std::string, int> body_index;  // index into Case::bodies
+  // The bodies (indices into Case::bodies) each name stands for: a body's own index; once a
+  // line inside it has split it (io/parse_body_split.cpp), all its parts, so a boundary
+  // condition or load naming it acts on every part. The parts' own names (NAME.below.IFACE,
+  // NAME.inside.IFACE) and the name of the part that keeps NAME's index (NAME.above.IFACE,
+  // NAME.outside.IFACE) stand for the parts made by that split.
+  std::map<std::string, std::vector<int>> body_parts;
   std::string case_dir;  // directory of the case file: relative table_file paths start there
   // Tables read from files (table_file), so the input echo can hold them inline.
   struct FileTable {
@@ -33,6 +38,32 @@ void parse_time(Section& top, Case& c);
 void parse_solver(Section& top, Case& c);
 void parse_boundary(Section& top, Case& c, ParseContext& ctx);
 void parse_interfaces(Section& top, Case& c, ParseContext& ctx);
+// The bodies the name `s.key(key)` stands for (ParseContext::body_parts); an unknown name is an
+// InputError listing the names allowed, with the nearest as a hint.
+const std::vector<int>& named_bodies(Section& s, const std::string& key, const std::string& name,
+                                     const Case& c, const ParseContext& ctx);
+// The one body the string at `key` names (an interface's upper_body, lower_body): a name that
+// stands for several parts of a split body is an InputError naming the parts.
+int single_body(Section& s, const std::string& key, const Case& c, const ParseContext& ctx);
+
+// An interface's line as parse_interface_geometry read it: the key it was given by ("y",
+// "points", "center"), and for the circle form the circle itself (its polygon lies inside the
+// circle by up to `slack`, m).
+struct InterfaceLine {
+  std::string key;
+  double slack = 0.0;
+  bool circle = false;
+  double center[2]{}, radius = 0.0;
+};
+// interface.NAME.body: splits that body (or the part of it holding the line) along the line,
+// adds the new part to c.bodies right after it, with a field of its own, ties the line's
+// extensions to the body's edge, and sets the interface's bodies, fields and bonded lines
+// (docs/interfaces.md). Earlier interfaces whose face lies on the new part move to it.
+void split_body_along_interface(Section& f, InterfaceSpec& is, Case& c, ParseContext& ctx,
+                                const std::string& name, const InterfaceLine& line);
+// Numbers the velocity fields in order of first appearance among the bodies (Case::field_names)
+// and updates the bodies and interfaces; a no-op when they already are.
+void renumber_fields(Case& c);
 void parse_loads(Section& top, Case& c, ParseContext& ctx);
 // `function` and its keys (io/parse_time_function.cpp). value_key names the amplitude key
 // ("velocity"); empty: the function is a dimensionless factor (value 1). path: the keys of the

@@ -173,10 +173,12 @@ Case build_case(const toml::table& root, const std::string& case_dir) {
   parse_bodies(top, c, ctx);
   parse_time(top, c);
   parse_solver(top, c);
+  // Before the tables that name bodies: a line inside a body splits it into parts, and a
+  // condition or load naming the body acts on all of them.
+  parse_interfaces(top, c, ctx);
   parse_boundary(top, c, ctx);
   parse_loads(top, c, ctx);
   set_automatic_margin(c);
-  parse_interfaces(top, c, ctx);
   parse_output(top, c);
   check_bodies_on_graded_grid(c);
   check_body_seeding(c);

@@ -260,29 +260,44 @@ std::vector<KeyDoc> build_schema() {
   const std::vector<KeyDoc> interfaces = {
       {"interface", "named tables", "", "none", "",
        "Cohesive interfaces, one [interface.NAME] table each, joining two bodies of different "
-       "velocity fields (SPEC §3, docs/cohesive_laws.md).",
+       "velocity fields, or lying inside one body, which is split along it (SPEC §3, "
+       "docs/interfaces.md, docs/cohesive_laws.md).",
        ""},
       {"interface.*", "table", "", "", "",
        "One interface: its line, given one way (horizontal: y, start, end; a polyline: points; "
-       "a circle: center, radius), the bodies on either side, its traction law and contact.",
+       "a circle: center, radius), the bodies on either side (upper_body and lower_body) or the "
+       "one body it lies in (body), its traction law and contact.",
        ""},
-      {"interface.*.upper_body", "string", "", "required",
-       "a [bodies] entry, of another velocity field than lower_body",
+      {"interface.*.upper_body", "string", "", "required unless body is given",
+       "a [bodies] entry (or a part of a split body), of another velocity field than "
+       "lower_body; not with body",
        "the body on the side the line's normal (its direction turned +90 degrees) points to",
        "\"upper\""},
-      {"interface.*.lower_body", "string", "", "required",
-       "a [bodies] entry; must differ from upper_body", "the body on the other side", "\"lower\""},
+      {"interface.*.lower_body", "string", "", "required unless body is given",
+       "a [bodies] entry; must differ from upper_body; not with body",
+       "the body on the other side", "\"lower\""},
+      {"interface.*.body", "string", "", "none (give upper_body and lower_body)",
+       "a [bodies] entry holding the whole line (ends may lie on its edge); not with "
+       "upper_body, lower_body, bonded_to, bonded_points",
+       "the line lies inside this body, which is split along it: the part on the normal's side "
+       "keeps the name, the other becomes NAME.below.IFACE (a closed line: its inside, "
+       "NAME.inside.IFACE) with a field of its own; an end inside the body is extended "
+       "straight to the body's edge and tied there",
+       "\"plate\""},
       {"interface.*.y", "number", "m", "required in " + horizontal,
-       "must be the bottom of the upper body and the top of the lower body",
+       "must be the bottom of the upper body and the top of the lower body (with body: inside "
+       "it)",
        "height of a horizontal line (direction +x: the upper body lies above)", "0.0", horizontal},
       {"interface.*.start", "number", "m", "required in " + horizontal,
-       "must lie where both bodies meet", "left end of the horizontal line", "0.025", horizontal},
+       "must lie where both bodies meet (with body: in the body or on its edge)",
+       "left end of the horizontal line", "0.025", horizontal},
       {"interface.*.end", "number", "m", "required in " + horizontal,
-       "must lie in (start, right end of where both bodies meet]",
+       "must lie in (start, right end of where both bodies meet] (with body: > start, in the "
+       "body or on its edge)",
        "right end of the horizontal line", "0.05", horizontal},
       {"interface.*.points", "array of points", "m", "required in the polyline form",
        "at least 2 points (3 when closed), in the grid, a simple line with the upper body on "
-       "the side its normal points to",
+       "the side its normal points to (with body: inside that body)",
        "a polyline [[x, y], ...]; its normal is its direction turned +90 degrees",
        "[[0.01, 0.0], [0.03, 0.005]]", "the polyline form (points)"},
       {"interface.*.closed", "boolean", "", "false", "true, false",

@@ -84,7 +84,6 @@ void triple(Section& s, const std::string& k, double out[3], const char* form) {
 
 void parse_bodies(Section& top, Case& c, ParseContext& ctx) {
   auto& material_index = ctx.material_index;
-  auto& body_index = ctx.body_index;
   Section bodies = top.table("bodies", true);
   const double tol = 1e-9 * c.grid.cell_size;
   for (const auto& [k, v] : in_input_order(bodies.raw())) {
@@ -123,7 +122,7 @@ void parse_bodies(Section& top, Case& c, ParseContext& ctx) {
              "at most 255 velocity fields: let bodies that form one continuum share a field");
       c.field_names.push_back(field);
     }
-    body_index[name] = int(c.bodies.size());
+    ctx.body_parts[name] = {int(c.bodies.size())};
     c.bodies.push_back(bs);
   }
   if (c.bodies.empty()) fail("bodies", "{}", "at least one body is required");
@@ -139,6 +138,36 @@ void parse_bodies(Section& top, Case& c, ParseContext& ctx) {
         fail("bodies." + b.name, "\"" + b.name + "\"",
              "overlaps bodies." + a.name + "; bodies must not overlap");
     }
+}
+
+const std::vector<int>& named_bodies(Section& s, const std::string& key, const std::string& name,
+                                     const Case& c, const ParseContext& ctx) {
+  const auto it = ctx.body_parts.find(name);
+  if (it != ctx.body_parts.end()) return it->second;
+  // The bodies' names in input order, then the names of parts made by splits.
+  std::vector<std::string> names;
+  for (const BodySpec& b : c.bodies) names.push_back(b.name);
+  for (const auto& [n, parts] : ctx.body_parts)
+    if (std::find(names.begin(), names.end(), n) == names.end()) names.push_back(n);
+  std::string hint;
+  std::size_t best = 3;  // a hint only for a near miss (at most 2 edits), as for unknown keys
+  for (const std::string& n : names)
+    if (const std::size_t d = edit_distance(name, n); d < best) best = d, hint = n;
+  fail(s.key(key), "\"" + name + "\"",
+       "must name a body among " + Section::join(names) +
+           (hint.empty() ? "" : " (did you mean \"" + hint + "\"?)"));
+}
+
+int single_body(Section& s, const std::string& key, const Case& c, const ParseContext& ctx) {
+  const std::string name = s.string(key, "");
+  const std::vector<int>& parts = named_bodies(s, key, name, c, ctx);
+  if (parts.size() == 1) return parts[0];
+  std::vector<std::string> names;
+  for (const int p : parts) names.push_back(c.bodies[std::size_t(p)].name);
+  fail(s.key(key), "\"" + name + "\"",
+       fmt::format("bodies.{} has been split along a line inside it into {}: name the part on "
+                   "this side of the interface",
+                   name, Section::join(names)));
 }
 
 void check_bodies_on_graded_grid(const Case& c) {
@@ -170,7 +199,8 @@ void check_body_seeding(const Case& c) {
     // Particles of the outer shape, and how many each cut-out removes.
     long kept = 0;
     std::vector<long> removed(b.region.minus.size(), 0);
-    for_each_seed_point(grid, Region{b.region.outer, {}}, ppc, [&](const SeedPoint& s) {
+    const Region uncut{b.region.outer, {}, b.region.sides};  // the body before its cut-outs
+    for_each_seed_point(grid, uncut, ppc, [&](const SeedPoint& s) {
       bool in_hole = false;
       for (std::size_t k = 0; k < b.region.minus.size(); ++k)
         if (contains(b.region.minus[k], s.x, s.y)) ++removed[k], in_hole = true;

@@ -11,7 +11,6 @@
 namespace rupture {
 
 void parse_boundary(Section& top, Case& c, ParseContext& ctx) {
-  auto& body_index = ctx.body_index;
   Section bcs = top.table("boundary", false);
   for (const auto& [k, v] : in_input_order(bcs.raw())) {
     const std::string& name = k;
@@ -40,17 +39,14 @@ void parse_boundary(Section& top, Case& c, ParseContext& ctx) {
            fmt::format("must lie on the {} edge: {} in [{:g}, {:g}] m", edge, coord, lo, hi));
     const std::string comp = b.string("component", "", {"x", "y"});
     bc.component = comp == "x" ? 0 : 1;
-    for (const std::string& body : b.strings("bodies")) {
-      if (!body_index.count(body)) {
-        std::vector<std::string> names;
-        for (const auto& bb : c.bodies) names.push_back(bb.name);
-        fail(b.key("bodies"), "\"" + body + "\"", "must name bodies among " + Section::join(names));
+    for (const std::string& body : b.strings("bodies"))
+      // Conditions act on velocity fields: a body's field (once, if bodies share one), the
+      // fields of all its parts if a line inside it split it.
+      for (const int part : named_bodies(b, "bodies", body, c, ctx)) {
+        const int field = c.bodies[std::size_t(part)].field;
+        if (std::find(bc.fields.begin(), bc.fields.end(), field) == bc.fields.end())
+          bc.fields.push_back(field);
       }
-      // Conditions act on velocity fields: a body's field (once, if bodies share one).
-      const int field = c.bodies[std::size_t(body_index[body])].field;
-      if (std::find(bc.fields.begin(), bc.fields.end(), field) == bc.fields.end())
-        bc.fields.push_back(field);
-    }
     bc.velocity = parse_time_function(b, "velocity", {"boundary", name}, ctx);
     bc.follow_edge = b.boolean("follow_edge", true);
     if (b.has("follow_edge") && !bc.normal())

@@ -94,10 +94,13 @@ void check_between_bodies(Section& f, const std::string& key, const Polyline& li
 }
 
 // The geometry keys: the horizontal form (y, start, end, bonded_to) or a polyline (points,
-// closed, bonded_points) or a circle (center, radius).
-void parse_interface_geometry(Section& f, InterfaceSpec& is, const Case& c, const BodySpec& up,
-                              const BodySpec& lo) {
+// closed, bonded_points) or a circle (center, radius). Between two bodies (up, lo) the line
+// must separate them; inside one (up = lo = nullptr, the `body` form) io/parse_body_split.cpp
+// checks it once the body is known, and the bonded stretches are made there.
+InterfaceLine parse_interface_geometry(Section& f, InterfaceSpec& is, const Case& c,
+                                       const BodySpec* up, const BodySpec* lo) {
   const double tol = 1e-9 * c.grid.cell_size;
+  InterfaceLine info;
   const bool horizontal = f.has("y") || f.has("start") || f.has("end");
   const bool polyline = f.has("points");
   const bool circle = f.has("center") || f.has("radius");
@@ -109,16 +112,29 @@ void parse_interface_geometry(Section& f, InterfaceSpec& is, const Case& c, cons
   if (segments < 1 || segments > 100000000)
     fail(f.key("segments"), double(segments), "required, an integer in [1, 1e8]");
   is.segments = int(segments);
-  if (horizontal) {
+  if (horizontal && !up) {
+    info.key = "y";
     is.y = f.number("y");
-    if (std::fabs(up.min[1] - is.y) > tol || std::fabs(lo.max[1] - is.y) > tol)
+    is.start = f.number("start");
+    is.end = f.number("end");
+    if (!(is.end > is.start))
+      fail(f.key("end"), is.end, fmt::format("must be > start = {:g} m", is.start));
+    if (f.has("closed"))
+      fail(f.key("closed"), show(*f.node("closed")), "only allowed with points = [[x, y], ...]");
+    check_line(f, "y", is.geometry(), c);
+    return info;
+  }
+  if (horizontal) {
+    info.key = "y";
+    is.y = f.number("y");
+    if (std::fabs(up->min[1] - is.y) > tol || std::fabs(lo->max[1] - is.y) > tol)
       fail(f.key("y"), is.y,
            fmt::format(
                "must be the bottom of the upper body ({:g}) and the top of the lower body ({:g})",
-               up.min[1], lo.max[1]));
+               up->min[1], lo->max[1]));
     is.start = f.number("start");
     is.end = f.number("end");
-    const double x0 = std::max(up.min[0], lo.min[0]), x1 = std::min(up.max[0], lo.max[0]);
+    const double x0 = std::max(up->min[0], lo->min[0]), x1 = std::min(up->max[0], lo->max[0]);
     if (!inside(is.start, x0, x1, tol))
       fail(f.key("start"), is.start,
            fmt::format("must lie where both bodies meet: [{:g}, {:g}] m", x0, x1));
@@ -135,7 +151,7 @@ void parse_interface_geometry(Section& f, InterfaceSpec& is, const Case& c, cons
     }
     for (const char* k : {"closed", "bonded_points"})
       if (f.has(k)) fail(f.key(k), show(*f.node(k)), "only allowed with points = [[x, y], ...]");
-    return;
+    return info;
   }
   if (f.has("bonded_to"))
     fail(f.key("bonded_to"), show(*f.node("bonded_to")),
@@ -159,6 +175,9 @@ void parse_interface_geometry(Section& f, InterfaceSpec& is, const Case& c, cons
     // centre, so the upper body is the one inside the circle.
     constexpr double kPi = 3.141592653589793;
     sagitta = radius * (1.0 - std::cos(kPi / double(segments)));
+    info.circle = true;
+    info.center[0] = center[0], info.center[1] = center[1];
+    info.radius = radius;
     for (long k = 0; k < segments; ++k) {
       const double a = 2.0 * kPi * double(k) / double(segments);
       is.line.x.push_back(center[0] + radius * std::cos(a));
@@ -167,18 +186,22 @@ void parse_interface_geometry(Section& f, InterfaceSpec& is, const Case& c, cons
     is.line.closed = true;
   }
   const std::string key = polyline ? "points" : "center";
+  info.key = key;
+  info.slack = sagitta;
   check_line(f, key, is.line, c);
   if (std::size_t(segments) < is.line.num_pieces())
     fail(f.key("segments"), double(segments),
          fmt::format("must be at least the number of pieces of the line ({})",
                      is.line.num_pieces()));
-  check_between_bodies(f, key, is.line, c, up, lo, sagitta);
+  if (!up) return info;
+  check_between_bodies(f, key, is.line, c, *up, *lo, sagitta);
   if (f.has("bonded_points")) {
-    is.bonded_line = read_points(f, "bonded_points", 2);
-    check_line(f, "bonded_points", is.bonded_line, c);
-    check_between_bodies(f, "bonded_points", is.bonded_line, c, up, lo);
+    is.bonded_lines = {read_points(f, "bonded_points", 2)};
+    check_line(f, "bonded_points", is.bonded_lines[0], c);
+    check_between_bodies(f, "bonded_points", is.bonded_lines[0], c, *up, *lo);
     is.bonded = true;
   }
+  return info;
 }
 
 // Keys that belong to one law only: given with another, they are an error (not ignored).
@@ -292,9 +315,22 @@ void parse_interface_law(Section& f, InterfaceSpec& is) {
 // Interfaces may meet at their ends (a kinked crack of two interfaces) but not cross: where two
 // lines cross, a point of one would lie inside the other's faces. Bonded lines count too.
 void check_no_crossing(Section& f, const InterfaceSpec& is, const Case& c) {
-  const Polyline mine[2] = {is.geometry(), is.tie_geometry()};
+  const double tol = 1e-9 * c.grid.cell_size;
+  // An end within round-off of the other line meets it (a stretch tied up to an earlier
+  // interface's line ends on it, computed in floating point).
+  auto meets_at_end = [tol](const Polyline& l, std::size_t i, std::size_t i1, const Polyline& m,
+                            std::size_t j, std::size_t j1) {
+    Polyline piece;
+    piece.x = {m.x[j], m.x[j1]};
+    piece.y = {m.y[j], m.y[j1]};
+    return project(piece, l.x[i], l.y[i]).distance <= tol ||
+           project(piece, l.x[i1], l.y[i1]).distance <= tol;
+  };
+  std::vector<Polyline> mine = is.tie_geometries();
+  mine.push_back(is.geometry());
   for (std::size_t k = 0; k < c.interfaces.size(); ++k) {
-    const Polyline theirs[2] = {c.interfaces[k].geometry(), c.interfaces[k].tie_geometry()};
+    std::vector<Polyline> theirs = c.interfaces[k].tie_geometries();
+    theirs.push_back(c.interfaces[k].geometry());
     for (const Polyline& a : mine)
       for (const Polyline& b : theirs) {
         if (a.num_vertices() < 2 || b.num_vertices() < 2) continue;
@@ -303,6 +339,7 @@ void check_no_crossing(Section& f, const InterfaceSpec& is, const Case& c) {
             const std::size_t i1 = a.piece_end(i), j1 = b.piece_end(j);
             if (!segments_cross(a.x[i], a.y[i], a.x[i1], a.y[i1], b.x[j], b.y[j], b.x[j1], b.y[j1]))
               continue;
+            if (meets_at_end(a, i, i1, b, j, j1) || meets_at_end(b, j, j1, a, i, i1)) continue;
             fail(f.key(is.line.num_vertices() >= 2 ? "points" : "y"),
                  fmt::format("(piece from [{:g}, {:g}] to [{:g}, {:g}])", a.x[i], a.y[i], a.x[i1],
                              a.y[i1]),
@@ -318,39 +355,61 @@ void check_no_crossing(Section& f, const InterfaceSpec& is, const Case& c) {
 }  // namespace
 
 void parse_interfaces(Section& top, Case& c, ParseContext& ctx) {
-  auto& body_index = ctx.body_index;
   Section ifs = top.table("interface", false);
   for (const auto& [k, v] : in_input_order(ifs.raw())) {
     const std::string& name = k;
     Section f = ifs.table(name, true, allowed_keys("interface.*"));
     InterfaceSpec is;
-    std::vector<std::string> names;
-    for (const auto& bb : c.bodies) names.push_back(bb.name);
-    for (const char* which : {"upper_body", "lower_body"}) {
-      const std::string body = f.string(which, "");
-      if (!body_index.count(body))
-        fail(f.key(which), "\"" + body + "\"", "must name a body among " + Section::join(names));
-      (std::string(which) == "upper_body" ? is.upper_body : is.lower_body) = body_index[body];
+    if (f.has("body")) {
+      // A line inside one body: the body is split along it (io/parse_body_split.cpp).
+      for (const char* which : {"upper_body", "lower_body"})
+        if (f.has(which))
+          fail(f.key(which), show(*f.node(which)),
+               fmt::format("give either {} (a line inside one body, which is split along it) or "
+                           "upper_body and lower_body (a line between two bodies), not both",
+                           f.key("body")));
+      for (const char* tie : {"bonded_to", "bonded_points"})
+        if (f.has(tie))
+          fail(f.key(tie), show(*f.node(tie)),
+               fmt::format("not allowed with {}: where the line ends inside the body it is "
+                           "extended straight to the body's edge and tied there automatically "
+                           "(docs/interfaces.md)",
+                           f.key("body")));
+      const InterfaceLine line = parse_interface_geometry(f, is, c, nullptr, nullptr);
+      split_body_along_interface(f, is, c, ctx, name, line);
+    } else {
+      for (const char* which : {"upper_body", "lower_body"}) {
+        if (!f.has(which))
+          fail(f.key(which), "(missing)",
+               fmt::format("required: upper_body and lower_body (a line between two bodies), or "
+                           "{} alone (a line inside one body)",
+                           f.key("body")));
+        (std::string(which) == "upper_body" ? is.upper_body : is.lower_body) =
+            single_body(f, which, c, ctx);
+      }
+      if (is.upper_body == is.lower_body)
+        fail(f.key("lower_body"), "\"" + c.bodies[is.lower_body].name + "\"",
+             "must differ from upper_body");
+      const BodySpec &up = c.bodies[is.upper_body], &lo = c.bodies[is.lower_body];
+      is.upper_field = up.field;
+      is.lower_field = lo.field;
+      // The interface joins two velocity fields: bodies of one field are one continuum.
+      if (up.field == lo.field)
+        fail(f.key("lower_body"), "\"" + lo.name + "\"",
+             fmt::format("bodies.{} and bodies.{} share the velocity field \"{}\" (one continuum): "
+                         "an interface must join bodies of two different fields (give one of "
+                         "them its own bodies.NAME.field)",
+                         up.name, lo.name, c.field_names[std::size_t(up.field)]));
+      parse_interface_geometry(f, is, c, &up, &lo);
     }
-    if (is.upper_body == is.lower_body)
-      fail(f.key("lower_body"), "\"" + c.bodies[is.lower_body].name + "\"",
-           "must differ from upper_body");
-    const BodySpec &up = c.bodies[is.upper_body], &lo = c.bodies[is.lower_body];
-    is.upper_field = up.field;
-    is.lower_field = lo.field;
-    // The interface joins two velocity fields: bodies of one field are one continuum.
-    if (up.field == lo.field)
-      fail(f.key("lower_body"), "\"" + lo.name + "\"",
-           fmt::format("bodies.{} and bodies.{} share the velocity field \"{}\" (one continuum): "
-                       "an interface must join bodies of two different fields (give one of them "
-                       "its own bodies.NAME.field)",
-                       up.name, lo.name, c.field_names[std::size_t(up.field)]));
-    parse_interface_geometry(f, is, c, up, lo);
     parse_interface_law(f, is);
     check_no_crossing(f, is, c);
     c.interfaces.push_back(is);
     c.interface_names.push_back(name);
   }
+  // Split bodies got new fields as they came; number them again in order of first appearance
+  // among the bodies (the parts of a body are listed after it), as fields always are.
+  renumber_fields(c);
 }
 
 }  // namespace rupture

@@ -27,17 +27,14 @@ void check_in_domain(Section& l, const std::string& key, const double p[2], cons
 
 std::vector<int> body_fields(Section& l, const Case& c, ParseContext& ctx) {
   std::vector<int> fields;
-  for (const std::string& body : l.strings("bodies")) {
-    if (!ctx.body_index.count(body)) {
-      std::vector<std::string> names;
-      for (const auto& bb : c.bodies) names.push_back(bb.name);
-      fail(l.key("bodies"), "\"" + body + "\"", "must name bodies among " + Section::join(names));
+  for (const std::string& body : l.strings("bodies"))
+    // Loads act on velocity fields: a body's field (once, if bodies share one), the fields of
+    // all its parts if a line inside it split it, as for [boundary] conditions. (Particles
+    // carry the field number, not the body index.)
+    for (const int part : named_bodies(l, "bodies", body, c, ctx)) {
+      const int field = c.bodies[std::size_t(part)].field;
+      if (std::find(fields.begin(), fields.end(), field) == fields.end()) fields.push_back(field);
     }
-    // Loads act on velocity fields: a body's field (once, if bodies share one), as for
-    // [boundary] conditions. (Particles carry the field number, not the body index.)
-    const int field = c.bodies[std::size_t(ctx.body_index[body])].field;
-    if (std::find(fields.begin(), fields.end(), field) == fields.end()) fields.push_back(field);
-  }
   return fields;
 }
 

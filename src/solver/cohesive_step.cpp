@@ -215,10 +215,10 @@ void add_cohesive_forces(State& s) {
   }
 }
 
-std::vector<std::size_t> bonded_nodes(const Grid& g, const InterfaceSpec& spec) {
-  std::vector<std::size_t> out;
-  const Polyline tie = spec.tie_geometry();
-  if (tie.num_vertices() < 2) return out;
+namespace {
+
+void nodes_near_tie(const Grid& g, const Polyline& tie, std::vector<std::size_t>& out) {
+  if (tie.num_vertices() < 2) return;
   // A grid node gets mass from both bodies when the GIMP support of one body's particles
   // reaches across the line to it: the support of a node is the box of half-widths (h_x, h_y)
   // (its cells' widths), which reaches |n_x| h_x + |n_y| h_y along the line's normal. Every node
@@ -246,6 +246,17 @@ std::vector<std::size_t> bonded_nodes(const Grid& g, const InterfaceSpec& spec) 
       if (p.beyond <= tol && p.distance < reach - tol) out.push_back(g.node_index(i, j));
     }
   }
+}
+
+}  // namespace
+
+std::vector<std::size_t> bonded_nodes(const Grid& g, const InterfaceSpec& spec) {
+  std::vector<std::size_t> out;
+  for (const Polyline& tie : spec.tie_geometries()) nodes_near_tie(g, tie, out);
+  // Several tied stretches (a crack inside a body with both ends inside it) may share a node;
+  // it is tied once (a tie sums both fields: twice would double it).
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
 }
 

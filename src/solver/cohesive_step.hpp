@@ -25,8 +25,9 @@ void advance_interfaces(State& s, const double* vel_x, const double* vel_y);
 // step began at t_before (node crack times are interpolated in [t_before, t] from
 // c.jump_before).
 void evaluate_interface(CohesiveInterface& c, double t, double t_before);
-// Grid nodes tied along the interface's bonded stretch (computed once at setup): those closer
-// to it than the reach of a node's GIMP support along its normal, not beyond its ends.
+// Grid nodes tied along the interface's bonded stretches (computed once at setup): those closer
+// to one of them than the reach of a node's GIMP support along its normal, not beyond its ends;
+// each node once, in increasing order.
 std::vector<std::size_t> bonded_nodes(const Grid& g, const InterfaceSpec& spec);
 
 }  // namespace rupture
