@@ -300,7 +300,6 @@ void fields(A& a, Particles& p) {
   a("exx", p.exx);
   a("eyy", p.eyy);
   a("exy", p.exy);
-  a("strain_work", p.strain_work);
   a("field", p.field);
   a("material", p.material);
   a("id", p.id);
@@ -392,6 +391,7 @@ void fields(A& a, State& s) {
   a("mass_floor", s.mass_floor);
   a("cohesive_seconds", s.cohesive_seconds);
   a("external_work", s.external_work);
+  a("strain_work", s.strain_work);
   a("initial_energy", s.initial_energy);
 }
 

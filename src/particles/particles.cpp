@@ -7,7 +7,7 @@ namespace rupture {
 
 void Particles::resize(std::size_t n) {
   for (auto* v : {&x, &y, &vx, &vy, &mass, &volume0, &volume, &half_x, &half_y, &sxx, &syy, &sxy,
-                  &szz, &exx, &eyy, &exy, &strain_work}) {
+                  &szz, &exx, &eyy, &exy}) {
     v->resize(n, 0.0);
   }
   field.resize(n, 0);
@@ -28,7 +28,7 @@ void permute_one(std::vector<T>& v, const std::vector<std::uint32_t>& order, std
 
 void Particles::permute(const std::vector<std::uint32_t>& order, std::vector<double>& scratch) {
   for (auto* v : {&x, &y, &vx, &vy, &mass, &volume0, &volume, &half_x, &half_y, &sxx, &syy, &sxy,
-                  &szz, &exx, &eyy, &exy, &strain_work}) {
+                  &szz, &exx, &eyy, &exy}) {
     permute_one(*v, order, scratch);
   }
   std::vector<std::uint8_t> tmp8;

@@ -21,9 +21,6 @@ struct Particles {
   std::vector<double> half_x, half_y;  // GIMP half-widths l_p, m (fixed: uGIMP)
   std::vector<double> sxx, syy, sxy, szz;  // Cauchy stress, Pa
   std::vector<double> exx, eyy, exy;       // small strain (tensor components), -
-  // Strain energy stored in the particle, J/m: its elastic energy at t = 0 plus the work of its
-  // stress over every strain increment since, sum V sigma : d eps (solver/energy.hpp).
-  std::vector<double> strain_work;
   std::vector<std::uint8_t> field;         // velocity field (body) id
   std::vector<std::uint8_t> material;      // material id
   std::vector<std::uint32_t> id;           // creation index: identity across re-sorting
@@ -33,7 +30,7 @@ struct Particles {
   void resize(std::size_t n);
   // Bytes held per particle by the arrays above.
   static constexpr std::size_t bytes_per_particle() {
-    return 17 * sizeof(double) + 2 * sizeof(std::uint8_t) + sizeof(std::uint32_t);
+    return 16 * sizeof(double) + 2 * sizeof(std::uint8_t) + sizeof(std::uint32_t);
   }
   // Reorders every array so that the particle now at index k is the one that was at
   // order[k]. `scratch` is reused between calls to avoid allocating in the time loop.

@@ -30,7 +30,7 @@ namespace rupture {
 namespace {
 
 EnergySample sample(const State& s) {
-  EnergySample e{s.time, kinetic_energy(s.particles), strain_energy(s.particles), s.external_work,
+  EnergySample e{s.time, kinetic_energy(s.particles), s.strain_work, s.external_work,
                  s.initial_energy};
   for (const CohesiveInterface& c : s.interfaces) {
     const double stored = c.stored_energy();

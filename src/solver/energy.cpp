@@ -15,7 +15,7 @@ double strain_energy(const Particles& p) {
   const long n = long(p.size());
   double e = 0.0;
 #pragma omp parallel for reduction(+ : e) schedule(static)
-  for (long i = 0; i < n; ++i) e += p.strain_work[std::size_t(i)];
+  for (long i = 0; i < n; ++i) e += elastic_energy(p, std::size_t(i));
   return e;
 }
 

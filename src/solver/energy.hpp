@@ -1,14 +1,17 @@
 // rupture/solver/energy.hpp
 // Energies of the particle system (SPEC E14), J per unit thickness (J/m in 2D).
 //   kinetic = sum 1/2 m_p |v_p|^2
-//   strain  = sum W_p, W_p = Particles::strain_work: the particle's elastic energy at t = 0,
-//             1/2 V0 sigma : eps, plus the work its stress has done since, accumulated by the
-//             stress update as V sigma : d eps with both at the middle of each step.
-// Why accumulated: the internal forces use the current volume V = V0 (1 + tr eps) (SPEC E4),
-// so the energy they store is sum int V sigma : d eps; 1/2 V0 sigma : eps misses the (2/3)|eps|
-// part of it, which drifted the balance by -8 J/m (0.37 %) under the reference impact's 1.2 %
-// compression by 19.2 us (docs/validation.md). For linear elasticity with V = V0 the midpoint
-// sum equals 1/2 V0 sigma : eps exactly (C is symmetric), so the two differ only by that drift.
+//   strain (E14, the balance) = State::strain_work: the elastic energy at t = 0 plus the work
+//             the stresses have done since, accumulated by the stress update (solver/transfer)
+//             as sum_p V sigma : d eps with V and sigma at the middle of each step;
+//   elastic = sum 1/2 V0_p sigma_p : eps_p, the energy of the current state at the initial
+//             volume (the same at t = 0).
+// Why the stored work for the balance: the internal forces use the current volume
+// V = V0 (1 + tr eps) (SPEC E4), so the energy they store is sum int V sigma : d eps; the elastic
+// sum misses the (2/3)|eps| part of it, which drifted the balance by -8 J/m (0.37 %) under the
+// reference impact's 1.2 % compression by 19.2 us (docs/validation.md). For linear elasticity
+// with V = V0 the midpoint sum equals 1/2 V0 sigma : eps exactly (C is symmetric), so the two
+// differ only by that drift.
 #pragma once
 #include <cstddef>
 
@@ -17,7 +20,7 @@
 namespace rupture {
 
 double kinetic_energy(const Particles& p);
-double strain_energy(const Particles& p);  // sum of strain_work
+double strain_energy(const Particles& p);  // the elastic sum, 1/2 V0 sigma : eps
 // 1/2 V0 sigma : eps of particle p (plane strain: eps_zz = 0; plane stress: sigma_zz = 0, so
 // no out-of-plane term either way), J/m.
 inline double elastic_energy(const Particles& P, std::size_t p) {

@@ -23,7 +23,6 @@ void prestress(Particles& P, std::size_t first, std::size_t last, const BodySpec
   for (std::size_t p = first; p < last; ++p) {
     P.sxx[p] = e.sxx, P.syy[p] = e.syy, P.sxy[p] = e.sxy, P.szz[p] = e.szz;
     P.exx[p] = e.exx, P.eyy[p] = e.eyy, P.exy[p] = e.exy;
-    P.strain_work[p] = elastic_energy(P, p);  // stored from the natural (stress-free) state
   }
 }
 
@@ -77,7 +76,8 @@ State make_state(const Case& c) {
   // treated as empty. A higher floor zeroes the velocity of lightly touched nodes whose weight
   // gradient is not small (dS ~ sqrt(S)), which breaks rigid-body motion at the 1e-9 level.
   s.mass_floor = 1e-20 * min_mass;
-  s.initial_energy = kinetic_energy(s.particles) + strain_energy(s.particles);
+  s.strain_work = strain_energy(s.particles);  // the elastic energy at t = 0 (prestress)
+  s.initial_energy = kinetic_energy(s.particles) + s.strain_work;
   // Sorted from the start, so particle indices are stable until the first re-sort.
   build_scatter_plan(s);
   fit_field_windows(s);

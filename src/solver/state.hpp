@@ -107,6 +107,9 @@ struct State {
   double cohesive_seconds = 0.0;  // wall time spent in the cohesive phases so far, s
   double external_work = 0.0;  // work of the prescribed velocities and loads so far, J (per unit thickness)
   double initial_energy = 0.0; // kinetic + strain energy at t = 0, J
+  // E14's strain energy (solver/energy.hpp): the elastic energy at t = 0 plus the work the
+  // stresses have done since, sum V sigma : d eps, J (per unit thickness)
+  double strain_work = 0.0;
 };
 
 // Builds grid, particles (one velocity field per body), stiffnesses, boundary nodes and the

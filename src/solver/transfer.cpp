@@ -321,11 +321,20 @@ void grid_to_particles_impl(State& s, const double* gvx, const double* gvy) {
     safe[std::size_t(f)] = {lo[0], hi[0], lo[1], hi[1]};
   }
   const std::array<int, 4>* safe_cells = safe.data();
+  // The stress work of each strip (E14, solver/energy.hpp), summed in strip order after the
+  // loop, so the total does not depend on the number of threads.
+  thread_local std::vector<double> strip_work;  // the calling thread's: reached by pointer
+  strip_work.assign(std::size_t(plan.num_strips), 0.0);
+  double* const work_of_strip = strip_work.data();
+  // Cell row of a moved particle: on a uniform axis (y - origin) / h > 0, truncated.
+  const bool uniform_y = !ay.graded();
+  const double oy = ay.origin, inv_hy = 1.0 / ay.h;
 #pragma omp parallel for schedule(dynamic, 1) reduction(min : bad) reduction(|| : drifted, left_window)
   for (int strip = 0; strip < plan.num_strips; ++strip) {
     // Drift tolerance of the scatter plan: one cell column either side of the strip.
     const double col_lo = double(strip * width - 1), col_hi = double(strip * width + width);
     const std::size_t end = plan.strip_begin[std::size_t(strip) + 1];
+    double work = 0.0;
     for_each_in_batches(
         s, plan.strip_begin[std::size_t(strip)], end,
         [&](std::size_t p, int k, const StencilBatch& B) {
@@ -366,8 +375,8 @@ void grid_to_particles_impl(State& s, const double* gvx, const double* gvy) {
             const double dsxx = C.c11 * dexx + C.c12 * deyy, dsyy = C.c12 * dexx + C.c11 * deyy,
                          dsxy = 2.0 * C.mu * dexy;
             // E14's strain energy: the work of this increment (solver/energy.hpp).
-            P.strain_work[p] += stress_work(P.volume0[p], P.exx[p] + P.eyy[p], P.sxx[p], P.syy[p],
-                                            P.sxy[p], dexx, deyy, dexy, dsxx, dsyy, dsxy);
+            work += stress_work(P.volume0[p], P.exx[p] + P.eyy[p], P.sxx[p], P.syy[p], P.sxy[p],
+                                dexx, deyy, dexy, dsxx, dsyy, dsxy);
             P.exx[p] += dexx;
             P.eyy[p] += deyy;
             P.exy[p] += dexy;
@@ -381,7 +390,8 @@ void grid_to_particles_impl(State& s, const double* gvx, const double* gvy) {
             P.x[p] += dt * mvx;
             P.y[p] += dt * mvy;
             if (std::isfinite(P.x[p] + P.y[p])) {  // a non-finite particle is diagnosed below
-              const int col = ax.cell_of(P.x[p]), row = ay.cell_of(P.y[p]);
+              const int col = ax.cell_of(P.x[p]);
+              const int row = uniform_y ? int((P.y[p] - oy) * inv_hy) : ay.cell_of(P.y[p]);
               const std::array<int, 4>& w = safe_cells[P.field[p]];
               if (double(col) < col_lo || double(col) > col_hi) drifted = true;
               if (col < w[0] || col > w[1] || row < w[2] || row > w[3]) left_window = true;
@@ -391,7 +401,10 @@ void grid_to_particles_impl(State& s, const double* gvx, const double* gvy) {
           const bool inside = P.x[p] > xlo && P.x[p] < xhi && P.y[p] > ylo && P.y[p] < yhi;
           if (!finite || !inside) bad = std::min(bad, p);
         });
+    work_of_strip[strip] = work;
   }
+  if constexpr (do_stress)
+    for (const double w : strip_work) s.strain_work += w;
   if (drifted) s.plan.valid = false;
   // Measured again before the next scatter; not a re-sort, which would change the summation
   // order: the windows are storage and must not change a result.
