@@ -144,9 +144,10 @@ def plot_fringes(d, out, max_panels=4):
 
 
 def plot_profiles(d, out, max_curves=4):
-    files = sorted(glob.glob(os.path.join(d, "interface", "*.csv")))
+    # The first interface's profiles (interface_NNNNNN.csv; the others are NAME_NNNNNN.csv).
+    files = sorted(glob.glob(os.path.join(d, "interface", "interface_*.csv")))
     if not files:
-        print("note: no DIR/interface/*.csv; cohesive_profiles.png skipped")
+        print("note: no DIR/interface/interface_*.csv; cohesive_profiles.png skipped")
         return
     pick = [files[int(round(i))] for i in np.linspace(len(files) // 2, len(files) - 1,
                                                       min(max_curves, len(files)))]

@@ -114,6 +114,7 @@ struct Case {
   std::vector<std::string> interface_names;
   OutputSpec output;
   std::string input_toml;  // the merged input (file + --set) as TOML, echoed into run.json
+  bool read_table_files = false;  // some time function came from a table_file (inline above)
   std::vector<std::string> warnings;  // legal but suspicious input (io/case_checks), for stderr
 };
 

@@ -186,6 +186,7 @@ Case build_case(const toml::table& root, const std::string& case_dir) {
   check_case_consistency(c);
 
   c.input_toml = input_echo(root, ctx);
+  c.read_table_files = !ctx.file_tables.empty();
   return c;
 }
 

@@ -142,11 +142,22 @@ RunResult run_case(const Case& c, const RunOptions& options) {
   auto write_interfaces = [&]() {
     if (s.interfaces.empty()) return;
     fs::create_directories(dir + "/interface");
-    for (std::size_t k = 0; k < s.interfaces.size(); ++k)
-      write_interface_csv(fmt::format("{}/interface/{}_{:06d}.csv", dir,
-                                      k == 0 ? std::string("interface") : c.interface_names[k],
-                                      interface_files),
-                          s.interfaces[k], s.time);
+    for (std::size_t k = 0; k < s.interfaces.size(); ++k) {
+      const std::string named =
+          fmt::format("{}/interface/{}_{:06d}.csv", dir, c.interface_names[k], interface_files);
+      if (k > 0 || c.interface_names[0] == "interface") {
+        write_interface_csv(named, s.interfaces[k], s.time);
+        continue;
+      }
+      // The first interface keeps its original name, interface_NNNNNN.csv; the file named after
+      // it is a hard link to the same data (a copy where links are not possible).
+      const std::string first = fmt::format("{}/interface/interface_{:06d}.csv", dir, interface_files);
+      write_interface_csv(first, s.interfaces[0], s.time);
+      std::error_code ec;
+      fs::remove(named, ec);
+      fs::create_hard_link(first, named, ec);
+      if (ec) fs::copy_file(first, named, fs::copy_options::overwrite_existing);
+    }
     ++interface_files;
   };
   auto write_cracks = [&]() {

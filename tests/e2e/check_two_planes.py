@@ -6,7 +6,8 @@ Runs CASE as given and with its two [interface] tables swapped in the file, then
 - run.json "cracks" holds one summary per interface, named, in input order; "crack" is the first;
 - crack_tip_NAME.csv, crack_stretches_NAME.csv and rupture_time_NAME.csv exist for each, on the
   interface's own line (y), and crack_tip.csv is the first interface's;
-- interface profiles: interface/interface_*.csv for the first, interface/NAME_*.csv for the rest;
+- interface profiles: interface/NAME_*.csv for every interface, and interface/interface_*.csv
+  for the first too (the same bytes);
 - the impact below the lower plane cracks it (initiation near the reference 10.6 us at 1 mm)
   while the upper plane, 10 mm above, stays intact: the two summaries differ;
 - swapping the tables changes the order of the reports, not their content.
@@ -82,9 +83,15 @@ for n in names:
     check(all(abs(float(r["y"]) - y_of[n]) < 1e-12 for r in rt), f"rupture_time_{n}.csv on y = {y_of[n]}, "
           f"{cracked} of {len(rt)} nodes cracked")
     check((cracked > 0) == by_name[n]["initiated"], f"{n}: cracked nodes agree with the summary")
-    prefix = "interface" if n == names[0] else n
-    profiles = sorted(f for f in os.listdir(os.path.join(d1, "interface")) if re.fullmatch(prefix + r"_\d+\.csv", f))
-    ys = {float(r["y"]) for r in rows(os.path.join(d1, "interface", profiles[-1]))} if profiles else set()
-    check(len(profiles) > 0 and ys == {y_of[n]}, f"interface/{prefix}_*.csv: {len(profiles)} profiles on y = {ys}")
+    for prefix in (["interface", n] if n == names[0] else [n]):
+        profiles = sorted(f for f in os.listdir(os.path.join(d1, "interface")) if re.fullmatch(prefix + r"_\d+\.csv", f))
+        ys = {float(r["y"]) for r in rows(os.path.join(d1, "interface", profiles[-1]))} if profiles else set()
+        check(len(profiles) > 0 and ys == {y_of[n]}, f"interface/{prefix}_*.csv: {len(profiles)} profiles on y = {ys}")
+    if n == names[0]:
+        same = all(open(os.path.join(d1, "interface", f"interface_{k}"), "rb").read() ==
+                   open(os.path.join(d1, "interface", f"{n}_{k}"), "rb").read()
+                   for k in (f.split("_")[-1] for f in os.listdir(os.path.join(d1, "interface"))
+                             if f.startswith("interface_")))
+        check(same, f"interface/interface_*.csv and interface/{n}_*.csv hold the same profiles")
 check(tip[names[0]][-1]["tip_s"] != tip[names[1]][-1]["tip_s"], "the two tips differ at the end")
 sys.exit(0 if ok else 1)
