@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "cohesive/crack_tip.hpp"
 #include "solver/cohesive_step.hpp"
@@ -124,7 +126,9 @@ TEST(CrackTip, reaching_the_end_of_the_cohesive_line_is_recorded) {
   EXPECT_NEAR(tracker.end_reached_time(), 4.88e-6, 1e-12);
   const CrackSummary arrested = tracker.summarize(c, kHomalite, 2e-6);
   EXPECT_NEAR(arrested.end_reached_time, 4.88e-6, 1e-12);
-  EXPECT_LT(arrested.sustained_speed, 0.01 * v) << "a window after the arrival sees no motion";
+  EXPECT_LT(arrested.last_window_speed, 0.01 * v) << "a window after the arrival sees no motion";
+  EXPECT_TRUE(arrested.arrested);
+  EXPECT_NEAR(arrested.arrest_s, 0.01, 1e-12) << "stopped at the end of the line";
 
   // A tip that stops short of the tolerance is never recorded; the same tracker records the
   // sample where it gets within it.
@@ -230,4 +234,89 @@ TEST(CrackTip, a_crack_on_a_closed_line_runs_both_ways_through_node_zero) {
   EXPECT_NEAR(sum.back_speed, v, 0.05 * v);
   EXPECT_LT(sum.end_reached_time, 0.0) << "a closed line has no end";
   EXPECT_LT(sum.daughter_time, 0.0);
+}
+
+namespace {
+
+CohesiveInterface summary_line;  // the line of the last track(): its crack times
+
+// A line of 4000 segments over 40 mm (10 um nodes) whose nodes crack at the times of a tip
+// history s(t) (piecewise linear, given as (t, s) corners; the tip stays at the last corner's s
+// after it), sampled every 0.02 us to `end` as a run does. 10 um nodes and 0.02 us samples
+// keep the E11 staircase below 1 % at 1000-2000 m/s, well inside the steady band.
+CrackTracker track(const std::vector<std::pair<double, double>>& corners, double end) {
+  InterfaceSpec spec;
+  spec.start = 0.0;
+  spec.end = 0.04;
+  spec.segments = 4000;
+  XuNeedleman law;
+  law.sigma_max = law.tau_max = 24e6;
+  law.delta_n = 0.4e-6;
+  law.delta_t = 1e-6;
+  spec.law = law;
+  CohesiveInterface c = make_interface(spec);
+  for (std::size_t k = 0; k < c.num_nodes(); ++k) {
+    const double s = c.s0[k];
+    for (std::size_t i = 1; i < corners.size(); ++i) {
+      const auto [t0, s0] = corners[i - 1];
+      const auto [t1, s1] = corners[i];
+      if (s1 > s0 && s >= s0 && s <= s1) {
+        c.node_crack_time[k] = t0 + (t1 - t0) * (s - s0) / (s1 - s0);
+        break;
+      }
+    }
+  }
+  CrackTracker tracker(c);
+  for (int n = 0; n * 0.02e-6 <= end + 1e-15; ++n) tracker.sample(c, n * 0.02e-6);
+  summary_line = c;  // keep the crack times for summarize()
+  return tracker;
+}
+
+}  // namespace
+
+// The summary describes the running crack (issue "Parameter studies"): one that ran at
+// 2000 m/s for 9 us and then stood still for 5 us is reported as arrested, where and when, at
+// its running speed and regime; the last-4-us slope, ~0, is kept on its own.
+TEST(CrackSummary, an_arrested_crack_is_reported_at_its_running_speed) {
+  const CrackTracker t = track({{0.0, 0.0}, {9e-6, 0.018}}, 14e-6);
+  const CrackSummary s = t.summarize(summary_line, kHomalite, 4e-6);
+  EXPECT_TRUE(s.arrested);
+  EXPECT_NEAR(s.arrest_time, 9e-6, 0.02e-6);
+  EXPECT_NEAR(s.arrest_s, 0.018, 1e-5);
+  EXPECT_NEAR(s.sustained_speed, 2000.0, 0.005 * 2000.0);
+  EXPECT_EQ(s.regime, "intersonic");
+  EXPECT_NEAR(s.last_window_speed, 0.0, 1e-9);
+  EXPECT_GT(s.steady_end, 8e-6);  // the E11 window reaches the stop 0.3 us before it
+  EXPECT_LE(s.steady_end, 9e-6);
+  EXPECT_LT(s.steady_begin, 1e-6);
+}
+
+// A crack at 1100 m/s (sub-Rayleigh) for 10 us that jumps to 2200 m/s: reported at the later
+// speed once it has run there for kSteadyMin; a jump too short to be steady (0.6 us before the
+// run ends) leaves it sub-Rayleigh.
+TEST(CrackSummary, a_late_jump_counts_once_it_is_steady) {
+  const double s_jump = 1100.0 * 10e-6;
+  const CrackTracker late = track({{0.0, 0.0}, {10e-6, s_jump}, {13e-6, s_jump + 2200.0 * 3e-6}}, 13e-6);
+  const CrackSummary a = late.summarize(summary_line, kHomalite, 4e-6);
+  EXPECT_NEAR(a.sustained_speed, 2200.0, 0.005 * 2200.0);
+  EXPECT_EQ(a.regime, "intersonic");
+  EXPECT_GT(a.steady_begin, 10e-6);
+  EXPECT_FALSE(a.arrested);
+  const CrackTracker brief = track({{0.0, 0.0}, {10e-6, s_jump}, {10.6e-6, s_jump + 2200.0 * 0.6e-6}}, 10.6e-6);
+  const CrackSummary b = brief.summarize(summary_line, kHomalite, 4e-6);
+  EXPECT_NEAR(b.sustained_speed, 1100.0, 0.005 * 1100.0);
+  EXPECT_EQ(b.regime, "sub-Rayleigh");
+  EXPECT_LT(b.steady_end, 10e-6);
+}
+
+// No node cracks: nothing to describe.
+TEST(CrackSummary, a_crack_that_never_starts_is_none) {
+  const CrackTracker t = track({}, 10e-6);
+  const CrackSummary s = t.summarize(summary_line, kHomalite, 4e-6);
+  EXPECT_FALSE(s.initiated);
+  EXPECT_FALSE(s.arrested);
+  EXPECT_EQ(s.sustained_speed, 0.0);
+  EXPECT_EQ(s.last_window_speed, 0.0);
+  EXPECT_LT(s.steady_begin, 0.0);
+  EXPECT_EQ(s.regime, "none");
 }

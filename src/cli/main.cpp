@@ -6,6 +6,9 @@
 //   rupture run   CASE.toml -o DIR [--set key=value ...] [--quiet] [--checkpoint-interval T]
 //                 [--overwrite]
 //   rupture resume DIR [--quiet] [--checkpoint-interval T]   continue from DIR's last checkpoint
+//   rupture sweep CASE.toml -o DIR --vary KEY=V1,V2,... [--vary ...] [--set ...] [-j K]
+//                 [--threads N] [--checkpoint-interval T] [--quiet]   parameter study
+//                 (run/sweep.hpp): DIR/<run>/ and DIR/summary.csv; resumable
 //   rupture plot  DIR [--compare DIR2 ...] [--labels A B ...]   figures into DIR/figures/
 //                 (python/rupture_plot.py with Debian's /usr/bin/python3: numpy, matplotlib,
 //                 h5py; RUPTURE_PYTHON overrides the interpreter)
@@ -30,6 +33,7 @@
 #include "io/checkpoint.hpp"
 #include "io/input_schema.hpp"
 #include "run/driver.hpp"
+#include "run/sweep.hpp"
 #include "solver/summary.hpp"
 
 using namespace rupture;
@@ -230,6 +234,23 @@ int main(int argc, char** argv) {
       ->check(CLI::NonNegativeNumber);
   resume->add_option("--stop-after-steps", stop_after_steps)->group("");
 
+  SweepOptions sweep_opt;
+  std::vector<std::string> vary;
+  auto* sweep = app.add_subcommand("sweep", "run a case for every combination of --vary values");
+  sweep->add_option("case", sweep_opt.case_path, "case file (TOML)")->required()->check(CLI::ExistingFile);
+  sweep->add_option("-o,--output", sweep_opt.dir, "sweep directory")->required();
+  sweep->add_option("--vary", vary, "KEY=V1,V2,...: values of an input key (repeat for more keys)")
+      ->required();
+  sweep->add_option("--set", sweep_opt.sets, "override an input key in every run: dotted.key=value");
+  sweep->add_option("-j,--jobs", sweep_opt.jobs, "runs at a time (default 1)")->check(CLI::PositiveNumber);
+  sweep->add_option("--threads", sweep_opt.threads,
+                    "threads in all, split between the runs (default: the machine's)")
+      ->check(CLI::PositiveNumber);
+  sweep->add_option("--checkpoint-interval", sweep_opt.checkpoint_interval,
+                    "checkpoint every T seconds of simulated time in each run")
+      ->check(CLI::NonNegativeNumber);
+  sweep->add_flag("-q,--quiet", sweep_opt.quiet, "no line per run");
+
   std::string plot_dir;
   std::vector<std::string> compare, labels;
   auto* plot = app.add_subcommand("plot", "write the figures of a finished run into DIR/figures/");
@@ -247,6 +268,21 @@ int main(int argc, char** argv) {
   if (check->parsed() && check_case->count() == 0)
     return app.exit(CLI::RequiredError(check_case->get_name()));
   if (plot->parsed()) return run_plot(argv[0], plot_dir, compare, labels);
+  if (sweep->parsed()) {
+    try {
+      for (const std::string& v : vary) sweep_opt.axes.push_back(parse_vary(v));
+      std::error_code ec;
+      const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+      sweep_opt.exe = ec ? std::string(argv[0]) : self.string();
+      return run_sweep(sweep_opt);
+    } catch (const InputError& e) {
+      fmt::print(stderr, "error: {}\n", e.what());
+      return 1;
+    } catch (const std::exception& e) {
+      fmt::print(stderr, "error: {}\n", e.what());
+      return 3;
+    }
+  }
 
   try {
     auto warn = [](const Case& c) {
@@ -294,6 +330,12 @@ int main(int argc, char** argv) {
       const CrackSummary& k = r.cracks.front();
       fmt::print("crack.initiation_time={:.6e}\n", k.initiation_time);
       fmt::print("crack.sustained_speed={:.1f}\n", k.sustained_speed);
+      {  // against the lower body's material (run.json has both sides)
+        const WaveSpeeds w = wave_speeds(
+            c.materials[std::size_t(c.bodies[std::size_t(c.interfaces[0].lower_body)].material)], c.plane);
+        fmt::print("crack.sustained_speed_over_cR={:.4f}\n", k.sustained_speed / w.rayleigh);
+        fmt::print("crack.sustained_speed_over_cS={:.4f}\n", k.sustained_speed / w.shear);
+      }
       fmt::print("crack.peak_speed={:.1f}\n", k.peak_speed);
       fmt::print("crack.intersonic_time={:.6e}\n", k.intersonic_time);
       fmt::print("crack.daughter_crack_time={:.6e}\n", k.daughter_time);
@@ -302,6 +344,12 @@ int main(int argc, char** argv) {
       fmt::print("crack.final_traction_zone_length={:.6e}\n", k.final_traction_zone);
       fmt::print("crack.end_reached_time={:.6e}\n", k.end_reached_time);
       fmt::print("crack.regime={}\n", k.regime);
+      fmt::print("crack.steady_begin={:.6e}\n", k.steady_begin);
+      fmt::print("crack.steady_end={:.6e}\n", k.steady_end);
+      fmt::print("crack.last_window_speed={:.1f}\n", k.last_window_speed);
+      fmt::print("crack.arrested={}\n", k.arrested);
+      fmt::print("crack.arrest_time={:.6e}\n", k.arrest_time);
+      fmt::print("crack.arrest_s={:.6e}\n", k.arrest_s);
       // Every interface by name, in input order (the first also under crack.* above).
       for (std::size_t i = 0; i < r.cracks.size(); ++i) {
         const CrackSummary& q = r.cracks[i];
@@ -312,6 +360,8 @@ int main(int argc, char** argv) {
         fmt::print("crack.{}.back_speed={:.1f}\n", n, q.back_speed);
         fmt::print("crack.{}.final_tip_s={:.6e}\n", n, q.final_tip_s);
         fmt::print("crack.{}.regime={}\n", n, q.regime);
+        fmt::print("crack.{}.last_window_speed={:.1f}\n", n, q.last_window_speed);
+        fmt::print("crack.{}.arrested={}\n", n, q.arrested);
       }
     }
     fmt::print("output={}\n", out_dir);

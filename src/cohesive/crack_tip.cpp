@@ -217,18 +217,59 @@ CrackSummary CrackTracker::summarize(const CohesiveInterface& c, const WaveSpeed
       r.daughter_time = s.time;
       break;
     }
-  // Sustained speed: least-squares slope through the tip positions of the last `window`.
+  // The last window's slope through the tip positions (and the back tip's).
   const double t_end = samples_.back().time;
   std::vector<double> t, x, b;
   for (const CrackSample& s : samples_)
     if (s.time >= t_end - window - 1e-15)
       t.push_back(s.time), x.push_back(s.tip), b.push_back(s.back);
-  r.sustained_speed = t.size() >= 2 ? least_squares_slope(t.data(), x.data(), t.size()) : 0.0;
-  if (!std::isfinite(r.sustained_speed)) r.sustained_speed = 0.0;
+  r.last_window_speed = t.size() >= 2 ? least_squares_slope(t.data(), x.data(), t.size()) : 0.0;
+  if (!std::isfinite(r.last_window_speed)) r.last_window_speed = 0.0;
   r.back_speed = t.size() >= 2 ? 0.0 - least_squares_slope(t.data(), b.data(), t.size()) : 0.0;
   if (!std::isfinite(r.back_speed)) r.back_speed = 0.0;
+  // Arrest: the tip has stood still since arrest_time, for kArrestTime or more.
+  if (r.initiated) {
+    std::size_t k = samples_.size() - 1;
+    while (k > 0 && samples_[k - 1].tip == samples_.back().tip) --k;
+    if (samples_[k].time > r.initiation_time && t_end - samples_[k].time >= kArrestTime - 1e-15) {
+      r.arrested = true;
+      r.arrest_time = samples_[k].time;
+      r.arrest_s = samples_.back().tip;
+    }
+  }
+  // The steady running phase (CrackSummary::sustained_speed).
+  r.sustained_speed = r.last_window_speed;
+  std::size_t first = 0, last = 0;
+  if (r.initiated && steady_phase(v, waves.rayleigh * kMovingFraction, first, last)) {
+    t.clear(), x.clear();
+    for (std::size_t k = first; k <= last; ++k) t.push_back(samples_[k].time), x.push_back(samples_[k].tip);
+    r.sustained_speed = least_squares_slope(t.data(), x.data(), t.size());
+    r.steady_begin = samples_[first].time;
+    r.steady_end = samples_[last].time;
+  }
   r.regime = r.initiated ? crack_regime(r.sustained_speed, waves) : "none";
   return r;
+}
+
+bool CrackTracker::steady_phase(const std::vector<double>& v, double moving, std::size_t& first,
+                                std::size_t& last) const {
+  // For each end sample, latest first, the earliest start whose speeds all stay in the band;
+  // the first end whose stretch lasts kSteadyMin wins. O(samples x stretch): a few thousand.
+  for (std::size_t j = v.size(); j-- > 0;) {
+    if (!(v[j] > moving)) continue;
+    double lo = v[j], hi = v[j];
+    std::size_t i = j;
+    while (i > 0 && v[i - 1] > moving) {
+      const double l = std::min(lo, v[i - 1]), h = std::max(hi, v[i - 1]);
+      if (h - l > kSteadyBand * (h + l)) break;
+      lo = l, hi = h, --i;
+    }
+    if (samples_[j].time - samples_[i].time >= kSteadyMin - 1e-15) {
+      first = i, last = j;
+      return true;
+    }
+  }
+  return false;
 }
 
 void CrackTracker::write(const std::string& dir, const std::string& suffix, double c_r,

@@ -13,11 +13,13 @@
 //    a node's crack time is interpolated inside the step where its jump crossed the criterion,
 //    and the tip at time T is the farthest node cracked by T (so the E11 window is exactly 31
 //    intervals);
-//  - summary: initiation time, sustained speed (least-squares slope over the last 4 us),
-//    peak speed, first time above c_S, first daughter crack, regime (sub-Rayleigh,
-//    Rayleigh-to-shear, intersonic, supersonic: SPEC §6), and the time the tip
-//    reached the end of the cohesive line (beyond it the halves are bonded and the crack stops:
-//    a sustained speed measured across that time measures the arrest).
+//  - summary: initiation time; the sustained speed of the steady running phase (see
+//    CrackSummary::sustained_speed) and the regime from it (sub-Rayleigh, Rayleigh-to-shear,
+//    intersonic, supersonic: SPEC §6); the least-squares slope over the last 4 us on its own
+//    (last_window_speed); arrest (a tip that has not moved for the last microsecond or more of
+//    the run) with its time and position; peak speed, first time above c_S, first daughter
+//    crack, and the time the tip reached the end of the cohesive line (beyond it the halves are
+//    bonded and the crack stops).
 // Units: s, m, m/s.
 #pragma once
 #include <string>
@@ -42,7 +44,17 @@ struct CrackSample {
 struct CrackSummary {
   bool initiated = false;
   double initiation_time = -1.0;     // s (first node to crack; -1 if none)
-  double sustained_speed = 0.0;      // m/s, slope over the last `window` seconds
+  // m/s: the least-squares slope of the tip positions over the steady running phase, the
+  // latest stretch of at least kSteadyMin in which every E11 speed is positive and within
+  // +-kSteadyBand of the stretch's midrange (a crack that runs, then arrests, is reported at
+  // its running speed; one that jumps to a faster regime late, at the later speed if it ran
+  // there long enough). No such stretch: the last-window slope (steady_begin = -1).
+  double sustained_speed = 0.0;
+  double steady_begin = -1.0, steady_end = -1.0;  // the steady phase's first and last samples, s
+  double last_window_speed = 0.0;    // m/s, slope over the last `window` seconds of the run
+  bool arrested = false;             // the tip has not moved for kArrestTime or more at the end
+  double arrest_time = -1.0;         // when the tip got to where it stopped, s (-1: not arrested)
+  double arrest_s = -1.0;            // where it stopped (arc length), m (-1: not arrested)
   double peak_speed = 0.0;           // m/s, max of the E11 speeds
   double intersonic_time = -1.0;     // first time the E11 speed exceeds c_S (-1: never)
   double daughter_time = -1.0;       // first sample with a separated stretch ahead of the main one
@@ -64,6 +76,14 @@ struct CrackSummary {
 class CrackTracker {
  public:
   static constexpr int kWindow = 31;  // E11
+  // The steady running phase (CrackSummary::sustained_speed): E11 speeds within +-5 % of their
+  // midrange, for at least 1 us (longer than the E11 window, 31 samples of 0.02 us by default,
+  // so the phase is more than one speed estimate), each above 5 % of c_R (a moving tip).
+  static constexpr double kSteadyBand = 0.05;
+  static constexpr double kSteadyMin = 1e-6;     // s
+  static constexpr double kMovingFraction = 0.05;  // x c_R
+  // Arrest: the tip has not moved over at least this much time before the end of the run.
+  static constexpr double kArrestTime = 1e-6;  // s
   // Two cohesive-zone lengths, both measured from the tip over the contiguous intact nodes
   // ahead of it: `cohesive_zone` ends at the last node past the peak-shear opening
   // (softening: the process zone proper); `traction_zone` goes on past it while the traction
@@ -97,6 +117,10 @@ class CrackTracker {
   std::vector<double> x0_, y0_, s0_;  // the interface's nodes (from the case, not stored)
   double length_ = 0.0;               // a closed line's length (0: open), m
   void sample_closed(const CohesiveInterface& c, double t, CrackSample& s);
+  // The steady running phase in the E11 speeds v (NaN compares false: excluded): samples
+  // [first, last]; false if none lasts kSteadyMin.
+  bool steady_phase(const std::vector<double>& v, double moving, std::size_t& first,
+                    std::size_t& last) const;
   double end_tolerance_ = 0.0;
   double end_reached_time_ = -1.0;
 };

@@ -81,6 +81,12 @@ std::string run_json(const Case& c, const CaseSummary& s, const RunRecord& r) {
                      {"final_tip_s", cs.final_tip_s},
                      {"initiation_s", cs.initiation_s},
                      {"back_speed", finite(cs.back_speed)},
+                     {"steady_begin", cs.steady_begin},
+                     {"steady_end", cs.steady_end},
+                     {"last_window_speed", finite(cs.last_window_speed)},
+                     {"arrested", cs.arrested},
+                     {"arrest_time", cs.arrest_time},
+                     {"arrest_s", cs.arrest_s},
                      {"upper_body", c.bodies[std::size_t(c.interfaces[k].upper_body)].name},
                      {"lower_body", c.bodies[std::size_t(c.interfaces[k].lower_body)].name},
                      {"regime", cs.regime}};

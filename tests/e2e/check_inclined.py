@@ -5,7 +5,10 @@ against tests/inputs/inclined_weak_plane_unrotated.toml, the same traction impac
 Usage: check_inclined.py ROTATED_DIR UNROTATED_DIR [--same]
 --same: a rotation by 90 degrees, which the grid maps onto itself: the same numbers to round-off.
 Targets: initiation within 0.1 us, sustained speed within 2 %, energy balance error (run.json
-energy_balance_error) within 1 % in both runs. The crack position is compared along the line
+energy_balance_error) within 1 % in both runs. The speeds compared are the slopes over the same
+window, the last 4 us of both runs (crack.last_window_speed): each run's steady phase
+(crack.sustained_speed) is found in its own E11 history, and two runs' phases need not
+coincide. The crack position is compared along the line
 (tip_s of crack_tip.csv) at the common sample times.
 """
 import csv
@@ -30,9 +33,10 @@ check(a["initiated"] and b["initiated"], "both cracks initiate")
 d_init = abs(a["initiation_time"] - b["initiation_time"])
 check(d_init <= (1e-12 if same else 0.1e-6), f"initiation {a['initiation_time'] * 1e6:.3f} us rotated vs {b['initiation_time'] * 1e6:.3f} "
       f"us (difference {d_init * 1e6:.3g} us, limit {1e-6 if same else 0.1} us)")
-d_speed = abs(a["sustained_speed"] - b["sustained_speed"]) / b["sustained_speed"]
-check(d_speed <= (1e-9 if same else 0.02), f"sustained speed {a['sustained_speed']:.1f} vs {b['sustained_speed']:.1f} m/s "
-      f"(difference {100 * d_speed:.3g} %, limit {1e-7 if same else 2} %)")
+d_speed = abs(a["last_window_speed"] - b["last_window_speed"]) / b["last_window_speed"]
+check(d_speed <= (1e-9 if same else 0.02), f"speed over the last 4 us {a['last_window_speed']:.1f} vs "
+      f"{b['last_window_speed']:.1f} m/s (difference {100 * d_speed:.3g} %, limit {1e-7 if same else 2} %); "
+      f"steady phases {a['sustained_speed']:.1f} vs {b['sustained_speed']:.1f} m/s")
 if same:
     d_energy = abs(runs[0]["energy_balance_error"] - runs[1]["energy_balance_error"])
     check(d_energy <= 1e-9, f"energy balance error {runs[0]['energy_balance_error']:.6e} vs "
