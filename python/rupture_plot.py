@@ -11,6 +11,13 @@ Reads what `rupture run` wrote in DIR and writes PNGs to DIR/figures/:
                         interface at several output times (the paper's Fig. 12)
 With --compare DIR2 [DIR3 ...], crack_tip.png overlays the tip histories of every run (grid
 or parameter studies), labelled by --labels or the directory names.
+
+On a sweep directory (`rupture sweep`: DIR/summary.csv, one run per subdirectory):
+  sweep_map.png         sustained speed (steady running phase) against the first varied key,
+                        one line per value of the second, with c_R, c_S, sqrt(2) c_S and c_D
+                        and the regime bands marked; arrested runs hollow, failed runs absent
+  sweep_histories.png   the E11 speed histories of every run, one panel per value of the
+                        second key, coloured by the first
 Every figure is written to a temporary name and renamed, so none is ever half-written.
 """
 import argparse
@@ -221,12 +228,98 @@ def plot_interfaces(d, fig_dir):
             save(fig, os.path.join(fig_dir, f"rupture_time_{name}.png"))
 
 
+def sweep_table(d):
+    """The rows of DIR/summary.csv and the varied keys (the columns between run and status)."""
+    with open(os.path.join(d, "summary.csv"), newline="") as f:
+        reader = csv.DictReader(f)
+        rows = list(reader)
+        cols = reader.fieldnames
+    keys = cols[1:cols.index("status")]
+    return rows, keys
+
+
+def as_number(text):
+    try:
+        return float(text)
+    except ValueError:
+        return math.nan
+
+
+def plot_sweep(d, fig_dir):
+    rows, keys = sweep_table(d)
+    done = [r for r in rows if r["status"] == "completed"]
+    if not done:
+        print("note: no completed run in the sweep; no figures")
+        return
+    run = json.load(open(os.path.join(d, done[0]["run"], "run.json")))
+    c_d, c_s, c_r = wave_speeds(run)
+    first = keys[0]
+    second = keys[1] if len(keys) > 1 else None
+    groups = {}
+    for r in done:
+        groups.setdefault(r[second] if second else "", []).append(r)
+    # The map (the paper's Fig. 13 look).
+    fig, ax = plt.subplots(figsize=(8, 5.5))
+    xs = [as_number(r[first]) for r in done]
+    for label, members in groups.items():
+        members.sort(key=lambda r: as_number(r[first]))
+        x = [as_number(r[first]) for r in members]
+        v = [as_number(r["sustained_speed_m_per_s"]) for r in members]
+        line, = ax.plot(x, v, "-", label=f"{second} = {label}" if second else None)
+        for xi, vi, r in zip(x, v, members):
+            hollow = r["arrested"] == "true"
+            ax.plot(xi, vi, "o", color=line.get_color(), mfc="none" if hollow else line.get_color())
+    lo, hi = min(xs), max(xs)
+    bands = [(0, c_r, "sub-Rayleigh", "#e8f0ff"), (c_r, c_s, "Rayleigh-to-shear", "#fff0e0"),
+             (c_s, c_d, "intersonic", "#e8ffe8"), (c_d, 1.15 * c_d, "supersonic", "#ffe8e8")]
+    for a, b, name, colour in bands:
+        ax.axhspan(a, b, color=colour, zorder=0)
+        ax.text(hi, 0.5 * (a + b), name, ha="right", va="center", fontsize=8, color="0.4")
+    for value, name in ((c_r, "$c_R$"), (c_s, "$c_S$"), (math.sqrt(2) * c_s, r"$\sqrt{2}c_S$"), (c_d, "$c_D$")):
+        ax.axhline(value, color="0.5", lw=0.8, ls="--")
+        ax.text(lo, value, " " + name, va="bottom", fontsize=9, color="0.3")
+    ax.set_ylim(0, 1.1 * c_d)
+    ax.set_xlabel(first)
+    ax.set_ylabel("sustained speed, steady running phase (m/s)")
+    ax.set_title(f"{len(done)} of {len(rows)} runs completed (hollow: arrested)")
+    if second:
+        ax.legend(fontsize=8, loc="upper left")
+    ax.grid(alpha=0.3)
+    save(fig, os.path.join(fig_dir, "sweep_map.png"))
+    # Speed histories per group.
+    n = len(groups)
+    fig, axes = plt.subplots(n, 1, figsize=(8, 3.2 * n), squeeze=False, sharex=True)
+    cmap = plt.get_cmap("viridis")
+    for ax, (label, members) in zip(axes[:, 0], groups.items()):
+        for k, r in enumerate(members):
+            tip = read_csv(os.path.join(d, r["run"], "crack_tip.csv"))
+            if not tip:
+                continue
+            colour = cmap(k / max(1, len(members) - 1))
+            ax.plot(1e6 * tip["time"], tip["speed"], color=colour, lw=1, label=f"{first} = {r[first]}")
+        for value in (c_r, c_s, math.sqrt(2) * c_s, c_d):
+            ax.axhline(value, color="0.5", lw=0.8, ls="--")
+        ax.set_ylabel("E11 speed (m/s)")
+        ax.set_ylim(0, 1.1 * c_d)
+        ax.set_title(f"{second} = {label}" if second else "all runs", fontsize=9)
+        ax.legend(fontsize=7, ncol=2)
+        ax.grid(alpha=0.3)
+    axes[-1, 0].set_xlabel("time (µs)")
+    save(fig, os.path.join(fig_dir, "sweep_histories.png"))
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
-    ap.add_argument("dir", help="run directory written by `rupture run`")
+    ap.add_argument("dir", help="run directory written by `rupture run`, or a sweep directory")
     ap.add_argument("--compare", nargs="*", default=[], help="more run directories to overlay")
     ap.add_argument("--labels", nargs="*", default=None, help="legend labels, one per run")
     args = ap.parse_args()
+    if os.path.isfile(os.path.join(args.dir, "summary.csv")) and not os.path.isfile(
+            os.path.join(args.dir, "run.json")):
+        fig_dir = os.path.join(args.dir, "figures")
+        os.makedirs(fig_dir, exist_ok=True)
+        plot_sweep(args.dir, fig_dir)
+        return
     dirs = [args.dir] + list(args.compare)
     for d in dirs:
         if not os.path.isfile(os.path.join(d, "run.json")):

@@ -11,6 +11,7 @@ usage: check_sweep.py RUPTURE CASE WORK_DIR -- RUN_ARGS...
 2. The same sweep again: the completed runs are not run again (their outputs are untouched).
 3. A run killed with SIGKILL after its first checkpoint: its row says failed (killed by signal
    9), and the sweep again resumes it from the checkpoint to completion.
+4. `rupture plot DIR` on the sweep writes the map and the speed histories.
 """
 import csv
 import os
@@ -108,6 +109,12 @@ def main():
         resumed = "resuming run in" in f.read()
     check(p.returncode == 0 and row["status"] == "completed" and resumed,
           f"the next sweep resumed it from its checkpoint: exit {p.returncode}, status {row['status']}")
+    # 4. The figures of a sweep.
+    p = subprocess.run([rupture, "plot", d], capture_output=True, text=True)
+    figs = [os.path.join(d, "figures", f) for f in ("sweep_map.png", "sweep_histories.png")]
+    check(p.returncode == 0 and all(os.path.getsize(f) > 10000 for f in figs if os.path.exists(f))
+          and all(map(os.path.exists, figs)), f"rupture plot on the sweep: exit {p.returncode}, "
+          f"{sum(map(os.path.exists, figs))} of 2 figures {p.stderr[-200:]}")
     sys.exit(0 if ok else 1)
 
 
