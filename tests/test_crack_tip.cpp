@@ -17,12 +17,12 @@ namespace {
 // Homalite's wave speeds (SPEC §1), m/s.
 const WaveSpeeds kHomalite{2534.5, 1247.9, 1165.0, 1164.0};
 
-// 100 segments of 0.1 mm on [0, 10 mm], tau_max = sigma_max = 24 MPa, delta_t = 1 um.
-CohesiveInterface line() {
+// `segments` segments on [0, end], tau_max = sigma_max = 24 MPa, delta_t = 1 um.
+CohesiveInterface line(double end = 0.01, int segments = 100) {
   InterfaceSpec spec;
   spec.start = 0.0;
-  spec.end = 0.01;
-  spec.segments = 100;
+  spec.end = end;
+  spec.segments = segments;
   XuNeedleman law;
   law.sigma_max = law.tau_max = 24e6;
   law.delta_n = 0.4e-6;
@@ -245,16 +245,7 @@ CohesiveInterface summary_line;  // the line of the last track(): its crack time
 // after it), sampled every 0.02 us to `end` as a run does. 10 um nodes and 0.02 us samples
 // keep the E11 staircase below 1 % at 1000-2000 m/s, well inside the steady band.
 CrackTracker track(const std::vector<std::pair<double, double>>& corners, double end) {
-  InterfaceSpec spec;
-  spec.start = 0.0;
-  spec.end = 0.04;
-  spec.segments = 4000;
-  XuNeedleman law;
-  law.sigma_max = law.tau_max = 24e6;
-  law.delta_n = 0.4e-6;
-  law.delta_t = 1e-6;
-  spec.law = law;
-  CohesiveInterface c = make_interface(spec);
+  CohesiveInterface c = line(0.04, 4000);
   for (std::size_t k = 0; k < c.num_nodes(); ++k) {
     const double s = c.s0[k];
     for (std::size_t i = 1; i < corners.size(); ++i) {
