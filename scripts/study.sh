@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Parameter studies of the reference problem (examples/rosakis1999.toml), cropped to
 # x <= 75 mm, -60 <= y <= 40 mm (no reflection reaches the interface before about 30 us),
-# each run into runs/study/<name>, then a table of the crack figures from run.json.
+# each study one `rupture sweep` into runs/study/<study>/ (resumable: run it again to continue;
+# -j from STUDY_JOBS, default 1), then a table of the crack figures from run.json.
 # Grids are uniform (grid.coarse_cell_size = 0) unless stated.
 #   scripts/study.sh grid  [H...]      V = 30 m/s to 19.2 us at each H (default 0.5, 0.25, 0.125 mm)
 #   scripts/study.sh sweep [H [GRID [V...]]]
@@ -16,7 +17,7 @@
 #   scripts/study.sh safety H [S...]   V = 30 m/s to 19.2 us at uniform H for each
 #                                      time.cohesive_safety S (default 0.125 0.25 0.5 0.7 0.9 1):
 #                                      the answer must not depend on the step (docs/time_step.md)
-#   scripts/study.sh table DIR...      print the table for finished runs
+#   scripts/study.sh table DIR...      print the table for finished runs (DIR: run directories)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=./build/release/bin/rupture
@@ -31,7 +32,7 @@ table() {
 import json, sys, csv
 import numpy as np
 print(f"{'run':<30}{'h (mm)':>8}{'V (m/s)':>9}{'t end':>7}{'steps':>7}{'particles':>11}{'wall (s)':>10}"
-      f"{'init (us)':>10}{'jump (us)':>10}{'sust (m/s)':>11}{'/c_S':>6}{'tip@17.6':>10}"
+      f"{'init (us)':>10}{'jump (us)':>10}{'sust (m/s)':>11}{'/c_S':>6}{'last 4us':>9}{'tip@17.6':>10}"
       f"{'zone (mm)':>10}{'loaded':>8}{'E err':>10}  regime")
 def us(t):  # a time in us, or "-" for never (-1)
     return f"{1e6*t:.3f}" if t >= 0 else "-"
@@ -53,35 +54,34 @@ for d in sys.argv[1:]:
     h = r["input"]["grid"]["cell_size"]; v = r["input"]["boundary"]["impact"]["velocity"]
     print(f"{d.rstrip('/').split('/')[-1]:<30}{1e3*h:>8.4g}{v:>9.3g}{1e6*r['simulated_time']:>7.2f}{r['steps']:>7}{r['particles']:>11}"
           f"{r['wall_seconds']:>10.1f}{us(c['initiation_time']):>10}{us(c['intersonic_time']):>10}"
-          f"{c['sustained_speed']:>11.0f}{c['sustained_speed']/cs:>6.2f}{1e3*tip:>10.2f}{1e3*z176:>10.2f}{1e3*loaded:>8.2f}"
+          f"{c['sustained_speed']:>11.0f}{c['sustained_speed']/cs:>6.2f}{c.get('last_window_speed', float('nan')):>9.0f}"
+          f"{1e3*tip:>10.2f}{1e3*z176:>10.2f}{1e3*loaded:>8.2f}"
           f"{r['energy_balance_error']:>10.2e}  {c['regime']}")
 PY
 }
 
+# study DIR KEY V... -- SET...: one `rupture sweep` of KEY over the values, then the table.
+study() {
+  local dir=$1 key=$2; shift 2; local vs=()
+  while [ "$1" != -- ]; do vs+=("$1"); shift; done; shift
+  local IFS=,
+  $bin sweep examples/rosakis1999.toml -o "$dir" --vary "$key=${vs[*]}" -j "${STUDY_JOBS:-1}" "$@" || true
+  unset IFS
+  table "$dir"/*/
+}
+
 case "${1:-}" in
   grid)
-    shift; hs=("$@"); [ ${#hs[@]} -gt 0 ] || hs=(0.5e-3 0.25e-3 0.125e-3); dirs=()
-    for h in "${hs[@]}"; do
-      d=runs/study/grid_h$h; dirs+=("$d")
-      $bin run examples/rosakis1999.toml -o "$d" --overwrite --quiet "${crop[@]}" "${uniform[@]}" \
-        --set grid.cell_size=$h | grep -E "^(wall_seconds|crack.sustained_speed|status)="
-    done
-    table "${dirs[@]}" ;;
+    shift; hs=("$@"); [ ${#hs[@]} -gt 0 ] || hs=(0.5e-3 0.25e-3 0.125e-3)
+    study runs/study/grid grid.cell_size "${hs[@]}" -- "${crop[@]}" "${uniform[@]}" ;;
   sweep)
     h=${2:-0.125e-3}; kind=${3:-uniform}; shift $(( $# < 3 ? $# : 3 )); vs=("$@")
     [ ${#vs[@]} -gt 0 ] || vs=(5 9.2 9.5 10 20 30)
     case $kind in uniform) grid=("${uniform[@]}"); tag=;; refined) grid=(); tag=_refined;;
       *) echo "GRID must be uniform or refined, not $kind" >&2; exit 1;; esac
-    dirs=()
-    for v in "${vs[@]}"; do
-      d=runs/study/sweep_v${v}_h$h$tag; dirs+=("$d")
-      [ -f "$d/run.json" ] && grep -q '"status" : "completed"' "$d/run.json" && continue
-      $bin run examples/rosakis1999.toml -o "$d" --overwrite --quiet "${crop[@]}" ${grid[@]+"${grid[@]}"} \
-        --set grid.cell_size=$h --set boundary.impact.velocity=$v --set time.end=30e-6 \
-        --set time.stop_at_interface_end=true \
-        | grep -E "^(wall_seconds|crack.sustained_speed|status|stop_reason)="
-    done
-    table "${dirs[@]}" ;;
+    study runs/study/sweep_h$h$tag boundary.impact.velocity "${vs[@]}" -- "${crop[@]}" \
+      ${grid[@]+"${grid[@]}"} --set grid.cell_size=$h --set time.end=30e-6 \
+      --set time.stop_at_interface_end=true ;;
   refined)
     h=${2:?finest cell size}; d=runs/study/refined_h$h${3:+_$3}
     if [ "${3:-}" = full ]; then extra=(--set output.snapshot_interval=0 --set output.interface_interval=0)
@@ -90,13 +90,9 @@ case "${1:-}" in
       | grep -E "^(particles|steps|wall_seconds|crack.sustained_speed|status)="
     table "$d" ;;
   safety)
-    h=${2:?cell size}; shift 2; ss=("$@"); [ ${#ss[@]} -gt 0 ] || ss=(0.125 0.25 0.5 0.7 0.9 1.0); dirs=()
-    for sf in "${ss[@]}"; do
-      d=runs/study/safety_h${h}_s$sf; dirs+=("$d")
-      $bin run examples/rosakis1999.toml -o "$d" --overwrite --quiet "${crop[@]}" "${uniform[@]}" \
-        --set grid.cell_size=$h --set time.cohesive_safety=$sf | grep -E "^(steps|wall_seconds|status)="
-    done
-    table "${dirs[@]}" ;;
+    h=${2:?cell size}; shift 2; ss=("$@"); [ ${#ss[@]} -gt 0 ] || ss=(0.125 0.25 0.5 0.7 0.9 1.0)
+    study runs/study/safety_h$h time.cohesive_safety "${ss[@]}" -- "${crop[@]}" "${uniform[@]}" \
+      --set grid.cell_size=$h ;;
   table) shift; table "$@" ;;
   *) sed -n 2,17p "$0"; exit 1 ;;
 esac
