@@ -83,12 +83,14 @@ void fit_field_windows(State& s) {
       s.fields.resize(fields, std::size_t(n[0]), std::size_t(n[1]));
     return;
   }
-  // Particles are measured after every sort, when one left its window's safe cells, and when
-  // the last check was not the previous step (a fresh or restored state).
-  const bool measure = s.plan.sorted_step == s.step || s.windows_stale ||
+  // Particles are measured after every sort, when they may have moved kWindowDrift since the
+  // last measure (State::window_drift, summed by the particle move), and when the last check
+  // was not the previous step (a fresh or restored state).
+  const double unit = std::min(s.grid.x.h, s.grid.y.h);  // the finest cell (graded: the unit)
+  const bool measure = s.plan.sorted_step == s.step || s.window_drift >= kWindowDrift * unit ||
                        s.windows_checked_step != s.step - 1;
   s.windows_checked_step = s.step;
-  s.windows_stale = false;
+  if (measure) s.window_drift = 0.0;
   Need need(fields);
   if (measure) add_particles(s, need);
   add_faces_and_ties(s, need);

@@ -101,7 +101,7 @@ struct State {
   // Field windows (solver/field_windows.hpp): not checkpointed, re-fitted after a restore.
   long windows_checked_step = -2;  // step of the last fit_field_windows
   long window_fits = 0;            // re-fits (re-allocations) so far
-  bool windows_stale = false;      // a particle left the cells its window allows
+  double window_drift = 0.0;       // bound on any particle's move since the last measure, m
   bool whole_grid_fields = false;  // tests: every field over the whole grid (same results)
 
   double cohesive_seconds = 0.0;  // wall time spent in the cohesive phases so far, s

@@ -7,14 +7,12 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <array>
 #include <cassert>
 #include <cmath>
 #include <limits>
 
 #include "core/errors.hpp"
 #include "solver/energy.hpp"
-#include "solver/field_windows.hpp"
 #include "solver/stencil_batch.hpp"
 
 namespace rupture {
@@ -310,26 +308,17 @@ void grid_to_particles_impl(State& s, const double* gvx, const double* gvy) {
   const ScatterPlan& plan = s.plan;
   const int width = plan.strip_cells;
   std::size_t bad = kNone;
-  bool drifted = false, left_window = false;
-  // Cells each field's particles may reach without leaving its window (solver/field_windows):
-  // per field, column lo, column hi, row lo, row hi.
-  thread_local std::vector<std::array<int, 4>> safe;
-  safe.resize(std::size_t(G.num_fields));
-  for (int f = 0; f < G.num_fields; ++f) {
-    int lo[2], hi[2];
-    window_safe_cells(G, f, lo, hi);
-    safe[std::size_t(f)] = {lo[0], hi[0], lo[1], hi[1]};
-  }
-  const std::array<int, 4>* safe_cells = safe.data();
+  bool drifted = false;
+  // The largest |v_x| + |v_y| a particle moved with (solver/field_windows: a bound on how far
+  // any particle has gone since its window was measured).
+  double fastest = 0.0;
   // The stress work of each strip (E14, solver/energy.hpp), summed in strip order after the
   // loop, so the total does not depend on the number of threads.
   thread_local std::vector<double> strip_work;  // the calling thread's: reached by pointer
   strip_work.assign(std::size_t(plan.num_strips), 0.0);
   double* const work_of_strip = strip_work.data();
-  // Cell row of a moved particle: on a uniform axis (y - origin) / h > 0, truncated.
-  const bool uniform_y = !ay.graded();
-  const double oy = ay.origin, inv_hy = 1.0 / ay.h;
-#pragma omp parallel for schedule(dynamic, 1) reduction(min : bad) reduction(|| : drifted, left_window)
+#pragma omp parallel for schedule(dynamic, 1) reduction(min : bad) reduction(|| : drifted) \
+    reduction(max : fastest)
   for (int strip = 0; strip < plan.num_strips; ++strip) {
     // Drift tolerance of the scatter plan: one cell column either side of the strip.
     const double col_lo = double(strip * width - 1), col_hi = double(strip * width + width);
@@ -390,11 +379,9 @@ void grid_to_particles_impl(State& s, const double* gvx, const double* gvy) {
             P.x[p] += dt * mvx;
             P.y[p] += dt * mvy;
             if (std::isfinite(P.x[p] + P.y[p])) {  // a non-finite particle is diagnosed below
-              const int col = ax.cell_of(P.x[p]);
-              const int row = uniform_y ? int((P.y[p] - oy) * inv_hy) : ay.cell_of(P.y[p]);
-              const std::array<int, 4>& w = safe_cells[P.field[p]];
-              if (double(col) < col_lo || double(col) > col_hi) drifted = true;
-              if (col < w[0] || col > w[1] || row < w[2] || row > w[3]) left_window = true;
+              const double col = double(ax.cell_of(P.x[p]));
+              if (col < col_lo || col > col_hi) drifted = true;
+              fastest = std::max(fastest, std::fabs(mvx) + std::fabs(mvy));
             }
           }
           const bool finite = std::isfinite(P.vx[p] + P.vy[p] + P.sxx[p] + P.syy[p] + P.sxy[p]);
@@ -406,9 +393,7 @@ void grid_to_particles_impl(State& s, const double* gvx, const double* gvy) {
   if constexpr (do_stress)
     for (const double w : strip_work) s.strain_work += w;
   if (drifted) s.plan.valid = false;
-  // Measured again before the next scatter; not a re-sort, which would change the summation
-  // order: the windows are storage and must not change a result.
-  if (left_window) s.windows_stale = true;
+  if constexpr (do_move) s.window_drift += dt * fastest;  // |dx| + |dy| >= the distance moved
   if (bad != kNone) throw SimulationError(diagnose_bad_particles(s, xlo, xhi, ylo, yhi));
 }
 
