@@ -22,7 +22,7 @@ struct CaseSummary {
   long steps = 0;                  // ceil(end / dt)
   long cells = 0;                  // physical cells
   long nodes = 0;                  // grid nodes, ghosts included
-  long field_nodes = 0;            // nodes the fields' bands hold at t = 0, summed over fields
+  long field_nodes = 0;            // nodes the fields' windows hold at t = 0, summed over fields
   int ghost_cells = 2;             // ghost cells on each side (grid.margin)
   std::vector<long> particles_per_body;
   long particles = 0;
