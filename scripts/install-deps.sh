@@ -9,6 +9,7 @@ packages=(
   libhdf5-openmpi-dev libopenmpi-dev openmpi-bin
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-numpy python3-matplotlib python3-h5py
+  python3-paraview xvfb xauth  # pvpython and a virtual display: the ParaView tests of particles.xdmf
 )
 
 missing=()

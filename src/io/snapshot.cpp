@@ -89,7 +89,7 @@ SnapshotWriter::SnapshotWriter(std::string dir, const Particles& p, const double
 void SnapshotWriter::write(const Particles& p, double time, long step) {
   const std::size_t n = selected_;
   std::vector<double> pos(3 * n), vel(3 * n), tau(n), sxx(n), syy(n), sxy(n), szz(n);
-  std::vector<int> body(n), id(n);
+  std::vector<int> body(n), id(n), vertex(n);
   for (std::size_t i = 0; i < p.size(); ++i) {
     const std::int64_t slot = slot_of_id_[p.id[i]];
     if (slot < 0) continue;
@@ -105,6 +105,7 @@ void SnapshotWriter::write(const Particles& p, double time, long step) {
     const double a = 0.5 * (p.sxx[i] - p.syy[i]);
     tau[k] = std::sqrt(a * a + p.sxy[i] * p.sxy[i]);  // (sigma_1 - sigma_2)/2, SPEC E13
     body[k] = p.field[i];
+    vertex[k] = int(k);
   }
   const std::string rel = fmt::format("snapshots/particles_{:06d}.h5", files_.size());
   const std::string path = dir_ + "/" + rel;
@@ -122,6 +123,7 @@ void SnapshotWriter::write(const Particles& p, double time, long step) {
   write_dataset(file, "tau_max", H5T_NATIVE_DOUBLE, tau.data(), n, 1, tmp);
   write_dataset(file, "body", H5T_NATIVE_INT, body.data(), n, 1, tmp);
   write_dataset(file, "id", H5T_NATIVE_INT, id.data(), n, 1, tmp);
+  write_dataset(file, "connectivity", H5T_NATIVE_INT, vertex.data(), n, 1, tmp);
   write_scalar_attribute(file, "time", H5T_NATIVE_DOUBLE, &time);
   write_scalar_attribute(file, "step", H5T_NATIVE_LONG, &step);
   guard.closed = true;
@@ -152,7 +154,10 @@ void SnapshotWriter::write_xdmf() const {
         "      <Grid Name=\"step{}\" GridType=\"Uniform\">\n"
         "        <Time Value=\"{:.9e}\"/>\n"
         "        <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"{}\" "
-        "NodesPerElement=\"1\"/>\n"
+        "NodesPerElement=\"1\">\n"
+        "          <DataItem Dimensions=\"{}\" NumberType=\"Int\" Precision=\"4\" "
+        "Format=\"HDF\">{}:/connectivity</DataItem>\n"
+        "        </Topology>\n"
         "        <Geometry GeometryType=\"XYZ\">\n"
         "          <DataItem Dimensions=\"{} 3\" NumberType=\"Float\" Precision=\"8\" "
         "Format=\"HDF\">{}:/position</DataItem>\n"
@@ -161,7 +166,7 @@ void SnapshotWriter::write_xdmf() const {
         "          <DataItem Dimensions=\"{} 3\" NumberType=\"Float\" Precision=\"8\" "
         "Format=\"HDF\">{}:/velocity</DataItem>\n"
         "        </Attribute>\n",
-        k, times_[k], n, n, f, n, f);
+        k, times_[k], n, n, f, n, f, n, f);
     for (const char* name : {"sxx", "syy", "sxy", "szz", "tau_max"}) {
       x += fmt::format(
           "        <Attribute Name=\"{}\" AttributeType=\"Scalar\" Center=\"Node\">\n"

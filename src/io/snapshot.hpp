@@ -3,7 +3,9 @@
 // an XDMF 3 temporal collection that ParaView opens as a time series (Polyvertex topology).
 // Datasets (SI): position [N,3] m (z = 0), velocity [N,3] m/s, sxx syy sxy szz tau_max [N] Pa,
 // body [N] (velocity field id), id [N] (particle creation index; rows are in id order, the
-// same particles in the same rows in every file); root attributes time (s) and step.
+// same particles in the same rows in every file), connectivity [N] (0..N-1: one vertex cell
+// per particle; without it ParaView's Xdmf3 readers load the points but no cells, and the
+// default view shows nothing); root attributes time (s) and step.
 // tau_max = (sigma_1 - sigma_2)/2, the in-plane maximum shear stress (SPEC E13).
 // Optionally only a region of interest is written. Every file is written to a temporary name
 // and renamed when complete.
