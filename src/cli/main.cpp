@@ -350,6 +350,13 @@ int main(int argc, char** argv) {
       fmt::print("crack.arrested={}\n", k.arrested);
       fmt::print("crack.arrest_time={:.6e}\n", k.arrest_time);
       fmt::print("crack.arrest_s={:.6e}\n", k.arrest_s);
+      // SPEC E12: the shear Mach angle read at the snapshot times (-1: not measured).
+      fmt::print("crack.mach_readings={}\n", k.mach_readings);
+      fmt::print("crack.mach_angle={:.2f}\n", k.mach_angle);
+      fmt::print("crack.mach_angle_error={:.2f}\n", k.mach_angle_error);
+      fmt::print("crack.mach_angle_left={:.2f}\n", k.mach_angle_left);
+      fmt::print("crack.mach_angle_right={:.2f}\n", k.mach_angle_right);
+      fmt::print("crack.mach_speed={:.1f}\n", k.mach_speed);
       // Every interface by name, in input order (the first also under crack.* above).
       for (std::size_t i = 0; i < r.cracks.size(); ++i) {
         const CrackSummary& q = r.cracks[i];
@@ -362,6 +369,8 @@ int main(int argc, char** argv) {
         fmt::print("crack.{}.regime={}\n", n, q.regime);
         fmt::print("crack.{}.last_window_speed={:.1f}\n", n, q.last_window_speed);
         fmt::print("crack.{}.arrested={}\n", n, q.arrested);
+        fmt::print("crack.{}.mach_angle={:.2f}\n", n, q.mach_angle);
+        fmt::print("crack.{}.mach_speed={:.1f}\n", n, q.mach_speed);
       }
     }
     fmt::print("output={}\n", out_dir);

@@ -68,6 +68,14 @@ struct CrackSummary {
   double final_traction_zone = 0.0;  // m
   double end_reached_time = -1.0;    // first sample with the tip within end_tolerance of the
                                      // cohesive line's end, s (-1: never)
+  // The shear Mach angle (SPEC E12) read at the output times (cohesive/mach_angle.hpp, filled
+  // by the driver): readings in the steady phase, weighted mean over both sides (-1: none).
+  int mach_readings = 0;
+  double mach_angle = -1.0;         // degrees
+  double mach_angle_error = -1.0;   // standard error, degrees
+  double mach_angle_left = -1.0;    // left of the running direction (upper for a crack along +x)
+  double mach_angle_right = -1.0;   // degrees
+  double mach_speed = -1.0;         // c_S / sin(beta), m/s
   // none | sub-Rayleigh (v < c_R) | Rayleigh-to-shear (c_R <= v < c_S: SPEC §6 says no crack
   // sustains it, so a run showing it says so) | intersonic (c_S <= v < c_D) | supersonic
   std::string regime = "none";

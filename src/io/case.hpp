@@ -93,6 +93,7 @@ struct OutputSpec {
   double progress_interval = 1.0;  // wall-clock seconds between progress lines
   double crack_sample_interval = 0.05e-6;  // crack-tip sampling interval, s (E10)
   double interface_interval = 0.0;  // interface profiles (DIR/interface/*.csv), s; 0 = none
+  double mach_interval = 0.0;       // shear Mach-angle readings (DIR/mach_angle*.csv), s; 0 = none
   bool has_snapshot_region = false;
   double snapshot_region[4]{};      // xmin, ymin, xmax, ymax of the particles written, m
 };

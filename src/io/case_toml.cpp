@@ -89,6 +89,9 @@ void parse_output(Section& top, Case& c) {
   if (c.output.crack_sample_interval <= 0)
     fail(o.key("crack_sample_interval"), c.output.crack_sample_interval, "must be > 0 (s)");
   c.output.interface_interval = o.number("interface_interval", c.output.snapshot_interval);
+  c.output.mach_interval = o.number("mach_interval", c.output.snapshot_interval);
+  if (c.output.mach_interval < 0)
+    fail(o.key("mach_interval"), c.output.mach_interval, "must be >= 0 (s; 0 = none)");
   if (o.has("snapshot_region_min") || o.has("snapshot_region_max")) {
     c.output.has_snapshot_region = true;
     o.pair("snapshot_region_min", c.output.snapshot_region, true);

@@ -70,6 +70,10 @@ void fields(A& a, SnapshotWriter& w) {
   CheckpointAccess::fields(a, w);
 }
 template <class A>
+void fields(A& a, MachLine& m);
+template <class A>
+void fields(A& a, MachReading& r);
+template <class A>
 void fields(A& a, Schedule& s);
 template <class A>
 void fields(A& a, RunContext& c);
@@ -425,11 +429,36 @@ void fields(A& a, Schedule& s) {
 }
 
 template <class A>
+void fields(A& a, MachLine& m) {
+  a("found", m.found);
+  a("angle", m.angle);
+  a("angle_error", m.angle_error);
+  a("origin", m.origin);
+  a("jump", m.jump);
+  a("rows", m.rows);
+  a("material", m.material);
+}
+
+template <class A>
+void fields(A& a, MachReading& r) {
+  a("interface", r.interface);
+  a("time", r.time);
+  a("tip_x", r.tip_x);
+  a("tip_y", r.tip_y);
+  a("speed", r.speed);
+  a("left", r.left);
+  a("right", r.right);
+  a("c_s_left", r.c_s_left);
+  a("c_s_right", r.c_s_right);
+}
+
+template <class A>
 void fields(A& a, RunContext& c) {
   a("state", c.s);
   a("history", c.history.samples);
   a.same("cracks.count", c.cracks.size());
   a("cracks", c.cracks);
+  a("mach", c.mach);
   a.same("snapshots", c.snapshots != nullptr);
   if (c.snapshots) a("snapshot_writer", *c.snapshots);
   a("eps", c.eps);
@@ -438,6 +467,7 @@ void fields(A& a, RunContext& c) {
   a("schedule.interface", c.prof);
   a("schedule.crack", c.crack);
   a("schedule.checkpoint", c.checkpoint);
+  a("schedule.mach", c.mach_schedule);
   a("interface_files", c.interface_files);
   a("wall_before", c.wall_before);
   a("segments", c.segments);

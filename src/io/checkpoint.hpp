@@ -16,7 +16,7 @@
 
 namespace rupture {
 
-inline constexpr int kCheckpointVersion = 2;  // 2: State::strain_work
+inline constexpr int kCheckpointVersion = 3;  // 2: State::strain_work; 3: Mach readings
 
 std::string checkpoint_path(const std::string& dir);  // DIR/checkpoint/checkpoint.bin
 

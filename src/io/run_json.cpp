@@ -87,6 +87,12 @@ std::string run_json(const Case& c, const CaseSummary& s, const RunRecord& r) {
                      {"arrested", cs.arrested},
                      {"arrest_time", cs.arrest_time},
                      {"arrest_s", cs.arrest_s},
+                     {"mach_readings", cs.mach_readings},
+                     {"mach_angle", finite(cs.mach_angle)},
+                     {"mach_angle_error", finite(cs.mach_angle_error)},
+                     {"mach_angle_left", finite(cs.mach_angle_left)},
+                     {"mach_angle_right", finite(cs.mach_angle_right)},
+                     {"mach_speed", finite(cs.mach_speed)},
                      {"upper_body", c.bodies[std::size_t(c.interfaces[k].upper_body)].name},
                      {"lower_body", c.bodies[std::size_t(c.interfaces[k].lower_body)].name},
                      {"regime", cs.regime}};

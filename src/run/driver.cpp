@@ -11,6 +11,7 @@
 #include <omp.h>
 
 #include "cohesive/crack_tip.hpp"
+#include "cohesive/mach_angle.hpp"
 #include "core/errors.hpp"
 #include "io/atomic_file.hpp"
 #include "io/checkpoint.hpp"
@@ -97,6 +98,7 @@ void set_up(RunContext& r, const Case& c, const std::string& dir, double checkpo
   r.prof = Schedule(c.output.interface_interval);
   r.crack = Schedule(c.output.crack_sample_interval);
   r.checkpoint = Schedule(checkpoint_interval);
+  r.mach_schedule = Schedule(c.output.mach_interval);
 }
 
 }  // namespace
@@ -160,6 +162,18 @@ RunResult run_case(const Case& c, const RunOptions& options) {
     }
     ++interface_files;
   };
+  // SPEC E12 (output.mach_interval): the shear Mach front behind each crack running above c_S.
+  std::vector<double> shear_speed;  // per material
+  for (const WaveSpeeds& w : summary.speeds) shear_speed.push_back(w.shear);
+  auto read_mach_angles = [&]() {
+    for (std::size_t k = 0; k < cracks.size(); ++k) {
+      MachReading m;
+      if (read_mach_angle(cracks[k], crack_speeds[k].shear, s.particles, shear_speed, s.time, m)) {
+        m.interface = int(k);
+        ctx.mach.push_back(m);
+      }
+    }
+  };
   auto write_cracks = [&]() {
     // The first interface keeps the original names (crack_tip.csv); every interface also gets
     // files named after it.
@@ -167,6 +181,10 @@ RunResult run_case(const Case& c, const RunOptions& options) {
       if (k == 0) cracks[0].write(dir, "", crack_speeds[0].rayleigh, crack_speeds[0].shear);
       cracks[k].write(dir, "_" + c.interface_names[k], crack_speeds[k].rayleigh, crack_speeds[k].shear);
       write_rupture_times(dir, "_" + c.interface_names[k], s.interfaces[k]);
+      if (c.output.mach_interval > 0) {
+        if (k == 0) write_mach_angles(dir, "", ctx.mach, 0);
+        write_mach_angles(dir, "_" + c.interface_names[k], ctx.mach, int(k));
+      }
     }
   };
 
@@ -245,6 +263,7 @@ RunResult run_case(const Case& c, const RunOptions& options) {
         check_energy(s, history.samples.back());
         if (prof.interval > 0) write_interfaces();
         if (snapshots) snapshots->write(s.particles, s.time, s.step);
+        if (ctx.mach_schedule.interval > 0) read_mach_angles();
         record.stop_reason = result.stop_reason = "crack_reached_interface_end";
         break;
       }
@@ -256,6 +275,10 @@ RunResult run_case(const Case& c, const RunOptions& options) {
       if (prof.due(s.time, eps) || (last && prof.interval > 0)) {
         write_interfaces();
         prof.advance(s.time, eps);
+      }
+      if (ctx.mach_schedule.due(s.time, eps) || (last && ctx.mach_schedule.interval > 0)) {
+        read_mach_angles();
+        ctx.mach_schedule.advance(s.time, eps);
       }
       bool flushed = false;
       if (snapshots && (snap.due(s.time, eps) || last)) {
@@ -335,8 +358,17 @@ RunResult run_case(const Case& c, const RunOptions& options) {
   result.energy_balance_error = record.energy_balance_error;
   result.energy_balance_error_final = record.energy_balance_error_final;
   result.cohesive_seconds = s.cohesive_seconds;
-  for (std::size_t k = 0; k < cracks.size(); ++k)
-    result.cracks.push_back(cracks[k].summarize(s.interfaces[k], crack_speeds[k]));
+  for (std::size_t k = 0; k < cracks.size(); ++k) {
+    CrackSummary cs = cracks[k].summarize(s.interfaces[k], crack_speeds[k]);
+    const MachSummary m = summarize_mach(ctx.mach, int(k), cs.steady_begin, cs.steady_end);
+    cs.mach_readings = m.readings;
+    cs.mach_angle = m.angle;
+    cs.mach_angle_error = m.angle_error;
+    cs.mach_angle_left = m.angle_left;
+    cs.mach_angle_right = m.angle_right;
+    cs.mach_speed = m.speed;
+    result.cracks.push_back(cs);
+  }
   record.cracks = result.cracks;
   try {
     write_file_atomic(dir + "/run.json", run_json(c, summary, record));

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cohesive/crack_tip.hpp"
+#include "cohesive/mach_angle.hpp"
 #include "io/history.hpp"
 #include "io/snapshot.hpp"
 #include "solver/state.hpp"
@@ -40,9 +41,11 @@ struct RunContext {
   State s;
   History history;
   std::vector<CrackTracker> cracks;           // one per interface
+  std::vector<MachReading> mach;              // Mach-angle readings (SPEC E12), all interfaces
   std::unique_ptr<SnapshotWriter> snapshots;  // null without snapshots
   double eps = 0.0;                           // absorbs round-off in accumulated time, s
   Schedule hist, snap, prof, crack, checkpoint;
+  Schedule mach_schedule;  // Mach-angle readings (output.mach_interval)
   int interface_files = 0;   // interface/*.csv written so far
   double wall_before = 0.0;  // wall seconds of earlier segments (resumed runs)
   int segments = 1;          // 1 + number of resumptions

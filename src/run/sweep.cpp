@@ -81,6 +81,8 @@ const std::vector<std::pair<const char*, const char*>> kColumns = {
     {"arrested", "crack.arrested"},
     {"arrest_s_m", "crack.arrest_s"},
     {"last_window_speed_m_per_s", "crack.last_window_speed"},
+    {"mach_angle_deg", "crack.mach_angle"},
+    {"mach_speed_m_per_s", "crack.mach_speed"},
     {"energy_balance_error", "energy_balance_error"},
     {"energy_balance_error_final", "energy_balance_error_final"},
     {"wall_seconds", "wall_seconds"},
