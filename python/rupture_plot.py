@@ -99,6 +99,21 @@ def tip_at(tip, t):
     return float(np.interp(t, tip["time"], tip["tip_x"]))
 
 
+def mach_line_points(reading, key, side, length):
+    """The measured Mach front of one side (mach_angle.csv): from where it meets the crack line,
+    back and away from the crack at angle_<key> (SPEC E12)."""
+    beta = reading.get("angle_" + key)
+    if beta is None or not np.isfinite(beta):
+        return None
+    ex, ey = reading.get("dir_x", 1.0), reading.get("dir_y", 0.0)
+    nx, ny = -ey * side, ex * side
+    b = math.radians(beta)
+    x0 = reading["tip_x"] + reading["origin_" + key] * ex
+    y0 = reading["tip_y"] + reading["origin_" + key] * ey
+    r = np.array([0.0, length])
+    return x0 - r * math.cos(b) * ex + r * math.sin(b) * nx, y0 - r * math.cos(b) * ey + r * math.sin(b) * ny
+
+
 def plot_fringes(d, out, max_panels=4):
     import h5py
 
@@ -107,14 +122,14 @@ def plot_fringes(d, out, max_panels=4):
         print("note: no snapshots in DIR/snapshots; tau_max_fringes.png skipped")
         return
     tip = read_csv(os.path.join(d, "crack_tip.csv"))
+    mach = read_csv(os.path.join(d, "mach_angle.csv")) if os.path.exists(os.path.join(d, "mach_angle.csv")) else None
     # The latest snapshots show the running crack: take up to max_panels, evenly spread over
     # the second half of the run.
     half = files[len(files) // 2:] or files
     pick = [half[int(round(i))] for i in np.linspace(0, len(half) - 1, min(max_panels, len(half)))]
     pick = list(dict.fromkeys(pick))
-    fig, axes = plt.subplots(1, len(pick), figsize=(4.8 * len(pick), 4.6), squeeze=False)
-    fig.subplots_adjust(wspace=0.45)
-    for ax, path in zip(axes[0], pick):
+    panels = []
+    for path in pick:
         with h5py.File(path, "r") as h:
             pos = h["position"][:]
             tau = h["tau_max"][:]
@@ -129,24 +144,43 @@ def plot_fringes(d, out, max_panels=4):
         n = len(x)
         span_x, span_y = x.max() - x.min(), y.max() - y.min()
         spacing = math.sqrt(max(span_x * span_y, 1e-30) / max(n, 1))
-        nx = max(8, min(600, int(span_x / spacing)))
-        ny = max(8, min(600, int(span_y / spacing)))
+        nx = max(8, min(800, int(span_x / spacing)))
+        ny = max(8, min(800, int(span_y / spacing)))
         total, xe, ye = np.histogram2d(x, y, bins=(nx, ny), weights=tau)
         count, _, _ = np.histogram2d(x, y, bins=(xe, ye))
         with np.errstate(invalid="ignore", divide="ignore"):
             image = np.where(count > 0, total / count, np.nan) / 1e6
-        levels = np.linspace(0, np.nanpercentile(image, 99.5), 14)
+        panels.append((t, x_tip, xe, ye, image))
+    # One colour scale across the panels (the paper's Fig. 7): the largest 99.5th percentile.
+    top = max(np.nanpercentile(p[4], 99.5) for p in panels)
+    levels = np.linspace(0, top, 16)
+    fig, axes = plt.subplots(1, len(panels), figsize=(6.4 * len(panels), 5.4), squeeze=False)
+    fig.subplots_adjust(wspace=0.25)
+    for ax, (t, x_tip, xe, ye, image) in zip(axes[0], panels):
         xc, yc = 0.5 * (xe[1:] + xe[:-1]), 0.5 * (ye[1:] + ye[:-1])
         cs = ax.contourf(1e3 * xc, 1e3 * yc, image.T, levels=levels, cmap="gray_r", extend="max")
         ax.contour(1e3 * xc, 1e3 * yc, image.T, levels=levels, colors="k", linewidths=0.3)
         if x_tip is not None:
-            ax.plot([1e3 * x_tip], [0.0], "r^", ms=6)
+            ax.plot([1e3 * x_tip], [0.0], "r^", ms=7)
+        if mach:
+            k = int(np.argmin(np.abs(np.asarray(mach["time"]) - t)))
+            if abs(mach["time"][k] - t) < 1e-3 * max(t, 1e-30):
+                reading = {key: mach[key][k] for key in mach}
+                for key, side in (("left", 1), ("right", -1)):
+                    pts = mach_line_points(reading, key, side, 0.012)
+                    if pts is not None:
+                        ax.plot(1e3 * pts[0], 1e3 * pts[1], "r-", lw=1.2)
+                        ax.annotate(f"{reading['angle_' + key]:.1f}°", (1e3 * pts[0][1], 1e3 * pts[1][1]),
+                                    color="r", fontsize=9)
+        ax.set_xlim(1e3 * xe[0], 1e3 * xe[-1])
+        ax.set_ylim(1e3 * ye[0], 1e3 * ye[-1])
         ax.set_aspect("equal")
-        ax.set_title(f"t = {1e6 * t:.2f} µs", fontsize=10)
+        ax.set_title(f"t = {1e6 * t:.2f} µs", fontsize=11)
         ax.set_xlabel("x (mm)")
-        fig.colorbar(cs, ax=ax, shrink=0.7, label=r"$\tau_{max}$ (MPa)")
     axes[0][0].set_ylabel("y (mm)")
-    fig.suptitle(r"$\tau_{max} = (\sigma_1-\sigma_2)/2$ around the crack tip (red: tip, E10)")
+    fig.colorbar(cs, ax=axes[0].tolist(), shrink=0.8, label=r"$\tau_{max}$ (MPa)")
+    fig.suptitle(r"$\tau_{max} = (\sigma_1-\sigma_2)/2$ around the crack tip (red: tip, E10; "
+                 r"red lines: measured shear Mach fronts, E12)")
     save(fig, out)
 
 

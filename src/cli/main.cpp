@@ -353,7 +353,7 @@ int main(int argc, char** argv) {
       // SPEC E12: the shear Mach angle read at the snapshot times (-1: not measured).
       fmt::print("crack.mach_readings={}\n", k.mach_readings);
       fmt::print("crack.mach_angle={:.2f}\n", k.mach_angle);
-      fmt::print("crack.mach_angle_error={:.2f}\n", k.mach_angle_error);
+      fmt::print("crack.mach_angle_spread={:.2f}\n", k.mach_angle_spread);
       fmt::print("crack.mach_angle_left={:.2f}\n", k.mach_angle_left);
       fmt::print("crack.mach_angle_right={:.2f}\n", k.mach_angle_right);
       fmt::print("crack.mach_speed={:.1f}\n", k.mach_speed);

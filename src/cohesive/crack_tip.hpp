@@ -69,10 +69,10 @@ struct CrackSummary {
   double end_reached_time = -1.0;    // first sample with the tip within end_tolerance of the
                                      // cohesive line's end, s (-1: never)
   // The shear Mach angle (SPEC E12) read at the output times (cohesive/mach_angle.hpp, filled
-  // by the driver): readings in the steady phase, weighted mean over both sides (-1: none).
+  // by the driver): medians of the readings in the steady phase (-1: none; MachSummary).
   int mach_readings = 0;
-  double mach_angle = -1.0;         // degrees
-  double mach_angle_error = -1.0;   // standard error, degrees
+  double mach_angle = -1.0;         // both sides, degrees
+  double mach_angle_spread = -1.0;  // standard deviation of the readings, degrees
   double mach_angle_left = -1.0;    // left of the running direction (upper for a crack along +x)
   double mach_angle_right = -1.0;   // degrees
   double mach_speed = -1.0;         // c_S / sin(beta), m/s

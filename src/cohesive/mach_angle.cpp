@@ -116,8 +116,8 @@ MachLine find_mach_line(const double* x, const double* y, const double* tau_max,
   // 2. The straight front with the largest mean jump (filter half-width 2h across the line).
   const double half_across = 2.0 * h;
   double best = -std::numeric_limits<double>::infinity(), best_beta = 0.0, best_xi0 = 0.0;
-  for (int b = 0; b <= 120; ++b) {
-    const double beta = (15.0 + 0.5 * b) * kDeg;
+  for (double beta_deg = kMinAngle; beta_deg <= kMaxAngle + 1e-9; beta_deg += 0.5) {
+    const double beta = beta_deg * kDeg;
     const double cot = 1.0 / std::tan(beta), half = half_across / std::sin(beta);
     for (double xi0 = -0.5 * run; xi0 <= 0.5 * run; xi0 += h) {
       double sum = 0.0;
@@ -175,8 +175,9 @@ MachLine find_mach_line(const double* x, const double* y, const double* tau_max,
   // h/4: variance (h/4)^2 / 12 per point), in quadrature.
   const double raster = 0.25 * h;
   const double slope_error = std::sqrt((residual / double(m - 2) + raster * raster / 12.0) / see);
-  line.found = slope < 0.0;
   line.angle = std::atan2(1.0, -slope) / kDeg;
+  // Only inside the searched range: a fit that leaves it did not follow one front.
+  line.found = slope < 0.0 && line.angle >= kMinAngle && line.angle <= kMaxAngle;
   line.angle_error = slope_error / (1.0 + slope * slope) / kDeg;  // |d beta / d slope| s_slope
   line.origin = mx - slope * me;
   line.jump = best;
@@ -185,15 +186,12 @@ MachLine find_mach_line(const double* x, const double* y, const double* tau_max,
 }
 
 namespace {
-struct Weighted {
-  double sum = 0.0, weight = 0.0;
-  void add(double value, double error) {
-    const double w = 1.0 / (error * error);
-    sum += w * value;
-    weight += w;
-  }
-  double mean() const { return weight > 0.0 ? sum / weight : -1.0; }
-};
+double median(std::vector<double> v) {
+  if (v.empty()) return -1.0;
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
 }  // namespace
 
 MachSummary summarize_mach(const std::vector<MachReading>& readings, int interface, double from,
@@ -203,7 +201,7 @@ MachSummary summarize_mach(const std::vector<MachReading>& readings, int interfa
     any_inside = any_inside || (r.interface == interface && (r.left.found || r.right.found) &&
                                 r.time >= from && r.time <= to);
   MachSummary out;
-  Weighted angle, left, right, speed;
+  std::vector<double> both, left, right, speed;
   for (const MachReading& r : readings) {
     if (r.interface != interface || !(r.left.found || r.right.found)) continue;
     if (any_inside && (r.time < from || r.time > to)) continue;
@@ -211,19 +209,22 @@ MachSummary summarize_mach(const std::vector<MachReading>& readings, int interfa
     for (int k = 0; k < 2; ++k) {
       const MachLine& m = k == 0 ? r.left : r.right;
       if (!m.found) continue;
-      const double c_s = k == 0 ? r.c_s_left : r.c_s_right;
-      // Every mean weighted by the angle's own error (the speed's propagated error would favour
-      // readings near 90 degrees, where c_s / sin(beta) hardly depends on beta).
-      angle.add(m.angle, m.angle_error);
-      (k == 0 ? left : right).add(m.angle, m.angle_error);
-      speed.add(speed_of_mach_angle(m.angle, c_s), m.angle_error);
+      both.push_back(m.angle);
+      (k == 0 ? left : right).push_back(m.angle);
+      speed.push_back(speed_of_mach_angle(m.angle, k == 0 ? r.c_s_left : r.c_s_right));
     }
   }
-  out.angle = angle.mean();
-  out.angle_error = angle.weight > 0.0 ? 1.0 / std::sqrt(angle.weight) : -1.0;
-  out.angle_left = left.mean();
-  out.angle_right = right.mean();
-  out.speed = speed.mean();
+  out.angle = median(both);
+  out.angle_left = median(left);
+  out.angle_right = median(right);
+  out.speed = median(speed);
+  if (both.size() >= 2) {
+    double mean = 0.0, var = 0.0;
+    for (double a : both) mean += a;
+    mean /= double(both.size());
+    for (double a : both) var += (a - mean) * (a - mean);
+    out.angle_spread = std::sqrt(var / double(both.size() - 1));
+  }
   return out;
 }
 
@@ -231,7 +232,8 @@ void write_mach_angles(const std::string& dir, const std::string& suffix,
                        const std::vector<MachReading>& readings, int interface) {
   std::string csv =
       "time,tip_x,tip_y,e11_speed,angle_left,angle_left_error,implied_speed_left,jump_left,"
-      "origin_left,angle_right,angle_right_error,implied_speed_right,jump_right,origin_right\n";
+      "origin_left,angle_right,angle_right_error,implied_speed_right,jump_right,origin_right,dir_x,"
+      "dir_y\n";
   auto side = [](const MachLine& m, double c_s) {
     if (!m.found) return std::string("nan,nan,nan,nan,nan");
     return fmt::format("{:.4f},{:.4f},{:.6e},{:.6e},{:.6e}", m.angle, m.angle_error,
@@ -239,12 +241,13 @@ void write_mach_angles(const std::string& dir, const std::string& suffix,
   };
   for (const MachReading& r : readings)
     if (r.interface == interface)
-      csv += fmt::format("{:.9e},{:.9e},{:.9e},{:.6e},{},{}\n", r.time, r.tip_x, r.tip_y, r.speed,
-                       side(r.left, r.c_s_left), side(r.right, r.c_s_right));
+      csv += fmt::format("{:.9e},{:.9e},{:.9e},{:.6e},{},{},{:.9f},{:.9f}\n", r.time, r.tip_x,
+                         r.tip_y, r.speed, side(r.left, r.c_s_left), side(r.right, r.c_s_right),
+                         r.dir_x, r.dir_y);
   write_file_atomic(dir + "/mach_angle" + suffix + ".csv", csv);
 }
 
-bool read_mach_angle(const CrackTracker& crack, double c_s, const Particles& P,
+bool read_mach_angle(const CrackTracker& crack, double c_s, const Particles& P, const Grid& grid,
                      const std::vector<double>& shear_speed, double time, MachReading& out) {
   const std::vector<CrackSample>& samples = crack.samples();
   if (samples.empty() || P.size() == 0) return false;
@@ -262,13 +265,9 @@ bool read_mach_angle(const CrackTracker& crack, double c_s, const Particles& P,
   MachSearch where;
   where.run = tip_s - samples[first].tip;
   crack.position(tip_s, where.tip_x, where.tip_y);
-  std::size_t nearest = 0;
-  double d2 = std::numeric_limits<double>::infinity();
-  for (std::size_t p = 0; p < P.size(); ++p) {
-    const double d = (P.x[p] - where.tip_x) * (P.x[p] - where.tip_x) + (P.y[p] - where.tip_y) * (P.y[p] - where.tip_y);
-    if (d < d2) d2 = d, nearest = p;
-  }
-  where.spacing = 2.0 * std::max(P.half_x[nearest], P.half_y[nearest]);
+  const int i = std::clamp(grid.x.cell_of(where.tip_x), 0, grid.x.cells - 1);
+  const int j = std::clamp(grid.y.cell_of(where.tip_y), 0, grid.y.cells - 1);
+  where.spacing = std::max(grid.x.width(i), grid.y.width(j));
   const double back = std::min(where.spacing, tip_s);
   if (!(where.run > 0.0) || !(back > 0.0)) return false;
   double bx = 0.0, by = 0.0;
@@ -284,6 +283,7 @@ bool read_mach_angle(const CrackTracker& crack, double c_s, const Particles& P,
   out = MachReading{};
   out.time = time;
   out.tip_x = where.tip_x, out.tip_y = where.tip_y;
+  out.dir_x = where.dir_x, out.dir_y = where.dir_y;
   out.speed = speed;
   out.left = find_mach_line(P.x.data(), P.y.data(), tau.data(), P.material.data(), P.size(), where, +1);
   out.right = find_mach_line(P.x.data(), P.y.data(), tau.data(), P.material.data(), P.size(), where, -1);

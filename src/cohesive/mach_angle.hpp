@@ -6,7 +6,8 @@
 // Method, per side of the crack (see docs/validation.md, "Shear Mach angle"):
 //  1. Frame: xi along the crack in the running direction from the tip, eta away from the crack
 //     line on that side. Particles with 2h <= eta <= run/2 and -1.5 run <= xi <= run/2 are
-//     averaged into square bins of the particle spacing h; run = how far the tip has gone since
+//     averaged into square bins of the grid's cell size h at the tip (2 x 2 particles per bin
+//     with the default seeding); run = how far the tip has gone since
 //     it passed c_S (the Mach front reaches back to where the crack went intersonic, and a
 //     front behind the tip at distance d lies at height d tan(beta) < d).
 //  2. Front: the shear wave carries tau_max up as it passes, so the front is an edge where
@@ -28,6 +29,7 @@
 #include <vector>
 
 #include "cohesive/crack_tip.hpp"
+#include "grid/grid.hpp"
 #include "particles/particles.hpp"
 
 namespace rupture {
@@ -37,7 +39,7 @@ struct MachSearch {
   double tip_x = 0.0, tip_y = 0.0;  // the crack tip, m
   double dir_x = 1.0, dir_y = 0.0;  // unit vector along the crack, in the running direction
   double run = 0.0;                 // distance the tip has run since it passed c_S, m
-  double spacing = 0.0;             // particle spacing h near the tip (bin size), m
+  double spacing = 0.0;             // the grid's cell size h at the tip (bin size), m
 };
 
 struct MachLine {
@@ -51,6 +53,9 @@ struct MachLine {
 };
 
 constexpr int kMinRows = 8;
+// The angles searched, degrees: 15 deg is a front at 3.9 c_S (faster than c_D unless
+// nu > 0.47), 75 deg one at 1.035 c_S. A fitted angle outside them is not a reading.
+constexpr double kMinAngle = 15.0, kMaxAngle = 75.0;
 
 // side = +1: to the left of the running direction (the crack's +n side), -1: to the right.
 // Particles: positions x, y (m), tau_max (Pa), material id; n of them.
@@ -63,20 +68,22 @@ struct MachReading {
   int interface = 0;                // which interface's crack (input order)
   double time = 0.0;                // s
   double tip_x = 0.0, tip_y = 0.0;  // m
+  double dir_x = 1.0, dir_y = 0.0;  // unit vector along the crack, running direction
   double speed = 0.0;               // the latest E11 speed at or before `time`, m/s
   MachLine left, right;             // left (+1) and right (-1) of the running direction
   double c_s_left = 0.0, c_s_right = 0.0;  // shear speed of each side's material, m/s
 };
 
-// The readings of a run summarized: weighted by 1 / angle_error^2 (angles and speeds alike),
-// over the readings with
-// from <= time <= to (the crack's steady phase), or all readings when none lies there.
+// The readings of a run summarized over those with from <= time <= to (the crack's steady
+// phase), or over all when none lies there: medians, so that a reading that locked onto
+// another feature (a reflected wave, the oscillations behind the front) does not pull the
+// result; each reading's fit error measures its scatter about a line, not which line it is.
 struct MachSummary {
-  int readings = 0;               // readings with at least one side measured, in the average
-  double angle = -1.0;            // beta over both sides, degrees (-1: not measured)
-  double angle_error = -1.0;      // its standard error, degrees
+  int readings = 0;               // readings with at least one side measured, in the summary
+  double angle = -1.0;            // median beta over both sides' readings, degrees (-1: none)
+  double angle_spread = -1.0;     // standard deviation of those readings, degrees (-1: < 2)
   double angle_left = -1.0, angle_right = -1.0;  // per side, degrees
-  double speed = -1.0;            // c_S / sin(beta) over both sides (each with its c_S), m/s
+  double speed = -1.0;            // median c_S / sin(beta) (each side with its c_S), m/s
 };
 // Only the readings of `interface` count.
 MachSummary summarize_mach(const std::vector<MachReading>& readings, int interface, double from,
@@ -88,9 +95,9 @@ void write_mach_angles(const std::string& dir, const std::string& suffix,
 
 // A reading behind `crack`'s tip at `time` when its latest E11 speed exceeds c_s (the crack
 // runs intersonically): run = the distance since its first E11 speed above c_s, the direction
-// along the line at the tip, h = twice the half-width of the particle nearest the tip, each
+// along the line at the tip, h = the larger width of the grid cell holding the tip, each
 // side's c_S from its particles' material (shear_speed per material id). False: not read.
-bool read_mach_angle(const CrackTracker& crack, double c_s, const Particles& p,
+bool read_mach_angle(const CrackTracker& crack, double c_s, const Particles& p, const Grid& grid,
                      const std::vector<double>& shear_speed, double time, MachReading& out);
 
 // beta (degrees) for a front behind a tip at speed v in a material of shear speed c_s

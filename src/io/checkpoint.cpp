@@ -445,6 +445,8 @@ void fields(A& a, MachReading& r) {
   a("time", r.time);
   a("tip_x", r.tip_x);
   a("tip_y", r.tip_y);
+  a("dir_x", r.dir_x);
+  a("dir_y", r.dir_y);
   a("speed", r.speed);
   a("left", r.left);
   a("right", r.right);

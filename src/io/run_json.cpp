@@ -89,7 +89,7 @@ std::string run_json(const Case& c, const CaseSummary& s, const RunRecord& r) {
                      {"arrest_s", cs.arrest_s},
                      {"mach_readings", cs.mach_readings},
                      {"mach_angle", finite(cs.mach_angle)},
-                     {"mach_angle_error", finite(cs.mach_angle_error)},
+                     {"mach_angle_spread", finite(cs.mach_angle_spread)},
                      {"mach_angle_left", finite(cs.mach_angle_left)},
                      {"mach_angle_right", finite(cs.mach_angle_right)},
                      {"mach_speed", finite(cs.mach_speed)},

@@ -168,7 +168,7 @@ RunResult run_case(const Case& c, const RunOptions& options) {
   auto read_mach_angles = [&]() {
     for (std::size_t k = 0; k < cracks.size(); ++k) {
       MachReading m;
-      if (read_mach_angle(cracks[k], crack_speeds[k].shear, s.particles, shear_speed, s.time, m)) {
+      if (read_mach_angle(cracks[k], crack_speeds[k].shear, s.particles, s.grid, shear_speed, s.time, m)) {
         m.interface = int(k);
         ctx.mach.push_back(m);
       }
@@ -363,7 +363,7 @@ RunResult run_case(const Case& c, const RunOptions& options) {
     const MachSummary m = summarize_mach(ctx.mach, int(k), cs.steady_begin, cs.steady_end);
     cs.mach_readings = m.readings;
     cs.mach_angle = m.angle;
-    cs.mach_angle_error = m.angle_error;
+    cs.mach_angle_spread = m.angle_spread;
     cs.mach_angle_left = m.angle_left;
     cs.mach_angle_right = m.angle_right;
     cs.mach_speed = m.speed;
