@@ -342,6 +342,8 @@ int main(int argc, char** argv) {
       fmt::print("crack.final_tip={:.6e}\n", k.final_tip);
       fmt::print("crack.final_cohesive_zone_length={:.6e}\n", k.final_cohesive_zone);
       fmt::print("crack.final_traction_zone_length={:.6e}\n", k.final_traction_zone);
+      fmt::print("crack.cohesive_zone_definition={}\n", CrackTracker::kCohesiveZoneDefinition);
+      fmt::print("crack.traction_zone_definition={}\n", CrackTracker::kTractionZoneDefinition);
       fmt::print("crack.end_reached_time={:.6e}\n", k.end_reached_time);
       fmt::print("crack.regime={}\n", k.regime);
       fmt::print("crack.steady_begin={:.6e}\n", k.steady_begin);

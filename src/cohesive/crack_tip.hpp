@@ -98,6 +98,14 @@ class CrackTracker {
   // is at least this fraction of the peak (|T_t| / tau_max or T_n / sigma_max): the loaded
   // zone a traction profile shows, as in the paper's Fig. 12.
   static constexpr double kTractionZoneFraction = 0.1;
+  // What the two lengths are, in words, for run.json and the CLI (docs/validation.md compares
+  // them, and the zone of any nonzero traction, with the paper's 7 mm).
+  static constexpr const char* kCohesiveZoneDefinition =
+      "softening zone: from the tip (jump 5 delta_t, E10) forward to the last node past the "
+      "peak-traction opening";
+  static constexpr const char* kTractionZoneDefinition =
+      "loaded zone: from the tip forward while the traction is at least 10 % of the peak "
+      "(sigma_max or tau_max)";
 
   // end_tolerance: how close to the end of the cohesive line the tip counts as having reached
   // it, m. The last nodes before a bonded grid node cannot open fully, so the driver passes two

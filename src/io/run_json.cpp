@@ -76,6 +76,8 @@ std::string run_json(const Case& c, const CaseSummary& s, const RunRecord& r) {
                      {"final_tip", cs.final_tip},
                      {"final_cohesive_zone_length", cs.final_cohesive_zone},
                      {"final_traction_zone_length", cs.final_traction_zone},
+                     {"cohesive_zone_definition", CrackTracker::kCohesiveZoneDefinition},
+                     {"traction_zone_definition", CrackTracker::kTractionZoneDefinition},
                      {"end_reached_time", cs.end_reached_time},
                      {"final_tip_y", cs.final_tip_y},
                      {"final_tip_s", cs.final_tip_s},

@@ -15,6 +15,7 @@
 #include "core/errors.hpp"
 #include "io/atomic_file.hpp"
 #include "io/checkpoint.hpp"
+#include "io/csv_units.hpp"
 #include "io/history.hpp"
 #include "io/interface_csv.hpp"
 #include "io/run_json.hpp"
@@ -135,6 +136,7 @@ RunResult run_case(const Case& c, const RunOptions& options) {
   if (options.resume) record.checkpoint_time = s.time, record.checkpoint_step = s.step;
   stamp_heartbeat(record);
   write_file_atomic(dir + "/run.json", run_json(c, summary, record));
+  write_csv_units(dir);  // what every CSV column holds, in which unit
 
   // Crack speeds are reported against the speeds of the lower body's material.
   std::vector<WaveSpeeds> crack_speeds;  // per interface
