@@ -59,8 +59,9 @@ def wave_speeds(run):
 
 
 def plot_crack_tip(dirs, labels, out):
-    fig, (ax_x, ax_v) = plt.subplots(2, 1, figsize=(7, 7.5), sharex=True)
+    fig, (ax_x, ax_v) = plt.subplots(2, 1, figsize=(7.5, 7.5), sharex=True)
     c_d = c_s = c_r = None
+    mach_shown = False
     for d, label in zip(dirs, labels):
         with open(os.path.join(d, "run.json")) as f:
             run = json.load(f)
@@ -70,7 +71,15 @@ def plot_crack_tip(dirs, labels, out):
             continue
         t_us = 1e6 * tip["time"]
         ax_x.plot(t_us, 1e3 * tip["tip_x"], label=label)
-        ax_v.plot(t_us, tip["speed"], label=label)
+        line, = ax_v.plot(t_us, tip["speed"], label=label)
+        # The speed the measured Mach angles imply (SPEC E12), an independent check of E11.
+        mach_path = os.path.join(d, "mach_angle.csv")
+        mach = read_csv(mach_path) if os.path.exists(mach_path) else {}
+        if mach:
+            for key, marker in (("implied_speed_left", "^"), ("implied_speed_right", "v")):
+                ax_v.plot(1e6 * mach["time"], mach[key], marker, color=line.get_color(), ms=5, ls="none",
+                          label=f"{label}: $c_S/\\sin\\beta$ ({key.split('_')[-1]} Mach front)")
+            mach_shown = True
     ax_x.set_ylabel("crack-tip position x (mm)")
     ax_x.grid(alpha=0.3)
     if len(dirs) > 1:
@@ -83,9 +92,15 @@ def plot_crack_tip(dirs, labels, out):
             ax_v.text(ax_v.get_xlim()[0], value, f" {name} = {value:.0f} m/s", va="bottom",
                       fontsize=8)
         ax_v.set_ylim(0, 1.1 * c_d)
+        # The paper's Fig. 13a: the speed in units of c_R on the right.
+        ax_r = ax_v.twinx()
+        ax_r.set_ylim(0, 1.1 * c_d / c_r)
+        ax_r.set_ylabel("$v / c_R$")
     ax_v.set_xlabel("time (µs)")
     ax_v.set_ylabel("crack-tip speed (m/s, 31-point fit E11)")
     ax_v.grid(alpha=0.3)
+    if mach_shown:
+        ax_v.legend(fontsize=7, loc="lower right")
     fig.suptitle("Crack-tip history")
     save(fig, out)
 
