@@ -44,6 +44,12 @@ if same:
 for name, r in zip(("rotated", "unrotated"), runs if not same else []):
     check(r["energy_balance_error"] <= 0.01, f"{name}: energy balance error {100 * r['energy_balance_error']:.2f} % "
           f"(final {100 * r['energy_balance_error_final']:.2f} %, limit 1 %)")
+# The shear Mach angles (SPEC E12, informative): an independent reading of the two speeds.
+if "mach_angle" in a and "mach_angle" in b:
+    print(f"Mach angle (median over the steady phase) {a['mach_angle']:.2f} vs {b['mach_angle']:.2f} deg, "
+          f"implied speeds {a['mach_speed']:.1f} vs {b['mach_speed']:.1f} m/s")
+    if same:
+        check(abs(a["mach_angle"] - b["mach_angle"]) <= 1e-6, "Mach angles equal under a 90-degree rotation")
 # Tip along the line at a few times (informative).
 by_time = [{round(float(t["time"]) * 1e8): float(t["tip_s"]) for t in tip} for tip in tips]
 line = []
