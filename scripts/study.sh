@@ -17,6 +17,13 @@
 #   scripts/study.sh safety H [S...]   V = 30 m/s to 19.2 us at uniform H for each
 #                                      time.cohesive_safety S (default 0.125 0.25 0.5 0.7 0.9 1):
 #                                      the answer must not depend on the step (docs/time_step.md)
+#   scripts/study.sh transition H [KEY=V...]
+#                                      V = 30 m/s to 11.6 us on the example's refined grid, finest H,
+#                                      interface profiles every 0.05 us, crack samples every 0.01 us,
+#                                      one run per KEY=V (none: the example), then scripts/transition.py:
+#                                      separated stretches and shear-traction maxima ahead of the tip.
+#                                      H below 31.25 um adds a level-7 box over x = 22-32 mm,
+#                                      |y| <= 0.75 mm (the tip's path to 11.6 us) and narrows level 6
 #   scripts/study.sh table DIR...      print the table for finished runs (DIR: run directories)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -81,7 +88,7 @@ case "${1:-}" in
       *) echo "GRID must be uniform or refined, not $kind" >&2; exit 1;; esac
     study runs/study/sweep_h$h$tag boundary.impact.velocity "${vs[@]}" -- "${crop[@]}" \
       ${grid[@]+"${grid[@]}"} --set grid.cell_size=$h --set time.end=30e-6 \
-      --set time.stop_at_interface_end=true ;;
+      --set time.stop_at_interface_end=true --set output.mach_interval=1e-6 ;;
   refined)
     h=${2:?finest cell size}; d=runs/study/refined_h$h${3:+_$3}
     if [ "${3:-}" = full ]; then extra=(--set output.snapshot_interval=0 --set output.interface_interval=0)
@@ -93,6 +100,24 @@ case "${1:-}" in
     h=${2:?cell size}; shift 2; ss=("$@"); [ ${#ss[@]} -gt 0 ] || ss=(0.125 0.25 0.5 0.7 0.9 1.0)
     study runs/study/safety_h$h time.cohesive_safety "${ss[@]}" -- "${crop[@]}" "${uniform[@]}" \
       --set grid.cell_size=$h ;;
+  transition)
+    h=${2:?finest cell size}; shift 2; sets=("$@"); [ ${#sets[@]} -gt 0 ] || sets=(example)
+    fine=()
+    if /usr/bin/python3 -c "import sys; sys.exit(not float('$h') < 31.25e-6 * 0.99)"; then
+      fine=(--set "grid.refine.level6.min=[0.021,-0.0015]" --set "grid.refine.level6.max=[0.035,0.0015]"
+            --set "grid.refine.level7.min=[0.022,-0.00075]" --set "grid.refine.level7.max=[0.032,0.00075]"
+            --set grid.refine.level7.level=7)
+    fi
+    dirs=()
+    for kv in "${sets[@]}"; do
+      d=runs/study/transition_h$h/${kv//[^A-Za-z0-9_.=-]/_}; dirs+=("$d")
+      extra=(); [ "$kv" = example ] || extra=(--set "$kv")
+      [ -f "$d/run.json" ] || $bin run examples/rosakis1999.toml -o "$d" --overwrite --quiet "${crop[@]}" \
+        ${fine[@]+"${fine[@]}"} --set grid.cell_size=$h --set time.end=11.6e-6 \
+        --set output.interface_interval=0.05e-6 --set output.crack_sample_interval=0.01e-6 \
+        ${extra[@]+"${extra[@]}"} | grep -E "^(particles|steps|wall_seconds|status)=" || echo "$d: failed" >&2
+    done
+    /usr/bin/python3 scripts/transition.py "${dirs[@]}" ;;
   table) shift; table "$@" ;;
   *) sed -n 2,17p "$0"; exit 1 ;;
 esac
