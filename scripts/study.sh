@@ -12,6 +12,10 @@
 #                                      sustained speed is that of the running crack; at H
 #                                      (default 0.125e-3) on GRID = uniform (default) or refined
 #                                      (the example's graded grid with finest cell H)
+#   scripts/study.sh map               the crack-speed map at 24 MPa on the paper's mesh policy: the
+#                                      sweeps `sweep 62.5e-6 refined 5 6 7 8 9 9.2 9.5 10` and
+#                                      `sweep 31.25e-6 refined 12 15 20 30 40 50 60` (resumed where
+#                                      done), then one table (scripts/map_table.py)
 #   scripts/study.sh refined H [full]  V = 30 m/s on the example's refined grid, finest H,
 #                                      cropped (or the full plate with `full`)
 #   scripts/study.sh safety H [S...]   V = 30 m/s to 19.2 us at uniform H for each
@@ -100,6 +104,10 @@ case "${1:-}" in
     h=${2:?cell size}; shift 2; ss=("$@"); [ ${#ss[@]} -gt 0 ] || ss=(0.125 0.25 0.5 0.7 0.9 1.0)
     study runs/study/safety_h$h time.cohesive_safety "${ss[@]}" -- "${crop[@]}" "${uniform[@]}" \
       --set grid.cell_size=$h ;;
+  map)
+    "$0" sweep 62.5e-6 refined 5 6 7 8 9 9.2 9.5 10 >/dev/null
+    "$0" sweep 31.25e-6 refined 12 15 20 30 40 50 60 >/dev/null
+    /usr/bin/python3 scripts/map_table.py runs/study/sweep_h62.5e-6_refined runs/study/sweep_h31.25e-6_refined ;;
   transition)
     h=${2:?finest cell size}; shift 2; sets=("$@"); [ ${#sets[@]} -gt 0 ] || sets=(example)
     fine=()
