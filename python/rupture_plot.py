@@ -18,6 +18,8 @@ On a sweep directory (`rupture sweep`: DIR/summary.csv, one run per subdirectory
                         and the regime bands marked; arrested runs hollow, failed runs absent
   sweep_histories.png   the E11 speed histories of every run, one panel per value of the
                         second key, coloured by the first
+With --compare SWEEP2 ..., one map of all the sweeps, one line per sweep (labelled by --labels
+or the directory names) and value of the second key: the paper's map on its two meshes.
 Every figure is written to a temporary name and renamed, so none is ever half-written.
 """
 import argparse
@@ -309,27 +311,37 @@ def as_number(text):
         return math.nan
 
 
-def plot_sweep(d, fig_dir):
-    rows, keys = sweep_table(d)
-    done = [r for r in rows if r["status"] == "completed"]
+def plot_sweep(sweeps, fig_dir):
+    """The map and the speed histories of one or more sweeps, sweeps = [(label, dir)]. One line
+    per value of the second varied key; with several sweeps (the paper's map on two meshes), one
+    line per sweep and value."""
+    rows, done = [], []
+    for label, d in sweeps:
+        table, keys = sweep_table(d)
+        rows += table
+        for r in table:
+            if r["status"] == "completed":
+                r = dict(r, _dir=d, _sweep=label)
+                done.append((keys, r))
     if not done:
         print("note: no completed run in the sweep; no figures")
         return
-    run = json.load(open(os.path.join(d, done[0]["run"], "run.json")))
+    run = json.load(open(os.path.join(done[0][1]["_dir"], done[0][1]["run"], "run.json")))
     c_d, c_s, c_r = wave_speeds(run)
-    first = keys[0]
-    second = keys[1] if len(keys) > 1 else None
+    first = done[0][0][0]
     groups = {}
-    for r in done:
-        groups.setdefault(r[second] if second else "", []).append(r)
+    for keys, r in done:
+        second = keys[1] if len(keys) > 1 else None
+        parts = ([r["_sweep"]] if len(sweeps) > 1 else []) + ([f"{second} = {r[second]}"] if second else [])
+        groups.setdefault(", ".join(parts), []).append(r)
     # The map (the paper's Fig. 13 look).
     fig, ax = plt.subplots(figsize=(8, 5.5))
-    xs = [as_number(r[first]) for r in done]
+    xs = [as_number(r[first]) for _, r in done]
     for label, members in groups.items():
         members.sort(key=lambda r: as_number(r[first]))
         x = [as_number(r[first]) for r in members]
         v = [as_number(r["sustained_speed_m_per_s"]) for r in members]
-        line, = ax.plot(x, v, "-", label=f"{second} = {label}" if second else None)
+        line, = ax.plot(x, v, "-", label=label or None)
         for xi, vi, r in zip(x, v, members):
             hollow = r["arrested"] == "true"
             ax.plot(xi, vi, "o", color=line.get_color(), mfc="none" if hollow else line.get_color())
@@ -346,8 +358,8 @@ def plot_sweep(d, fig_dir):
     ax.set_xlabel(first)
     ax.set_ylabel("sustained speed, steady running phase (m/s)")
     ax.set_title(f"{len(done)} of {len(rows)} runs completed (hollow: arrested)")
-    if second:
-        ax.legend(fontsize=8, loc="upper left")
+    if any(groups):  # below the c_D label
+        ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(0.0, 0.88))
     ax.grid(alpha=0.3)
     save(fig, os.path.join(fig_dir, "sweep_map.png"))
     # Speed histories per group.
@@ -356,7 +368,7 @@ def plot_sweep(d, fig_dir):
     cmap = plt.get_cmap("viridis")
     for ax, (label, members) in zip(axes[:, 0], groups.items()):
         for k, r in enumerate(members):
-            tip = read_csv(os.path.join(d, r["run"], "crack_tip.csv"))
+            tip = read_csv(os.path.join(r["_dir"], r["run"], "crack_tip.csv"))
             if not tip:
                 continue
             colour = cmap(k / max(1, len(members) - 1))
@@ -365,7 +377,7 @@ def plot_sweep(d, fig_dir):
             ax.axhline(value, color="0.5", lw=0.8, ls="--")
         ax.set_ylabel("E11 speed (m/s)")
         ax.set_ylim(0, 1.1 * c_d)
-        ax.set_title(f"{second} = {label}" if second else "all runs", fontsize=9)
+        ax.set_title(label or "all runs", fontsize=9)
         ax.legend(fontsize=7, ncol=2)
         ax.grid(alpha=0.3)
     axes[-1, 0].set_xlabel("time (µs)")
@@ -375,14 +387,22 @@ def plot_sweep(d, fig_dir):
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
     ap.add_argument("dir", help="run directory written by `rupture run`, or a sweep directory")
-    ap.add_argument("--compare", nargs="*", default=[], help="more run directories to overlay")
+    ap.add_argument("--compare", nargs="*", default=[],
+                    help="more run directories to overlay (or, for a sweep, more sweeps: one map)")
     ap.add_argument("--labels", nargs="*", default=None, help="legend labels, one per run")
     args = ap.parse_args()
     if os.path.isfile(os.path.join(args.dir, "summary.csv")) and not os.path.isfile(
             os.path.join(args.dir, "run.json")):
+        sweeps = [args.dir] + list(args.compare)
+        for d in sweeps:
+            if not os.path.isfile(os.path.join(d, "summary.csv")):
+                sys.exit(f"error: '{d}' has no summary.csv: not a rupture sweep directory")
+        labels = args.labels if args.labels else [os.path.basename(os.path.normpath(d)) for d in sweeps]
+        if len(labels) != len(sweeps):
+            sys.exit(f"error: --labels has {len(labels)} entries for {len(sweeps)} sweeps")
         fig_dir = os.path.join(args.dir, "figures")
         os.makedirs(fig_dir, exist_ok=True)
-        plot_sweep(args.dir, fig_dir)
+        plot_sweep(list(zip(labels, sweeps)), fig_dir)
         return
     dirs = [args.dir] + list(args.compare)
     for d in dirs:

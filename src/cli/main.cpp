@@ -255,7 +255,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> compare, labels;
   auto* plot = app.add_subcommand("plot", "write the figures of a finished run into DIR/figures/");
   plot->add_option("dir", plot_dir, "run directory")->required()->check(CLI::ExistingDirectory);
-  plot->add_option("--compare", compare, "more run directories to overlay on crack_tip.png")
+  plot->add_option("--compare", compare, "more run directories to overlay on crack_tip.png (on a sweep: more sweeps, one map)")
       ->check(CLI::ExistingDirectory);
   plot->add_option("--labels", labels, "legend labels, one per run");
 

@@ -12,6 +12,8 @@ usage: check_sweep.py RUPTURE CASE WORK_DIR -- RUN_ARGS...
 3. A run killed with SIGKILL after its first checkpoint: its row says failed (killed by signal
    9), and the sweep again resumes it from the checkpoint to completion.
 4. `rupture plot DIR` on the sweep writes the map and the speed histories.
+5. `rupture plot DIR --compare DIR2 --labels A B` draws one map of two sweeps; a directory that
+   is not a sweep is refused with a message.
 """
 import csv
 import os
@@ -115,6 +117,15 @@ def main():
     check(p.returncode == 0 and all(os.path.getsize(f) > 10000 for f in figs if os.path.exists(f))
           and all(map(os.path.exists, figs)), f"rupture plot on the sweep: exit {p.returncode}, "
           f"{sum(map(os.path.exists, figs))} of 2 figures {p.stderr[-200:]}")
+    # 5. One map of two sweeps (the paper's map on two meshes): both are read, labelled.
+    p = subprocess.run([rupture, "plot", d, "--compare", k, "--labels", "coarse", "fine"],
+                       capture_output=True, text=True)
+    check(p.returncode == 0 and "sweep_map.png" in p.stdout,
+          f"rupture plot on two sweeps: exit {p.returncode} {p.stderr[-200:]}")
+    p = subprocess.run([rupture, "plot", d, "--compare", os.path.join(d, "figures")],
+                       capture_output=True, text=True)
+    check(p.returncode != 0 and "not a rupture sweep directory" in p.stderr,
+          f"rupture plot on a sweep and a non-sweep fails with a message: exit {p.returncode}")
     sys.exit(0 if ok else 1)
 
 
