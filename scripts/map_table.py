@@ -7,11 +7,16 @@ Each SWEEP_DIR holds a summary.csv whose runs vary boundary.impact.velocity; the
 size is read from each run's run.json. One row per run, sorted by impact speed: regime, sustained
 speed (m/s, and in c_R and c_S), the first time the E11 speed passes c_S, the daughter-crack time,
 the Mach angle with the speed it implies (SPEC E12), arrest, and the run's status. Times in us;
-"-" where the crack never did it.
+"-" where the crack never did it. The daughter-crack time is recomputed from crack_stretches.csv
+with the summary's rule (a second stretch beyond an intact ligament of one grid cell), so runs
+summarised before that rule read the same.
 """
 import csv
 import json
+import os
 import sys
+
+from stretches import daughter_time
 
 
 def us(value):
@@ -26,6 +31,7 @@ def main(dirs):
             h = float("nan")
             try:
                 h = json.load(open(f"{d}/{r['run']}/run.json"))["input"]["grid"]["cell_size"]
+                r["daughter_crack_time_s"] = str(daughter_time(f"{d}/{r['run']}", h))
             except (OSError, KeyError):
                 pass
             rows.append((float(r["boundary.impact.velocity"]), h, r))

@@ -6,7 +6,8 @@ Usage: /usr/bin/python3 scripts/transition.py RUN_DIR... [--from T_US] [--profil
 For each run directory (a `rupture run` with output.interface_interval set) prints one table row:
 initiation time, the first times the E11 speed (crack_tip.csv) passes c_R and c_S, the most
 separated stretches at any crack sample (crack_tip.csv `stretches`, sampled every
-output.crack_sample_interval), and the most maxima of the shear traction |T_t| ahead of the tip
+output.crack_sample_interval; in brackets, counted apart only across an intact ligament of one
+grid cell h, as the summary's daughter crack), and the most maxima of the shear traction |T_t| ahead of the tip
 (uncracked points beyond the leading tip, arc length s) in any interface profile from T_US
 (default 10.0 us). A maximum counts when it exceeds 2 MPa and stands out by a prominence of
 1 MPa. A daughter crack needs a second maximum ahead of the cohesive peak that reaches the
@@ -21,6 +22,8 @@ import sys
 
 import numpy as np
 from scipy.signal import find_peaks
+
+from stretches import fronts_by_time
 
 HEIGHT = 2e6       # Pa: a maximum to count
 PROMINENCE = 1e6   # Pa: how far it must stand above the dips either side
@@ -60,7 +63,7 @@ def main(argv):
         if argv[i] != "--profiles":
             dirs.append(argv[i])
         i += 1
-    print("| run | initiation (us) | E11 past c_R (us) | past c_S (us) | most separated stretches "
+    print("| run | initiation (us) | E11 past c_R (us) | past c_S (us) | most separated stretches (apart by >= h) "
           "| most traction maxima > 2 MPa ahead | largest second maximum (MPa, at us, mm ahead) | profiles |")
     print("|---|---|---|---|---|---|---|---|")
     details = []
@@ -75,6 +78,7 @@ def main(argv):
         t = np.array([float(r["time"]) for r in tips])
         v = np.array([float(r["speed"]) for r in tips])
         stretches = max(int(r["stretches"]) for r in tips)
+        fronts = max(fronts_by_time(d, run["input"]["grid"]["cell_size"]).values(), default=0)
         most, count, second = 0, 0, (0.0, float("nan"), float("nan"))
         for path in sorted(glob.glob(f"{d}/interface/interface_*.csv")):
             tp, tip, peaks, at = profile_maxima(path)
@@ -94,7 +98,7 @@ def main(argv):
         init = run["crack"]["initiation_time"]
         print(f"| {d.rstrip('/').split('/')[-1]} | {1e6 * init:.3f} | "
               f"{1e6 * first_time_above(t, v, speeds['rayleigh']):.2f} | "
-              f"{1e6 * first_time_above(t, v, speeds['shear']):.2f} | {stretches} | {most} | "
+              f"{1e6 * first_time_above(t, v, speeds['shear']):.2f} | {stretches} ({fronts}) | {most} | "
               f"{second[0] / 1e6:.1f} ({1e6 * second[1]:.2f}, {1e3 * second[2]:.2f}) | {count} |")
     for line in details:
         print(line)

@@ -81,6 +81,37 @@ TEST(CrackTip, tip_stretches_and_zones_of_a_prescribed_jump_field) {
   EXPECT_NEAR(m.traction_zone, 1.5e-3, 1e-12);
 }
 
+// A daughter crack is a second stretch beyond an intact ligament of at least one grid cell
+// (the tracker's daughter_ligament): a stretch a few cohesive points ahead of the tip lies
+// between the same grid nodes as the tip and is the same front, not a daughter.
+TEST(CrackTip, a_daughter_crack_needs_an_intact_ligament_of_one_cell) {
+  CohesiveInterface c = line();  // nodes every 0.1 mm
+  const double cell = 0.25e-3;
+  CrackTracker tracker(c, 0.0, cell);
+  auto crack = [&](std::size_t k, double t) {
+    c.node_crack_time[k] = t, c.ux_up[k] = 3e-6, c.ux_lo[k] = -3e-6;
+  };
+  for (std::size_t k = 0; k <= 20; ++k) crack(k, 0.5e-6);  // main crack to 2.0 mm
+  tracker.sample(c, 1e-6);
+  crack(22, 1.5e-6);  // 2.2 mm: a ligament of one node (0.2 mm < one cell)
+  tracker.sample(c, 2e-6);
+  ASSERT_EQ(tracker.samples().back().stretch_begin.size(), 2u) << "the raw record keeps both";
+  EXPECT_LT(tracker.summarize(c, kHomalite).daughter_time, 0.0)
+      << "0.2 mm ahead on a 0.25 mm grid is the main front";
+  crack(21, 2.5e-6);  // the gap closes
+  crack(30, 2.5e-6);  // 3.0 mm: 0.8 mm of intact interface ahead of the tip at 2.2 mm
+  tracker.sample(c, 3e-6);
+  const CrackSummary sum = tracker.summarize(c, kHomalite);
+  EXPECT_NEAR(sum.daughter_time, 3e-6, 1e-15) << "a daughter 0.8 mm (3.2 cells) ahead";
+  // Without a ligament length every second stretch counts, the near one included.
+  CrackTracker raw(c, 0.0, 0.0);
+  for (std::size_t k = 0; k < c.num_nodes(); ++k) c.node_crack_time[k] = -1.0;
+  for (std::size_t k = 0; k <= 20; ++k) crack(k, 0.5e-6);
+  crack(22, 1.5e-6);
+  raw.sample(c, 2e-6);
+  EXPECT_NEAR(raw.summarize(c, kHomalite).daughter_time, 2e-6, 1e-15);
+}
+
 TEST(CrackTip, speeds_of_a_tip_moving_at_constant_speed_are_exact) {
   CohesiveInterface c = line();
   CrackTracker tracker(c);

@@ -21,10 +21,11 @@ double least_squares_slope(const double* t, const double* y, std::size_t n) {
   return den > 0 ? num / den : NAN;
 }
 
-CrackTracker::CrackTracker(const CohesiveInterface& c, double end_tolerance)
+CrackTracker::CrackTracker(const CohesiveInterface& c, double end_tolerance, double daughter_ligament)
     : x0_(c.x0),
       y0_(c.y0),
       s0_(c.s0),
+      daughter_ligament_(daughter_ligament),
       length_(c.closed ? c.length() : 0.0),
       end_tolerance_(end_tolerance) {}
 
@@ -212,11 +213,11 @@ CrackSummary CrackTracker::summarize(const CohesiveInterface& c, const WaveSpeed
     r.peak_speed = std::max(r.peak_speed, v[k]);
     if (r.intersonic_time < 0.0 && v[k] > c_s) r.intersonic_time = samples_[k].time;
   }
-  for (const CrackSample& s : samples_)
-    if (s.stretch_begin.size() >= 2) {
-      r.daughter_time = s.time;
-      break;
-    }
+  for (const CrackSample& s : samples_) {
+    for (std::size_t k = 1; k < s.stretch_begin.size() && r.daughter_time < 0.0; ++k)
+      if (s.stretch_begin[k] - s.stretch_end[k - 1] >= daughter_ligament_) r.daughter_time = s.time;
+    if (r.daughter_time >= 0.0) break;
+  }
   // The last window's slope through the tip positions (and the back tip's).
   const double t_end = samples_.back().time;
   std::vector<double> t, x, b;

@@ -7,7 +7,10 @@
 //    is the start of the separated stretch that holds it (a crack nucleating inside the line
 //    runs both ways);
 //  - every separated stretch (run of cracked nodes) is recorded, so a daughter crack ahead of
-//    the main tip shows up as a second stretch;
+//    the main tip shows up as a second stretch; the summary counts one as a daughter crack only
+//    across an intact ligament of at least one grid cell (the driver's daughter_ligament): two
+//    stretches closer than that lie between the same grid nodes, one front split by the order in
+//    which its cohesive points reached the criterion;
 //  - speed (E11): slope of a least-squares line through 31 consecutive tip positions (centred);
 //  - samples are taken at exact multiples of the sampling interval whatever the time step:
 //    a node's crack time is interpolated inside the step where its jump crossed the criterion,
@@ -57,7 +60,8 @@ struct CrackSummary {
   double arrest_s = -1.0;            // where it stopped (arc length), m (-1: not arrested)
   double peak_speed = 0.0;           // m/s, max of the E11 speeds
   double intersonic_time = -1.0;     // first time the E11 speed exceeds c_S (-1: never)
-  double daughter_time = -1.0;       // first sample with a separated stretch ahead of the main one
+  double daughter_time = -1.0;       // first sample with two separated stretches apart by an
+                                     // intact ligament >= daughter_ligament (-1: never), s
   double final_tip = 0.0;            // x of the tip at the end, m
   double final_tip_y = 0.0;          // y of the tip at the end, m
   double final_tip_s = 0.0;          // arc length of the tip at the end, m
@@ -109,9 +113,12 @@ class CrackTracker {
 
   // end_tolerance: how close to the end of the cohesive line the tip counts as having reached
   // it, m. The last nodes before a bonded grid node cannot open fully, so the driver passes two
-  // grid cells there. The interface's node positions are kept to place arc lengths in (x, y).
+  // grid cells there. daughter_ligament: the shortest intact ligament between two separated
+  // stretches for the one ahead to count as a daughter crack, m (the driver passes one grid
+  // cell). The interface's node positions are kept to place arc lengths in (x, y).
   CrackTracker() = default;
-  explicit CrackTracker(const CohesiveInterface& c, double end_tolerance = 0.0);
+  explicit CrackTracker(const CohesiveInterface& c, double end_tolerance = 0.0,
+                        double daughter_ligament = 0.0);
 
   // Records the crack at time t <= the interface's current time: nodes cracked by t (their
   // interpolated crack times) make the tip and stretches; zone lengths use the current jumps.
@@ -131,6 +138,7 @@ class CrackTracker {
   friend struct CheckpointAccess;  // every member below must also be written in io/checkpoint.cpp
   std::vector<CrackSample> samples_;
   std::vector<double> x0_, y0_, s0_;  // the interface's nodes (from the case, not stored)
+  double daughter_ligament_ = 0.0;    // m (from the case, not stored)
   double length_ = 0.0;               // a closed line's length (0: open), m
   void sample_closed(const CohesiveInterface& c, double t, CrackSample& s);
   // The steady running phase in the E11 speeds v (NaN compares false: excluded): samples

@@ -87,11 +87,16 @@ void set_up(RunContext& r, const Case& c, const std::string& dir, double checkpo
     r.snapshots = std::make_unique<SnapshotWriter>(
         dir, s.particles, c.output.has_snapshot_region ? c.output.snapshot_region : nullptr);
   for (const CohesiveInterface& ci : s.interfaces) {
-    // Two cells (the wider direction) at the end of the cohesive line.
-    const int i = std::clamp(s.grid.x.cell_of(ci.x0.back()), 0, s.grid.x.cells - 1);
-    const int j = std::clamp(s.grid.y.cell_of(ci.y0.back()), 0, s.grid.y.cells - 1);
-    const double w = std::fabs(ci.node_ny.back()) * s.grid.x.width(i) + std::fabs(ci.node_nx.back()) * s.grid.y.width(j);
-    r.cracks.emplace_back(ci, 2.0 * w);
+    // The cell width along the line at node k (the width in the line's direction).
+    auto cell_along = [&](std::size_t k) {
+      const int i = std::clamp(s.grid.x.cell_of(ci.x0[k]), 0, s.grid.x.cells - 1);
+      const int j = std::clamp(s.grid.y.cell_of(ci.y0[k]), 0, s.grid.y.cells - 1);
+      return std::fabs(ci.node_ny[k]) * s.grid.x.width(i) + std::fabs(ci.node_nx[k]) * s.grid.y.width(j);
+    };
+    // Two cells at the end of the cohesive line; a daughter crack needs an intact ligament of
+    // one cell (the smaller at the line's two ends) between it and the main crack.
+    const double w_end = cell_along(ci.x0.size() - 1);
+    r.cracks.emplace_back(ci, 2.0 * w_end, std::min(cell_along(0), w_end));
   }
   r.eps = 1e-6 * s.dt;  // absorbs round-off in accumulated time
   r.hist = Schedule(c.output.history_interval > 0 ? c.output.history_interval : s.dt);
