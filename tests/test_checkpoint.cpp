@@ -60,6 +60,22 @@ const CaseSource kSource{"title = \"x\"\n", "case.toml", {"time.end=1e-6", "grid
 
 }  // namespace
 
+// A schedule with no interval never fires and advancing it returns at once (a run stopped by a
+// signal advances the checkpoint schedule even when no checkpoint interval was given: it once
+// spun there forever).
+TEST(Schedule, fires_at_multiples_and_never_without_an_interval) {
+  Schedule none;
+  EXPECT_FALSE(none.due(1.0, 0.0));
+  none.advance(1.0, 0.0);
+  EXPECT_EQ(none.next, 0.0);
+  Schedule every(0.25);
+  EXPECT_FALSE(every.due(0.2, 0.0));
+  EXPECT_TRUE(every.due(0.25, 0.0));
+  every.advance(0.6, 0.0);
+  EXPECT_DOUBLE_EQ(every.next, 0.75);
+  EXPECT_EQ(every.count, 3);
+}
+
 TEST(Checkpoint, round_trip_is_bitwise_and_the_run_continues_bitwise) {
   const Case c = small_rosakis();
   const std::string dir = scratch_dir("rupture_test_checkpoint");

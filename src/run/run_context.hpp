@@ -24,6 +24,7 @@ struct Schedule {
   explicit Schedule(double dt) : interval(dt), next(dt) {}
   bool due(double t, double eps) const { return interval > 0 && t >= next - eps; }
   void advance(double t, double eps) {
+    if (interval <= 0) return;  // never fires (a stop without a checkpoint interval lands here)
     while (next <= t + eps) next = double(++count) * interval;
   }
 };

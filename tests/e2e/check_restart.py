@@ -6,6 +6,8 @@ usage: check_restart.py RUPTURE CASE REF_DIR WORK_DIR MODE -- RUN_ARGS...
 REF_DIR holds an uninterrupted run of CASE with RUN_ARGS. MODE:
   stop       run with --stop-after-steps (as if interrupted), exit 4, then `rupture resume`
   sigterm    SIGTERM once a checkpoint exists: exit 4, message, status "interrupted"; resume
+  sigint     SIGINT (Ctrl-C) on a run with no checkpoint interval, once it has taken steps:
+             it stops within 30 s with exit 4 and a checkpoint (it once spun forever); resume
   kill9      kill -9 once a checkpoint exists: run.json still "running"; resume
   overwrite  a used directory is refused (exit 1) unless --overwrite, which keeps user files
   full_disk  a 12 MB tmpfs fills up: exit 3, "No space left on device", run.json not "running"
@@ -142,6 +144,24 @@ def main():
             fail(f"run.json after SIGTERM: status {j['status']}, checkpoint_step "
                  f"{j['checkpoint_step']}, steps {j['steps']}")
         print(f"SIGTERM at step {j['steps']}: exit 4, status interrupted, checkpoint written")
+        resume_and_compare(rupture, ref, d, 2)
+
+    elif mode == "sigint":
+        proc = subprocess.Popen(base, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        wait_for(os.path.join(d, "history.csv"), proc)
+        time.sleep(1.0)
+        proc.send_signal(signal.SIGINT)
+        try:
+            out, err = proc.communicate(timeout=30)
+        except subprocess.TimeoutExpired:
+            proc.kill()
+            fail("SIGINT without a checkpoint interval: the run did not stop within 30 s")
+        if proc.returncode != 4 or "interrupted by signal 2 at step" not in err:
+            fail(f"SIGINT: exit code {proc.returncode}, expected 4\n{out}\n{err}")
+        j = run_json(d)
+        if j["status"] != "interrupted" or j["checkpoint_step"] != j["steps"]:
+            fail(f"run.json after SIGINT: status {j['status']}, checkpoint_step {j['checkpoint_step']}")
+        print(f"SIGINT at step {j['steps']} (no checkpoint interval): exit 4, checkpoint written")
         resume_and_compare(rupture, ref, d, 2)
 
     elif mode == "kill9":
