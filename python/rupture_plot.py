@@ -391,28 +391,22 @@ def main():
                     help="more run directories to overlay (or, for a sweep, more sweeps: one map)")
     ap.add_argument("--labels", nargs="*", default=None, help="legend labels, one per run")
     args = ap.parse_args()
-    if os.path.isfile(os.path.join(args.dir, "summary.csv")) and not os.path.isfile(
-            os.path.join(args.dir, "run.json")):
-        sweeps = [args.dir] + list(args.compare)
-        for d in sweeps:
-            if not os.path.isfile(os.path.join(d, "summary.csv")):
-                sys.exit(f"error: '{d}' has no summary.csv: not a rupture sweep directory")
-        labels = args.labels if args.labels else [os.path.basename(os.path.normpath(d)) for d in sweeps]
-        if len(labels) != len(sweeps):
-            sys.exit(f"error: --labels has {len(labels)} entries for {len(sweeps)} sweeps")
-        fig_dir = os.path.join(args.dir, "figures")
-        os.makedirs(fig_dir, exist_ok=True)
-        plot_sweep(list(zip(labels, sweeps)), fig_dir)
-        return
+    sweep = os.path.isfile(os.path.join(args.dir, "summary.csv")) and not os.path.isfile(
+        os.path.join(args.dir, "run.json"))
     dirs = [args.dir] + list(args.compare)
+    need, what = ("summary.csv", "a rupture sweep directory") if sweep else (
+        "run.json", "a finished rupture run directory")
     for d in dirs:
-        if not os.path.isfile(os.path.join(d, "run.json")):
-            sys.exit(f"error: '{d}' has no run.json: not a finished rupture run directory")
+        if not os.path.isfile(os.path.join(d, need)):
+            sys.exit(f"error: '{d}' has no {need}: not {what}")
     labels = args.labels if args.labels else [os.path.basename(os.path.normpath(d)) for d in dirs]
     if len(labels) != len(dirs):
-        sys.exit(f"error: --labels has {len(labels)} entries for {len(dirs)} runs")
+        sys.exit(f"error: --labels has {len(labels)} entries for {len(dirs)} {'sweeps' if sweep else 'runs'}")
     fig_dir = os.path.join(args.dir, "figures")
     os.makedirs(fig_dir, exist_ok=True)
+    if sweep:
+        plot_sweep(list(zip(labels, dirs)), fig_dir)
+        return
     plot_crack_tip(dirs, labels, os.path.join(fig_dir, "crack_tip.png"))
     plot_fringes(args.dir, os.path.join(fig_dir, "tau_max_fringes.png"))
     plot_profiles(args.dir, os.path.join(fig_dir, "cohesive_profiles.png"))
