@@ -471,3 +471,34 @@ TEST(Geometry, bodies_sharing_a_field_behave_as_one_body) {
   EXPECT_LT(vertical, 1e-12);
   EXPECT_GT(two_fields, 0.1);  // the test can tell
 }
+
+TEST(Geometry, polygons_sharing_an_edge_through_seed_points_own_each_point_once) {
+  // Two squares rotated by 45 degrees about a node share their diagonal edge y = x, which
+  // passes exactly through sub-cell centres (h/4 + k h/2 on both axes). Each polygon lists
+  // the shared edge in its own direction, so an edge test that depends on the traversal
+  // rounds differently in the two and a point on the edge lands in both or in neither. Every
+  // seed point of the union must lie in exactly one of them.
+  const double h = 0.5e-3, c = std::sqrt(0.5), L = 0.07;
+  const double lo[2] = {-0.06, -0.06}, hi[2] = {0.1, 0.1};  // one lattice on both axes
+  const Grid g = make_uniform_grid(lo, hi, h);
+  const Shape upper =
+      polygon({{0, 0}, {c * L, c * L}, {c * L - c * 0.03, c * L + c * 0.03}, {-c * 0.03, c * 0.03}});
+  const Shape lower = polygon(
+      {{c * 0.055, -c * 0.055}, {c * L + c * 0.055, c * L - c * 0.055}, {c * L, c * L}, {0, 0}});
+  std::map<std::pair<double, double>, int> seen;
+  long on_edge = 0;
+  for (const Shape* s : {&upper, &lower})
+    for_each_seed_point(g, Region{*s, {}}, 2, [&](const SeedPoint& p) {
+      seen[{p.x, p.y}] += 1;
+      on_edge += p.x == p.y;
+    });
+  long twice = 0;
+  for (const auto& [xy, n] : seen) twice += n > 1;
+  std::printf("%zu points, %ld on the shared edge, %ld in both\n", seen.size(), on_edge, twice);
+  EXPECT_GT(on_edge, 100) << "the shared edge passes through seed points";
+  EXPECT_EQ(twice, 0) << "a point on the shared edge belongs to one polygon only";
+  // and to at least one:
+  long expected_on_edge = 0;
+  for (int k = 0; h / 4 + k * h / 2 < c * L; ++k) expected_on_edge += h / 4 + k * h / 2 > 0;
+  EXPECT_EQ(on_edge, expected_on_edge);
+}

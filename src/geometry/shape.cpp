@@ -33,10 +33,12 @@ bool segments_meet(const Point& p1, const Point& p2, const Point& q1, const Poin
 }
 
 bool polygon_contains(const std::vector<Point>& v, double x, double y) {
-  // Crossing number of a ray towards +x; half-open in y so a vertex is counted once.
+  // Crossing number of a ray towards +x; half-open in y so a vertex is counted once. The
+  // crossing is computed from the edge's lower end whichever way the polygon runs, so two
+  // polygons sharing an edge round it alike: a point on that edge lies in exactly one of them.
   bool in = false;
   for (std::size_t i = 0, j = v.size() - 1; i < v.size(); j = i++) {
-    const Point &a = v[i], &b = v[j];
+    const Point &a = v[i].y < v[j].y ? v[i] : v[j], &b = v[i].y < v[j].y ? v[j] : v[i];
     if ((a.y > y) != (b.y > y) && x < a.x + (b.x - a.x) * (y - a.y) / (b.y - a.y)) in = !in;
   }
   return in;

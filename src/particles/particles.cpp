@@ -40,18 +40,20 @@ void Particles::permute(const std::vector<std::uint32_t>& order, std::vector<dou
 
 void seed_rectangle(Particles& p, const double min[2], const double max[2], double h, int ppc,
                     double density, std::uint8_t field, std::uint8_t material,
-                    const double velocity[2]) {
+                    const double velocity[2], const double origin[2]) {
   const long cx = std::lround((max[0] - min[0]) / h);
   const long cy = std::lround((max[1] - min[1]) / h);
   const double side = h / ppc;
+  const long ix = std::lround((min[0] - origin[0]) / h) * ppc;  // first sub-cell on the lattice
+  const long iy = std::lround((min[1] - origin[1]) / h) * ppc;
   const long nx = cx * ppc, ny = cy * ppc;
   const std::size_t start = p.size();
   p.resize(start + std::size_t(nx * ny));
   std::size_t k = start;
   for (long j = 0; j < ny; ++j) {
     for (long i = 0; i < nx; ++i, ++k) {
-      p.x[k] = min[0] + (double(i) + 0.5) * side;
-      p.y[k] = min[1] + (double(j) + 0.5) * side;
+      p.x[k] = lattice_centre(origin[0], side, ix + i);
+      p.y[k] = lattice_centre(origin[1], side, iy + j);
       p.vx[k] = velocity[0];
       p.vy[k] = velocity[1];
       p.volume0[k] = p.volume[k] = side * side;

@@ -37,10 +37,18 @@ struct Particles {
   void permute(const std::vector<std::uint32_t>& order, std::vector<double>& scratch);
 };
 
-// Fill the rectangle [xmin,xmax]x[ymin,ymax] (whole cells of size h) with ppc x ppc particles
-// per cell, each a square of side h/ppc, at rest and stress-free. Appends to `p`.
+// The centre of sub-cell k (side `side`) of a uniform lattice starting at `origin` (m): every
+// seeding path computes a particle position this way, from the grid's origin and the global
+// index, so one point gets one number whichever body or axis asks for it.
+inline double lattice_centre(double origin, double side, long k) {
+  return origin + (double(k) + 0.5) * side;
+}
+
+// Fill the rectangle [xmin,xmax]x[ymin,ymax] (whole cells of size h, on the lines of the grid
+// whose origin is `origin`) with ppc x ppc particles per cell, each a square of side h/ppc, at
+// rest and stress-free. Appends to `p`.
 void seed_rectangle(Particles& p, const double min[2], const double max[2], double h, int ppc,
                     double density, std::uint8_t field, std::uint8_t material,
-                    const double velocity[2]);
+                    const double velocity[2], const double origin[2]);
 
 }  // namespace rupture

@@ -14,18 +14,20 @@ struct Line {
 
 Line uniform_line(const Axis& a, double domain_min, double lo, double hi, int ppc) {
   const double h = a.h, tol = 1e-9;
-  // Start on the box edge when it is a grid line (exactly as seed_rectangle counts), else on the
-  // grid line below it.
+  // Start on the box edge when it is a grid line (as seed_rectangle counts), else on the grid
+  // line below it. A centre is computed from the grid's origin and its index on the whole
+  // lattice, never from the box, so every region (and both axes of a square lattice) gets the
+  // same number for the same point: bodies that share an edge split its points exactly
+  // (polygon_contains rounds a shared edge alike from both sides).
   const double cells_below = (lo - domain_min) / h;
-  const double start = std::fabs(cells_below - std::round(cells_below)) <=
-                               tol * std::max(1.0, std::fabs(cells_below))
-                           ? lo
-                           : domain_min + std::floor(cells_below) * h;
-  const long cells = std::max(0L, long(std::ceil((hi - start) / h - tol)));
+  const bool on_line = std::fabs(cells_below - std::round(cells_below)) <=
+                       tol * std::max(1.0, std::fabs(cells_below));
+  const double first = on_line ? std::round(cells_below) : std::floor(cells_below);
+  const long cells = std::max(0L, long(std::ceil((hi - domain_min) / h - first - tol)));
   const double side = h / ppc;
   Line l;
   for (long i = 0; i < cells * ppc; ++i) {
-    l.centre.push_back(start + (double(i) + 0.5) * side);
+    l.centre.push_back(lattice_centre(domain_min, side, long(first) * ppc + i));
     l.side.push_back(side);
   }
   return l;

@@ -48,7 +48,8 @@ State make_state(const Case& c) {
       seed_graded_rectangle(s.particles, s.grid, b.min, b.max, ppc, props);
     else
       seed_rectangle(s.particles, b.min, b.max, c.grid.cell_size, ppc, m.density,
-                     std::uint8_t(b.field), std::uint8_t(b.material), b.velocity);
+                     std::uint8_t(b.field), std::uint8_t(b.material), b.velocity,
+                     s.grid.domain_min);
     prestress(s.particles, first, s.particles.size(), b, m, c.plane);
   }
   s.boundary = c.boundary;
