@@ -74,10 +74,13 @@ struct TractionPatch {
   double segment_length = 0.0;     // m
 };
 
-// Finds the particles whose GIMP box meets the segment of `load` and their shares. Throws
-// InputError (naming loads.NAME.from/to) if no particle (of the load's fields) is adjacent to the
-// segment, if material (of those fields) lies on both sides of it, or if the boxes cover less
-// than half of it.
+// Finds the surface particles that carry the segment of `load` and their shares: along grid
+// lines, the length each GIMP box holds; on an oblique (staircase) edge, where the boxes the line
+// cuts hold only about half of it, the length of the segment nearer to each particle centre than
+// to any other (sampled, 32 points per particle side). Throws InputError (naming
+// loads.NAME.from/to) if no particle (of the load's fields) is adjacent to the segment, if
+// material (of those fields) lies on both sides of it, or if the particles carry less than half
+// of it.
 TractionPatch find_traction_patch(const TractionLoad& load, const Particles& p, double cell_size);
 
 // Ids of the particles of the region's fields whose centre lies in its box (closed).
