@@ -10,7 +10,8 @@ plus one cell, its lines through the notch mouth. Angle 0 is the reference of th
 grid looks the same at 90 - a as at a, mirrored; the problem is not mirror-symmetric (30 mm of
 plate above the plane, 55 mm below), so 60 degrees is close to 30 degrees but not equal.
 
-Usage: rotation_study.py OUT [--angles 0 15 30 40 44 45 60] [--cell-size 0.5e-3] [--rupture BIN]
+Usage: rotation_study.py OUT [--angles 0 15 30 40 44 45 60] [--cell-size 0.5e-3] [--shift X]
+                          [--rupture BIN]
 Writes OUT/a<angle>.toml, runs OUT/a<angle>/ (kept when run.json exists), prints a table.
 The speeds are least-squares slopes of the tip's arc length over fixed windows (the last 4 us,
 as tests/e2e/check_inclined.py, and 11.5-19.2 us), with their standard errors.
@@ -31,12 +32,12 @@ UPPER = [(0, 0), (0.07, 0), (0.07, 0.03), (0, 0.03)]  # m, unrotated
 LOWER = [(0, -0.055), (0.07, -0.055), (0.07, 0), (0, 0)]
 
 
-def rotated_case(angle_deg, h):
+def rotated_case(angle_deg, h, shift=0.0):
     th = math.radians(angle_deg)
     c, s = math.cos(th), math.sin(th)
 
     def rot(x, y):
-        return (x * c - y * s, x * s + y * c)
+        return (x * c - y * s + shift, x * s + y * c)
 
     def pt(x, y):
         a, b = rot(x, y)
@@ -78,6 +79,9 @@ def main():
     ap.add_argument("out")
     ap.add_argument("--angles", type=float, nargs="+", default=[0, 15, 30, 40, 44, 45, 60])
     ap.add_argument("--cell-size", type=float, default=0.5e-3)
+    ap.add_argument("--shift", type=float, default=0.0,
+                    help="move the rotated problem along x by this much (m): a quarter cell keeps a "
+                         "45-degree interface off the particle centres")
     ap.add_argument("--rupture", default=os.path.join(ROOT, "build/release/bin/rupture"))
     a = ap.parse_args()
     os.makedirs(a.out, exist_ok=True)
@@ -87,7 +91,7 @@ def main():
         name = f"a{ang:g}"
         case = os.path.join(a.out, name + ".toml")
         run = os.path.join(a.out, name)
-        open(case, "w").write(rotated_case(ang, a.cell_size))
+        open(case, "w").write(rotated_case(ang, a.cell_size, a.shift))
         if not os.path.exists(os.path.join(run, "run.json")):
             subprocess.run([a.rupture, "run", case, "-o", run, "--overwrite", "--quiet"], check=True,
                            stdout=subprocess.DEVNULL)
