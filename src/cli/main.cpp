@@ -16,6 +16,7 @@
 // --overwrite, no usable checkpoint to resume), 2 the run went unstable, 3 I/O failure (the
 // message names the file and the operating system's reason) or other failure, 4 interrupted by
 // SIGINT/SIGTERM after writing a checkpoint (the message says how to resume).
+#include <omp.h>
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
@@ -33,6 +34,7 @@
 #include "io/checkpoint.hpp"
 #include "io/input_schema.hpp"
 #include "run/driver.hpp"
+#include "run/step_cost.hpp"
 #include "run/sweep.hpp"
 #include "solver/summary.hpp"
 
@@ -108,6 +110,22 @@ void print_check(const std::string& path, const Case& c) {
   fmt::print("particles={}\n", s.particles);
   fmt::print("steps={}\n", s.steps);
   fmt::print("memory_estimate_mib={:.1f}\n", double(s.memory_bytes) / (1024.0 * 1024.0));
+}
+
+// The run's wall time predicted from a few timed steps of this case on this machine
+// (run/step_cost.hpp); the progress line's ETA refines it during the run.
+void print_predicted_time(const Case& c) {
+  const CaseSummary s = summarize(c);
+  const StepCost cost = measure_step_cost(c);
+  fmt::print("measured_setup_seconds={:.3f}\n", cost.setup_seconds);
+  fmt::print("measured_step_seconds={:.4e} (mean of {} steps after a warm-up one, {} threads)\n",
+             cost.step_seconds, cost.steps, omp_get_max_threads());
+  fmt::print("measured_ns_per_particle_update={:.1f}\n", cost.ns_per_particle_update);
+  if (cost.snapshot_seconds > 0 || cost.interface_seconds > 0)
+    fmt::print("measured_output_seconds={:.3f} per snapshot, {:.3f} per set of interface profiles\n",
+               cost.snapshot_seconds, cost.interface_seconds);
+  fmt::print("predicted_wall_seconds={:.1f} (set-up + {} steps + snapshots and interface profiles)\n",
+             predicted_wall_seconds(cost, c, s.steps), s.steps);
 }
 
 std::string plot_script(const char* argv0) {
@@ -198,6 +216,9 @@ int main(int argc, char** argv) {
   // CASE is required unless --explain is given (checked after parsing).
   auto* check_case = check->add_option("case", case_path, "case file (TOML)");
   check->add_option("--set", overrides, "override an input key: dotted.key=value");
+  bool no_timing = false;
+  check->add_flag("--no-timing", no_timing,
+                  "skip the few timed steps behind measured_step_seconds= and predicted_wall_seconds=");
   std::string explain_path;
   auto* explain_opt =
       check->add_option("--explain", explain_path,
@@ -292,6 +313,7 @@ int main(int argc, char** argv) {
       const Case c = load_case(case_path, overrides);
       warn(c);
       print_check(case_path, c);
+      if (!no_timing) print_predicted_time(c);
       return 0;
     }
     RunOptions options;

@@ -1,0 +1,86 @@
+// rupture/run/step_cost.cpp
+#include "run/step_cost.hpp"
+
+#include <omp.h>
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+
+#include "io/interface_csv.hpp"
+#include "io/snapshot.hpp"
+#include "solver/state.hpp"
+#include "solver/step.hpp"
+
+namespace rupture {
+
+StepCost measure_step_cost(const Case& c, double budget_seconds, int min_steps, int max_steps) {
+  using clock = std::chrono::steady_clock;
+  auto seconds = [](clock::time_point a, clock::time_point b) {
+    return std::chrono::duration<double>(b - a).count();
+  };
+  if (c.solver.threads > 0) omp_set_num_threads(c.solver.threads);
+  StepCost cost;
+  const auto t0 = clock::now();
+  State s = make_state(c);
+  const auto t1 = clock::now();
+  cost.setup_seconds = seconds(t0, t1);
+  cost.particles = s.particles.size();
+  // One warm-up step (first sort, window fit, pages touched), then the timed ones.
+  s.dt_cap = c.time.end - s.time;
+  step(s);
+  const auto t2 = clock::now();
+  while (cost.steps < max_steps && s.time < c.time.end) {
+    s.dt_cap = c.time.end - s.time;
+    step(s);
+    ++cost.steps;
+    if (cost.steps >= min_steps && seconds(t2, clock::now()) >= budget_seconds) break;
+  }
+  const double stepping = seconds(t2, clock::now());
+  cost.step_seconds = cost.steps > 0 ? stepping / cost.steps : 0.0;
+  cost.ns_per_particle_update =
+      cost.particles > 0 ? 1e9 * cost.step_seconds / double(cost.particles) : 0.0;
+
+  // One snapshot and one set of interface profiles, written as the run writes them.
+  namespace fs = std::filesystem;
+  const fs::path tmp =
+      fs::temp_directory_path() /
+      fmt::format("rupture-check-{}-{}", ::getpid(), clock::now().time_since_epoch().count());
+  fs::create_directories(tmp / "interface");
+  try {
+    if (c.output.snapshot_interval > 0) {
+      const auto a = clock::now();
+      SnapshotWriter w(tmp.string(), s.particles,
+                       c.output.has_snapshot_region ? c.output.snapshot_region : nullptr);
+      w.write(s.particles, s.time, s.step);
+      cost.snapshot_seconds = seconds(a, clock::now());
+    }
+    if (c.output.interface_interval > 0) {
+      const auto a = clock::now();
+      for (std::size_t k = 0; k < s.interfaces.size(); ++k)
+        write_interface_csv((tmp / "interface" / fmt::format("i{}.csv", k)).string(),
+                            s.interfaces[k], s.time);
+      cost.interface_seconds = seconds(a, clock::now());
+    }
+  } catch (...) {
+    std::error_code ec;
+    fs::remove_all(tmp, ec);
+    throw;
+  }
+  std::error_code ec;
+  fs::remove_all(tmp, ec);
+  return cost;
+}
+
+double predicted_wall_seconds(const StepCost& cost, const Case& c, long steps) {
+  auto writes = [&](double interval) {
+    return interval > 0 ? 1.0 + std::floor(c.time.end / interval * (1.0 + 1e-9)) : 0.0;
+  };
+  return cost.setup_seconds + cost.step_seconds * double(steps) +
+         cost.snapshot_seconds * writes(c.output.snapshot_interval) +
+         cost.interface_seconds * writes(c.output.interface_interval);
+}
+
+}  // namespace rupture
