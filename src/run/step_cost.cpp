@@ -75,8 +75,12 @@ StepCost measure_step_cost(const Case& c, double budget_seconds, int min_steps, 
 }
 
 double predicted_wall_seconds(const StepCost& cost, const Case& c, long steps) {
+  // As the driver writes them: at t = 0, at every multiple of the interval, and at the end
+  // when the end is not a multiple.
   auto writes = [&](double interval) {
-    return interval > 0 ? 1.0 + std::floor(c.time.end / interval * (1.0 + 1e-9)) : 0.0;
+    if (interval <= 0) return 0.0;
+    const double n = std::floor(c.time.end / interval * (1.0 + 1e-9));
+    return 1.0 + n + (c.time.end > n * interval * (1.0 + 1e-9) ? 1.0 : 0.0);
   };
   return cost.setup_seconds + cost.step_seconds * double(steps) +
          cost.snapshot_seconds * writes(c.output.snapshot_interval) +

@@ -30,7 +30,8 @@ StepCost measure_step_cost(const Case& c, double budget_seconds = 1.0, int min_s
                            int max_steps = 20);
 
 // The predicted wall time of the run of `c` in `steps` steps: set-up, the steps at the measured
-// cost, and the snapshots and interface profiles it writes (one at t = 0, then one per interval).
+// cost, and the snapshots and interface profiles it writes (at t = 0, at every multiple of the
+// interval and at the end).
 double predicted_wall_seconds(const StepCost& cost, const Case& c, long steps);
 
 }  // namespace rupture
