@@ -2,7 +2,8 @@
 // particles per cell (uGIMP, double precision, MUSL, one velocity field), loaded by a
 // velocity pulse on the left edge so every phase does real work.
 //   rupture-bench --cells N --steps S --threads T [--repeat R]
-// Prints a per-phase table (ns per particle-update) and ends with
+// Prints a per-phase table (ns per particle-update), the modelled bytes per particle-update
+// with the bandwidth they imply against a STREAM-like triad on the same threads, and ends with
 //   particle_updates_per_second=<value>   (median over the repeats)
 #include <omp.h>
 
@@ -54,6 +55,43 @@ fall_time = 1e-6
 
 double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+// Bytes of particle arrays each phase's loop moves per particle, read + written (8-byte arrays,
+// 1-byte field/material ids), read off src/solver/transfer.cpp, stencil_batch.hpp and
+// particle_sort.cpp. Every batch of weights reads x, y, half_x, half_y. A written array that
+// is not also read costs a read too (write-allocate). Grid arrays are not counted: a strip's
+// nodes stay in cache while its particles are scattered.
+//   P2G: x y hx hy m V vx vy sxx syy sxy + field                      -> 11 x 8 + 1
+//   G2P velocity + re-map: x y hx hy vx vy m + field; writes vx vy    -> 7 x 8 + 1 + 2 x 8
+//   stress + move: x y hx hy V0 exx eyy exy sxx syy sxy szz + field, material; writes x y
+//     exx eyy exy sxx syy sxy szz, and V (write-allocate: + 8)         -> 12 x 8 + 2 + 10 x 8 + 8
+//   sort, every 25 steps: x y twice, then each of the 134 B per particle read, written to
+//     scratch and copied back                                          -> (4 x 8 + 4 x 134) / 25
+constexpr double kBytesP2G = 11 * 8 + 1;
+constexpr double kBytesVelocity = 7 * 8 + 1 + 2 * 8;
+constexpr double kBytesStress = 12 * 8 + 2 + 10 * 8 + 8;
+constexpr double kBytesSort = (4 * 8 + 4 * double(Particles::bytes_per_particle())) / 25.0;
+constexpr double kBytesPerUpdate = kBytesP2G + kBytesVelocity + kBytesStress + kBytesSort;
+
+// A STREAM-like triad a = b + q c over arrays far larger than the caches, on the same threads:
+// the best of `repeat` passes, in GB/s counted as STREAM does (24 bytes per element).
+double stream_triad_gb_per_s(std::size_t n, int repeat) {
+  std::vector<double> a(n), b(n), c(n);
+  const long m = long(n);
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < m; ++i) a[std::size_t(i)] = 0.0, b[std::size_t(i)] = 1.0, c[std::size_t(i)] = 2.0;
+  double best = 0.0;
+  for (int r = 0; r < repeat; ++r) {
+    const auto t0 = Clock::now();
+    double* pa = a.data();
+    const double *pb = b.data(), *pc = c.data();
+#pragma omp parallel for schedule(static)
+    for (long i = 0; i < m; ++i) pa[i] = pb[i] + 3.0 * pc[i];
+    best = std::max(best, 24.0 * double(n) / seconds_since(t0) / 1e9);
+  }
+  if (a[n / 2] != 7.0) fmt::print("stream check failed\n");
+  return best;
 }
 
 }  // namespace
@@ -117,6 +155,15 @@ int main(int argc, char** argv) {
   const double median = rates[rates.size() / 2];
   const double bytes = double(Particles::bytes_per_particle()) * n + double(s.fields.bytes());
   fmt::print("memory_bytes_per_particle={:.1f}\n", bytes / n);
+  // The distance to the memory bandwidth: the model's bytes at the measured rate, against a
+  // triad on 3 x 128 MiB.
+  const double achieved = kBytesPerUpdate * median / 1e9;
+  const double stream = stream_triad_gb_per_s(std::size_t(1) << 24, 10);
+  fmt::print("model_bytes_per_particle_update={:.1f} (P2G {:.0f}, velocity {:.0f}, stress + move {:.0f}, sort {:.1f})\n",
+             kBytesPerUpdate, kBytesP2G, kBytesVelocity, kBytesStress, kBytesSort);
+  fmt::print("achieved_bandwidth_gb_per_s={:.2f}\n", achieved);
+  fmt::print("stream_triad_gb_per_s={:.2f}\n", stream);
+  fmt::print("fraction_of_stream={:.2f}\n", achieved / stream);
   fmt::print("time_per_step_seconds={:.4e}\n", n / median);
   fmt::print("particle_updates_per_second={:.4e}\n", median);
   return 0;
