@@ -36,11 +36,12 @@ double clipped_length(const double A[2], const double s[2], double L, const doub
 void nearest_particle_shares(const double A[2], const double s[2], double L, const Particles& p,
                              TractionPatch& patch, std::vector<double>& raw) {
   // Candidates: the load's particles (those already found) set the fields and the reach.
-  std::vector<std::size_t> index_of_id;
+  std::vector<std::uint32_t> found = patch.ids;
+  std::sort(found.begin(), found.end());
   double reach = 0.0, side = INFINITY;
   std::vector<std::uint8_t> fields;
   for (std::size_t k = 0; k < p.size(); ++k)
-    if (std::find(patch.ids.begin(), patch.ids.end(), p.id[k]) != patch.ids.end()) {
+    if (std::binary_search(found.begin(), found.end(), p.id[k])) {
       reach = std::max(reach, 2.0 * std::hypot(p.half_x[k], p.half_y[k]));
       side = std::min(side, 2.0 * std::min(p.half_x[k], p.half_y[k]));
       if (std::find(fields.begin(), fields.end(), p.field[k]) == fields.end())
