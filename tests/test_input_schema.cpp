@@ -105,6 +105,7 @@ std::vector<std::string> instances(const std::string& table, const std::string& 
   if (table == "grid.refine.*") return {"grid.refine.fine"};
   if (table == "bodies.*") return {"bodies.upper"};
   if (table == "bodies.*.minus[]") return {"bodies.lower.minus[0]"};
+  if (table == "interface.*.stretches[]") return {"interface.weak.stretches[0]"};
   if (table == "boundary.*") return {"boundary.push"};
   if (table == "interface.*") return {"interface.weak"};
   if (table == "loads.*") {
@@ -121,6 +122,18 @@ std::vector<std::string> instances(const std::string& table, const std::string& 
 std::string with_key(const std::string& table, const std::string& key, const std::string& value,
                      std::vector<std::string>& overrides) {
   std::string text = full_case_toml();
+  if (table == "interface.weak.stretches[0]") {
+    // The interface made a slip-weakening fault with one stretch, appended last.
+    overrides = {"interface.weak.law=\"slip_weakening\"", "interface.weak.static_friction=0.6",
+                 "interface.weak.dynamic_friction=0.4", "interface.weak.dc=1e-6",
+                 "interface.weak.initial_traction=[-1e6, 0.1e6]"};
+    for (const char* k : {"sigma_max = 24e6\n", "delta_n = 0.4e-6\n"})
+      text.erase(text.find(k), std::string(k).size());
+    std::string stretch = "[[interface.weak.stretches]]\n";
+    for (const char* k : {"from = [0.003, 0.0]", "to = [0.004, 0.0]"})
+      if (std::string(k).rfind(key + " =", 0) != 0) stretch += std::string(k) + "\n";
+    return text + stretch + key + " = " + value + "\n";
+  }
   if (table != "bodies.lower.minus[0]") {
     overrides = {(table.empty() ? "" : table + ".") + key + "=" + value};
     return text;

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 #include "io/atomic_file.hpp"
 
@@ -56,9 +57,13 @@ namespace {
 // The traction of an undamaged point at this opening, as a fraction of its strength.
 template <class Law>
 double load_fraction(const Law& law, double dn, double dt) {
-  GaussHistory fresh;
-  const LawResponse r = law.respond(dn, dt, fresh);
-  return std::max(std::fabs(r.tt) / law.tau_max, r.tn / law.sigma_max);
+  if constexpr (std::is_same_v<Law, SlipWeakening>) {
+    return 0.0;  // friction: the zone is where the fault slips (softening), nothing ahead of it
+  } else {
+    GaussHistory fresh;
+    const LawResponse r = law.respond(dn, dt, fresh);
+    return std::max(std::fabs(r.tt) / law.tau_max, r.tn / law.sigma_max);
+  }
 }
 
 // Zone lengths ahead of the tip (from node `first`): see CrackTracker::kTractionZoneFraction.

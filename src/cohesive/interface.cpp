@@ -6,6 +6,10 @@
 
 namespace rupture {
 
+namespace {
+constexpr int kGaussPoints = CohesiveInterface::kGauss;
+}  // namespace
+
 Polyline InterfaceSpec::geometry() const {
   if (line.num_vertices() >= 2) return line;
   Polyline p;
@@ -65,6 +69,26 @@ CohesiveInterface make_interface(const InterfaceSpec& spec) {
   c.gp_damage.assign(g, 0.0);
   c.gp_slip.assign(g, 0.0);
   if (spec.precracked) c.node_crack_time.assign(n, 0.0);
+  c.node_rupture_time.assign(n, -1.0);
+  c.node_peak_slip_rate.assign(n, 0.0);
+  if (!spec.stretches.empty()) {
+    // The last stretch containing a point's arc length wins.
+    auto which = [&](double s) {
+      std::uint16_t w = 0;
+      for (std::size_t k = 0; k < spec.stretches.size(); ++k)
+        if (s >= spec.stretches[k].from && s <= spec.stretches[k].to) w = std::uint16_t(k + 1);
+      return w;
+    };
+    static constexpr double xi[kGaussPoints] = {-0.8611363115940526, -0.3399810435848563,
+                                                0.3399810435848563, 0.8611363115940526};
+    c.gp_law.resize(g);
+    for (std::size_t s = 0; s < nseg; ++s)
+      for (int q = 0; q < CohesiveInterface::kGauss; ++q)
+        c.gp_law[s * CohesiveInterface::kGauss + std::size_t(q)] =
+            which(c.s0[s] + 0.5 * (1.0 + xi[q]) * c.seg_length[s]);
+    c.node_law.resize(n);
+    for (std::size_t k = 0; k < n; ++k) c.node_law[k] = which(c.s0[k]);
+  }
   for (auto* v : {&c.seg_fa_x, &c.seg_fa_y, &c.seg_fb_x, &c.seg_fb_y, &c.seg_ka, &c.seg_kb})
     v->assign(nseg, 0.0);
   return c;
@@ -81,9 +105,10 @@ double CohesiveInterface::stored_energy() const {
           const double half = 0.5 * seg_length[s];
           for (int g = 0; g < kGauss; ++g) {
             const std::size_t i = s * kGauss + std::size_t(g);
-            const GaussHistory h{gp_damage[i], gp_slip[i]};
+            const GaussHistory h{gp_damage[i], gp_slip[i], gp_dt[i]};
+            const auto& L = law_of(*this, law, gp_law.empty() ? 0 : gp_law[i]);
             if (!gp_separated[i])
-              e += w[g] * half * law.stored_energy(gp_dn[i], gp_dt[i], h);
+              e += w[g] * half * L.stored_energy(gp_dn[i], gp_dt[i], h);
             else if (spec.contact)
               e += w[g] * half * spec.contact_law.stored_energy(gp_dn[i], gp_dt[i], h);
           }

@@ -24,6 +24,14 @@
 
 namespace rupture {
 
+// A stretch of an interface with its own law parameters (a barrier, a nucleation patch, a
+// prestress patch): the Gauss points whose arc length from the line's start lies in
+// [from, to] use `law` (same law type as the interface's). Later stretches override earlier.
+struct LawStretch {
+  double from = 0.0, to = 0.0;  // m, arc length along the line
+  CohesiveLaw law;
+};
+
 struct InterfaceSpec {
   int upper_field = 0, lower_field = 1;  // the velocity fields of the two faces
   int upper_body = 0, lower_body = 1;    // the bodies named (Case::bodies); the normal points
@@ -35,6 +43,10 @@ struct InterfaceSpec {
   int segments = 1;
   // The traction-separation law (cohesive/law.hpp), chosen once per interface.
   CohesiveLaw law = XuNeedleman{};
+  std::vector<LawStretch> stretches;  // stretches with their own parameters (none: one law)
+  // A node has ruptured once its slip rate |dDt/dt| first exceeds this (m/s; the SCEC
+  // benchmarks' rupture-time definition, 1 mm/s).
+  double rupture_slip_rate = 1e-3;
   double separation_factor = 5.0;  // Xu-Needleman: separated at |jump| = this x delta_t (SPEC: 5)
   // No cohesion at all (a pre-crack): every point starts separated; with `contact`, its faces
   // still press and rub on each other.
@@ -85,6 +97,12 @@ struct CohesiveInterface {
   std::vector<double> gp_tn, gp_tt;        // traction at each Gauss point, Pa
   std::vector<std::uint8_t> gp_separated;  // irreversible separation flags
   std::vector<double> gp_damage, gp_slip;  // law history per Gauss point (GaussHistory)
+  // Which law each Gauss point and node uses: 0 = spec.law, k = spec.stretches[k - 1].law
+  // (derived from the spec, not state; empty when the interface has no stretches).
+  std::vector<std::uint16_t> gp_law, node_law;
+  // Rupture front (SCEC definition): the first time each node's slip rate exceeded
+  // spec.rupture_slip_rate (or -1), s, and the largest slip rate it has had, m/s.
+  std::vector<double> node_rupture_time, node_peak_slip_rate;
   std::vector<double> seg_fa_x, seg_fa_y, seg_fb_x, seg_fb_y;  // per-segment end forces (scratch)
   // Tributary tangent stiffness of each node at its current openings, N/m^2 per unit
   // thickness (sum over the Gauss points of its segments of weight x N x the law's largest
@@ -123,6 +141,16 @@ struct CohesiveInterface {
 };
 
 CohesiveInterface make_interface(const InterfaceSpec& spec);
+
+// The law of Gauss point i (or, with node_law, of node k): the interface's or its stretch's.
+template <class Law>
+const Law& law_of(const CohesiveInterface& c, const Law& base, std::uint16_t which) {
+  return which == 0 ? base : std::get<Law>(c.spec.stretches[which - 1u].law);
+}
+inline const CohesiveLaw& node_law_variant(const CohesiveInterface& c, std::size_t k) {
+  const std::uint16_t w = c.node_law.empty() ? 0 : c.node_law[k];
+  return w == 0 ? c.spec.law : c.spec.stretches[w - 1u].law;
+}
 
 // An opening small against the interface law's own scale (m): the instability watch's floor.
 inline double opening_scale(const CohesiveLaw& law) {

@@ -41,6 +41,7 @@
 #include "cohesive/bilinear.hpp"
 #include "cohesive/contact.hpp"
 #include "cohesive/law_types.hpp"
+#include "cohesive/slip_weakening.hpp"
 #include "cohesive/xu_needleman.hpp"
 
 namespace rupture {
@@ -59,16 +60,18 @@ concept TractionLaw = requires(const L& law, double d, GaussHistory& h, const Ga
   { law.opening_scale() } -> std::same_as<double>;
 };
 
-using CohesiveLaw = std::variant<XuNeedleman, BilinearLaw>;
+using CohesiveLaw = std::variant<XuNeedleman, BilinearLaw, SlipWeakening>;
 
 static_assert(TractionLaw<XuNeedleman>);
 static_assert(TractionLaw<BilinearLaw>);
+static_assert(TractionLaw<SlipWeakening>);
 
 // The name the input file uses for the law.
 inline const char* law_name(const CohesiveLaw& law) {
   struct Name {
     const char* operator()(const XuNeedleman&) const { return "xu_needleman"; }
     const char* operator()(const BilinearLaw&) const { return "bilinear"; }
+    const char* operator()(const SlipWeakening&) const { return "slip_weakening"; }
   };
   return std::visit(Name{}, law);
 }

@@ -13,10 +13,14 @@ namespace rupture {
 //           >= 0, never decreases; >= 1 = fully separated). XuNeedleman: unused (stays 0).
 //   slip    ContactLaw: the plastic (frictional) slip, m, the rest length of the tangential
 //           stick spring. Cohesive laws leave it alone, so the same record carries over when a
-//           separated point hands over to contact.
+//           separated point hands over to contact. SlipWeakening: the same (stick spring).
+//   jump_t  the tangential jump at the previous step, m: not stored apart but loaded by the
+//           interface loop from its gp_dt (SlipWeakening measures its slip path with it).
+// SlipWeakening keeps its slip path D (m, never decreases) in `damage`.
 struct GaussHistory {
   double damage = 0.0;
   double slip = 0.0;
+  double jump_t = 0.0;
 };
 
 // What a law returns at one Gauss point.

@@ -338,7 +338,7 @@ void fields(A& a, StepLimits& l) {
   a("dt", l.dt);
 }
 
-// `spec` comes from the case; face_up/face_lo, jump_before, seg_ka/seg_kb are per-step
+// `spec` comes from the case (gp_law and node_law with it); face_up/face_lo, jump_before, seg_ka/seg_kb are per-step
 // scratch, recomputed before they are read.
 template <class A>
 void fields(A& a, CohesiveInterface& c) {
@@ -350,6 +350,8 @@ void fields(A& a, CohesiveInterface& c) {
   a("fx_node", c.fx_node);
   a("fy_node", c.fy_node);
   a("node_crack_time", c.node_crack_time);
+  a("node_rupture_time", c.node_rupture_time);
+  a("node_peak_slip_rate", c.node_peak_slip_rate);
   a("gp_dn", c.gp_dn);
   a("gp_dt", c.gp_dt);
   a("gp_tn", c.gp_tn);

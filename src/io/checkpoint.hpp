@@ -16,7 +16,8 @@
 
 namespace rupture {
 
-inline constexpr int kCheckpointVersion = 3;  // 2: State::strain_work; 3: Mach readings
+inline constexpr int kCheckpointVersion = 4;  // 2: State::strain_work; 3: Mach readings;
+                                              // 4: interface rupture times, peak slip rates
 
 std::string checkpoint_path(const std::string& dir);  // DIR/checkpoint/checkpoint.bin
 

@@ -16,7 +16,8 @@ struct EnergySample {
   double cohesive_stored = 0.0, cohesive_dissipated = 0.0;
   double total() const { return kinetic + strain + cohesive_stored + cohesive_dissipated; }
   double balance() const { return initial + external_work - total(); }
-  // |balance| relative to the energy put in (initial + |external work|).
+  // |balance| relative to the energy put in: initial + |external work| + the energy a
+  // prestressed fault releases (minus its work, when that is negative).
   double relative_error() const;
 };
 

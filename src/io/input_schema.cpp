@@ -257,6 +257,7 @@ std::vector<KeyDoc> build_schema() {
 
   const std::string horizontal = "the horizontal form (y, start, end)";
   const std::string cohesive = "law = xu_needleman | bilinear";
+  const std::string friction = "law = slip_weakening";
   const std::vector<KeyDoc> interfaces = {
       {"interface", "named tables", "", "none", "",
        "Cohesive interfaces, one [interface.NAME] table each, joining two bodies of different "
@@ -313,9 +314,9 @@ std::vector<KeyDoc> build_schema() {
        "least 8",
        "number of cohesive segments along the line (4 Gauss points each)", "12000"},
       {"interface.*.law", "string", "", "\"xu_needleman\"",
-       "\"xu_needleman\", \"bilinear\", \"contact\"",
+       "\"xu_needleman\", \"bilinear\", \"contact\", \"slip_weakening\"",
        "traction-separation law; \"contact\" has no cohesion: a pre-crack whose faces only "
-       "touch",
+       "touch; \"slip_weakening\": a prestressed fault with linear slip-weakening friction",
        "\"bilinear\""},
       {"interface.*.sigma_max", "number", "Pa", "required", "> 0", "normal (mode I) strength",
        "24e6", cohesive},
@@ -357,6 +358,58 @@ std::vector<KeyDoc> build_schema() {
        "normal contact penalty kn", "1e15", "contact = true"},
       {"interface.*.contact_tangential_stiffness", "number", "Pa/m", "0.0",
        ">= 0 (0 = contact_stiffness)", "tangential stick stiffness kt", "1e15", "contact = true"},
+      {"interface.*.static_friction", "number", "", "required", ">= 0",
+       "static friction coefficient mu_s (strength = cohesion + mu x compression)", "0.677",
+       friction},
+      {"interface.*.dynamic_friction", "number", "", "required", "[0, static_friction]",
+       "dynamic friction coefficient mu_d, reached after a slip of dc", "0.525", friction},
+      {"interface.*.dc", "number", "m", "required", "> 0", "slip-weakening distance Dc", "0.4",
+       friction},
+      {"interface.*.cohesion", "number", "Pa", "0.0", ">= 0", "cohesion added to the strength",
+       "0.0", friction},
+      {"interface.*.initial_traction", "[normal, shear]", "Pa", "[0.0, 0.0]", "finite",
+       "initial fault traction (traction-offset form): normal (tension positive, < 0 "
+       "compresses) and shear (> 0 drives the upper body along the tangent, +x on a line drawn "
+       "in +x)",
+       "[-120e6, 70e6]", friction},
+      {"interface.*.normal_stiffness", "number", "Pa/m",
+       "depends: M / h, the stiffer body's P-wave modulus over the cell size", "> 0",
+       "penalty against interpenetration kn", "1e9", friction},
+      {"interface.*.stick_stiffness", "number", "Pa/m", "depends: M / h, as normal_stiffness",
+       "> 0", "tangential spring kt of stuck faces", "1e9", friction},
+      {"interface.*.overstressed", "boolean", "", "false", "true, false",
+       "allow an initial shear traction above the static strength on the whole fault (it all "
+       "slides at once, as in the 1D slip-weakening test); without it that is an input error",
+       "true", friction},
+      {"interface.*.rupture_slip_rate", "number", "m/s", "0.001", "> 0",
+       "a node's rupture time is the first time its slip rate exceeds this "
+       "(interface_nodes.csv)",
+       "0.001"},
+      {"interface.*.stretches", "array of tables", "", "none", "",
+       "stretches of the fault with their own parameters (a nucleation patch, a stress patch, a "
+       "barrier): each [[interface.NAME.stretches]] has from, to and any of static_friction, "
+       "dynamic_friction, dc, cohesion, initial_traction, normal_stiffness, stick_stiffness; "
+       "later stretches override earlier ones",
+       "", friction},
+      {"interface.*.stretches[].from", "[x, y]", "m", "required",
+       "on the interface's line (within half a cell)", "one end of the stretch",
+       "[-1500.0, 0.0]"},
+      {"interface.*.stretches[].to", "[x, y]", "m", "required",
+       "on the interface's line; differs from from", "the other end", "[1500.0, 0.0]"},
+      {"interface.*.stretches[].static_friction", "number", "", "the interface's", ">= 0",
+       "mu_s here (a barrier: a very high value)", "10000.0"},
+      {"interface.*.stretches[].dynamic_friction", "number", "", "the interface's",
+       "[0, static_friction]", "mu_d here", "0.525"},
+      {"interface.*.stretches[].dc", "number", "m", "the interface's", "> 0", "Dc here", "0.4"},
+      {"interface.*.stretches[].cohesion", "number", "Pa", "the interface's", ">= 0",
+       "cohesion here", "0.0"},
+      {"interface.*.stretches[].initial_traction", "[normal, shear]", "Pa", "the interface's",
+       "finite", "initial traction here (a nucleation patch: shear above the static strength)",
+       "[-120e6, 81.6e6]"},
+      {"interface.*.stretches[].normal_stiffness", "number", "Pa/m", "the interface's", "> 0",
+       "kn here", "1e9"},
+      {"interface.*.stretches[].stick_stiffness", "number", "Pa/m", "the interface's", "> 0",
+       "kt here", "1e9"},
       {"interface.*.bonded_to", "number", "m", "none",
        "must lie in (end, right end of where both bodies meet]",
        "tie the two halves from end to here (a bonded stretch ahead of the weak plane)", "0.125",

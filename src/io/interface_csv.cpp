@@ -26,9 +26,24 @@ void write_interface_csv(const std::string& path, const CohesiveInterface& c, do
       if (k > 0)
         h.damage = std::max(h.damage, c.gp_damage[(k - 1) * CohesiveInterface::kGauss + g]);
     }
-    const LawResponse r =
-        std::visit([&](const auto& law) { return law.respond(dn, dt, h); }, c.spec.law);
-    const CohesiveTraction T = cracked ? CohesiveTraction{0.0, 0.0} : CohesiveTraction{r.tn, r.tt};
+    const CohesiveLaw& law = node_law_variant(c, k);
+    CohesiveTraction T{0.0, 0.0};
+    if (const auto* f = std::get_if<SlipWeakening>(&law)) {
+      // Friction is history-dependent: the total traction T0 + dT of the Gauss points next to
+      // the node (the segments' first and last), averaged.
+      const std::size_t G = std::size_t(CohesiveInterface::kGauss);
+      double tn = 0.0, tt = 0.0;
+      int count = 0;
+      if (k < c.num_segments()) tn += c.gp_tn[k * G], tt += c.gp_tt[k * G], ++count;
+      if (k > 0 || c.closed) {
+        const std::size_t prev = k > 0 ? k - 1 : c.num_segments() - 1;
+        tn += c.gp_tn[prev * G + G - 1], tt += c.gp_tt[prev * G + G - 1], ++count;
+      }
+      T = {f->tn0 + tn / count, f->tt0 + tt / count};
+    } else if (!cracked) {
+      const LawResponse r = std::visit([&](const auto& l) { return l.respond(dn, dt, h); }, law);
+      T = {r.tn, r.tt};
+    }
     // Jumps and tractions in the node's frame (normal, tangent); forces and positions in x, y.
     s += fmt::format(
         "{:.9e},{:.9e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.9e},{:.9e},{},{:.9e},{:.9e},{:."

@@ -37,9 +37,12 @@ void Progress::print(long step, double time, bool final) {
   const double wall = elapsed();
   const double frac = end_time_ > 0 ? time / end_time_ : 1.0;
   const double eta = frac > 0 ? wall * (1.0 - frac) / frac : 0.0;
+  // Microseconds for laboratory runs, seconds for those that last a millisecond or more.
+  const bool micro = end_time_ < 1e-3;
   const std::string line =
-      fmt::format("step {}/{}  t = {:.4g} us ({:5.1f} %)  wall {:.1f} s  ETA {:.1f} s", step,
-                  total_steps_, time * 1e6, 100.0 * frac, wall, eta);
+      fmt::format("step {}/{}  t = {:.4g} {} ({:5.1f} %)  wall {:.1f} s  ETA {:.1f} s", step,
+                  total_steps_, micro ? time * 1e6 : time, micro ? "us" : "s", 100.0 * frac,
+                  wall, eta);
   if (tty_) {
     fmt::print(stderr, "\r{:<90}{}", line, final ? "\n" : "");
   } else {

@@ -33,7 +33,9 @@ inline PointStencil point_stencil(const Grid& g, double x, double y) {
     return {i, j, {1.0 - ax, ax}, {1.0 - ay, ay}};
   }
   const double fx = (x - g.x.origin) / g.x.h, fy = (y - g.y.origin) / g.y.h;
-  const int i = int(std::floor(fx)), j = int(std::floor(fy));
+  // A face on the grid's last node line uses the last cell (weight 1 on that line).
+  const int i = std::min(int(std::floor(fx)), g.x.cells - 1);
+  const int j = std::min(int(std::floor(fy)), g.y.cells - 1);
   const double ax = fx - i, ay = fy - j;
   return {i, j, {1.0 - ax, ax}, {1.0 - ay, ay}};
 }
@@ -62,9 +64,11 @@ inline FaceStencil face_stencil(const State& s, int field, double x, double y) {
   return f;
 }
 
-// A face point must keep its bilinear 2x2 stencil inside the grid.
+// A face point must keep its bilinear 2x2 stencil inside the grid (its edges included: a
+// fault may run across the whole domain, as in the 1D slip-weakening test).
 inline bool face_inside(const Grid& g, double x, double y) {
-  return x > g.x.node(0) && x < g.x.node(g.x.cells) && y > g.y.node(0) && y < g.y.node(g.y.cells);
+  return x >= g.x.node(0) && x <= g.x.node(g.x.cells) && y >= g.y.node(0) &&
+         y <= g.y.node(g.y.cells);
 }
 
 }  // namespace
@@ -76,7 +80,7 @@ namespace {
 template <class Law>
 void evaluate_with(CohesiveInterface& c, const Law& law, double t, double t_before) {
   constexpr bool kXuNeedleman = std::is_same_v<Law, XuNeedleman>;
-  const double crit = law.crack_threshold(c.spec.separation_factor);
+  const bool stretches = !c.gp_law.empty();
   const bool contact = c.spec.contact;
   const ContactLaw& contact_law = c.spec.contact_law;
   const long nseg = long(c.num_segments());
@@ -96,14 +100,16 @@ void evaluate_with(CohesiveInterface& c, const Law& law, double t, double t_befo
       const double Na = 0.5 * (1.0 - kXi[g]), Nb = 0.5 * (1.0 + kXi[g]);
       const double jx = Na * jx_a + Nb * jx_b, jy = Na * jy_a + Nb * jy_b;  // linear jump
       const double dn = nx * jx + ny * jy, dt = tx * jx + ty * jy;          // in the segment frame
-      GaussHistory h{c.gp_damage[i], c.gp_slip[i]};
+      const Law& L = stretches ? law_of(c, law, c.gp_law[i]) : law;  // a stretch's own law
+      GaussHistory h{c.gp_damage[i], c.gp_slip[i], c.gp_dt[i]};
       LawResponse r{0.0, 0.0, 0.0};
       if constexpr (kXuNeedleman) {  // separated at |jump| >= 5 delta_t (SPEC §3)
-        if (!c.gp_separated[i] && std::hypot(dn, dt) >= crit) c.gp_separated[i] = 1, h.slip = dt;
+        if (!c.gp_separated[i] && std::hypot(dn, dt) >= L.crack_threshold(c.spec.separation_factor))
+          c.gp_separated[i] = 1, h.slip = dt;
       }
       if (!c.gp_separated[i]) {
-        r = law.respond(dn, dt, h);  // E7-E8; stiffness: the E6 bound (solver/time_step.hpp)
-        if (law.separated(h)) c.gp_separated[i] = 1, h.slip = dt, r = {0.0, 0.0, 0.0};
+        r = L.respond(dn, dt, h);  // E7-E8; stiffness: the E6 bound (solver/time_step.hpp)
+        if (L.separated(h)) c.gp_separated[i] = 1, h.slip = dt, r = {0.0, 0.0, 0.0};
       } else if (contact) {
         r = contact_law.respond(dn, dt, h);
       }
@@ -137,7 +143,9 @@ void evaluate_with(CohesiveInterface& c, const Law& law, double t, double t_befo
     if (has_prev) fx += c.seg_fb_x[prev], fy += c.seg_fb_y[prev], stiff += c.seg_kb[prev];
     if (k <= last_seg) fx += c.seg_fa_x[k], fy += c.seg_fa_y[k], stiff += c.seg_ka[k];
     c.fx_node[k] = fx, c.fy_node[k] = fy, c.stiffness_node[k] = stiff;
-    const double opening = law.crack_measure(c.jump_normal(k), c.jump_tangential(k));
+    const Law& L = c.node_law.empty() ? law : law_of(c, law, c.node_law[k]);
+    const double crit = L.crack_threshold(c.spec.separation_factor);
+    const double opening = L.crack_measure(c.jump_normal(k), c.jump_tangential(k));
     if (c.node_crack_time[k] < 0.0 && opening >= crit) {
       // Linear in time between the step's ends: the E10 tip is then sampled at exact times.
       const double before = c.jump_before[k];
@@ -159,8 +167,10 @@ namespace {
 void record_openings(CohesiveInterface& c) {
   std::visit(
       [&](const auto& law) {
-        for (std::size_t k = 0; k < c.num_nodes(); ++k)
-          c.jump_before[k] = law.crack_measure(c.jump_normal(k), c.jump_tangential(k));
+        for (std::size_t k = 0; k < c.num_nodes(); ++k) {
+          const auto& L = c.node_law.empty() ? law : law_of(c, law, c.node_law[k]);
+          c.jump_before[k] = L.crack_measure(c.jump_normal(k), c.jump_tangential(k));
+        }
       },
       c.spec.law);
 }
@@ -348,6 +358,11 @@ void advance_interfaces(State& s, const double* vel_x, const double* vel_y) {
         c.reversal_streak[k] = 0;
       }
       c.last_increment_n[k] = inc_n, c.last_increment_t[k] = inc_t;
+      // Rupture front and peak slip rate (SCEC: first time the slip rate exceeds 1 mm/s).
+      const double slip_rate = std::fabs(inc_t) / dt;
+      c.node_peak_slip_rate[k] = std::max(c.node_peak_slip_rate[k], slip_rate);
+      if (c.node_rupture_time[k] < 0.0 && slip_rate > c.spec.rupture_slip_rate)
+        c.node_rupture_time[k] = s.time;
       if (c.reversal_streak[k] >= kUnstableStreak && size > floor &&
           size > kUnstableGrowth * c.streak_base[k])
         unstable = std::min(unstable, kl);

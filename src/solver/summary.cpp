@@ -38,7 +38,9 @@ CaseSummary summarize(const Case& c) {
   for (const InterfaceSpec& is : c.interfaces) {
     const double rho = std::min(c.materials[c.bodies[is.upper_body].material].density,
                                 c.materials[c.bodies[is.lower_body].material].density);
-    const double law_k = is.precracked ? 0.0 : stiffness_at_rest(is.law);
+    double law_k = is.precracked ? 0.0 : stiffness_at_rest(is.law);
+    for (const LawStretch& st : is.stretches)
+      law_k = std::max(law_k, is.precracked ? 0.0 : stiffness_at_rest(st.law));
     const double contact_k = is.contact ? is.contact_law.stability_stiffness() : 0.0;
     const double k = std::max(law_k, contact_k) * h;
     const double m = 0.5 * rho * h * h;
