@@ -100,6 +100,8 @@ TEST(CaseToml, every_bad_input_is_reported_with_key_value_and_rule) {
       {"follow_edge on a tangential bc", "component = \"x\"", "component = \"y\"\nfollow_edge = true", "", {"boundary.push.follow_edge", "normal to the left edge"}},
       {"follow_edge not a bool", "component = \"x\"", "component = \"x\"\nfollow_edge = 1", "", {"boundary.push.follow_edge", "true or false"}},
       {"stop flag not a bool", "cfl = 0.4", "cfl = 0.4\nstop_at_interface_end = \"yes\"", "", {"time.stop_at_interface_end", "true or false"}},
+      {"absorbing edge also driven", "[output]", "[absorbing]\nedges = [\"left\"]\n[output]", "", {"absorbing.edges", "\"left\"", "boundary.push", "cannot also"}},
+      {"absorbing edge name", "[output]", "[absorbing]\nedges = [\"front\"]\n[output]", "", {"absorbing.edges", "\"front\"", "\"right\""}},
       {"negative snapshot interval", "history_interval = 0.1e-6", "history_interval = 0.1e-6\nsnapshot_interval = -1.0", "", {"output.snapshot_interval", ">= 0"}},
   };
   EXPECT_GE(cases.size(), 15u);

@@ -110,6 +110,7 @@ struct Case {
   TimeSpec time;
   SolverSpec solver;
   std::vector<VelocityBC> boundary;
+  std::vector<Edge> absorbing_edges;  // [absorbing].edges: viscous dashpots (bc/absorbing.hpp)
   Loads loads;  // [loads]: tractions, body forces, velocity regions (bc/loads.hpp)
   std::vector<InterfaceSpec> interfaces;  // cohesive interfaces (SPEC §3)
   std::vector<std::string> interface_names;

@@ -180,6 +180,7 @@ Case build_case(const toml::table& root, const std::string& case_dir) {
   // condition or load naming the body acts on all of them.
   parse_interfaces(top, c, ctx);
   parse_boundary(top, c, ctx);
+  parse_absorbing(top, c);
   parse_loads(top, c, ctx);
   set_automatic_margin(c);
   parse_output(top, c);

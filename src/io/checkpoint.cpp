@@ -371,7 +371,7 @@ void fields(A& a, CohesiveInterface& c) {
   a("work", c.work);
 }
 
-// Rebuilt from the case by make_state() and not stored: grid, stiffness, boundary, bonded,
+// Rebuilt from the case by make_state() and not stored: grid, stiffness, boundary, absorbing, bonded,
 // cohesive_safety, loads (LoadState: particle ids from the t = 0 particles; indices, region
 // nodes and forces are rebuilt after the restored sort and in every step; the loads' work is
 // in external_work). Set by the driver before every step: dt_cap; tests only: forced_dt.

@@ -186,6 +186,14 @@ std::vector<KeyDoc> build_schema() {
       {"solver.threads", "integer", "", "0", "[0, 1024] (0 = all cores)",
        "OpenMP threads (results do not depend on it)", "2"},
 
+      {"absorbing", "table", "", "none", "",
+       "Absorbing domain edges: viscous dashpots rho c_P (normal) and rho c_S (tangential) on "
+       "the edge nodes, so waves leave the domain (docs/faults.md).",
+       ""},
+      {"absorbing.edges", "array of strings", "", "required",
+       "each one of \"left\", \"right\", \"bottom\", \"top\", once; not an edge a [boundary] "
+       "condition drives",
+       "the absorbing edges", "[\"left\", \"right\", \"bottom\"]"},
       {"boundary", "named tables", "", "none", "",
        "Prescribed velocities on edges of the domain, one [boundary.NAME] table each (SPEC E2).",
        ""},

@@ -93,4 +93,30 @@ void set_automatic_margin(Case& c) {
   c.grid.margin = std::min(m, c.grid.max_margin());
 }
 
+// [absorbing] edges = ["left", ...]: dashpot edges (bc/absorbing.hpp). An edge that is also
+// driven by a [boundary] condition is an error: the dashpot would fight the prescribed motion.
+void parse_absorbing(Section& top, Case& c) {
+  Section a = top.table("absorbing", false, allowed_keys("absorbing"));
+  if (!top.has("absorbing")) return;
+  const std::vector<std::string> names = a.strings("edges");
+  if (names.empty()) fail(a.key("edges"), "(missing)", "required: a non-empty array of edges");
+  for (const std::string& n : names) {
+    Edge e;
+    if (n == "left") e = Edge::left;
+    else if (n == "right") e = Edge::right;
+    else if (n == "bottom") e = Edge::bottom;
+    else if (n == "top") e = Edge::top;
+    else fail(a.key("edges"), "\"" + n + "\"", "each must be one of \"left\", \"right\", \"bottom\", \"top\"");
+    if (std::find(c.absorbing_edges.begin(), c.absorbing_edges.end(), e) != c.absorbing_edges.end())
+      fail(a.key("edges"), "\"" + n + "\"", "lists an edge twice");
+    for (const VelocityBC& bc : c.boundary)
+      if (bc.edge == e)
+        fail(a.key("edges"), "\"" + n + "\"",
+             fmt::format("the {} edge is driven by boundary.{}: an absorbing edge cannot also "
+                         "have a prescribed velocity",
+                         n, bc.name));
+    c.absorbing_edges.push_back(e);
+  }
+}
+
 }  // namespace rupture

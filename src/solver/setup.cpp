@@ -55,6 +55,7 @@ State make_state(const Case& c) {
   s.boundary = c.boundary;
   update_edge_lines(s.boundary, s.grid, 0.0, s.bc_lines);
   s.bc_nodes = resolve_nodes(s.boundary, s.grid, num_fields, s.bc_lines);
+  s.absorbing = absorbing_nodes(c, s.grid);
 
   const CaseSummary summary = summarize(c);
   s.limits.cfl_dt = summary.dt_cfl;

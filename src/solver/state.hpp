@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "bc/absorbing.hpp"
 #include "bc/loads.hpp"
 #include "bc/velocity_bc.hpp"
 #include "cohesive/interface.hpp"
@@ -83,6 +84,7 @@ struct State {
   std::vector<VelocityBC> boundary;
   std::vector<NodeBC> bc_nodes;
   std::vector<int> bc_lines;  // per condition: the grid line its edge is on now (bc/velocity_bc)
+  std::vector<AbsorbingNode> absorbing;  // dashpots of the absorbing edges (bc/absorbing.hpp)
   ScatterPlan plan;
   std::vector<CohesiveInterface> interfaces;
   std::vector<std::vector<std::size_t>> bonded;  // per interface: tied grid nodes (row y0)

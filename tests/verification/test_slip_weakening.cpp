@@ -109,3 +109,35 @@ TEST(SlipWeakening, one_dimensional_fault_slips_as_the_closed_form_answer) {
   EXPECT_NEAR(mm.crack_time / m.crack_time, 1.0, 1e-6);
   EXPECT_NEAR(mm.at(0.5) / m.at(0.5), 1.0, 1e-6);
 }
+
+// Bad fault input stops before any work, naming the key, the value and the rule.
+TEST(SlipWeakening, bad_fault_input_is_named) {
+  auto error_of = [](const std::vector<std::string>& set) {
+    try {
+      load_case(RUPTURE_SOURCE_DIR "/examples/slip_weakening_1d.toml", set);
+    } catch (const std::exception& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  const struct {
+    std::vector<std::string> set;
+    std::vector<std::string> expect;
+  } cases[] = {
+      {{"interface.fault.dynamic_friction=0.7"},
+       {"interface.fault.dynamic_friction", "0.7", "[0, static_friction = 0.677]"}},
+      {{"interface.fault.dc=0"}, {"interface.fault.dc", "0", "> 0"}},
+      {{"interface.fault.dc=-1"}, {"interface.fault.dc", "-1", "> 0"}},
+      {{"interface.fault.overstressed=false"},
+       {"interface.fault.initial_traction", "exceeds the static strength", "everywhere"}},
+      {{"interface.fault.friction=0.3"}, {"interface.fault.friction", "slip_weakening"}},
+      {{"interface.fault.delta_n=1e-6"}, {"interface.fault.delta_n", "not a parameter"}},
+      {{"interface.fault.initial_traction=[1.0]"}, {"interface.fault.initial_traction", "two"}},
+  };
+  for (const auto& c : cases) {
+    const std::string msg = error_of(c.set);
+    EXPECT_FALSE(msg.empty()) << c.set[0];
+    for (const std::string& e : c.expect)
+      EXPECT_NE(msg.find(e), std::string::npos) << c.set[0] << ": '" << e << "' not in: " << msg;
+  }
+}
