@@ -292,7 +292,8 @@ TEST(InputSchema, variant_key_lists) {
   EXPECT_EQ(variant_keys("bodies.*.minus[]", "shape", "rectangle"), (V{"min", "max"}));
   EXPECT_EQ(variant_keys("bodies.*.minus[]", "shape", "ellipse"), (V{"center", "radii", "angle"}));
   EXPECT_EQ(allowed_keys(""), (V{"title", "model", "materials", "grid", "bodies", "time", "solver",
-                                 "absorbing", "boundary", "loads", "interface", "output"}));
+                                 "absorbing", "boundary", "loads", "interface", "stations",
+                                 "output"}));
 }
 
 TEST(InputSchema, concrete_keys_find_their_entries) {

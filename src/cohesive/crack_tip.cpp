@@ -318,10 +318,11 @@ void CrackTracker::write(const std::string& dir, const std::string& suffix, doub
 
 void write_rupture_times(const std::string& dir, const std::string& suffix,
                          const CohesiveInterface& c) {
-  std::string out = "s,x,y,crack_time\n";
+  std::string out = "s,x,y,crack_time,rupture_time,peak_slip_rate,slip,opening\n";
   for (std::size_t k = 0; k < c.num_nodes(); ++k)
-    out += fmt::format("{:.9e},{:.9e},{:.9e},{:.9e}\n", c.s0[k], c.x0[k], c.y0[k],
-                       c.node_crack_time[k]);
+    out += fmt::format("{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.6e},{:.6e},{:.6e}\n", c.s0[k],
+                       c.x0[k], c.y0[k], c.node_crack_time[k], c.node_rupture_time[k],
+                       c.node_peak_slip_rate[k], c.jump_tangential(k), c.jump_normal(k));
   write_file_atomic(dir + "/rupture_time" + suffix + ".csv", out);
 }
 

@@ -8,6 +8,7 @@
 
 #include "bc/loads.hpp"
 #include "bc/velocity_bc.hpp"
+#include "io/stations.hpp"
 #include "cohesive/interface.hpp"
 #include "geometry/shape.hpp"
 #include "grid/grid.hpp"
@@ -94,6 +95,7 @@ struct OutputSpec {
   double crack_sample_interval = 0.05e-6;  // crack-tip sampling interval, s (E10)
   double interface_interval = 0.0;  // interface profiles (DIR/interface/*.csv), s; 0 = none
   double mach_interval = 0.0;       // shear Mach-angle readings (DIR/mach_angle*.csv), s; 0 = none
+  double station_interval = 0.0;    // station samples (DIR/stations/*.csv), s; 0 = every step
   bool has_snapshot_region = false;
   double snapshot_region[4]{};      // xmin, ymin, xmax, ymax of the particles written, m
 };
@@ -114,6 +116,7 @@ struct Case {
   Loads loads;  // [loads]: tractions, body forces, velocity regions (bc/loads.hpp)
   std::vector<InterfaceSpec> interfaces;  // cohesive interfaces (SPEC §3)
   std::vector<std::string> interface_names;
+  std::vector<StationSpec> stations;  // [stations] (io/stations.hpp)
   OutputSpec output;
   std::string input_toml;  // the merged input (file + --set) as TOML, echoed into run.json
   bool read_table_files = false;  // some time function came from a table_file (inline above)

@@ -38,6 +38,7 @@ void parse_time(Section& top, Case& c);
 void parse_solver(Section& top, Case& c);
 void parse_boundary(Section& top, Case& c, ParseContext& ctx);
 void parse_absorbing(Section& top, Case& c);  // after parse_boundary
+void parse_stations(Section& top, Case& c);   // after parse_interfaces
 void parse_interfaces(Section& top, Case& c, ParseContext& ctx);
 // The bodies the name `s.key(key)` stands for (ParseContext::body_parts); an unknown name is an
 // InputError listing the names allowed, with the nearest as a hint.

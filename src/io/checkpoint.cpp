@@ -74,6 +74,8 @@ void fields(A& a, MachLine& m);
 template <class A>
 void fields(A& a, MachReading& r);
 template <class A>
+void fields(A& a, StationSeries& r);
+template <class A>
 void fields(A& a, Schedule& s);
 template <class A>
 void fields(A& a, RunContext& c);
@@ -442,6 +444,11 @@ void fields(A& a, MachLine& m) {
 }
 
 template <class A>
+void fields(A& a, StationSeries& r) {
+  a("rows", r.rows);
+}
+
+template <class A>
 void fields(A& a, MachReading& r) {
   a("interface", r.interface);
   a("time", r.time);
@@ -472,6 +479,8 @@ void fields(A& a, RunContext& c) {
   a("schedule.crack", c.crack);
   a("schedule.checkpoint", c.checkpoint);
   a("schedule.mach", c.mach_schedule);
+  a("stations", c.stations);
+  a("schedule.stations", c.station_schedule);
   a("interface_files", c.interface_files);
   a("wall_before", c.wall_before);
   a("segments", c.segments);

@@ -427,6 +427,20 @@ std::vector<KeyDoc> build_schema() {
        "a tied (bonded) stretch along these points", "[[0.03, 0.005], [0.05, 0.005]]",
        "the polyline or circle form"},
 
+      {"stations", "named tables", "", "none", "",
+       "Points whose time series the run records, one [stations.NAME] table each "
+       "(stations/NAME.csv; docs/faults.md).",
+       ""},
+      {"stations.*", "table", "", "", "",
+       "One station: on a fault (interface given: slip, slip rate, opening, shear and normal "
+       "traction) or in a body (the velocity of the particle nearest the point).",
+       ""},
+      {"stations.*.at", "[x, y]", "m", "required",
+       "in the grid; with interface: on that interface's line (within half a cell)",
+       "where the station is", "[4500.0, 0.0]"},
+      {"stations.*.interface", "string", "", "none (a body station)", "an [interface] entry",
+       "the fault the station lies on", "\"fault\""},
+
       {"output", "table", "", "optional", "", "What the run writes, and how often.", ""},
       {"output.history_interval", "number", "s", "depends: time.end / 200",
        ">= 0 (s; 0 = every step)", "energy history (history.csv) interval", "0.1e-6"},
@@ -434,7 +448,9 @@ std::vector<KeyDoc> build_schema() {
        "particle snapshots (snapshots/*.h5, particles.xdmf) interval", "2.2e-6"},
       {"output.progress_interval", "number", "s", "1.0", "> 0 (wall-clock s)",
        "progress line interval, in wall-clock seconds", "1.0"},
-      {"output.crack_sample_interval", "number", "s", "0.05e-6", "> 0",
+      {"output.station_interval", "number", "s", "0", ">= 0 (s; 0 = every step)",
+       "station samples (stations/*.csv) interval", "0.005"},
+      {"output.crack_sample_interval", "number", "s", "depends: max(0.05e-6, time.end / 384)", "> 0",
        "crack-tip sampling interval (SPEC E10); speeds use 31 samples (E11)", "0.02e-6"},
       {"output.interface_interval", "number", "s", "depends: output.snapshot_interval",
        ">= 0 (s; 0 = none)", "interface profiles (interface/interface_*.csv) interval", "0.2e-6"},

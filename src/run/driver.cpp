@@ -109,6 +109,7 @@ void set_up(RunContext& r, const Case& c, const std::string& dir, double checkpo
   r.crack = Schedule(c.output.crack_sample_interval);
   r.checkpoint = Schedule(checkpoint_interval);
   r.mach_schedule = Schedule(c.output.mach_interval);
+  r.station_schedule = Schedule(c.output.station_interval);
 }
 
 }  // namespace
@@ -126,6 +127,9 @@ RunResult run_case(const Case& c, const RunOptions& options) {
   const CaseSummary summary = summarize(c);
   RunContext ctx;
   set_up(ctx, c, dir, options.checkpoint_interval);
+  // Where the stations read, from the state at t = 0 (a body station follows the particle
+  // nearest its point then), before a checkpoint replaces the state.
+  std::vector<StationProbe> probes = make_probes(c.stations, ctx.s);
   if (options.resume) {
     read_checkpoint(checkpoint_path(dir), ctx);
     ++ctx.segments;
@@ -199,7 +203,9 @@ RunResult run_case(const Case& c, const RunOptions& options) {
     }
   };
 
+  auto sample_stations_now = [&]() { sample_stations(s, probes, ctx.stations); };
   if (!options.resume) {
+    if (!c.stations.empty()) sample_stations_now();
     history.samples.push_back(sample(s));
     if (snapshots) snapshots->write(s.particles, s.time, s.step);
     if (c.output.interface_interval > 0) write_interfaces();
@@ -234,6 +240,7 @@ RunResult run_case(const Case& c, const RunOptions& options) {
   auto flush = [&]() {
     history.write(dir + "/history.csv");
     write_cracks();
+    write_stations(dir, c.stations, probes, ctx.stations);
     fill_record(record);
     write_file_atomic(dir + "/run.json", run_json(c, summary, record));
     last_flush = std::chrono::steady_clock::now();
@@ -277,6 +284,11 @@ RunResult run_case(const Case& c, const RunOptions& options) {
         if (ctx.mach_schedule.interval > 0) read_mach_angles();
         record.stop_reason = result.stop_reason = "crack_reached_interface_end";
         break;
+      }
+      Schedule& st = ctx.station_schedule;
+      if (!c.stations.empty() && (st.interval <= 0 || st.due(s.time, eps) || last)) {
+        sample_stations_now();
+        st.advance(s.time, eps);
       }
       if (hist.due(s.time, eps) || last) {
         history.samples.push_back(sample(s));
@@ -347,6 +359,7 @@ RunResult run_case(const Case& c, const RunOptions& options) {
     try {
       history.write(dir + "/history.csv");
       write_cracks();
+      write_stations(dir, c.stations, probes, ctx.stations);
     } catch (const IoError& e) {
       io_failure = e.what();
     }

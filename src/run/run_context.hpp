@@ -12,6 +12,7 @@
 #include "cohesive/mach_angle.hpp"
 #include "io/history.hpp"
 #include "io/snapshot.hpp"
+#include "io/stations.hpp"
 #include "solver/state.hpp"
 
 namespace rupture {
@@ -47,6 +48,8 @@ struct RunContext {
   double eps = 0.0;                           // absorbs round-off in accumulated time, s
   Schedule hist, snap, prof, crack, checkpoint;
   Schedule mach_schedule;  // Mach-angle readings (output.mach_interval)
+  std::vector<StationSeries> stations;  // per [stations] entry: the rows recorded so far
+  Schedule station_schedule;            // output.station_interval (0: every step)
   int interface_files = 0;   // interface/*.csv written so far
   double wall_before = 0.0;  // wall seconds of earlier segments (resumed runs)
   int segments = 1;          // 1 + number of resumptions

@@ -61,7 +61,9 @@ Measured run(double L) {
            "bodies.lower.min=" + pair(0.0, -1000.0 * L), "bodies.lower.max=" + pair(40.0 * L, 0.0),
            "interface.fault.end=" + num(40.0 * L),    "interface.fault.dc=" + num(kDc * L),
            "loads.plane_wave.min=" + pair(0.0, -1000.0 * L),
-           "loads.plane_wave.max=" + pair(40.0 * L, 1000.0 * L), "time.end=" + num(0.55 * L)};
+           "loads.plane_wave.max=" + pair(40.0 * L, 1000.0 * L), "time.end=" + num(0.55 * L),
+           "stations.fault_centre.at=" + pair(20.0 * L, 0.0),
+           "stations.above_500m.at=" + pair(20.0 * L, 500.0 * L)};
   State s = make_state(load_case(RUPTURE_SOURCE_DIR "/examples/slip_weakening_1d.toml", set));
   Measured m;
   const CohesiveInterface& c = s.interfaces.at(0);

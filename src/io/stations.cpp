@@ -1,0 +1,96 @@
+// rupture/io/stations.cpp
+#include "io/stations.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "io/atomic_file.hpp"
+#include "io/interface_csv.hpp"
+#include "solver/state.hpp"
+
+namespace rupture {
+
+std::vector<StationProbe> make_probes(const std::vector<StationSpec>& specs, const State& s) {
+  std::vector<StationProbe> out;
+  for (const StationSpec& st : specs) {
+    StationProbe p;
+    p.interface = st.interface;
+    if (st.interface >= 0) {
+      const CohesiveInterface& c = s.interfaces[std::size_t(st.interface)];
+      const double arc = project(c.spec.geometry(), st.x, st.y).s;
+      // The node pair around the arc length (open line; a closed one ends on node 0).
+      const std::size_t n = c.num_nodes();
+      std::size_t k = 0;
+      while (k + 1 < n && c.s0[k + 1] <= arc) ++k;
+      p.a = k;
+      p.b = k + 1 < n ? k + 1 : (c.closed ? 0 : k);
+      const double len = p.b == p.a ? 1.0 : (p.b == 0 ? c.length() : c.s0[p.b]) - c.s0[p.a];
+      p.f = p.b == p.a ? 0.0 : std::clamp((arc - c.s0[p.a]) / len, 0.0, 1.0);
+    } else {
+      const Particles& P = s.particles;
+      double best = INFINITY;
+      for (std::size_t q = 0; q < P.size(); ++q) {
+        const double d = std::hypot(P.x[q] - st.x, P.y[q] - st.y);
+        if (d < best) best = d, p.slot = q;
+      }
+      p.particle_id = P.id[p.slot];
+    }
+    out.push_back(p);
+  }
+  return out;
+}
+
+void sample_stations(const State& s, std::vector<StationProbe>& probes,
+                     std::vector<StationSeries>& series) {
+  series.resize(probes.size());
+  for (std::size_t i = 0; i < probes.size(); ++i) {
+    StationProbe& p = probes[i];
+    std::vector<double>& r = series[i].rows;
+    if (p.interface >= 0) {
+      const CohesiveInterface& c = s.interfaces[std::size_t(p.interface)];
+      auto mix = [&](double va, double vb) { return (1.0 - p.f) * va + p.f * vb; };
+      const double rate_a = s.dt > 0 ? c.last_increment_t[p.a] / s.dt : 0.0;
+      const double rate_b = s.dt > 0 ? c.last_increment_t[p.b] / s.dt : 0.0;
+      const CohesiveTraction ta = node_traction(c, p.a), tb = node_traction(c, p.b);
+      const double row[kFaultColumns] = {s.time,
+                                         mix(c.jump_tangential(p.a), c.jump_tangential(p.b)),
+                                         mix(rate_a, rate_b),
+                                         mix(c.jump_normal(p.a), c.jump_normal(p.b)),
+                                         mix(ta.tangential, tb.tangential),
+                                         mix(ta.normal, tb.normal)};
+      r.insert(r.end(), row, row + kFaultColumns);
+    } else {
+      const Particles& P = s.particles;
+      if (p.slot >= P.size() || P.id[p.slot] != p.particle_id)  // moved by a sort
+        p.slot = std::size_t(std::find(P.id.begin(), P.id.end(), p.particle_id) - P.id.begin());
+      const std::size_t q = p.slot;
+      const double row[kBodyColumns] = {s.time, P.x[q], P.y[q], P.vx[q], P.vy[q]};
+      r.insert(r.end(), row, row + kBodyColumns);
+    }
+  }
+}
+
+void write_stations(const std::string& dir, const std::vector<StationSpec>& specs,
+                    const std::vector<StationProbe>& probes,
+                    const std::vector<StationSeries>& series) {
+  if (specs.empty()) return;
+  std::filesystem::create_directories(dir + "/stations");
+  for (std::size_t i = 0; i < specs.size() && i < series.size(); ++i) {
+    const bool fault = probes[i].interface >= 0;
+    const std::size_t cols = fault ? kFaultColumns : kBodyColumns;
+    std::string out = fault ? "time,slip,slip_rate,opening,shear_traction,normal_traction\n"
+                            : "time,x,y,vx,vy\n";
+    const std::vector<double>& r = series[i].rows;
+    for (std::size_t k = 0; k + cols <= r.size(); k += cols) {
+      for (std::size_t j = 0; j < cols; ++j)
+        out += (j == 0 ? "" : ",") + fmt::format("{:.9e}", r[k + j]);
+      out += '\n';
+    }
+    write_file_atomic(dir + "/stations/" + specs[i].name + ".csv", out);
+  }
+}
+
+}  // namespace rupture
