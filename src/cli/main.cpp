@@ -41,6 +41,16 @@
 using namespace rupture;
 
 namespace {
+// A length in the unit that suits it (um, mm or m): laboratory and kilometre-scale cases alike.
+std::string show_length(double m) {
+  const double a = std::fabs(m);
+  if (a > 0.0 && a < 1e-3) return fmt::format("{:.4g} um", 1e6 * m);
+  if (a > 0.0 && a < 1.0) return fmt::format("{:.4g} mm", 1e3 * m);
+  return fmt::format("{:.4g} m", m);
+}
+}  // namespace
+
+namespace {
 
 void print_check(const std::string& path, const Case& c) {
   const CaseSummary s = summarize(c);
@@ -89,8 +99,8 @@ void print_check(const std::string& path, const Case& c) {
     std::string ties;
     for (const Polyline& tie : is.tie_geometries())
       ties += fmt::format("; bonded along {:g} m from ({:g}, {:g}) m", tie.length(), tie.x[0], tie.y[0]);
-    fmt::print("interface {}: {} segments of {:.4g} um {}; {}, {}{}{}; bodies {} (upper) and {}\n",
-               c.interface_names[k], is.segments, 1e6 * length / is.segments, where, law_name(is.law),
+    fmt::print("interface {}: {} segments of {} {}; {}, {}{}{}; bodies {} (upper) and {}\n",
+               c.interface_names[k], is.segments, show_length(length / is.segments), where, law_name(is.law),
                law_text, is.contact ? fmt::format("; contact, friction {:g}", is.contact_law.friction) : "",
                ties, c.bodies[std::size_t(is.upper_body)].name, c.bodies[std::size_t(is.lower_body)].name);
   }
@@ -105,8 +115,8 @@ void print_check(const std::string& path, const Case& c) {
   fmt::print("nodes={}\n", s.nodes);
   fmt::print("field_nodes={} ({} fields; {:.2f} x the grid)\n", s.field_nodes, s.fields,
              double(s.field_nodes) / double(s.nodes));
-  fmt::print("ghost_cells={} (margin {:.3g} mm for free surfaces to move into)\n", s.ghost_cells,
-             1e3 * c.grid.margin);
+  fmt::print("ghost_cells={} (margin {} for free surfaces to move into)\n", s.ghost_cells,
+             show_length(c.grid.margin));
   fmt::print("particles={}\n", s.particles);
   fmt::print("steps={}\n", s.steps);
   fmt::print("memory_estimate_mib={:.1f}\n", double(s.memory_bytes) / (1024.0 * 1024.0));

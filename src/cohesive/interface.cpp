@@ -71,6 +71,7 @@ CohesiveInterface make_interface(const InterfaceSpec& spec) {
   if (spec.precracked) c.node_crack_time.assign(n, 0.0);
   c.node_rupture_time.assign(n, -1.0);
   c.node_peak_slip_rate.assign(n, 0.0);
+  c.node_slip_path.assign(n, 0.0);
   if (!spec.stretches.empty()) {
     // The last stretch containing a point's arc length wins.
     auto which = [&](double s) {

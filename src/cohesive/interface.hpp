@@ -101,8 +101,10 @@ struct CohesiveInterface {
   // (derived from the spec, not state; empty when the interface has no stretches).
   std::vector<std::uint16_t> gp_law, node_law;
   // Rupture front (SCEC definition): the first time each node's slip rate exceeded
-  // spec.rupture_slip_rate (or -1), s, and the largest slip rate it has had, m/s.
+  // spec.rupture_slip_rate (or -1), s, and the largest slip rate it has had, m/s (on a fault:
+  // the rate of the slip path, sliding only; else of the tangential jump).
   std::vector<double> node_rupture_time, node_peak_slip_rate;
+  std::vector<double> node_slip_path;  // friction: the node's slip path D at the last step, m
   std::vector<double> seg_fa_x, seg_fa_y, seg_fb_x, seg_fb_y;  // per-segment end forces (scratch)
   // Tributary tangent stiffness of each node at its current openings, N/m^2 per unit
   // thickness (sum over the Gauss points of its segments of weight x N x the law's largest

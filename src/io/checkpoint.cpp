@@ -354,6 +354,7 @@ void fields(A& a, CohesiveInterface& c) {
   a("node_crack_time", c.node_crack_time);
   a("node_rupture_time", c.node_rupture_time);
   a("node_peak_slip_rate", c.node_peak_slip_rate);
+  a("node_slip_path", c.node_slip_path);
   a("gp_dn", c.gp_dn);
   a("gp_dt", c.gp_dt);
   a("gp_tn", c.gp_tn);

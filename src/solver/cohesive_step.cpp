@@ -143,6 +143,25 @@ void evaluate_with(CohesiveInterface& c, const Law& law, double t, double t_befo
     if (has_prev) fx += c.seg_fb_x[prev], fy += c.seg_fb_y[prev], stiff += c.seg_kb[prev];
     if (k <= last_seg) fx += c.seg_fa_x[k], fy += c.seg_fa_y[k], stiff += c.seg_ka[k];
     c.fx_node[k] = fx, c.fy_node[k] = fy, c.stiffness_node[k] = stiff;
+    // Rupture front and peak slip rate (SCEC: the first time the slip rate exceeds 1 mm/s).
+    // On a fault the rate that counts is that of the slip path (sliding only): the stick
+    // spring's elastic jump, which passing waves load, is no slip.
+    const double dt = t - t_before;
+    double slip_rate = dt > 0.0 ? std::fabs(c.last_increment_t[k]) / dt : 0.0;
+    if constexpr (std::is_same_v<Law, SlipWeakening>) {
+      const std::size_t G = std::size_t(kG);
+      double path = 0.0;
+      int count = 0;
+      if (k <= last_seg) path += c.gp_damage[k * G], ++count;
+      if (has_prev) path += c.gp_damage[prev * G + G - 1], ++count;
+      path /= count;
+      const double sliding = dt > 0.0 ? (path - c.node_slip_path[k]) / dt : 0.0;
+      c.node_slip_path[k] = path;
+      slip_rate = sliding;
+    }
+    c.node_peak_slip_rate[k] = std::max(c.node_peak_slip_rate[k], slip_rate);
+    if (c.node_rupture_time[k] < 0.0 && slip_rate > c.spec.rupture_slip_rate)
+      c.node_rupture_time[k] = t;
     const Law& L = c.node_law.empty() ? law : law_of(c, law, c.node_law[k]);
     const double crit = L.crack_threshold(c.spec.separation_factor);
     const double opening = L.crack_measure(c.jump_normal(k), c.jump_tangential(k));
@@ -358,11 +377,6 @@ void advance_interfaces(State& s, const double* vel_x, const double* vel_y) {
         c.reversal_streak[k] = 0;
       }
       c.last_increment_n[k] = inc_n, c.last_increment_t[k] = inc_t;
-      // Rupture front and peak slip rate (SCEC: first time the slip rate exceeds 1 mm/s).
-      const double slip_rate = std::fabs(inc_t) / dt;
-      c.node_peak_slip_rate[k] = std::max(c.node_peak_slip_rate[k], slip_rate);
-      if (c.node_rupture_time[k] < 0.0 && slip_rate > c.spec.rupture_slip_rate)
-        c.node_rupture_time[k] = s.time;
       if (c.reversal_streak[k] >= kUnstableStreak && size > floor &&
           size > kUnstableGrowth * c.streak_base[k])
         unstable = std::min(unstable, kl);
