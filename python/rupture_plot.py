@@ -4,7 +4,9 @@
 Reads what `rupture run` wrote in DIR and writes PNGs to DIR/figures/:
   crack_tip.png         tip position and E11 speed vs time, with c_R, c_S, sqrt(2) c_S, c_D
   crack_tip_NAME.png    per interface: tip and back tip along s and their speeds
-  rupture_time_NAME.png per interface: the time each node cracked along s
+  rupture_time_NAME.png per interface: the time each node cracked along s (and, for faults,
+                        the SCEC rupture time: slip rate above 1 mm/s)
+  stations.png          fault stations' slip rate and slip, body stations' speed (stations/)
   tau_max_fringes.png   tau_max = (sigma_1 - sigma_2)/2 around the crack tip (SPEC E13,
                         the paper's Fig. 7 look: banded contours read like isochromatics)
   cohesive_profiles.png tangential and normal cohesive tractions and nodal forces along the
@@ -52,6 +54,56 @@ def save(fig, path):
     plt.close(fig)
     os.replace(tmp, path)
     print(f"figure={path}")
+
+
+def length_unit(values):
+    """(factor, name) that shows lengths of this size readably: mm in the laboratory, km for faults."""
+    top = float(np.nanmax(np.abs(values))) if len(values) else 0.0
+    if top >= 1e3:
+        return 1e-3, "km"
+    if top >= 1.0:
+        return 1.0, "m"
+    return 1e3, "mm"
+
+
+def time_unit(values):
+    """(factor, name) for times of this size: µs in the laboratory, s for earthquakes."""
+    top = float(np.nanmax(np.abs(values))) if len(values) else 0.0
+    return (1.0, "s") if top >= 1e-3 else (1e6, "µs")
+
+
+def plot_stations(d, fig_dir):
+    """stations.png: every fault station's slip rate and slip against time, and every body
+    station's velocity (DIR/stations/*.csv)."""
+    files = sorted(glob.glob(os.path.join(d, "stations", "*.csv")))
+    series = [(os.path.basename(f)[:-4], read_csv(f)) for f in files]
+    fault = [(n, s) for n, s in series if s and "slip_rate" in s]
+    body = [(n, s) for n, s in series if s and "vx" in s]
+    panels = (2 if fault else 0) + (1 if body else 0)
+    if panels == 0:
+        return
+    fig, axes = plt.subplots(panels, 1, figsize=(7, 3.2 * panels), sharex=True, squeeze=False)
+    axes = axes[:, 0]
+    tf, tname = time_unit(np.concatenate([s["time"] for _, s in series]))
+    k = 0
+    if fault:
+        for name, s in fault:
+            axes[0].plot(tf * s["time"], s["slip_rate"], label=name, lw=1)
+            axes[1].plot(tf * s["time"], s["slip"], label=name, lw=1)
+        axes[0].set_ylabel("slip rate (m/s)")
+        axes[1].set_ylabel("slip (m)")
+        axes[0].legend(fontsize=7, ncol=2)
+        k = 2
+    if body:
+        for name, s in body:
+            axes[k].plot(tf * s["time"], np.hypot(s["vx"], s["vy"]), label=name, lw=1)
+        axes[k].set_ylabel("particle speed (m/s)")
+        axes[k].legend(fontsize=7, ncol=2)
+    for ax in axes:
+        ax.grid(alpha=0.3)
+    axes[-1].set_xlabel(f"time ({tname})")
+    fig.suptitle("stations")
+    save(fig, os.path.join(fig_dir, "stations.png"))
 
 
 def wave_speeds(run):
@@ -285,10 +337,18 @@ def plot_interfaces(d, fig_dir):
         times = read_csv(os.path.join(d, f"rupture_time_{name}.csv"))
         if times:
             cracked = times["crack_time"] >= 0
+            lf, lname = length_unit(times["s"])
+            tf, tname = time_unit(np.concatenate([times["crack_time"], times.get("rupture_time", [])]))
             fig, ax = plt.subplots(figsize=(7, 4))
-            ax.plot(1e3 * times["s"][cracked], 1e6 * times["crack_time"][cracked], ".", ms=2)
-            ax.set_xlabel("position along the interface s (mm)")
-            ax.set_ylabel("time the node cracked (µs)")
+            ax.plot(lf * times["s"][cracked], tf * times["crack_time"][cracked], ".", ms=2,
+                    label="cracked (the law's criterion; on a fault, slip = Dc)")
+            if "rupture_time" in times:
+                ruptured = times["rupture_time"] >= 0
+                ax.plot(lf * times["s"][ruptured], tf * times["rupture_time"][ruptured], ".", ms=2,
+                        label="ruptured (slip rate > rupture_slip_rate)")
+                ax.legend(fontsize=7)
+            ax.set_xlabel(f"position along the interface s ({lname})")
+            ax.set_ylabel(f"time ({tname})")
             ax.set_title(f"interface {name}: rupture-time profile ({int(cracked.sum())} of {len(cracked)} nodes cracked)")
             ax.grid(alpha=0.3)
             save(fig, os.path.join(fig_dir, f"rupture_time_{name}.png"))
@@ -411,6 +471,7 @@ def main():
     plot_fringes(args.dir, os.path.join(fig_dir, "tau_max_fringes.png"))
     plot_profiles(args.dir, os.path.join(fig_dir, "cohesive_profiles.png"))
     plot_interfaces(args.dir, fig_dir)
+    plot_stations(args.dir, fig_dir)
 
 
 if __name__ == "__main__":
