@@ -21,7 +21,9 @@ rows = list(csv.DictReader(open(f"{run}/rupture_time_{name}.csv")))
 x = np.array([float(r["x"]) for r in rows])
 t = np.array([float(r["rupture_time"]) for r in rows])
 ok = t >= 0
-x0 = x[ok][np.argmin(t[ok])]
+# The hypocentre: the middle of the nodes that ruptured first (a nucleation patch breaks at once).
+first = ok & (t <= t[ok].min() + 1e-12)
+x0 = 0.5 * (x[first].min() + x[first].max())
 for side, sign in (("east", 1.0), ("west", -1.0)):
     d = sign * (x - x0)
     sel = ok & (d >= 0)

@@ -87,6 +87,18 @@ void print_check(const std::string& path, const Case& c) {
                                law.fracture_energy_normal(), law.fracture_energy_tangential());
           },
           is.law);
+      if (const auto* f = std::get_if<SlipWeakening>(&is.law)) {
+        // The fault's background: strengths at the initial normal traction and the seismic
+        // ratio S = (tau_s - tau0)/(tau0 - tau_d) (Andrews 1976: supershear possible below ~1.77
+        // in 2D in-plane).
+        const double ts = f->static_strength(), td = f->dynamic_strength(), t0 = std::fabs(f->tt0);
+        law_text = fmt::format(
+            "mu_s = {:g}, mu_d = {:g}, Dc = {:g} m, initial traction [{:g}, {:g}] Pa, strength "
+            "{:.4g} Pa static, {:.4g} Pa dynamic, S = {}, {} stretch(es)",
+            f->static_friction, f->dynamic_friction, f->dc, f->tn0, f->tt0, ts, td,
+            t0 > td ? fmt::format("{:.3g}", (ts - t0) / (t0 - td)) : std::string("inf"),
+            is.stretches.size());
+      }
       if (const auto* xn = std::get_if<XuNeedleman>(&is.law))
         law_text = fmt::format("delta_t = {:.4g} um, phi_n = {:.4g} J/m^2, phi_t = {:.4g} J/m^2",
                                1e6 * xn->delta_t, xn->phi_n(), xn->phi_t());

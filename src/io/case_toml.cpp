@@ -87,8 +87,9 @@ void parse_output(Section& top, Case& c) {
     fail(o.key("progress_interval"), c.output.progress_interval, "must be > 0 (wall-clock s)");
   // 0.05 us (SPEC E10) for laboratory runs; a 384th of the run when that is longer (the SPEC's
   // 19.2 us run has 384 samples either way), so no absolute time scale is built in.
+  const double longer = c.time.end / 384.0;
   c.output.crack_sample_interval =
-      o.number("crack_sample_interval", std::max(0.05e-6, c.time.end / 384.0));
+      o.number("crack_sample_interval", longer > 1.001 * 0.05e-6 ? longer : 0.05e-6);
   if (c.output.crack_sample_interval <= 0)
     fail(o.key("crack_sample_interval"), c.output.crack_sample_interval, "must be > 0 (s)");
   c.output.interface_interval = o.number("interface_interval", c.output.snapshot_interval);
