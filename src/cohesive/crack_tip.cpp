@@ -237,7 +237,7 @@ CrackSummary CrackTracker::summarize(const CohesiveInterface& c, const WaveSpeed
   if (r.initiated) {
     std::size_t k = samples_.size() - 1;
     while (k > 0 && samples_[k - 1].tip == samples_.back().tip) --k;
-    if (samples_[k].time > r.initiation_time && t_end - samples_[k].time >= kArrestTime - 1e-15) {
+    if (samples_[k].time > r.initiation_time && t_end - samples_[k].time >= duration_floor(kArrestTime) - 1e-15) {
       r.arrested = true;
       r.arrest_time = samples_[k].time;
       r.arrest_s = samples_.back().tip;
@@ -257,10 +257,18 @@ CrackSummary CrackTracker::summarize(const CohesiveInterface& c, const WaveSpeed
   return r;
 }
 
+double CrackTracker::duration_floor(double lab) const {
+  const std::size_t n = samples_.size();
+  if (n < 2) return lab;
+  const double spacing = (samples_.back().time - samples_.front().time) / double(n - 1);
+  return std::max(lab, kMinSamples * spacing);
+}
+
 bool CrackTracker::steady_phase(const std::vector<double>& v, double moving, std::size_t& first,
                                 std::size_t& last) const {
   // For each end sample, latest first, the earliest start whose speeds all stay in the band;
   // the first end whose stretch lasts kSteadyMin wins. O(samples x stretch): a few thousand.
+  const double steady_min = duration_floor(kSteadyMin);
   for (std::size_t j = v.size(); j-- > 0;) {
     if (!(v[j] > moving)) continue;
     double lo = v[j], hi = v[j];
@@ -270,7 +278,7 @@ bool CrackTracker::steady_phase(const std::vector<double>& v, double moving, std
       if (h - l > kSteadyBand * (h + l)) break;
       lo = l, hi = h, --i;
     }
-    if (samples_[j].time - samples_[i].time >= kSteadyMin - 1e-15) {
+    if (samples_[j].time - samples_[i].time >= steady_min - 1e-15) {
       first = i, last = j;
       return true;
     }

@@ -96,6 +96,10 @@ class CrackTracker {
   static constexpr double kMovingFraction = 0.05;  // x c_R
   // Arrest: the tip has not moved over at least this much time before the end of the run.
   static constexpr double kArrestTime = 1e-6;  // s
+  // Both durations above are for laboratory runs; a run sampled more coarsely (a fault over
+  // seconds) uses 20 sample spacings instead when that is longer: no absolute time scale.
+  static constexpr double kMinSamples = 20.0;
+  double duration_floor(double lab) const;
   // Two cohesive-zone lengths, both measured from the tip over the contiguous intact nodes
   // ahead of it: `cohesive_zone` ends at the last node past the peak-shear opening
   // (softening: the process zone proper); `traction_zone` goes on past it while the traction
