@@ -39,6 +39,12 @@ void parse_solver(Section& top, Case& c);
 void parse_boundary(Section& top, Case& c, ParseContext& ctx);
 void parse_absorbing(Section& top, Case& c);  // after parse_boundary
 void parse_stations(Section& top, Case& c);   // after parse_interfaces
+// law = "slip_weakening" keys of an [interface] table into is.law, its stretches (io/parse_fault.cpp).
+void parse_fault_law(Section& f, const Case& c, InterfaceSpec& is);
+// A law's validate() message "name = value: rule" as the input error of its key (`keys` maps a
+// parameter name to its input key where they differ); nothing if `problem` is empty.
+void fail_on_invalid(Section& f, const std::string& problem,
+                     const std::map<std::string, std::string>& keys);
 void parse_interfaces(Section& top, Case& c, ParseContext& ctx);
 // The bodies the name `s.key(key)` stands for (ParseContext::body_parts); an unknown name is an
 // InputError listing the names allowed, with the nearest as a hint.
