@@ -1,65 +1,18 @@
 // rupture/solver/transfer.cpp
-// Particle <-> grid transfers of the time step (SPEC E4, E5). Scatters (particle -> grid) go
-// through the two-colour strip plan of ScatterPlan; gathers (grid -> particle) are plain
-// parallel loops. Stencils: solver/stencil_batch.hpp.
+// Particle -> grid transfers of the time step (SPEC E4) and the MUSL re-map, through the
+// two-colour strip plan of ScatterPlan. The grid -> particle gather (E5) is solver/gather.cpp.
+// Stencils: solver/stencil_batch.hpp.
 #include "solver/transfer.hpp"
-
-#include <fmt/format.h>
 
 #include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <limits>
 
-#include "core/errors.hpp"
-#include "solver/energy.hpp"
 #include "solver/stencil_batch.hpp"
 
 namespace rupture {
 using namespace detail;
-namespace {
-
-// A failure spreads through the grid within one step, so the diagnosis reports every bad
-// particle's extent (where it started lies inside) and the worst one, not just the first index.
-std::string diagnose_bad_particles(const State& s, double xlo, double xhi, double ylo, double yhi) {
-  const Particles& P = s.particles;
-  std::size_t nonfinite = 0, outside = 0, first = kNone;
-  double bx0 = INFINITY, bx1 = -INFINITY, by0 = INFINITY, by1 = -INFINITY;
-  const char* quantity = "velocity";
-  for (std::size_t p = 0; p < P.size(); ++p) {
-    const bool v_ok = std::isfinite(P.vx[p] + P.vy[p]);
-    const bool s_ok = std::isfinite(P.sxx[p] + P.syy[p] + P.sxy[p]);
-    const bool in = P.x[p] > xlo && P.x[p] < xhi && P.y[p] > ylo && P.y[p] < yhi;
-    if (v_ok && s_ok && in) continue;
-    if (first == kNone) first = p;
-    if (!v_ok || !s_ok) {
-      ++nonfinite;
-      if (!s_ok && v_ok) quantity = "stress";
-    } else {
-      ++outside;
-    }
-    if (std::isfinite(P.x[p]) && std::isfinite(P.y[p])) {
-      bx0 = std::min(bx0, P.x[p]), bx1 = std::max(bx1, P.x[p]);
-      by0 = std::min(by0, P.y[p]), by1 = std::max(by1, P.y[p]);
-    }
-  }
-  const std::string where = fmt::format(
-      "at step {}, t = {:.6g} s; affected region x in [{:.6g}, {:.6g}], y in [{:.6g}, {:.6g}] m; "
-      "first: particle {} (field {}) at (x, y) = ({:.6g}, {:.6g}) m, v = ({:.4g}, {:.4g}) m/s",
-      s.step, s.time, bx0, bx1, by0, by1, P.id[first], int(P.field[first]), P.x[first], P.y[first],
-      P.vx[first], P.vy[first]);
-  if (nonfinite > 0)
-    return fmt::format(
-        "unstable: non-finite {} in {} particle(s) {}; reduce time.cfl or check the loading",
-        quantity, nonfinite, where);
-  return fmt::format(
-      "particle left the grid: {} particle(s) {}; the grid with its ghost cells spans x in "
-      "[{:.6g}, {:.6g}], y in [{:.6g}, {:.6g}] m",
-      outside, where, xlo, xhi, ylo, yhi);
-}
-
-}  // namespace
-
 namespace {
 
 // Strip tiles. Each particle loop works on one strip at a time through a small node-major
@@ -282,134 +235,6 @@ void update_particle_velocity_and_remap(State& s) {
     velocity_update_and_remap<true>(s);
   else
     velocity_update_and_remap<false>(s);
-}
-
-namespace {
-
-// One specialization per G2PMode, so the node loop carries no mode tests.
-template <G2PMode kMode>
-void grid_to_particles_impl(State& s, const double* gvx, const double* gvy) {
-  Particles& P = s.particles;
-  const GridFields& G = s.fields;
-  const double dt = s.dt, flip = s.flip;
-  constexpr bool do_velocity =
-      kMode == G2PMode::stress_velocity_and_move || kMode == G2PMode::velocity_and_move;
-  constexpr bool do_stress = kMode != G2PMode::velocity_and_move;
-  constexpr bool do_move = kMode != G2PMode::stress_only;
-  // Particles must keep their whole 3-node stencil inside the grid: the stencil starts at the
-  // cell of x - lp, so on the high side the particle stays out of the last cell (there the
-  // stencil would reach node cells + 1); on the low side lp <= half a cell suffices.
-  const Axis& ax = s.grid.x;
-  const Axis& ay = s.grid.y;
-  const double xlo = ax.node(0) + 0.5 * ax.width(0);
-  const double xhi = ax.node(ax.cells - 1);
-  const double ylo = ay.node(0) + 0.5 * ay.width(0);
-  const double yhi = ay.node(ay.cells - 1);
-  const ScatterPlan& plan = s.plan;
-  const int width = plan.strip_cells;
-  std::size_t bad = kNone;
-  bool drifted = false;
-  // The largest |v_x| + |v_y| a particle moved with (solver/field_windows: a bound on how far
-  // any particle has gone since its window was measured).
-  double fastest = 0.0;
-  // The stress work of each strip (E14, solver/energy.hpp), summed in strip order after the
-  // loop, so the total does not depend on the number of threads.
-  thread_local std::vector<double> strip_work;  // the calling thread's: reached by pointer
-  strip_work.assign(std::size_t(plan.num_strips), 0.0);
-  double* const work_of_strip = strip_work.data();
-#pragma omp parallel for schedule(dynamic, 1) reduction(min : bad) reduction(|| : drifted) \
-    reduction(max : fastest)
-  for (int strip = 0; strip < plan.num_strips; ++strip) {
-    // Drift tolerance of the scatter plan: one cell column either side of the strip.
-    const double col_lo = double(strip * width - 1), col_hi = double(strip * width + width);
-    const std::size_t end = plan.strip_begin[std::size_t(strip) + 1];
-    double work = 0.0;
-    for_each_in_batches(
-        s, plan.strip_begin[std::size_t(strip)], end,
-        [&](std::size_t p, int k, const StencilBatch& B) {
-          double L00 = 0, L01 = 0, L10 = 0, L11 = 0;  // velocity gradient L_ij = dv_i/dx_j
-          double pic_x = 0, pic_y = 0, dvx = 0, dvy = 0, mvx = 0, mvy = 0;
-          for (int b = 0; b < 3; ++b) {
-            const std::size_t row = B.base[k] + std::size_t(b) * B.stride[k];
-            for (int a = 0; a < 3; ++a) {
-              const std::size_t i = row + std::size_t(a);
-              const double w = B.sx[a][k] * B.sy[b][k];
-              if constexpr (do_stress) {
-                const double gx = B.dsx[a][k] * B.sy[b][k], gy = B.sx[a][k] * B.dsy[b][k];
-                L00 += gvx[i] * gx;
-                L01 += gvx[i] * gy;
-                L10 += gvy[i] * gx;
-                L11 += gvy[i] * gy;
-              }
-              if constexpr (do_velocity) {
-                pic_x += w * G.vel_x[i];
-                pic_y += w * G.vel_y[i];
-                dvx += w * G.dvel_x[i];
-                dvy += w * G.dvel_y[i];
-              }
-              if constexpr (do_move) {
-                mvx += w * G.vel_x[i];
-                mvy += w * G.vel_y[i];
-              }
-            }
-          }
-          if constexpr (do_velocity) {
-            P.vx[p] = flip * (P.vx[p] + dvx) + (1.0 - flip) * pic_x;
-            P.vy[p] = flip * (P.vy[p] + dvy) + (1.0 - flip) * pic_y;
-          }
-          if constexpr (do_stress) {
-            // SPEC E5: eps_dot = sym(L), sigma_dot = C : eps_dot (small strain, plane mode in C).
-            const ElasticStiffness& C = s.stiffness[P.material[p]];
-            const double dexx = L00 * dt, deyy = L11 * dt, dexy = 0.5 * (L01 + L10) * dt;
-            const double dsxx = C.c11 * dexx + C.c12 * deyy, dsyy = C.c12 * dexx + C.c11 * deyy,
-                         dsxy = 2.0 * C.mu * dexy;
-            // E14's strain energy: the work of this increment (solver/energy.hpp).
-            work += stress_work(P.volume0[p], P.exx[p] + P.eyy[p], P.sxx[p], P.syy[p], P.sxy[p],
-                                dexx, deyy, dexy, dsxx, dsyy, dsxy);
-            P.exx[p] += dexx;
-            P.eyy[p] += deyy;
-            P.exy[p] += dexy;
-            P.sxx[p] += dsxx;
-            P.syy[p] += dsyy;
-            P.sxy[p] += dsxy;
-            P.szz[p] += C.cz * (dexx + deyy);
-            P.volume[p] = P.volume0[p] * (1.0 + P.exx[p] + P.eyy[p]);
-          }
-          if constexpr (do_move) {
-            P.x[p] += dt * mvx;
-            P.y[p] += dt * mvy;
-            if (std::isfinite(P.x[p] + P.y[p])) {  // a non-finite particle is diagnosed below
-              const double col = double(ax.cell_of(P.x[p]));
-              if (col < col_lo || col > col_hi) drifted = true;
-              fastest = std::max(fastest, std::fabs(mvx) + std::fabs(mvy));
-            }
-          }
-          const bool finite = std::isfinite(P.vx[p] + P.vy[p] + P.sxx[p] + P.syy[p] + P.sxy[p]);
-          const bool inside = P.x[p] > xlo && P.x[p] < xhi && P.y[p] > ylo && P.y[p] < yhi;
-          if (!finite || !inside) bad = std::min(bad, p);
-        });
-    work_of_strip[strip] = work;
-  }
-  if constexpr (do_stress)
-    for (const double w : strip_work) s.strain_work += w;
-  if (drifted) s.plan.valid = false;
-  if constexpr (do_move) s.window_drift += dt * fastest;  // |dx| + |dy| >= the distance moved
-  if (bad != kNone) throw SimulationError(diagnose_bad_particles(s, xlo, xhi, ylo, yhi));
-}
-
-}  // namespace
-
-void grid_to_particles(State& s, const double* gvx, const double* gvy, G2PMode mode) {
-  switch (mode) {
-    case G2PMode::stress_and_move:
-      return grid_to_particles_impl<G2PMode::stress_and_move>(s, gvx, gvy);
-    case G2PMode::stress_velocity_and_move:
-      return grid_to_particles_impl<G2PMode::stress_velocity_and_move>(s, gvx, gvy);
-    case G2PMode::stress_only:
-      return grid_to_particles_impl<G2PMode::stress_only>(s, gvx, gvy);
-    case G2PMode::velocity_and_move:
-      return grid_to_particles_impl<G2PMode::velocity_and_move>(s, gvx, gvy);
-  }
 }
 
 }  // namespace rupture

@@ -1,0 +1,304 @@
+// rupture/solver/gather.cpp
+// Grid -> particle gather of the time step (SPEC E5): stress update, velocity (USL/USF) and
+// the move, in batches of kBatch consecutive particles. Each batch runs as separate short
+// loops: the stencils (SIMD over particles, solver/stencil_batch.hpp), the node gather (one
+// particle at a time: 9 nodes), then the velocity, stress and move updates SIMD over the
+// batch's particles, which are contiguous in every particle array. Splitting the work this way
+// keeps few array pointers live per loop (one fused per-particle loop spilled them to the
+// stack: the hottest instructions on AMD Zen 4). Per particle the arithmetic and its order are
+// those of SPEC E5, so results do not depend on the batch size or the thread count.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+
+#include "core/errors.hpp"
+#include "solver/energy.hpp"
+#include "solver/stencil_batch.hpp"
+#include "solver/transfer.hpp"
+
+namespace rupture {
+using namespace detail;
+namespace {
+
+// A failure spreads through the grid within one step, so the diagnosis reports every bad
+// particle's extent (where it started lies inside) and the worst one, not just the first index.
+std::string diagnose_bad_particles(const State& s, double xlo, double xhi, double ylo, double yhi) {
+  const Particles& P = s.particles;
+  std::size_t nonfinite = 0, outside = 0, first = kNone;
+  double bx0 = INFINITY, bx1 = -INFINITY, by0 = INFINITY, by1 = -INFINITY;
+  const char* quantity = "velocity";
+  for (std::size_t p = 0; p < P.size(); ++p) {
+    const bool v_ok = std::isfinite(P.vx[p] + P.vy[p]);
+    const bool s_ok = std::isfinite(P.sxx[p] + P.syy[p] + P.sxy[p]);
+    const bool in = P.x[p] > xlo && P.x[p] < xhi && P.y[p] > ylo && P.y[p] < yhi;
+    if (v_ok && s_ok && in) continue;
+    if (first == kNone) first = p;
+    if (!v_ok || !s_ok) {
+      ++nonfinite;
+      if (!s_ok && v_ok) quantity = "stress";
+    } else {
+      ++outside;
+    }
+    if (std::isfinite(P.x[p]) && std::isfinite(P.y[p])) {
+      bx0 = std::min(bx0, P.x[p]), bx1 = std::max(bx1, P.x[p]);
+      by0 = std::min(by0, P.y[p]), by1 = std::max(by1, P.y[p]);
+    }
+  }
+  const std::string where = fmt::format(
+      "at step {}, t = {:.6g} s; affected region x in [{:.6g}, {:.6g}], y in [{:.6g}, {:.6g}] m; "
+      "first: particle {} (field {}) at (x, y) = ({:.6g}, {:.6g}) m, v = ({:.4g}, {:.4g}) m/s",
+      s.step, s.time, bx0, bx1, by0, by1, P.id[first], int(P.field[first]), P.x[first], P.y[first],
+      P.vx[first], P.vy[first]);
+  if (nonfinite > 0)
+    return fmt::format(
+        "unstable: non-finite {} in {} particle(s) {}; reduce time.cfl or check the loading",
+        quantity, nonfinite, where);
+  return fmt::format(
+      "particle left the grid: {} particle(s) {}; the grid with its ghost cells spans x in "
+      "[{:.6g}, {:.6g}], y in [{:.6g}, {:.6g}] m",
+      outside, where, xlo, xhi, ylo, yhi);
+}
+
+// What one batch's node gather produces, per particle k of the batch.
+struct Gathered {
+  alignas(64) double L00[kBatch], L01[kBatch], L10[kBatch], L11[kBatch];  // L_ij = dv_i/dx_j, 1/s
+  alignas(64) double pic_x[kBatch], pic_y[kBatch];  // sum S v(t^{n+1}), m/s
+  alignas(64) double dv_x[kBatch], dv_y[kBatch];    // sum S dv, m/s
+  alignas(64) double mv_x[kBatch], mv_y[kBatch];    // the move's velocity, m/s
+};
+
+// The 3 x 3 node sums of one batch. gvx/gvy: the stress update's velocity; vel/dvel: the
+// t^{n+1} velocity and its increment (move, USL/USF velocity).
+template <bool kStress, bool kVelocity, bool kMove>
+void gather_nodes(const StencilBatch& B, int n, const double* __restrict gvx,
+                  const double* __restrict gvy, const GridFields& G, Gathered& out) {
+  const double* __restrict vel_x = G.vel_x.data();
+  const double* __restrict vel_y = G.vel_y.data();
+  const double* __restrict dvel_x = G.dvel_x.data();
+  const double* __restrict dvel_y = G.dvel_y.data();
+  for (int k = 0; k < n; ++k) {
+    double L00 = 0, L01 = 0, L10 = 0, L11 = 0;
+    double pic_x = 0, pic_y = 0, dvx = 0, dvy = 0, mvx = 0, mvy = 0;
+    for (int b = 0; b < 3; ++b) {
+      const std::size_t row = B.base[k] + std::size_t(b) * B.stride[k];
+      for (int a = 0; a < 3; ++a) {
+        const std::size_t i = row + std::size_t(a);
+        const double w = B.sx[a][k] * B.sy[b][k];
+        if constexpr (kStress) {
+          const double gx = B.dsx[a][k] * B.sy[b][k], gy = B.sx[a][k] * B.dsy[b][k];
+          L00 += gvx[i] * gx;
+          L01 += gvx[i] * gy;
+          L10 += gvy[i] * gx;
+          L11 += gvy[i] * gy;
+        }
+        if constexpr (kVelocity) {
+          pic_x += w * vel_x[i];
+          pic_y += w * vel_y[i];
+          dvx += w * dvel_x[i];
+          dvy += w * dvel_y[i];
+        }
+        if constexpr (kMove) {
+          mvx += w * vel_x[i];
+          mvy += w * vel_y[i];
+        }
+      }
+    }
+    out.L00[k] = L00, out.L01[k] = L01, out.L10[k] = L10, out.L11[k] = L11;
+    out.pic_x[k] = pic_x, out.pic_y[k] = pic_y, out.dv_x[k] = dvx, out.dv_y[k] = dvy;
+    out.mv_x[k] = mvx, out.mv_y[k] = mvy;
+  }
+}
+
+// SPEC E5 for particles [p, p + n): eps_dot = sym(L), sigma_dot = C : eps_dot (small strain,
+// plane mode in C), and E14's stress work of the increment (solver/energy.hpp), summed in
+// particle order into `work`.
+void update_stress(Particles& P, std::size_t p, int n, const Gathered& g,
+                   const std::vector<ElasticStiffness>& stiffness, double dt, double& work) {
+  alignas(64) double c11[kBatch], c12[kBatch], mu[kBatch], cz[kBatch], wk[kBatch];
+  const std::uint8_t* mat = P.material.data() + p;
+  for (int k = 0; k < n; ++k) {
+    const ElasticStiffness& C = stiffness[mat[k]];
+    c11[k] = C.c11, c12[k] = C.c12, mu[k] = C.mu, cz[k] = C.cz;
+  }
+  double* __restrict exx = P.exx.data() + p;
+  double* __restrict eyy = P.eyy.data() + p;
+  double* __restrict exy = P.exy.data() + p;
+  double* __restrict sxx = P.sxx.data() + p;
+  double* __restrict syy = P.syy.data() + p;
+  double* __restrict sxy = P.sxy.data() + p;
+  double* __restrict szz = P.szz.data() + p;
+  double* __restrict vol = P.volume.data() + p;
+  const double* __restrict vol0 = P.volume0.data() + p;
+#pragma omp simd
+  for (int k = 0; k < n; ++k) {
+    const double dexx = g.L00[k] * dt, deyy = g.L11[k] * dt, dexy = 0.5 * (g.L01[k] + g.L10[k]) * dt;
+    const double dsxx = c11[k] * dexx + c12[k] * deyy, dsyy = c12[k] * dexx + c11[k] * deyy,
+                 dsxy = 2.0 * mu[k] * dexy;
+    wk[k] = stress_work(vol0[k], exx[k] + eyy[k], sxx[k], syy[k], sxy[k], dexx, deyy, dexy, dsxx,
+                        dsyy, dsxy);
+    exx[k] += dexx;
+    eyy[k] += deyy;
+    exy[k] += dexy;
+    sxx[k] += dsxx;
+    syy[k] += dsyy;
+    sxy[k] += dsxy;
+    szz[k] += cz[k] * (dexx + deyy);
+    vol[k] = vol0[k] * (1.0 + exx[k] + eyy[k]);
+  }
+  for (int k = 0; k < n; ++k) work += wk[k];
+}
+
+// Bounds a strip's particles must keep: inside the grid (see below), within the scatter plan's
+// drift tolerance, finite.
+struct MoveLimits {
+  double xlo, xhi, ylo, yhi;  // m
+  double col_lo, col_hi;      // cell columns allowed (the strip's, +-1)
+};
+
+// Moves particles [p, p + n) with the gathered velocity; sets `drifted` when one left its
+// strip's tolerance, raises `fastest` to the largest |v_x| + |v_y| of a finite particle.
+void move_particles(Particles& P, std::size_t p, int n, const Gathered& g, double dt,
+                    const Axis& ax, const MoveLimits& lim, bool& drifted, double& fastest) {
+  double* __restrict x = P.x.data() + p;
+  double* __restrict y = P.y.data() + p;
+  alignas(64) double col[kBatch];
+  double fast = fastest;
+  bool out = false;
+  if (ax.graded()) {
+    for (int k = 0; k < n; ++k) {
+      x[k] += dt * g.mv_x[k];
+      y[k] += dt * g.mv_y[k];
+      col[k] = std::isfinite(x[k]) ? double(ax.cell_of(x[k])) : lim.col_lo;
+    }
+  } else {
+    const double inv_h = 1.0 / ax.h, origin = ax.origin;
+#pragma omp simd
+    for (int k = 0; k < n; ++k) {
+      x[k] += dt * g.mv_x[k];
+      y[k] += dt * g.mv_y[k];
+      // floor for the particles inside the grid (u > 0); a non-finite or outside one is
+      // diagnosed by the caller, so its column is only kept inside the tolerance here.
+      const double u = (x[k] - origin) * inv_h;
+      col[k] = std::fabs(u) <= DBL_MAX && u > 0.0 ? std::floor(u) : lim.col_lo;
+    }
+  }
+#pragma omp simd reduction(max : fast) reduction(|| : out)
+  for (int k = 0; k < n; ++k) {
+    const bool finite = std::fabs(x[k] + y[k]) <= DBL_MAX;
+    out = out || (finite && (col[k] < lim.col_lo || col[k] > lim.col_hi));
+    fast = std::max(fast, finite ? std::fabs(g.mv_x[k]) + std::fabs(g.mv_y[k]) : 0.0);
+  }
+  drifted = drifted || out;
+  fastest = fast;
+}
+
+// The first of particles [p, p + n) that is non-finite or outside the limits; kNone if none.
+std::size_t first_bad(const Particles& P, std::size_t p, int n, const MoveLimits& lim) {
+  const double* __restrict x = P.x.data() + p;
+  const double* __restrict y = P.y.data() + p;
+  const double* __restrict vx = P.vx.data() + p;
+  const double* __restrict vy = P.vy.data() + p;
+  const double* __restrict sxx = P.sxx.data() + p;
+  const double* __restrict syy = P.syy.data() + p;
+  const double* __restrict sxy = P.sxy.data() + p;
+  bool any = false;
+#pragma omp simd reduction(|| : any)
+  for (int k = 0; k < n; ++k) {
+    const bool finite = std::fabs(vx[k] + vy[k] + sxx[k] + syy[k] + sxy[k]) <= DBL_MAX;
+    const bool inside = x[k] > lim.xlo && x[k] < lim.xhi && y[k] > lim.ylo && y[k] < lim.yhi;
+    any = any || !(finite && inside);
+  }
+  if (!any) return kNone;
+  for (int k = 0; k < n; ++k) {
+    const bool finite = std::isfinite(vx[k] + vy[k] + sxx[k] + syy[k] + sxy[k]);
+    const bool inside = x[k] > lim.xlo && x[k] < lim.xhi && y[k] > lim.ylo && y[k] < lim.yhi;
+    if (!finite || !inside) return p + std::size_t(k);
+  }
+  return kNone;
+}
+
+// One specialization per G2PMode, so the loops carry no mode tests.
+template <G2PMode kMode>
+void grid_to_particles_impl(State& s, const double* gvx, const double* gvy) {
+  Particles& P = s.particles;
+  const GridFields& G = s.fields;
+  const double dt = s.dt, flip = s.flip;
+  constexpr bool do_velocity =
+      kMode == G2PMode::stress_velocity_and_move || kMode == G2PMode::velocity_and_move;
+  constexpr bool do_stress = kMode != G2PMode::velocity_and_move;
+  constexpr bool do_move = kMode != G2PMode::stress_only;
+  // Particles must keep their whole 3-node stencil inside the grid: the stencil starts at the
+  // cell of x - lp, so on the high side the particle stays out of the last cell (there the
+  // stencil would reach node cells + 1); on the low side lp <= half a cell suffices.
+  const Axis& ax = s.grid.x;
+  const Axis& ay = s.grid.y;
+  const double xlo = ax.node(0) + 0.5 * ax.width(0);
+  const double xhi = ax.node(ax.cells - 1);
+  const double ylo = ay.node(0) + 0.5 * ay.width(0);
+  const double yhi = ay.node(ay.cells - 1);
+  const ScatterPlan& plan = s.plan;
+  const int width = plan.strip_cells;
+  std::size_t bad = kNone;
+  bool drifted = false;
+  // The largest |v_x| + |v_y| a particle moved with (solver/field_windows: a bound on how far
+  // any particle has gone since its window was measured).
+  double fastest = 0.0;
+  // The stress work of each strip (E14, solver/energy.hpp), summed in strip order after the
+  // loop, so the total does not depend on the number of threads.
+  thread_local std::vector<double> strip_work;  // the calling thread's: reached by pointer
+  strip_work.assign(std::size_t(plan.num_strips), 0.0);
+  double* const work_of_strip = strip_work.data();
+#pragma omp parallel for schedule(dynamic, 1) reduction(min : bad) reduction(|| : drifted) \
+    reduction(max : fastest)
+  for (int strip = 0; strip < plan.num_strips; ++strip) {
+    // Drift tolerance of the scatter plan: one cell column either side of the strip.
+    const MoveLimits lim{xlo, xhi, ylo, yhi, double(strip * width - 1), double(strip * width + width)};
+    const std::size_t end = plan.strip_begin[std::size_t(strip) + 1];
+    double work = 0.0;
+    StencilBatch B;
+    Gathered g;
+    for (std::size_t p0 = plan.strip_begin[std::size_t(strip)]; p0 < end; p0 += kBatch) {
+      const int n = int(std::min<std::size_t>(kBatch, end - p0));
+      batch_stencils(s, p0, n, B);
+      gather_nodes<do_stress, do_velocity, do_move>(B, n, gvx, gvy, G, g);
+      if constexpr (do_velocity) {
+        double* __restrict vx = P.vx.data() + p0;
+        double* __restrict vy = P.vy.data() + p0;
+#pragma omp simd
+        for (int k = 0; k < n; ++k) {
+          vx[k] = flip * (vx[k] + g.dv_x[k]) + (1.0 - flip) * g.pic_x[k];
+          vy[k] = flip * (vy[k] + g.dv_y[k]) + (1.0 - flip) * g.pic_y[k];
+        }
+      }
+      if constexpr (do_stress) update_stress(P, p0, n, g, s.stiffness, dt, work);
+      if constexpr (do_move) move_particles(P, p0, n, g, dt, ax, lim, drifted, fastest);
+      const std::size_t b = first_bad(P, p0, n, lim);
+      if (b != kNone) bad = std::min(bad, b);
+    }
+    work_of_strip[strip] = work;
+  }
+  if constexpr (do_stress)
+    for (const double w : strip_work) s.strain_work += w;
+  if (drifted) s.plan.valid = false;
+  if constexpr (do_move) s.window_drift += dt * fastest;  // |dx| + |dy| >= the distance moved
+  if (bad != kNone) throw SimulationError(diagnose_bad_particles(s, xlo, xhi, ylo, yhi));
+}
+
+}  // namespace
+
+void grid_to_particles(State& s, const double* gvx, const double* gvy, G2PMode mode) {
+  switch (mode) {
+    case G2PMode::stress_and_move:
+      return grid_to_particles_impl<G2PMode::stress_and_move>(s, gvx, gvy);
+    case G2PMode::stress_velocity_and_move:
+      return grid_to_particles_impl<G2PMode::stress_velocity_and_move>(s, gvx, gvy);
+    case G2PMode::stress_only:
+      return grid_to_particles_impl<G2PMode::stress_only>(s, gvx, gvy);
+    case G2PMode::velocity_and_move:
+      return grid_to_particles_impl<G2PMode::velocity_and_move>(s, gvx, gvy);
+  }
+}
+
+}  // namespace rupture
