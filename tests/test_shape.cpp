@@ -1,6 +1,7 @@
 // Tests of shape/gimp.hpp and grid stencils (SPEC E3).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -111,5 +112,26 @@ TEST(Shape, graded_axis_partition_of_unity_across_size_jumps) {
     }
     EXPECT_NEAR(s, 1.0, 1e-14) << "x = " << x;
     EXPECT_NEAR(ds, 0.0, 1e-12) << "x = " << x;
+  }
+}
+
+// The select (branch-free) form the batched stencils vectorize is gimp_graded to the bit, on
+// every branch: outside the support, left cell, right cell, beyond, and exactly on the kinks.
+TEST(Shape, graded_select_form_equals_graded_form_bitwise) {
+  const double widths[][2] = {{1.0, 1.0}, {1.0, 2.0}, {2.0, 1.0}, {0.5, 2.0}, {3e-5, 6e-5}};
+  for (const auto& w : widths) {
+    const double hL = w[0], hR = w[1];
+    for (const double lp : {0.25 * std::min(hL, hR), 0.5 * std::min(hL, hR), 0.1 * hL}) {
+      std::vector<double> us;
+      for (int i = -400; i <= 400; ++i) us.push_back(double(i) / 400.0 * 1.6 * std::max(hL, hR));
+      for (const double kink : {-hL, 0.0, hR}) us.insert(us.end(), {kink - lp, kink + lp, kink});
+      for (const double u : us) {
+        const Weight1D a = gimp_graded(u, hL, hR, lp);
+        double s = -1.0, ds = -1.0;
+        gimp_graded_select(u, hL, hR, lp, s, ds);
+        EXPECT_EQ(a.s, s) << "u " << u << " hL " << hL << " hR " << hR << " lp " << lp;
+        EXPECT_EQ(a.ds, ds) << "u " << u << " hL " << hL << " hR " << hR << " lp " << lp;
+      }
+    }
   }
 }

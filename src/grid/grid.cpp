@@ -165,6 +165,8 @@ Grid make_graded_grid(const double min[2], const double max[2], double coarse, d
       unit += w[c];
     }
     a.coord.back() = a.origin + double(unit) * finest;
+    a.inv_width.resize(w.size());
+    for (std::size_t c = 0; c < w.size(); ++c) a.inv_width[c] = 1.0 / (a.coord[c + 1] - a.coord[c]);
     a.uniform_from.assign(w.size(), 0);
     for (std::size_t c = 1; c + 2 < w.size(); ++c)
       a.uniform_from[c] = w[c - 1] == w[c] && w[c + 1] == w[c] && w[c + 2] == w[c];

@@ -29,6 +29,7 @@ struct Axis {
   // graded only: 1 where cells c-1 .. c+2 are equal, so a stencil starting at node c sees a
   // uniform axis and the uniform (SIMD) form of the weights applies
   std::vector<unsigned char> uniform_from;
+  std::vector<double> inv_width;  // graded only: 1 / width(c) per cell, 1/m
 
   bool graded() const { return !coord.empty(); }
   int nodes() const { return cells + 1; }

@@ -6,6 +6,7 @@
 #pragma once
 #include <algorithm>
 #include <cassert>
+#include <cmath>
 #include <cstddef>
 #include <limits>
 
@@ -44,16 +45,33 @@ inline void axis_stencils(const Axis& ax, const double* __restrict xp, const dou
   double* __restrict d1 = dw[1];
   double* __restrict d2 = dw[2];
   if (ax.graded()) {
-    // Graded axis (SPEC E3): the first node and its local cell size per particle (a table
-    // lookup), then the uniform form, vectorized, for every particle; the few whose stencil
-    // straddles a change of cell size are redone with the graded form.
-    double x0[kBatch], inv_hl[kBatch];
+    // Graded axis (SPEC E3): per particle, the first node, the three node coordinates and the
+    // four cell widths around them (table lookups), then both forms SIMD over the batch: the
+    // uniform form where cells first-1 .. first+2 are equal (uniform_from), the graded form
+    // (gimp_graded written with selects) where the stencil straddles a change of cell size.
+    alignas(64) double x0[kBatch], xn[3][kBatch], wc[4][kBatch], inv_hl[kBatch], uni[kBatch];
     bool straddles = false;
+    const double* coord = ax.coord.data();
+    const int last = ax.cells - 1;
+    const auto width = [&](int c) {
+      c = c < 0 ? 0 : (c > last ? last : c);
+      return coord[c + 1] - coord[c];
+    };
+    // Axis::cell_of(x - lp), its floor and division SIMD over the batch, then the lookups.
+    // Clamped first (a NaN to 0), truncation is then floor.
+    alignas(64) int unit[kBatch];
+    const double origin = ax.origin, h = ax.h, last_unit = double(ax.cell_of_unit.size()) - 1.0;
+#pragma omp simd
     for (int k = 0; k < n; ++k) {
-      const int c = ax.cell_of(xp[k] - lp[k]);
+      const double q = ((xp[k] - lp[k]) - origin) / h;
+      unit[k] = int(!(q >= 0.0) ? 0.0 : (q > last_unit ? last_unit : q));
+    }
+    for (int k = 0; k < n; ++k) {
+      const int c = ax.cell_of_unit[std::size_t(unit[k])];
       first[k] = c;
-      x0[k] = ax.node(c);
-      inv_hl[k] = 1.0 / ax.width(c);
+      x0[k] = coord[c];
+      inv_hl[k] = ax.inv_width[std::size_t(c)];
+      uni[k] = ax.uniform_from[std::size_t(c)] ? 1.0 : 0.0;
       straddles |= !ax.uniform_from[std::size_t(c)];
     }
 #pragma omp simd
@@ -63,13 +81,29 @@ inline void axis_stencils(const Axis& ax, const double* __restrict xp, const dou
       gimp_uniform_node(u - 1.0, l, inv_2l, inv_hl[k], w1[k], d1[k]);
       gimp_uniform_node(u - 2.0, l, inv_2l, inv_hl[k], w2[k], d2[k]);
     }
-    if (straddles)
+    if (straddles) {
       for (int k = 0; k < n; ++k) {
-        if (ax.uniform_from[std::size_t(first[k])]) continue;
-        Stencil1D st;
-        stencil(ax, xp[k], lp[k], st);
-        for (int j = 0; j < 3; ++j) w[j][k] = st.s[j], dw[j][k] = st.ds[j];
+        const int c = first[k];
+        for (int j = 0; j < 3; ++j) xn[j][k] = coord[std::min(c + j, ax.cells)];
+        for (int j = 0; j < 4; ++j) wc[j][k] = width(c + j - 1);
       }
+      double* wj[3] = {w0, w1, w2};
+      double* dj[3] = {d0, d1, d2};
+      for (int j = 0; j < 3; ++j) {
+        double* __restrict wo = wj[j];
+        double* __restrict dout = dj[j];
+        const double* __restrict xj = xn[j];
+        const double* __restrict hl = wc[j];
+        const double* __restrict hr = wc[j + 1];
+#pragma omp simd
+        for (int k = 0; k < n; ++k) {
+          double s, ds;
+          gimp_graded_select(xp[k] - xj[k], hl[k], hr[k], lp[k], s, ds);
+          wo[k] = uni[k] != 0.0 ? wo[k] : s;
+          dout[k] = uni[k] != 0.0 ? dout[k] : ds;
+        }
+      }
+    }
     return;
   }
   const double inv_h = 1.0 / ax.h, origin = ax.origin;
