@@ -70,44 +70,75 @@ struct Gathered {
 };
 
 // The 3 x 3 node sums of one batch. gvx/gvy: the stress update's velocity; vel/dvel: the
-// t^{n+1} velocity and its increment (move, USL/USF velocity).
+// t^{n+1} velocity and its increment (move, USL/USF velocity). A stencil row's three nodes are
+// contiguous, so each row is one 4-wide load per array, its fourth lane cleared to +0, and a
+// 4-wide product with the row's weights. Per particle the sums run down each column over the
+// rows, then across the columns. The fourth node lies inside the field's window (its margin,
+// solver/field_windows.hpp); only a stencil whose fourth node would fall past the end of the
+// arrays builds the row from three loads, which gives the same lanes, so results do not
+// depend on how the fields are stored.
+using Lane4 = double __attribute__((vector_size(32)));
+using Mask4 = long __attribute__((vector_size(32)));
+
+template <bool kWide>
+inline Lane4 row3(const double* p) {
+  if constexpr (kWide) {
+    Lane4 v;
+    __builtin_memcpy(&v, p, sizeof v);
+    const Mask4 keep = {-1, -1, -1, 0};
+    return (Lane4)((Mask4)v & keep);
+  } else {
+    return Lane4{p[0], p[1], p[2], 0.0};
+  }
+}
+inline double sum4(Lane4 v) { return (v[0] + v[1]) + (v[2] + v[3]); }
+
+template <bool kStress, bool kVelocity, bool kMove, bool kWide>
+inline void gather_one(const StencilBatch& B, int k, const double* __restrict gvx,
+                       const double* __restrict gvy, const GridFields& G, Gathered& out) {
+  const Lane4 sx = {B.sx[0][k], B.sx[1][k], B.sx[2][k], 0.0};
+  const Lane4 dsx = {B.dsx[0][k], B.dsx[1][k], B.dsx[2][k], 0.0};
+  Lane4 L00{}, L01{}, L10{}, L11{}, pic_x{}, pic_y{}, dvx{}, dvy{}, mvx{}, mvy{};
+  for (int b = 0; b < 3; ++b) {
+    const std::size_t row = B.base[k] + std::size_t(b) * B.stride[k];
+    const Lane4 w = sx * B.sy[b][k];
+    if constexpr (kStress) {
+      const Lane4 gx = dsx * B.sy[b][k], gy = sx * B.dsy[b][k];
+      const Lane4 u = row3<kWide>(gvx + row), v = row3<kWide>(gvy + row);
+      L00 += u * gx;
+      L01 += u * gy;
+      L10 += v * gx;
+      L11 += v * gy;
+    }
+    if constexpr (kVelocity || kMove) {
+      const Lane4 u = row3<kWide>(G.vel_x.data() + row), v = row3<kWide>(G.vel_y.data() + row);
+      if constexpr (kVelocity) {
+        pic_x += w * u;
+        pic_y += w * v;
+        dvx += w * row3<kWide>(G.dvel_x.data() + row);
+        dvy += w * row3<kWide>(G.dvel_y.data() + row);
+      }
+      if constexpr (kMove) {
+        mvx += w * u;
+        mvy += w * v;
+      }
+    }
+  }
+  out.L00[k] = sum4(L00), out.L01[k] = sum4(L01), out.L10[k] = sum4(L10), out.L11[k] = sum4(L11);
+  out.pic_x[k] = sum4(pic_x), out.pic_y[k] = sum4(pic_y);
+  out.dv_x[k] = sum4(dvx), out.dv_y[k] = sum4(dvy);
+  out.mv_x[k] = sum4(mvx), out.mv_y[k] = sum4(mvy);
+}
+
 template <bool kStress, bool kVelocity, bool kMove>
 void gather_nodes(const StencilBatch& B, int n, const double* __restrict gvx,
                   const double* __restrict gvy, const GridFields& G, Gathered& out) {
-  const double* __restrict vel_x = G.vel_x.data();
-  const double* __restrict vel_y = G.vel_y.data();
-  const double* __restrict dvel_x = G.dvel_x.data();
-  const double* __restrict dvel_y = G.dvel_y.data();
+  const std::size_t size = G.size();
   for (int k = 0; k < n; ++k) {
-    double L00 = 0, L01 = 0, L10 = 0, L11 = 0;
-    double pic_x = 0, pic_y = 0, dvx = 0, dvy = 0, mvx = 0, mvy = 0;
-    for (int b = 0; b < 3; ++b) {
-      const std::size_t row = B.base[k] + std::size_t(b) * B.stride[k];
-      for (int a = 0; a < 3; ++a) {
-        const std::size_t i = row + std::size_t(a);
-        const double w = B.sx[a][k] * B.sy[b][k];
-        if constexpr (kStress) {
-          const double gx = B.dsx[a][k] * B.sy[b][k], gy = B.sx[a][k] * B.dsy[b][k];
-          L00 += gvx[i] * gx;
-          L01 += gvx[i] * gy;
-          L10 += gvy[i] * gx;
-          L11 += gvy[i] * gy;
-        }
-        if constexpr (kVelocity) {
-          pic_x += w * vel_x[i];
-          pic_y += w * vel_y[i];
-          dvx += w * dvel_x[i];
-          dvy += w * dvel_y[i];
-        }
-        if constexpr (kMove) {
-          mvx += w * vel_x[i];
-          mvy += w * vel_y[i];
-        }
-      }
-    }
-    out.L00[k] = L00, out.L01[k] = L01, out.L10[k] = L10, out.L11[k] = L11;
-    out.pic_x[k] = pic_x, out.pic_y[k] = pic_y, out.dv_x[k] = dvx, out.dv_y[k] = dvy;
-    out.mv_x[k] = mvx, out.mv_y[k] = mvy;
+    if (B.base[k] + 2 * B.stride[k] + 4 <= size)
+      gather_one<kStress, kVelocity, kMove, true>(B, k, gvx, gvy, G, out);
+    else
+      gather_one<kStress, kVelocity, kMove, false>(B, k, gvx, gvy, G, out);
   }
 }
 
