@@ -8,6 +8,7 @@
 #include <cassert>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 #include "solver/stencil_batch.hpp"
 
@@ -24,6 +25,7 @@ namespace {
 // touch.
 using Lane8 = double __attribute__((vector_size(64)));
 using Lane4 = double __attribute__((vector_size(32)));
+using Lane2 = double __attribute__((vector_size(16)));
 
 struct TileLayout {
   int col0 = 0, cols = 0;          // first node column, number of columns
@@ -189,27 +191,33 @@ void particles_to_grid_force(State& s) {
 
 namespace {
 
-// kPureFlip: flip == 1, so the PIC part (the gathered velocity) is not needed.
-// kPureFlip: flip == 1, so the PIC part (the gathered velocity) is not needed.
+// kPureFlip: flip == 1, so the PIC part (the gathered velocity) is not needed and the gather
+// tile holds only the velocity increment (two lanes). The scatter tile holds the two momentum
+// components. Each lane's sum runs in the same order whatever the lane count.
 template <bool kPureFlip>
 void velocity_update_and_remap(State& s) {
+  using In = std::conditional_t<kPureFlip, Lane2, Lane4>;
   GridFields& G = s.fields;
   Particles& P = s.particles;
   const double flip = s.flip;
   for_each_strip_coloured(s.plan, [&](int strip, std::size_t begin, std::size_t end) {
     if (begin == end) return;
     thread_local TileLayout T;
-    thread_local std::vector<Lane4> gather_buffer, scatter_buffer;
+    thread_local std::vector<In> gather_buffer;
+    thread_local std::vector<Lane2> scatter_buffer;
     tile_layout(s, strip, begin, end, T);
-    Lane4* in = tile_buffer(gather_buffer, T.size(), false);
-    Lane4* out = tile_buffer(scatter_buffer, T.size(), true);
+    In* in = tile_buffer(gather_buffer, T.size(), false);
+    Lane2* out = tile_buffer(scatter_buffer, T.size(), true);
     for_each_tile_node(s, T, [&](std::size_t t, std::size_t n) {
-      in[t] = Lane4{G.dvel_x[n], G.dvel_y[n], G.vel_x[n], G.vel_y[n]};
+      if constexpr (kPureFlip)
+        in[t] = In{G.dvel_x[n], G.dvel_y[n]};
+      else
+        in[t] = In{G.dvel_x[n], G.dvel_y[n], G.vel_x[n], G.vel_y[n]};
     });
     const std::size_t cols = std::size_t(T.cols);
     for_each_in_batches(s, begin, end, [&](std::size_t p, int k, const StencilBatch& B) {
       const std::size_t t0 = T.index(P.field[p], B.first_x[k], B.first_y[k]);
-      Lane4 acc = {0, 0, 0, 0};  // dv x, dv y, v x, v y
+      In acc = {};  // dv x, dv y [, v x, v y]
       for (int b = 0; b < 3; ++b)
         for (int a = 0; a < 3; ++a)
           acc += (B.sx[a][k] * B.sy[b][k]) * in[t0 + std::size_t(b) * cols + std::size_t(a)];
@@ -225,7 +233,7 @@ void velocity_update_and_remap(State& s) {
       P.vx[p] = vx;
       P.vy[p] = vy;
       const double m = P.mass[p];
-      const Lane4 mv = {m * vx, m * vy, 0, 0};
+      const Lane2 mv = {m * vx, m * vy};
       for (int b = 0; b < 3; ++b)
         for (int a = 0; a < 3; ++a)
           out[t0 + std::size_t(b) * cols + std::size_t(a)] += (B.sx[a][k] * B.sy[b][k]) * mv;
