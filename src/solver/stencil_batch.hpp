@@ -45,10 +45,11 @@ inline void axis_stencils(const Axis& ax, const double* __restrict xp, const dou
   double* __restrict d1 = dw[1];
   double* __restrict d2 = dw[2];
   if (ax.graded()) {
-    // Graded axis (SPEC E3): per particle, the first node, the three node coordinates and the
-    // four cell widths around them (table lookups), then both forms SIMD over the batch: the
-    // uniform form where cells first-1 .. first+2 are equal (uniform_from), the graded form
-    // (gimp_graded written with selects) where the stencil straddles a change of cell size.
+    // Graded axis (SPEC E3): per particle the first cell, its node and inverse width (table
+    // lookups), then the uniform form SIMD over the batch. Where a stencil straddles a change
+    // of cell size (cells first-1 .. first+2 not all equal: uniform_from), a batch also looks
+    // up the three node coordinates and four widths and takes the graded form (gimp_graded
+    // written with selects), SIMD, for those particles.
     alignas(64) double x0[kBatch], xn[3][kBatch], wc[4][kBatch], inv_hl[kBatch], uni[kBatch];
     bool straddles = false;
     const double* coord = ax.coord.data();
