@@ -130,5 +130,7 @@ inline bool body_contains(const BodySpec& b, double x, double y) { return contai
 
 // The background grid a case asks for: uniform, or graded from its refinement levels.
 Grid build_grid(const GridSpec& g);
+// The refinement boxes of g with their cell sizes (for make_graded_grid and make_nested_grid).
+std::vector<RefineBox> refine_boxes(const GridSpec& g);
 
 }  // namespace rupture

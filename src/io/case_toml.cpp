@@ -216,13 +216,17 @@ const char* scheme_name(Scheme s) {
   return "?";
 }
 
-Grid build_grid(const GridSpec& g) {
-  const double margin = std::max(0.0, g.margin);
-  if (!g.refined()) return make_uniform_grid(g.min, g.max, g.cell_size, margin);
+std::vector<RefineBox> refine_boxes(const GridSpec& g) {
   std::vector<RefineBox> boxes;
   for (const RefineLevel& L : g.refine)
     boxes.push_back({{L.min[0], L.min[1]}, {L.max[0], L.max[1]}, g.level_size(L.level)});
-  return make_graded_grid(g.min, g.max, g.coarse_cell_size, g.cell_size, boxes, margin);
+  return boxes;
+}
+
+Grid build_grid(const GridSpec& g) {
+  const double margin = std::max(0.0, g.margin);
+  if (!g.refined()) return make_uniform_grid(g.min, g.max, g.cell_size, margin);
+  return make_graded_grid(g.min, g.max, g.coarse_cell_size, g.cell_size, refine_boxes(g), margin);
 }
 
 Case parse_case(const std::string& toml_text, const std::vector<std::string>& overrides,

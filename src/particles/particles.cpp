@@ -2,6 +2,7 @@
 #include "particles/particles.hpp"
 
 #include <cmath>
+#include <utility>
 
 namespace rupture {
 
@@ -36,6 +37,36 @@ void Particles::permute(const std::vector<std::uint32_t>& order, std::vector<dou
   permute_one(material, order, tmp8);
   std::vector<std::uint32_t> tmp32;
   permute_one(id, order, tmp32);
+}
+
+namespace {
+template <class T>
+void move_one(std::vector<T>& from, std::vector<T>& to, const std::vector<unsigned char>& mark) {
+  std::size_t kept = 0;
+  for (std::size_t p = 0; p < from.size(); ++p) {
+    if (mark[p]) {
+      to.push_back(from[p]);
+    } else {
+      from[kept++] = from[p];
+    }
+  }
+  from.resize(kept);
+}
+}  // namespace
+
+std::size_t Particles::move_marked(const std::vector<unsigned char>& mark, Particles& to) {
+  const std::size_t before = size();
+  for (auto [a, b] : {std::pair{&x, &to.x}, {&y, &to.y}, {&vx, &to.vx}, {&vy, &to.vy},
+                      {&mass, &to.mass}, {&volume0, &to.volume0}, {&volume, &to.volume},
+                      {&half_x, &to.half_x}, {&half_y, &to.half_y}, {&sxx, &to.sxx},
+                      {&syy, &to.syy}, {&sxy, &to.sxy}, {&szz, &to.szz}, {&exx, &to.exx},
+                      {&eyy, &to.eyy}, {&exy, &to.exy}}) {
+    move_one(*a, *b, mark);
+  }
+  move_one(field, to.field, mark);
+  move_one(material, to.material, mark);
+  move_one(id, to.id, mark);
+  return before - size();
 }
 
 void seed_rectangle(Particles& p, const double min[2], const double max[2], double h, int ppc,

@@ -35,6 +35,9 @@ struct Particles {
   // Reorders every array so that the particle now at index k is the one that was at
   // order[k]. `scratch` is reused between calls to avoid allocating in the time loop.
   void permute(const std::vector<std::uint32_t>& order, std::vector<double>& scratch);
+  // Appends the particles with mark[p] != 0 to `to`, in index order, and removes them from
+  // this store, keeping the others' order; returns how many moved.
+  std::size_t move_marked(const std::vector<unsigned char>& mark, Particles& to);
 };
 
 // The centre of sub-cell k (side `side`) of a uniform lattice starting at `origin` (m): every

@@ -1,7 +1,9 @@
 // rupture/solver/setup.cpp
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
+#include <utility>
 
 #include "particles/seed.hpp"
 #include "solver/energy.hpp"
@@ -10,6 +12,7 @@
 #include "solver/step.hpp"
 #include "solver/cohesive_step.hpp"
 #include "solver/load_step.hpp"
+#include "solver/nested_state.hpp"
 #include "solver/summary.hpp"
 
 namespace rupture {
@@ -26,11 +29,20 @@ void prestress(Particles& P, std::size_t first, std::size_t last, const BodySpec
   }
 }
 
-}  // namespace
+// Drops the particles [first, size) that `keep` rejects (by centre).
+void keep_only(Particles& P, std::size_t first, const std::function<bool(double, double)>& keep) {
+  std::vector<unsigned char> drop(P.size(), 0);
+  for (std::size_t p = first; p < P.size(); ++p) drop[p] = !keep(P.x[p], P.y[p]);
+  Particles dropped;
+  P.move_marked(drop, dropped);
+}
 
-State make_state(const Case& c) {
+// make_state on a given grid. With `keep` (a nested level, solver/nested_state.hpp) every body
+// is seeded through its region on this lattice, only the particles `keep` accepts stay, ids
+// are their indices, and the boundary conditions are left to the caller.
+State make_state_on(const Case& c, Grid grid, const std::function<bool(double, double)>* keep) {
   State s;
-  s.grid = build_grid(c.grid);
+  s.grid = std::move(grid);
   const int num_fields = int(c.field_names.size());  // bodies sharing a field share its arrays
   // Whole-grid fields until the particles exist; fitted to windows below (solver/field_windows.hpp).
   s.fields.resize(num_fields, std::size_t(s.grid.nodes_x()), std::size_t(s.grid.nodes_y()));
@@ -42,7 +54,10 @@ State make_state(const Case& c) {
     const SeedProperties props{m.density, std::uint8_t(b.field), std::uint8_t(b.material),
                                {b.velocity[0], b.velocity[1]}};
     const std::size_t first = s.particles.size();
-    if (!b.plain_rectangle())  // point-in-shape of the sub-cell centres (particles/seed.hpp)
+    if (keep) {
+      seed_region(s.particles, s.grid, b.region, ppc, props);
+      keep_only(s.particles, first, *keep);
+    } else if (!b.plain_rectangle())  // point-in-shape of the sub-cell centres (particles/seed.hpp)
       seed_region(s.particles, s.grid, b.region, ppc, props);
     else if (s.grid.graded())
       seed_graded_rectangle(s.particles, s.grid, b.min, b.max, ppc, props);
@@ -52,10 +67,14 @@ State make_state(const Case& c) {
                      s.grid.domain_min);
     prestress(s.particles, first, s.particles.size(), b, m, c.plane);
   }
-  s.boundary = c.boundary;
-  update_edge_lines(s.boundary, s.grid, 0.0, s.bc_lines);
-  s.bc_nodes = resolve_nodes(s.boundary, s.grid, num_fields, s.bc_lines);
-  s.absorbing = absorbing_nodes(c, s.grid);
+  if (keep) {
+    for (std::size_t p = 0; p < s.particles.size(); ++p) s.particles.id[p] = std::uint32_t(p);
+  } else {
+    s.boundary = c.boundary;
+    update_edge_lines(s.boundary, s.grid, 0.0, s.bc_lines);
+    s.bc_nodes = resolve_nodes(s.boundary, s.grid, num_fields, s.bc_lines);
+    s.absorbing = absorbing_nodes(c, s.grid);
+  }
 
   const CaseSummary summary = summarize(c);
   s.limits.cfl_dt = summary.dt_cfl;
@@ -86,6 +105,14 @@ State make_state(const Case& c) {
   s.windows_checked_step = -2;  // the first step measures again
   set_up_loads(s, c.loads, c.grid.cell_size);
   return s;
+}
+
+}  // namespace
+
+State make_state(const Case& c) { return make_state_on(c, build_grid(c.grid), nullptr); }
+
+State make_level_state(const Case& c, Grid lattice, const std::function<bool(double, double)>& keep) {
+  return make_state_on(c, std::move(lattice), &keep);
 }
 
 }  // namespace rupture

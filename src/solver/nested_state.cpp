@@ -1,0 +1,299 @@
+// rupture/solver/nested_state.cpp
+#include "solver/nested_state.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <initializer_list>
+
+#include "core/errors.hpp"
+#include "solver/field_windows.hpp"
+#include "solver/grid_update.hpp"
+#include "solver/time_step.hpp"
+#include "solver/transfer.hpp"
+
+namespace rupture {
+namespace {
+
+using NodalArray = std::vector<double> GridFields::*;
+
+Grid level_grid(const Level& L, const GridSpec& spec) {
+  Grid g;
+  g.x = L.x, g.y = L.y;
+  g.ghost = kGhostRing;  // informational: a level's rings differ by side (grid/nested.hpp)
+  for (int d = 0; d < 2; ++d) g.domain_min[d] = spec.min[d], g.domain_max[d] = spec.max[d];
+  return g;
+}
+
+// The velocity conditions of the domain edges this level reaches (its outer sides), on the
+// level's lattice line of the edge.
+void set_level_boundary(State& s, const Case& c, const Level& L, std::vector<int>& base) {
+  for (const VelocityBC& bc : c.boundary) {
+    const int d = (bc.edge == Edge::left || bc.edge == Edge::right) ? 0 : 1;
+    const bool lo = bc.edge == Edge::left || bc.edge == Edge::bottom;
+    if (!(lo ? L.outer_lo[d] : L.outer_hi[d])) continue;
+    const Axis& a = d == 0 ? L.x : L.y;
+    const double edge = lo ? c.grid.min[d] : c.grid.max[d];
+    const double u = (edge - a.origin) / a.h;
+    const long line = std::lround(u);
+    if (std::fabs(u - double(line)) > 1e-6)
+      throw InputError(fmt::format(
+          "boundary.{}: the {} edge ({} = {:g} m) is not on a node line of nested level {} "
+          "({:g} m cells, lines at {:g} m + k {:g} m); with nested levels a driven edge must lie "
+          "on the lines of every level that reaches it: make the domain's extent a whole number "
+          "of coarse cells", bc.name, edge_name(bc.edge), d == 0 ? "x" : "y", edge, L.level, a.h,
+          a.origin, a.h));
+    s.boundary.push_back(bc);
+    base.push_back(int(line));
+  }
+  s.bc_lines = base;
+  s.bc_nodes = resolve_nodes(s.boundary, s.grid, s.fields.num_fields, s.bc_lines);
+}
+
+// A driven edge that has moved onto another lattice line takes its condition with it (E2),
+// as update_edge_lines does on the single grid: the nearest line to where the edge is now.
+void follow_edges(State& s, const std::vector<int>& base) {
+  bool changed = false;
+  for (std::size_t k = 0; k < s.boundary.size(); ++k) {
+    const VelocityBC& bc = s.boundary[k];
+    if (!bc.moves()) continue;
+    const Axis& a = (bc.edge == Edge::left || bc.edge == Edge::right) ? s.grid.x : s.grid.y;
+    const int line = std::clamp(base[k] + int(std::lround(bc.velocity.displacement(s.time) / a.h)), 0,
+                                a.nodes() - 1);
+    changed = changed || line != s.bc_lines[k];
+    s.bc_lines[k] = line;
+  }
+  if (changed) s.bc_nodes = resolve_nodes(s.boundary, s.grid, s.fields.num_fields, s.bc_lines);
+}
+
+// Fields are whole-lattice on every level: element of (field f, node n) is start[f] + n.
+double& element(NestedState& n, std::size_t level, std::uint32_t node, int f, NodalArray a) {
+  GridFields& G = n.levels[level].fields;
+  return (G.*a)[G.start[std::size_t(f)] + node];
+}
+
+void condense_fields(NestedState& n, std::initializer_list<NodalArray> arrays) {
+  const NestedGrid& g = n.grid;
+  for (int f = 0; f < n.levels[0].fields.num_fields; ++f)
+    for (NodalArray a : arrays)
+      for (std::size_t k = 0; k < g.slaves.size(); ++k) {
+        double& slave = element(n, n.slave_level[k], n.slave_node[k], f, a);
+        const double v = slave;
+        slave = 0.0;
+        if (v == 0.0) continue;
+        for (std::uint32_t t = g.term_start[k]; t < g.term_start[k + 1]; ++t)
+          element(n, n.term_level[t], n.term_node[t], f, a) += g.terms[t].c * v;
+      }
+}
+
+void distribute_fields(NestedState& n, std::initializer_list<NodalArray> arrays) {
+  const NestedGrid& g = n.grid;
+  for (int f = 0; f < n.levels[0].fields.num_fields; ++f)
+    for (NodalArray a : arrays)
+      for (std::size_t k = 0; k < g.slaves.size(); ++k) {
+        double v = 0.0;
+        for (std::uint32_t t = g.term_start[k]; t < g.term_start[k + 1]; ++t)
+          v += g.terms[t].c * element(n, n.term_level[t], n.term_node[t], f, a);
+        element(n, n.slave_level[k], n.slave_node[k], f, a) = v;
+      }
+}
+
+// Every particle onto the finest level that owns its centre; a particle more than one level
+// finer than where it was made breaks the GIMP contract (lp > h/2 of its new lattice).
+void migrate(NestedState& n) {
+  const std::size_t levels = n.levels.size();
+  if (levels == 1) return;
+  std::vector<Particles> arriving(levels);
+  std::vector<unsigned char> mark;
+  std::vector<int> dest;
+  for (std::size_t l = 0; l < levels; ++l) {
+    Particles& P = n.levels[l].particles;
+    mark.assign(P.size(), 0);
+    bool any = false;
+    for (std::size_t p = 0; p < P.size(); ++p) {
+      const bool away = n.grid.level_of(P.x[p], P.y[p]) != int(l);
+      mark[p] = away;
+      any = any || away;
+    }
+    if (!any) continue;
+    Particles leaving;
+    n.migrations += long(P.move_marked(mark, leaving));
+    n.levels[l].plan.valid = false;
+    dest.resize(leaving.size());
+    for (std::size_t p = 0; p < leaving.size(); ++p) dest[p] = n.grid.level_of(leaving.x[p], leaving.y[p]);
+    for (std::size_t d = 0; d < levels; ++d) {
+      mark.assign(leaving.size(), 0);
+      bool some = false;
+      for (std::size_t p = 0; p < leaving.size(); ++p) some |= (mark[p] = dest[p] == int(d)) != 0;
+      if (some) leaving.move_marked(mark, arriving[d]);
+    }
+  }
+  for (std::size_t d = 0; d < levels; ++d) {
+    if (arriving[d].size() == 0) continue;
+    State& s = n.levels[d];
+    const double h = s.grid.x.h;
+    for (std::size_t p = 0; p < arriving[d].size(); ++p) {
+      const double lp = std::max(arriving[d].half_x[p], arriving[d].half_y[p]);
+      if (lp > 0.5 * h * (1 + 1e-9))
+        throw SimulationError(fmt::format(
+            "GIMP contract broken at step {}, t = {:.6g} s: particle {} (field {}) at (x, y) = "
+            "({:.6g}, {:.6g}) m with half-width {:.4g} m entered nested level {} ({:.4g} m "
+            "cells): 2 l_p exceeds the cell, so its 3-node stencil (SPEC E3) loses a node. It "
+            "was made on a level at least two coarser; widen the boxes between (the nesting "
+            "band) so that moving material stays within one level of where it started",
+            n.step, n.time, arriving[d].id[p], int(arriving[d].field[p]), arriving[d].x[p],
+            arriving[d].y[p], lp, d, h));
+    }
+    arriving[d].move_marked(std::vector<unsigned char>(arriving[d].size(), 1), s.particles);
+    s.plan.valid = false;
+  }
+}
+
+template <class Phase>
+void each_level(NestedState& n, Phase&& phase) {
+  for (State& s : n.levels) phase(s);
+}
+
+// One dt for every level: the smallest of their limits (SPEC E6).
+void common_time_step(NestedState& n) {
+  double dt = INFINITY;
+  each_level(n, [&](State& s) {
+    choose_time_step(s);
+    dt = std::min(dt, s.dt);
+  });
+  each_level(n, [&](State& s) { s.dt = dt; });
+  n.dt = dt;
+}
+
+// MUSL (solver/step.cpp's step_musl), level by level, joined at the transitions.
+void step_musl(NestedState& n) {
+  each_level(n, [](State& s) { particles_to_grid(s, true); });  // E4
+  condense_fields(n, {&GridFields::mass, &GridFields::mom_x, &GridFields::mom_y,
+                      &GridFields::force_x, &GridFields::force_y});
+  common_time_step(n);                                           // E6
+  each_level(n, [](State& s) { integrate_grid(s); });            // E4 + E2 velocity BCs
+  distribute_fields(n, {&GridFields::vel_x, &GridFields::vel_y, &GridFields::dvel_x, &GridFields::dvel_y});
+  each_level(n, [](State& s) { update_particle_velocity_and_remap(s); });
+  condense_fields(n, {&GridFields::remap_x, &GridFields::remap_y});
+  each_level(n, [](State& s) { remapped_grid_velocity(s); });    // + E2 at t^{n+1}
+  distribute_fields(n, {&GridFields::remap_x, &GridFields::remap_y});
+  each_level(n, [](State& s) {
+    grid_to_particles(s, s.fields.remap_x.data(), s.fields.remap_y.data(), G2PMode::stress_and_move);  // E5
+  });
+}
+
+void step_usl(NestedState& n) {
+  each_level(n, [](State& s) { particles_to_grid(s, true); });
+  condense_fields(n, {&GridFields::mass, &GridFields::mom_x, &GridFields::mom_y,
+                      &GridFields::force_x, &GridFields::force_y});
+  common_time_step(n);
+  each_level(n, [](State& s) { integrate_grid(s); });
+  distribute_fields(n, {&GridFields::vel_x, &GridFields::vel_y, &GridFields::dvel_x, &GridFields::dvel_y});
+  each_level(n, [](State& s) {
+    grid_to_particles(s, s.fields.vel_x.data(), s.fields.vel_y.data(), G2PMode::stress_velocity_and_move);
+  });
+}
+
+void step_usf(NestedState& n) {
+  each_level(n, [](State& s) { particles_to_grid(s, false); });
+  condense_fields(n, {&GridFields::mass, &GridFields::mom_x, &GridFields::mom_y});
+  common_time_step(n);
+  each_level(n, [](State& s) { grid_velocity_from_momentum(s, s.time); });
+  distribute_fields(n, {&GridFields::remap_x, &GridFields::remap_y});
+  each_level(n, [](State& s) {
+    grid_to_particles(s, s.fields.remap_x.data(), s.fields.remap_y.data(), G2PMode::stress_only);
+    particles_to_grid_force(s);
+  });
+  condense_fields(n, {&GridFields::force_x, &GridFields::force_y});
+  each_level(n, [](State& s) { integrate_grid(s); });
+  distribute_fields(n, {&GridFields::vel_x, &GridFields::vel_y, &GridFields::dvel_x, &GridFields::dvel_y});
+  each_level(n, [](State& s) {
+    grid_to_particles(s, s.fields.vel_x.data(), s.fields.vel_y.data(), G2PMode::velocity_and_move);
+  });
+}
+
+}  // namespace
+
+std::size_t NestedState::num_particles() const {
+  std::size_t n = 0;
+  for (const State& s : levels) n += s.particles.size();
+  return n;
+}
+
+double NestedState::external_work() const {
+  double w = 0.0;
+  for (const State& s : levels) w += s.external_work;
+  return w;
+}
+
+NestedState make_nested_state(const Case& c) {
+  const auto unsupported = [](const char* what) {
+    return InputError(fmt::format("{}: not yet supported on nested levels (solver/nested_state.hpp)", what));
+  };
+  if (!c.interfaces.empty()) throw unsupported("[interfaces] and faults");
+  if (!c.absorbing_edges.empty()) throw unsupported("[absorbing]");
+  if (!c.loads.empty()) throw unsupported("[loads]");
+  if (!c.grid.refined()) throw unsupported("a grid without [grid.refine] boxes");
+  NestedState n;
+  n.grid = make_nested_grid(c.grid.min, c.grid.max, c.grid.coarse_cell_size, c.grid.cell_size,
+                            refine_boxes(c.grid), std::max(0.0, c.grid.margin));
+  const int levels = int(n.grid.levels.size());
+  std::uint32_t next_id = 0;
+  double min_mass = INFINITY;
+  n.base_lines.resize(std::size_t(levels));
+  for (int l = 0; l < levels; ++l) {
+    const Level& L = n.grid.levels[std::size_t(l)];
+    const NestedGrid& g = n.grid;
+    n.levels.push_back(make_level_state(c, level_grid(L, c.grid),
+                                        [&g, l](double x, double y) { return g.level_of(x, y) == l; }));
+    State& s = n.levels.back();
+    s.whole_grid_fields = true;
+    fit_field_windows(s);
+    set_level_boundary(s, c, L, n.base_lines[std::size_t(l)]);
+    for (std::uint32_t& id : s.particles.id) id += next_id;  // ids unique over the levels
+    next_id += std::uint32_t(s.particles.size());
+    for (double m : s.particles.mass) min_mass = std::min(min_mass, m);
+  }
+  for (State& s : n.levels) s.mass_floor = 1e-20 * min_mass;  // one floor (solver/setup.cpp)
+  const auto locate = [&](std::uint32_t id, std::uint8_t& level, std::uint32_t& node) {
+    const auto& st = n.grid.level_start;
+    level = std::uint8_t(std::upper_bound(st.begin(), st.end(), std::size_t(id)) - st.begin() - 1);
+    node = std::uint32_t(id - st[level]);
+  };
+  const std::size_t ns = n.grid.slaves.size(), nt = n.grid.terms.size();
+  n.slave_level.resize(ns), n.slave_node.resize(ns), n.term_level.resize(nt), n.term_node.resize(nt);
+  for (std::size_t k = 0; k < ns; ++k) locate(n.grid.slaves[k], n.slave_level[k], n.slave_node[k]);
+  for (std::size_t t = 0; t < nt; ++t) locate(n.grid.terms[t].dof, n.term_level[t], n.term_node[t]);
+  n.dt = n.levels[0].dt;
+  return n;
+}
+
+void step(NestedState& n) {
+  migrate(n);  // every particle on the level owning its centre
+  for (std::size_t l = 0; l < n.levels.size(); ++l) {
+    State& s = n.levels[l];
+    build_scatter_plan(s);
+    fit_field_windows(s);
+    follow_edges(s, n.base_lines[l]);
+  }
+  switch (n.levels[0].scheme) {
+    case Scheme::MUSL:
+      step_musl(n);
+      break;
+    case Scheme::USL:
+      step_usl(n);
+      break;
+    case Scheme::USF:
+      step_usf(n);
+      break;
+  }
+  each_level(n, [](State& s) {
+    s.time += s.dt;
+    ++s.step;
+  });
+  n.time += n.dt;
+  ++n.step;
+}
+
+}  // namespace rupture

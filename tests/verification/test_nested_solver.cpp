@@ -1,0 +1,227 @@
+// Verification of the time step on nested levels (solver/nested_state.hpp, SPEC §5): the
+// refinement checks of test_refinement.cpp (a plane wave through coarse -> fine -> coarse
+// transitions: < 2 % reflected, arrival within 1 %, energy balance within 1 %) now with the
+// real phases of the solver on each level, and a free block translating through transitions
+// (particles migrating between levels): mass, momentum and the rigid motion exact to round-off.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "core/errors.hpp"
+#include "solver/energy.hpp"
+#include "solver/nested_state.hpp"
+#include "wave_helpers.hpp"
+
+using namespace rupture;
+
+namespace {
+
+double nested_mean_sxx(const NestedState& n, double x0, double x1) {
+  double sum = 0;
+  int count = 0;
+  for (const State& s : n.levels)
+    for (std::size_t i = 0; i < s.particles.size(); ++i)
+      if (s.particles.x[i] >= x0 && s.particles.x[i] <= x1) sum += s.particles.sxx[i], ++count;
+  return count ? sum / count : 0.0;
+}
+
+double nested_energy(const NestedState& n) {
+  double e = 0;
+  for (const State& s : n.levels) e += kinetic_energy(s.particles) + strain_energy(s.particles);
+  return e;
+}
+
+struct PulseRun {
+  std::vector<double> probe_a;
+  double arrival_b = NAN, energy_error = 0.0;
+  std::size_t particles = 0;
+  long migrations = 0;
+};
+
+// The strip of test_refinement.cpp (60 mm, plateau 2 us between a rise and a fall of `rise`,
+// rollers on top and bottom) of height `height`, refined by `boxes` (level 2: 0.125 mm) on nested levels, or
+// uniform at 0.5 mm on the single grid at the same step.
+PulseRun pulse(double height, double rise, const std::vector<RefineLevel>& boxes) {
+  const double end = 30e-6, v = 1.0;
+  Case c = test::strip_1d(0.06, height, 0.5e-3, "x", v, end);
+  for (VelocityBC& bc : c.boundary)
+    if (bc.name == "drive") bc.velocity = TimeFunction{TimeFunction::Kind::trapezoid, v, rise, 2e-6, rise};
+  c.grid.cell_size = 0.125e-3;
+  c.grid.coarse_cell_size = 0.5e-3;
+  c.grid.refine = boxes;
+  PulseRun r;
+  const double amplitude = c.materials[0].density * wave_speeds(c.materials[0], c.plane).dilatational * v;
+  double prev_t = 0, prev_b = 0;
+  const auto record = [&](double t, double a, double b, double energy, double work) {
+    r.probe_a.push_back(a);
+    if (std::isnan(r.arrival_b) && std::fabs(b) >= 0.5 * amplitude)
+      r.arrival_b = prev_t + (-0.5 * amplitude - prev_b) / (b - prev_b) * (t - prev_t);
+    prev_t = t, prev_b = b;
+    if (t > 2e-6 + 2 * rise) r.energy_error = std::max(r.energy_error, std::fabs(energy - work) / work);
+  };
+  if (boxes.empty()) {
+    c.time.cfl = 0.1;  // the nested run's step (its finest cells are 4x smaller)
+    State s = make_state(c);
+    r.particles = s.particles.size();
+    while (s.time < end) {
+      step(s);
+      record(s.time, test::mean_over(s.particles, s.particles.sxx, 0.0095, 0.0105),
+             test::mean_over(s.particles, s.particles.sxx, 0.0495, 0.0505),
+             kinetic_energy(s.particles) + strain_energy(s.particles), s.external_work);
+    }
+    return r;
+  }
+  NestedState n = make_nested_state(c);
+  r.particles = n.num_particles();
+  while (n.time < end) {
+    step(n);
+    record(n.time, nested_mean_sxx(n, 0.0095, 0.0105), nested_mean_sxx(n, 0.0495, 0.0505),
+           nested_energy(n), n.external_work());
+  }
+  r.migrations = n.migrations;
+  return r;
+}
+
+void check_pulse(const char* what, double height, double rise, const std::vector<RefineLevel>& boxes) {
+  const PulseRun nested = pulse(height, rise, boxes), plain = pulse(height, rise, {});
+  ASSERT_EQ(nested.probe_a.size(), plain.probe_a.size());
+  const Case c = test::strip_1d(0.06, height, 0.5e-3, "x", 1.0, 1.0);
+  const double cd = wave_speeds(c.materials[0], c.plane).dilatational;
+  const double incident = c.materials[0].density * cd * 1.0;
+  const double dt = 0.4 * 0.125e-3 / cd;
+  double reflected = 0, plateau = 0;
+  int in_plateau = 0;
+  // At x = 10 mm the plateau lasts from 3.9 us + rise to 5.9 us + rise and the tail has passed
+  // by 5.9 us + 2 rise; what the transition at 20 mm sends back arrives from 11.8 us.
+  const double arrive = 0.01 / cd;
+  for (std::size_t k = 0; k < nested.probe_a.size(); ++k) {
+    const double t = double(k + 1) * dt;
+    if (t > arrive + rise + 0.2e-6 && t < arrive + rise + 1.8e-6) plateau += plain.probe_a[k], ++in_plateau;
+    if (t > arrive + 2e-6 + 2 * rise + 0.5e-6) reflected = std::max(reflected, std::fabs(nested.probe_a[k] - plain.probe_a[k]));
+  }
+  plateau /= in_plateau;
+  const double expected = 0.05 / cd + 0.5 * rise;
+  std::printf("%s: %zu particles nested (%ld migrations), %zu uniform; plateau %.4g Pa (rho c_D V = "
+              "%.4g), reflected %.3g Pa (%.2f %%); arrival at 50 mm %.4f us (nested), %.4f us "
+              "(uniform), analytic %.4f us; energy error %.2e / %.2e\n",
+              what, nested.particles, nested.migrations, plain.particles, -plateau, incident,
+              reflected, 100 * reflected / incident, 1e6 * nested.arrival_b, 1e6 * plain.arrival_b,
+              1e6 * expected, nested.energy_error, plain.energy_error);
+  EXPECT_NEAR(-plateau, incident, 0.05 * incident) << "the incident pulse itself";
+  EXPECT_LT(reflected, 0.02 * incident);
+  EXPECT_NEAR(nested.arrival_b, expected, 0.01 * expected);
+  EXPECT_LT(nested.energy_error, 0.01) << "energy balance through the nested levels";
+}
+
+}  // namespace
+
+// The refined strip of test_refinement.cpp: x in [20, 40] mm at 0.125 mm over the full height
+// (two intermediate 0.25 mm bands from the nesting), transitions across the path only.
+TEST(NestedSolver, plane_wave_crosses_nested_levels_across_the_path) {
+  check_pulse("full-height box", 0.001, 1e-6, {{"fine", {0.02, 0.0}, {0.04, 0.001}, 2}});
+}
+
+// A band in the middle of a 4 mm strip: hanging nodes also along the band's top and bottom.
+// Most of the path is coarse here, so the pulse rises over 2 us (ten coarse cells): with 1 us
+// the uniform 0.5 mm strip itself is 1.2 % late at 50 mm (dispersion), the nested one 1.1 %.
+TEST(NestedSolver, plane_wave_crosses_a_nested_band_with_hanging_nodes_along_it) {
+  check_pulse("middle band", 0.004, 2e-6,
+              {{"band", {0.02, 0.001}, {0.04, 0.003}, 1}, {"core", {0.024, 0.0015}, {0.036, 0.0025}, 2}});
+}
+
+namespace {
+
+// A free Homalite block [2, 10] x [2, 8] mm at 40 m/s in a 20 x 10 mm domain of 1 mm cells,
+// with one refinement box of the given level (1: 0.5 mm, 2: 0.25 mm).
+Case moving_block(const char* box_min, const char* box_max, int level) {
+  const std::string grid = fmt::format(R"(
+[grid]
+min = [0.0, 0.0]
+max = [0.02, 0.01]
+cell_size = {}
+coarse_cell_size = 1e-3
+margin = 0.0
+[grid.refine.fine]
+min = {}
+max = {}
+level = {}
+)", level == 1 ? 0.5e-3 : 0.25e-3, box_min, box_max, level);
+  return parse_case(std::string(test::kHomaliteToml) + grid + R"(
+[bodies.block]
+material = "homalite"
+min = [0.002, 0.002]
+max = [0.010, 0.008]
+velocity = [40.0, 0.0]
+[time]
+end = 50e-6
+)");
+}
+
+}  // namespace
+
+// The block moves 2 mm in 50 us through a 0.5 mm box [6, 9] x [3, 7] mm: its coarse particles
+// enter the box, its fine ones leave it. The motion must stay a rigid translation (no strain,
+// every particle at 40 m/s) with mass and momentum kept to round-off.
+TEST(NestedSolver, free_block_translates_rigidly_through_transitions) {
+  NestedState n = make_nested_state(moving_block("[0.006, 0.003]", "[0.009, 0.007]", 1));
+  double mass0 = 0, px0 = 0;
+  std::size_t count0 = n.num_particles();
+  for (const State& s : n.levels)
+    for (std::size_t i = 0; i < s.particles.size(); ++i) mass0 += s.particles.mass[i], px0 += s.particles.mass[i] * s.particles.vx[i];
+  while (n.time < 50e-6) step(n);
+  double mass = 0, px = 0, py = 0, worst_v = 0, worst_s = 0;
+  std::set<std::uint32_t> ids;
+  for (const State& s : n.levels) {
+    const Particles& P = s.particles;
+    for (std::size_t i = 0; i < P.size(); ++i) {
+      mass += P.mass[i], px += P.mass[i] * P.vx[i], py += P.mass[i] * P.vy[i];
+      worst_v = std::max({worst_v, std::fabs(P.vx[i] - 40.0), std::fabs(P.vy[i])});
+      worst_s = std::max({worst_s, std::fabs(P.sxx[i]), std::fabs(P.syy[i]), std::fabs(P.sxy[i])});
+      ids.insert(P.id[i]);
+    }
+  }
+  std::printf("%zu particles, %ld migrations over %ld steps; |v - v0| <= %.2e m/s, |sigma| <= %.2e Pa, "
+              "mass %.3e (rel. change %.1e), momentum x %.1e, y %.1e\n",
+              n.num_particles(), n.migrations, n.step, worst_v, worst_s, mass, (mass - mass0) / mass0,
+              (px - px0) / px0, py / px0);
+  EXPECT_EQ(n.num_particles(), count0);
+  EXPECT_EQ(ids.size(), count0) << "ids stay unique through migration";
+  EXPECT_GT(n.migrations, 100) << "the block does cross the transitions";
+  EXPECT_NEAR(mass, mass0, 1e-14 * mass0);
+  EXPECT_NEAR(px, px0, 1e-12 * px0);
+  EXPECT_LT(std::fabs(py), 1e-12 * px0);
+  EXPECT_LT(worst_v, 1e-9);
+  EXPECT_LT(worst_s, 1e-3);  // Pa, against a stress scale rho c_D v0 ~ 1e8 Pa
+}
+
+TEST(NestedSolver, rejects_what_it_does_not_support_yet) {
+  Case c = test::strip_1d(0.06, 0.001, 0.5e-3, "x", 1.0, 1e-6);
+  EXPECT_THROW(make_nested_state(c), InputError);  // no boxes
+  c.grid.cell_size = 0.125e-3;
+  c.grid.coarse_cell_size = 0.5e-3;
+  c.grid.refine = {{"fine", {0.02, 0.0}, {0.04, 0.001}, 2}};
+  c.absorbing_edges = {Edge::right};
+  try {
+    make_nested_state(c);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("[absorbing]"), std::string::npos) << e.what();
+  }
+}
+
+// A particle made on level 0 (1 mm cells) that reaches level 2 (0.25 mm) through a band of
+// level 1 only two cells wide breaks the GIMP contract: the run stops and says so.
+TEST(NestedSolver, a_particle_two_levels_too_coarse_stops_the_run_with_a_diagnosis) {
+  NestedState n = make_nested_state(moving_block("[0.008, 0.003]", "[0.016, 0.007]", 2));
+  try {
+    while (n.time < 50e-6) step(n);
+    FAIL() << "no error";
+  } catch (const SimulationError& e) {
+    const std::string what = e.what();
+    std::printf("%s\n", e.what());
+    EXPECT_NE(what.find("GIMP contract broken"), std::string::npos);
+    EXPECT_NE(what.find("level 2"), std::string::npos);
+  }
+}
