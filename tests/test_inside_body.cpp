@@ -130,7 +130,7 @@ TEST(InsideBody, a_centre_crack_is_tied_beyond_both_ends) {
   // The tied grid nodes: every node of y = 0 except the crack's interior (x = 6.5 ... 13.5 mm).
   const State s = make_state(c);
   std::vector<double> xs;
-  for (std::size_t n : s.bonded[0]) {
+  for (std::size_t n : s.bonded[0].nodes) {
     const int i = int(n % std::size_t(s.grid.nodes_x())),
               j = int(n / std::size_t(s.grid.nodes_x()));
     EXPECT_NEAR(s.grid.y.node(j), 0.0, 1e-15);

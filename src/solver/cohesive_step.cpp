@@ -291,13 +291,13 @@ std::vector<std::size_t> bonded_nodes(const Grid& g, const InterfaceSpec& spec) 
 
 void tie_bonded_nodes(State& s, TieWhat what) {
   GridFields& G = s.fields;
-  for (std::size_t c = 0; c < s.interfaces.size(); ++c) {
-    const int up = s.interfaces[c].spec.upper_field, lo = s.interfaces[c].spec.lower_field;
+  for (const BondedTie& b : s.bonded) {
+    const int up = b.upper_field, lo = b.lower_field;
     auto tie = [&](std::vector<double>& v, std::size_t n) {
       const std::size_t a = G.index(up, n), b = G.index(lo, n);  // in both windows
       v[a] = v[b] = v[a] + v[b];
     };
-    for (std::size_t n : s.bonded[c]) {
+    for (std::size_t n : b.nodes) {
       if (what == TieWhat::mass_momentum) {
         for (auto* v : {&G.mass, &G.mom_x, &G.mom_y}) tie(*v, n);
       } else if (what == TieWhat::force) {

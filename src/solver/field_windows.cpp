@@ -45,12 +45,13 @@ void add_faces_and_ties(const State& s, Need& need) {
       need.add(up, cu, cu + 1, ru, ru + 1);
       need.add(lo, cl, cl + 1, rl, rl + 1);
     }
-    for (const std::size_t n : s.bonded[c]) {
-      const int i = int(n % nx), j = int(n / nx);
-      need.add(up, i, i, j, j);
-      need.add(lo, i, i, j, j);
-    }
   }
+  for (const BondedTie& b : s.bonded)
+    for (const std::size_t n : b.nodes) {
+      const int i = int(n % nx), j = int(n / nx);
+      need.add(b.upper_field, i, i, j, j);
+      need.add(b.lower_field, i, i, j, j);
+    }
 }
 
 // Whether every window holds what its field needs and, when `tight`, reaches at most one

@@ -8,6 +8,7 @@
 #include <initializer_list>
 
 #include "core/errors.hpp"
+#include "solver/cohesive_step.hpp"
 #include "solver/field_windows.hpp"
 #include "solver/grid_update.hpp"
 #include "solver/time_step.hpp"
@@ -99,6 +100,32 @@ void distribute_fields(NestedState& n, std::initializer_list<NodalArray> arrays)
       }
 }
 
+// The level that holds interface `ci` whole: every face node's bilinear stencil (its cell's
+// four nodes) made of that level's DOFs, so the cohesive forces land on DOFs and the faces
+// read DOF velocities. Throws InputError otherwise.
+int owning_level(const NestedGrid& g, const CohesiveInterface& ci, const std::string& name) {
+  const int l = g.level_of(ci.x0[0], ci.y0[0]);
+  const Level& L = g.levels[std::size_t(l)];
+  for (std::size_t k = 0; k < ci.num_nodes(); ++k) {
+    const double u = (ci.x0[k] - g.min[0]) / g.finest, v = (ci.y0[k] - g.min[1]) / g.finest;
+    const double cu = std::floor(u / double(L.unit)) * double(L.unit), cv = std::floor(v / double(L.unit)) * double(L.unit);
+    bool dofs = g.level_of(ci.x0[k], ci.y0[k]) == l;
+    for (double du : {0.0, double(L.unit)})
+      for (double dv : {0.0, double(L.unit)}) {
+        const bool finer = std::size_t(l) + 1 < g.levels.size() &&
+                           g.levels[std::size_t(l) + 1].owns_units(cu + du, cv + dv);
+        dofs = dofs && L.owns_units(cu + du, cv + dv) && !finer;
+      }
+    if (!dofs)
+      throw InputError(fmt::format(
+          "interface.{}: its node at (x, y) = ({:g}, {:g}) m is not inside nested level {} with a "
+          "cell to spare, where its first node is: on nested levels an interface must lie in one "
+          "level's region (one [grid.refine] box and the level it sets), at least one cell from "
+          "the region's inner borders", name, ci.x0[k], ci.y0[k], l));
+  }
+  return l;
+}
+
 // Every particle onto the finest level that owns its centre; a particle more than one level
 // finer than where it was made breaks the GIMP contract (lp > h/2 of its new lattice).
 void migrate(NestedState& n) {
@@ -166,16 +193,35 @@ void common_time_step(NestedState& n) {
   n.dt = dt;
 }
 
+// After the condensed scatter: bonded stretches tied (on every level they cross), the face
+// stencils of each interface (on its level) with this step's masses, then one dt (E6).
+void tie_stencils_and_time_step(NestedState& n) {
+  each_level(n, [](State& s) {
+    tie_bonded_nodes(s, TieWhat::mass_momentum);
+    if (!s.interfaces.empty()) update_face_stencils(s);
+  });
+  common_time_step(n);
+}
+
+void cohesive_forces_and_ties(NestedState& n) {
+  each_level(n, [](State& s) {
+    if (!s.interfaces.empty()) add_cohesive_forces(s);  // E7-E9
+    tie_bonded_nodes(s, TieWhat::force);
+  });
+}
+
 // MUSL (solver/step.cpp's step_musl), level by level, joined at the transitions.
 void step_musl(NestedState& n) {
   each_level(n, [](State& s) { particles_to_grid(s, true); });  // E4
   condense_fields(n, {&GridFields::mass, &GridFields::mom_x, &GridFields::mom_y,
                       &GridFields::force_x, &GridFields::force_y});
-  common_time_step(n);                                           // E6
+  tie_stencils_and_time_step(n);                                 // bonded, faces, dt (E6)
+  cohesive_forces_and_ties(n);                                   // E7-E9, bonded
   each_level(n, [](State& s) { integrate_grid(s); });            // E4 + E2 velocity BCs
   distribute_fields(n, {&GridFields::vel_x, &GridFields::vel_y, &GridFields::dvel_x, &GridFields::dvel_y});
   each_level(n, [](State& s) { update_particle_velocity_and_remap(s); });
   condense_fields(n, {&GridFields::remap_x, &GridFields::remap_y});
+  each_level(n, [](State& s) { tie_bonded_nodes(s, TieWhat::remapped_momentum); });
   each_level(n, [](State& s) { remapped_grid_velocity(s); });    // + E2 at t^{n+1}
   distribute_fields(n, {&GridFields::remap_x, &GridFields::remap_y});
   each_level(n, [](State& s) {
@@ -187,7 +233,8 @@ void step_usl(NestedState& n) {
   each_level(n, [](State& s) { particles_to_grid(s, true); });
   condense_fields(n, {&GridFields::mass, &GridFields::mom_x, &GridFields::mom_y,
                       &GridFields::force_x, &GridFields::force_y});
-  common_time_step(n);
+  tie_stencils_and_time_step(n);
+  cohesive_forces_and_ties(n);
   each_level(n, [](State& s) { integrate_grid(s); });
   distribute_fields(n, {&GridFields::vel_x, &GridFields::vel_y, &GridFields::dvel_x, &GridFields::dvel_y});
   each_level(n, [](State& s) {
@@ -231,7 +278,8 @@ NestedState make_nested_state(const Case& c) {
   const auto unsupported = [](const char* what) {
     return InputError(fmt::format("{}: not yet supported on nested levels (solver/nested_state.hpp)", what));
   };
-  if (!c.interfaces.empty()) throw unsupported("[interfaces] and faults");
+  if (!c.interfaces.empty() && c.solver.scheme == Scheme::USF)
+    throw unsupported("solver.scheme = \"USF\" with interfaces");
   if (!c.absorbing_edges.empty()) throw unsupported("[absorbing]");
   if (!c.loads.empty()) throw unsupported("[loads]");
   if (!c.grid.refined()) throw unsupported("a grid without [grid.refine] boxes");
@@ -254,6 +302,13 @@ NestedState make_nested_state(const Case& c) {
     for (std::uint32_t& id : s.particles.id) id += next_id;  // ids unique over the levels
     next_id += std::uint32_t(s.particles.size());
     for (double m : s.particles.mass) min_mass = std::min(min_mass, m);
+    // Every level ties the bonded stretches on its own lattice (make_state_on); an interface
+    // lives on the one level that holds it whole.
+    std::vector<CohesiveInterface> kept;
+    for (std::size_t k = 0; k < s.interfaces.size(); ++k)
+      if (owning_level(n.grid, s.interfaces[k], c.interface_names[k]) == l) kept.push_back(std::move(s.interfaces[k]));
+    s.interfaces = std::move(kept);
+    s.limits.cohesive_dt = s.interfaces.empty() ? INFINITY : s.limits.cohesive_dt;
   }
   for (State& s : n.levels) s.mass_floor = 1e-20 * min_mass;  // one floor (solver/setup.cpp)
   const auto locate = [&](std::uint32_t id, std::uint8_t& level, std::uint32_t& node) {
@@ -288,9 +343,14 @@ void step(NestedState& n) {
       step_usf(n);
       break;
   }
-  each_level(n, [](State& s) {
+  each_level(n, [&n](State& s) {
     s.time += s.dt;
     ++s.step;
+    // Face nodes follow their fields (solver/step.cpp): MUSL's re-mapped velocity, USL's t^{n+1}.
+    if (s.interfaces.empty()) return;
+    const bool musl = n.levels[0].scheme == Scheme::MUSL;
+    advance_interfaces(s, musl ? s.fields.remap_x.data() : s.fields.vel_x.data(),
+                       musl ? s.fields.remap_y.data() : s.fields.vel_y.data());
   });
   n.time += n.dt;
   ++n.step;

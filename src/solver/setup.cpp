@@ -87,7 +87,7 @@ State make_state_on(const Case& c, Grid grid, const std::function<bool(double, d
   for (const InterfaceSpec& is : c.interfaces) {
     s.interfaces.push_back(make_interface(is));
     evaluate_interface(s.interfaces.back(), 0.0, 0.0);  // tractions and stiffnesses at rest
-    s.bonded.push_back(bonded_nodes(s.grid, is));
+    s.bonded.push_back({is.upper_field, is.lower_field, bonded_nodes(s.grid, is)});
   }
   s.scheme = c.solver.scheme;
   s.flip = c.solver.flip;

@@ -74,6 +74,13 @@ struct LoadState {
   bool has_forces() const { return !spec.tractions.empty() || !spec.body_forces.empty(); }
 };
 
+// The grid nodes where an interface's two fields are tied into one body (its bonded stretches).
+struct BondedTie {
+  int upper_field = 0, lower_field = 0;
+  std::vector<std::size_t> nodes;  // grid nodes, increasing
+  bool operator==(const BondedTie&) const = default;
+};
+
 // Every member must also be written in io/checkpoint.cpp (restart is bitwise), or be listed
 // there as rebuilt from the case or per-step scratch.
 struct State {
@@ -87,7 +94,7 @@ struct State {
   std::vector<AbsorbingNode> absorbing;  // dashpots of the absorbing edges (bc/absorbing.hpp)
   ScatterPlan plan;
   std::vector<CohesiveInterface> interfaces;
-  std::vector<std::vector<std::size_t>> bonded;  // per interface: tied grid nodes (row y0)
+  std::vector<BondedTie> bonded;  // per interface: its tied grid nodes (solver/cohesive_step.hpp)
   LoadState loads;  // [loads] (bc/loads.hpp): tractions, body forces, velocity regions
 
   Scheme scheme = Scheme::MUSL;
