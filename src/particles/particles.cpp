@@ -20,6 +20,9 @@ namespace {
 template <class T>
 void permute_one(std::vector<T>& v, const std::vector<std::uint32_t>& order, std::vector<T>& tmp) {
   const long n = long(order.size());
+  // The buffers swap roles: keep the larger capacity, so arrays that grow by appends (particles
+  // moving between nested levels) are not re-allocated after every sort.
+  if (tmp.capacity() < v.capacity()) tmp.reserve(v.capacity());
   tmp.resize(order.size());
 #pragma omp parallel for schedule(static)
   for (long k = 0; k < n; ++k) tmp[std::size_t(k)] = v[order[std::size_t(k)]];
@@ -32,10 +35,10 @@ void Particles::permute(const std::vector<std::uint32_t>& order, std::vector<dou
                   &szz, &exx, &eyy, &exy}) {
     permute_one(*v, order, scratch);
   }
-  std::vector<std::uint8_t> tmp8;
+  thread_local std::vector<std::uint8_t> tmp8;
   permute_one(field, order, tmp8);
   permute_one(material, order, tmp8);
-  std::vector<std::uint32_t> tmp32;
+  thread_local std::vector<std::uint32_t> tmp32;
   permute_one(id, order, tmp32);
 }
 

@@ -6,9 +6,9 @@
 // at the transition nodes: after every scatter the slaves' mass, momentum and force are
 // condensed onto their DOFs, before every gather the slaves take their DOFs' velocities.
 // Every level steps with the same dt (the smallest of the levels' limits). Particles whose
-// centre crosses into another level's region move there at the start of a step, keeping
-// their size (uGIMP); one from two or more levels coarser would break the GIMP contract and
-// stops the run with a diagnosis.
+// centre crosses into another level's region move there at the start of a step (batched:
+// kMigrateDrift), keeping their size (uGIMP); one from two or more levels coarser would break
+// the GIMP contract and stops the run with a diagnosis.
 // Not yet supported here (make_nested_state throws InputError naming them): cohesive
 // interfaces and faults, absorbing edges, [loads]. The driver and the writers still run the
 // single-grid State; this is the step the issue "Speed" moves them onto.
@@ -21,6 +21,10 @@
 #include "solver/state.hpp"
 
 namespace rupture {
+
+// Particles move to the level owning their centre once any may have moved this many cells of
+// the finest level since the last move (solver/nested_state.cpp).
+inline constexpr double kMigrateDrift = 0.25;
 
 struct NestedState {
   NestedGrid grid;
