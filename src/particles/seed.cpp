@@ -1,6 +1,7 @@
 // rupture/particles/seed.cpp
 #include "particles/seed.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -66,10 +67,15 @@ void fill(Particles& p, std::size_t k, const SeedPoint& s, const SeedProperties&
 void for_each_seed_point(const Grid& g, const Region& r, int ppc,
                          const std::function<void(const SeedPoint&)>& visit) {
   const Box b = bounding_box(r);
+  // On a uniform grid the box is clipped to the grid's extent (a nested level's lattice covers
+  // part of the domain; the whole-domain grid holds every body anyway). Its ends are grid
+  // lines, so the centres are those of the unclipped box.
+  const auto clip_lo = [](const Axis& a, double v) { return std::max(v, a.origin); };
+  const auto clip_hi = [](const Axis& a, double v) { return std::min(v, a.node(a.cells)); };
   const Line cols = g.graded() ? graded_line(g.x, b.min[0], b.max[0], ppc)
-                               : uniform_line(g.x, g.domain_min[0], b.min[0], b.max[0], ppc);
+                               : uniform_line(g.x, g.domain_min[0], clip_lo(g.x, b.min[0]), clip_hi(g.x, b.max[0]), ppc);
   const Line rows = g.graded() ? graded_line(g.y, b.min[1], b.max[1], ppc)
-                               : uniform_line(g.y, g.domain_min[1], b.min[1], b.max[1], ppc);
+                               : uniform_line(g.y, g.domain_min[1], clip_lo(g.y, b.min[1]), clip_hi(g.y, b.max[1]), ppc);
   for (std::size_t j = 0; j < rows.centre.size(); ++j)
     for (std::size_t i = 0; i < cols.centre.size(); ++i)
       if (contains(r, cols.centre[i], rows.centre[j]))
