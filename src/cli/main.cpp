@@ -119,6 +119,9 @@ void print_check(const std::string& path, const Case& c) {
   if (c.grid.refined()) {
     fmt::print("refined grid: {} levels, level 0 = {:g} m, finest = {:g} m; smallest cell {:g} m\n",
                s.level_sizes.size(), c.grid.coarse_cell_size, c.grid.cell_size, s.min_cell_size);
+    fmt::print("refinement={} ({})\n", c.grid.nested ? "nested" : "graded",
+               c.grid.nested ? "nested levels, each over its own boxes, transition nodes"
+                             : "graded tensor-product grid, fine rows and columns across the plate");
     for (std::size_t L = 0; L < s.level_sizes.size(); ++L)
       fmt::print("level {} ({:g} m): cells_level_{}={} particles_level_{}={}\n", L, s.level_sizes[L],
                  L, s.cells_per_level[L], L, s.particles_per_level[L]);

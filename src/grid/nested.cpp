@@ -35,6 +35,15 @@ void NestedGrid::node_position(std::size_t id, double& x, double& y) const {
   y = L.y.node(int(n / std::size_t(L.nodes_x())));
 }
 
+Grid level_grid(const NestedGrid& g, int l) {
+  const Level& L = g.levels[std::size_t(l)];
+  Grid out;
+  out.x = L.x, out.y = L.y;
+  out.ghost = kGhostRing;
+  for (int d = 0; d < 2; ++d) out.domain_min[d] = g.min[d], out.domain_max[d] = g.max[d];
+  return out;
+}
+
 namespace {
 
 long floor_to(long u, long m) { return (u >= 0 ? u / m : -((-u + m - 1) / m)) * m; }

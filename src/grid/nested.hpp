@@ -76,6 +76,10 @@ struct NestedGrid {
   void node_position(std::size_t id, double& x, double& y) const;
 };
 
+// Level l's lattice as a uniform Grid over the physical domain [g.min, g.max] (the ghost count
+// is nominal: a level's rings differ by side).
+Grid level_grid(const NestedGrid& g, int l);
+
 // Builds the levels from the refinement boxes (sizes powers of two times `finest`, at most
 // `coarse`), over [min, max] (a whole number of finest cells along each axis) with the
 // coarsest level's ghost ring holding `margin` (m, as make_graded_grid). Throws InputError

@@ -61,6 +61,9 @@ struct GridSpec {
   // by those moves by about as much (the reference problem's crop bottom moved 0.2 mm while
   // its driven edge moved 0.45 mm, more than two 0.125 mm ghost cells hold).
   double margin = 0.0;
+  // How a refined grid is realized (SPEC §5): a graded tensor-product grid (grid/grid.hpp), or
+  // nested levels with transition nodes (grid/nested.hpp, solver/nested_state.hpp).
+  bool nested = false;
 
   bool refined() const { return coarse_cell_size > 0.0; }
   double max_margin() const { return 0.5 * std::max(max[0] - min[0], max[1] - min[1]); }  // m

@@ -134,6 +134,11 @@ std::vector<KeyDoc> build_schema() {
        "upper-right corner of the box", "[0.09, 0.04]"},
       {"grid.refine.*.level", "integer", "", "required", "[1, 20]",
        "refinement level L: cells of coarse_cell_size / 2^L (no finer than grid.cell_size)", "1"},
+      {"grid.refinement", "string", "", "\"graded\"", "\"graded\" or \"nested\" (needs grid.refine boxes)",
+       "how refinement boxes are realized: a graded tensor-product grid (fine rows and columns "
+       "across the whole plate), or nested levels with transition nodes, each level over its "
+       "own box only (fewer particles; not yet with [absorbing] or [loads], no checkpoints)",
+       "\"nested\""},
       {"grid.margin", "number", "m",
        "depends: automatic, the largest prescribed or initial displacement of the run",
        "[0, half the larger domain extent]",

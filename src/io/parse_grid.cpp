@@ -71,6 +71,11 @@ void parse_grid(Section& top, Case& c) {
     }
     c.grid.refine.push_back(L);
   }
+  const std::string realization = g.string("refinement", "graded", {"graded", "nested"});
+  c.grid.nested = realization == "nested";
+  if (c.grid.nested && !c.grid.refined())
+    fail(g.key("refinement"), "\"nested\"",
+         "needs grid.coarse_cell_size and [grid.refine] boxes (nested levels refine boxes)");
   c.grid.margin = g.number("margin", -1.0);  // < 0: automatic, set once the loads are known
   if (g.has("margin") && !(c.grid.margin >= 0 && c.grid.margin <= c.grid.max_margin()))
     fail(g.key("margin"), c.grid.margin, "must lie in [0, half the larger domain extent] (m)");

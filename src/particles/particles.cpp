@@ -72,6 +72,15 @@ std::size_t Particles::move_marked(const std::vector<unsigned char>& mark, Parti
   return before - size();
 }
 
+void Particles::append_copy(const Particles& from) {
+  const auto add = [](auto& to, const auto& v) { to.insert(to.end(), v.begin(), v.end()); };
+  add(x, from.x), add(y, from.y), add(vx, from.vx), add(vy, from.vy), add(mass, from.mass);
+  add(volume0, from.volume0), add(volume, from.volume), add(half_x, from.half_x);
+  add(half_y, from.half_y), add(sxx, from.sxx), add(syy, from.syy), add(sxy, from.sxy);
+  add(szz, from.szz), add(exx, from.exx), add(eyy, from.eyy), add(exy, from.exy);
+  add(field, from.field), add(material, from.material), add(id, from.id);
+}
+
 void seed_rectangle(Particles& p, const double min[2], const double max[2], double h, int ppc,
                     double density, std::uint8_t field, std::uint8_t material,
                     const double velocity[2], const double origin[2]) {

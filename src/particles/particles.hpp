@@ -38,6 +38,8 @@ struct Particles {
   // Appends the particles with mark[p] != 0 to `to`, in index order, and removes them from
   // this store, keeping the others' order; returns how many moved.
   std::size_t move_marked(const std::vector<unsigned char>& mark, Particles& to);
+  // Appends a copy of every particle of `from`.
+  void append_copy(const Particles& from);
 };
 
 // The centre of sub-cell k (side `side`) of a uniform lattice starting at `origin` (m): every

@@ -19,14 +19,6 @@ namespace {
 
 using NodalArray = std::vector<double> GridFields::*;
 
-Grid level_grid(const Level& L, const GridSpec& spec) {
-  Grid g;
-  g.x = L.x, g.y = L.y;
-  g.ghost = kGhostRing;  // informational: a level's rings differ by side (grid/nested.hpp)
-  for (int d = 0; d < 2; ++d) g.domain_min[d] = spec.min[d], g.domain_max[d] = spec.max[d];
-  return g;
-}
-
 // The velocity conditions of the domain edges this level reaches (its outer sides), on the
 // level's lattice line of the edge.
 void set_level_boundary(State& s, const Case& c, const Level& L, std::vector<int>& base) {
@@ -274,6 +266,63 @@ double NestedState::external_work() const {
   return w;
 }
 
+State make_nested_run_state(const Case& c) {
+  State s;
+  auto n = std::make_shared<NestedState>(make_nested_state(c));
+  for (std::size_t l = 0; l < n->levels.size(); ++l) {
+    if (n->levels[l].interfaces.empty()) continue;
+    if (n->interface_level >= 0)
+      throw InputError(fmt::format(
+          "[interface]: with grid.refinement = \"nested\" every interface must lie on one level; "
+          "these lie on levels {} and {} (one [grid.refine] box around all of them)",
+          n->interface_level, l));
+    n->interface_level = int(l);
+  }
+  const State& first = n->levels[0];
+  const int il = n->interface_level;
+  if (il >= 0) s.interfaces.swap(n->levels[std::size_t(il)].interfaces);
+  s.grid = n->levels[std::size_t(il >= 0 ? il : int(n->levels.size()) - 1)].grid;
+  s.scheme = first.scheme;
+  s.flip = first.flip;
+  s.limits = first.limits;
+  s.dt = first.dt;
+  s.cohesive_safety = first.cohesive_safety;
+  s.mass_floor = first.mass_floor;
+  for (const State& l : n->levels) s.initial_energy += l.initial_energy, s.strain_work += l.strain_work;
+  s.nested = std::move(n);
+  gather_particles(s);
+  return s;
+}
+
+void step_nested_run(State& s) {
+  NestedState& n = *s.nested;
+  for (State& l : n.levels) l.dt_cap = s.dt_cap, l.forced_dt = s.forced_dt;
+  const int il = n.interface_level;
+  State* owner = il >= 0 ? &n.levels[std::size_t(il)] : nullptr;
+  if (owner) owner->interfaces.swap(s.interfaces);  // lent for the step
+  try {
+    step(n);
+  } catch (...) {
+    if (owner) owner->interfaces.swap(s.interfaces);
+    throw;
+  }
+  if (owner) owner->interfaces.swap(s.interfaces);
+  s.time = n.time, s.step = n.step, s.dt = n.dt;
+  s.external_work = s.strain_work = 0.0;
+  for (const State& l : n.levels) {
+    s.external_work += l.external_work, s.strain_work += l.strain_work;
+    s.limits.min_cohesive_dt = std::min(s.limits.min_cohesive_dt, l.limits.min_cohesive_dt);
+  }
+  if (owner) s.limits.cohesive_dt = owner->limits.cohesive_dt;
+}
+
+void gather_particles(State& s) {
+  if (!s.nested || s.particles_step == s.step) return;
+  s.particles.resize(0);
+  for (const State& l : s.nested->levels) s.particles.append_copy(l.particles);
+  s.particles_step = s.step;
+}
+
 NestedState make_nested_state(const Case& c) {
   const auto unsupported = [](const char* what) {
     return InputError(fmt::format("{}: not yet supported on nested levels (solver/nested_state.hpp)", what));
@@ -293,7 +342,7 @@ NestedState make_nested_state(const Case& c) {
   for (int l = 0; l < levels; ++l) {
     const Level& L = n.grid.levels[std::size_t(l)];
     const NestedGrid& g = n.grid;
-    n.levels.push_back(make_level_state(c, level_grid(L, c.grid),
+    n.levels.push_back(make_level_state(c, level_grid(n.grid, l),
                                         [&g, l](double x, double y) { return g.level_of(x, y) == l; }));
     State& s = n.levels.back();
     s.whole_grid_fields = true;

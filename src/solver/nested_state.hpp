@@ -38,6 +38,7 @@ struct NestedState {
   double dt = 0.0;    // the last step's, s
   long step = 0;
   long migrations = 0;  // particles moved between levels so far
+  int interface_level = -1;  // the level holding every interface (-1: none)
 
   std::size_t num_particles() const;
   double external_work() const;  // J per unit thickness, summed over the levels
@@ -54,5 +55,13 @@ NestedState make_nested_state(const Case& c);
 
 // One time step (c.solver.scheme) on every level.
 void step(NestedState& n);
+
+// The run's State for grid.refinement = "nested" (make_state calls it): levels in s.nested,
+// the interfaces (all on one level, else InputError) in s.interfaces, particles gathered.
+State make_nested_run_state(const Case& c);
+// One step of s.nested (step(State&) calls it), then the clock, energies and limits of s.
+void step_nested_run(State& s);
+// Merges every level's particles into s.particles, once per step (a no-op for other runs).
+void gather_particles(State& s);
 
 }  // namespace rupture

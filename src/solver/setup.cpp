@@ -109,7 +109,10 @@ State make_state_on(const Case& c, Grid grid, const std::function<bool(double, d
 
 }  // namespace
 
-State make_state(const Case& c) { return make_state_on(c, build_grid(c.grid), nullptr); }
+State make_state(const Case& c) {
+  if (c.grid.nested) return make_nested_run_state(c);  // solver/nested_state.hpp
+  return make_state_on(c, build_grid(c.grid), nullptr);
+}
 
 State make_level_state(const Case& c, Grid lattice, const std::function<bool(double, double)>& keep) {
   return make_state_on(c, std::move(lattice), &keep);

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "bc/absorbing.hpp"
@@ -18,6 +19,8 @@
 #include "particles/particles.hpp"
 
 namespace rupture {
+
+struct NestedState;  // solver/nested_state.hpp
 
 // Race-free scatter without locks: particles are kept physically sorted by vertical strips
 // of `strip_cells` cell columns, and by cell row inside a strip (so consecutive particles
@@ -112,6 +115,14 @@ struct State {
   long window_fits = 0;            // re-fits (re-allocations) so far
   double window_drift = 0.0;       // bound on any particle's move since the last measure, m
   bool whole_grid_fields = false;  // tests: every field over the whole grid (same results)
+
+  // grid.refinement = "nested" (solver/nested_state.hpp): the levels do the stepping; this
+  // State keeps the run's clock, energies and step limits, holds the interfaces (lent to their
+  // level during a step), `grid` is that level's (the finest without interfaces), and
+  // `particles` is every level's particles merged, as of step `particles_step`
+  // (gather_particles). Not checkpointed: nested runs do not checkpoint yet.
+  std::shared_ptr<NestedState> nested;
+  long particles_step = -1;
 
   double cohesive_seconds = 0.0;  // wall time spent in the cohesive phases so far, s
   double external_work = 0.0;  // work of the prescribed velocities and loads so far, J (per unit thickness)

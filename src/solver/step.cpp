@@ -10,6 +10,7 @@
 #include "solver/cohesive_step.hpp"
 #include "solver/field_windows.hpp"
 #include "solver/load_step.hpp"
+#include "solver/nested_state.hpp"
 #include "solver/time_step.hpp"
 
 namespace rupture {
@@ -103,6 +104,10 @@ void step_usf(State& s) {
 }  // namespace
 
 void step(State& s) {
+  if (s.nested) {  // grid.refinement = "nested": the levels step (solver/nested_state.hpp)
+    step_nested_run(s);
+    return;
+  }
   build_scatter_plan(s);
   fit_field_windows(s);  // every field's window covers its particles, faces and ties
   // A driven edge that has moved onto another grid line takes its condition with it (E2).

@@ -5,12 +5,48 @@
 #include <cmath>
 
 #include "grid/grid.hpp"
+#include "grid/nested.hpp"
 #include "particles/particles.hpp"
 #include "particles/seed.hpp"
 #include "solver/field_windows.hpp"
 #include "solver/time_step.hpp"
 
 namespace rupture {
+
+namespace {
+
+// grid.refinement = "nested": cells, particles and nodes of the levels (grid/nested.hpp), every
+// field over every level's whole lattice (solver/nested_state.hpp).
+void summarize_nested(const Case& c, CaseSummary& s) {
+  const NestedGrid g = make_nested_grid(c.grid.min, c.grid.max, c.grid.coarse_cell_size,
+                                        c.grid.cell_size, refine_boxes(c.grid), std::max(0.0, c.grid.margin));
+  const int ppc = c.grid.particles_per_cell;
+  s.nodes = long(g.num_nodes());
+  std::fill(s.cells_per_level.begin(), s.cells_per_level.end(), 0);
+  std::fill(s.particles_per_level.begin(), s.particles_per_level.end(), 0);
+  const auto cells = count_level_cells(g, c.grid.min, c.grid.max, 1);
+  s.cells = 0;
+  for (std::size_t l = 0; l < cells.size() && l < s.cells_per_level.size(); ++l)
+    s.cells_per_level[l] = long(cells[l].cells), s.cells += long(cells[l].cells);
+  s.particles = 0;
+  s.particles_per_body.clear();
+  for (const BodySpec& b : c.bodies) {
+    long n = 0;
+    for (int l = 0; l < int(g.levels.size()); ++l)
+      for_each_seed_point(level_grid(g, l), b.region, ppc, [&](const SeedPoint& p) {
+        if (g.level_of(p.x, p.y) != l) return;
+        ++n;
+        if (std::size_t(l) < s.particles_per_level.size()) ++s.particles_per_level[std::size_t(l)];
+      });
+    s.particles_per_body.push_back(n);
+    s.particles += n;
+  }
+  s.field_nodes = long(g.num_nodes()) * s.fields;
+  s.memory_bytes = std::size_t(s.field_nodes) * 11 * sizeof(double) +
+                   std::size_t(s.particles) * (Particles::bytes_per_particle() + 12);
+}
+
+}  // namespace
 
 CaseSummary summarize(const Case& c) {
   CaseSummary s;
@@ -132,6 +168,11 @@ CaseSummary summarize(const Case& c) {
     interface_bytes +=
         std::size_t(is.segments) * (4 * 4 * sizeof(double) + 4 + 4 * sizeof(double)) +
         std::size_t(is.segments + 1) * 8 * sizeof(double);
+  if (c.grid.nested) {
+    summarize_nested(c, s);
+    s.memory_bytes += interface_bytes;
+    return s;
+  }
   s.memory_bytes = interface_bytes +
                    std::size_t(s.field_nodes) * 11 * sizeof(double) +
                    std::size_t(s.particles) * (Particles::bytes_per_particle() + 12);

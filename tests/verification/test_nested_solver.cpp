@@ -225,3 +225,43 @@ TEST(NestedSolver, a_particle_two_levels_too_coarse_stops_the_run_with_a_diagnos
     EXPECT_NE(what.find("level 2"), std::string::npos);
   }
 }
+
+// grid.refinement: "graded" (default) or "nested"; nested needs refinement boxes; a bad value
+// names the key, the value and the choices.
+TEST(NestedSolver, input_chooses_the_realization_and_rejects_bad_values) {
+  const std::string base = std::string(test::kHomaliteToml) + R"(
+[bodies.block]
+material = "homalite"
+min = [0.0, 0.0]
+max = [0.02, 0.01]
+[time]
+end = 1e-6
+[grid]
+min = [0.0, 0.0]
+max = [0.02, 0.01]
+cell_size = 0.25e-3
+)";
+  const std::string boxes = "coarse_cell_size = 1e-3\n[grid.refine.fine]\nmin = [0.008, 0.004]\nmax = [0.012, 0.006]\nlevel = 2\n";
+  EXPECT_FALSE(parse_case(base + boxes).grid.nested);
+  const Case nested = parse_case(base + "refinement = \"nested\"\n" + boxes);
+  EXPECT_TRUE(nested.grid.nested);
+  // make_state gives the nested run: every level's particles merged, the levels stepping.
+  State s = make_state(nested);
+  ASSERT_TRUE(s.nested);
+  EXPECT_EQ(s.particles.size(), s.nested->num_particles());
+  EXPECT_EQ(s.nested->levels.size(), 3u);
+  step(s);
+  EXPECT_EQ(s.step, 1);
+  EXPECT_EQ(s.time, s.nested->time);
+  for (const auto& [text, words] :
+       std::vector<std::pair<std::string, std::vector<std::string>>>{
+           {base + "refinement = \"nested\"\n", {"grid.refinement", "nested", "needs grid.coarse_cell_size"}},
+           {base + "refinement = \"octree\"\n" + boxes, {"grid.refinement", "octree", "graded", "nested"}}}) {
+    try {
+      parse_case(text);
+      ADD_FAILURE() << "no error for " << text;
+    } catch (const InputError& e) {
+      for (const std::string& w : words) EXPECT_NE(std::string(e.what()).find(w), std::string::npos) << e.what();
+    }
+  }
+}
