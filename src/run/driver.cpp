@@ -347,11 +347,14 @@ RunResult run_case(const Case& c, const RunOptions& options) {
     if (result.stop_reason == "interrupted") {
       result.outcome = Outcome::interrupted;
       record.status = "interrupted";
-      record.message = result.message = fmt::format(
-          "interrupted{} at step {}, t = {:.6e} s; checkpoint written; resume with: rupture "
-          "resume {}",
-          caught_signal ? fmt::format(" by signal {}", caught_signal) : std::string(), s.step,
-          s.time, dir);
+      const std::string signal = caught_signal ? fmt::format(" by signal {}", caught_signal) : std::string();
+      record.message = result.message =
+          s.nested ? fmt::format("interrupted{} at step {}, t = {:.6e} s; no checkpoint: runs on "
+                                 "nested levels do not checkpoint yet (the outputs so far are in {})",
+                                 signal, s.step, s.time, dir)
+                   : fmt::format("interrupted{} at step {}, t = {:.6e} s; checkpoint written; "
+                                 "resume with: rupture resume {}",
+                                 signal, s.step, s.time, dir);
     } else {
       result.ok = true;
       result.outcome = Outcome::completed;
