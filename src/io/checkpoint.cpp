@@ -16,6 +16,7 @@
 
 #include "core/errors.hpp"
 #include "io/atomic_file.hpp"
+#include "solver/nested_state.hpp"
 
 namespace rupture {
 
@@ -379,14 +380,28 @@ void fields(A& a, CohesiveInterface& c) {
 // nodes and forces are rebuilt after the restored sort and in every step; the loads' work is
 // in external_work). Set by the driver before every step: dt_cap; tests only: forced_dt.
 // Not stored, per-step scratch: fields (every grid array is recomputed in each step).
+// A nested run (solver/nested_state.hpp): every level's State as above (its particle count
+// changes as particles move between levels, and its window_drift decides the next move), the
+// levels' clock and the migration count. The run's own State keeps the interfaces, which live
+// there between steps; its merged particles are not stored (gather_particles re-merges them).
+template <class A>
+void fields(A& a, NestedState& n) {
+  a.same("levels.count", n.levels.size());
+  a("levels", n.levels);
+  a("time", n.time);
+  a("dt", n.dt);
+  a("step", n.step);
+  a("migrations", n.migrations);
+}
+
 template <class A>
 void fields(A& a, State& s) {
   a.same("grid.nodes_x", s.grid.nodes_x());
   a.same("grid.nodes_y", s.grid.nodes_y());
   a.same("fields", s.fields.num_fields);
-  a.same("particles.count", s.particles.size());
+  if (!s.nested_level) a.same("particles.count", s.particles.size());
   a.same("interfaces.count", s.interfaces.size());
-  a("particles", s.particles);
+  if (!s.nested) a("particles", s.particles);  // nested: the levels hold them (merged on demand)
   a("bc_nodes", s.bc_nodes);
   a("bc_lines", s.bc_lines);
   a("plan", s.plan);
@@ -402,6 +417,9 @@ void fields(A& a, State& s) {
   a("external_work", s.external_work);
   a("strain_work", s.strain_work);
   a("initial_energy", s.initial_energy);
+  if (s.nested_level) a("window_drift", s.window_drift);
+  a.same("nested", s.nested != nullptr);
+  if (s.nested) a("nested", *s.nested);
 }
 
 template <class A>

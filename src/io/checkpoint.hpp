@@ -16,8 +16,9 @@
 
 namespace rupture {
 
-inline constexpr int kCheckpointVersion = 4;  // 2: State::strain_work; 3: Mach readings;
-                                              // 4: interface rupture times, peak slip rates
+inline constexpr int kCheckpointVersion = 5;  // 2: State::strain_work; 3: Mach readings;
+                                              // 4: interface rupture times, peak slip rates;
+                                              // 5: nested levels
 
 std::string checkpoint_path(const std::string& dir);  // DIR/checkpoint/checkpoint.bin
 

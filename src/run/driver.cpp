@@ -251,15 +251,7 @@ RunResult run_case(const Case& c, const RunOptions& options) {
     write_file_atomic(dir + "/run.json", run_json(c, summary, record));
     last_flush = std::chrono::steady_clock::now();
   };
-  bool nested_checkpoint_noted = false;
   auto checkpoint = [&]() {
-    if (s.nested) {  // not yet: the levels' states are not in the checkpoint format
-      if (!nested_checkpoint_noted)
-        fmt::print(stderr, "note: no checkpoint written: runs on nested levels (grid.refinement = "
-                           "\"nested\") do not checkpoint yet\n");
-      nested_checkpoint_noted = true;
-      return;
-    }
     const double wall_before = ctx.wall_before;
     ctx.wall_before += progress.elapsed();  // the checkpoint holds the wall time up to here
     write_checkpoint(dir, options.source, ctx);
@@ -347,14 +339,11 @@ RunResult run_case(const Case& c, const RunOptions& options) {
     if (result.stop_reason == "interrupted") {
       result.outcome = Outcome::interrupted;
       record.status = "interrupted";
-      const std::string signal = caught_signal ? fmt::format(" by signal {}", caught_signal) : std::string();
-      record.message = result.message =
-          s.nested ? fmt::format("interrupted{} at step {}, t = {:.6e} s; no checkpoint: runs on "
-                                 "nested levels do not checkpoint yet (the outputs so far are in {})",
-                                 signal, s.step, s.time, dir)
-                   : fmt::format("interrupted{} at step {}, t = {:.6e} s; checkpoint written; "
-                                 "resume with: rupture resume {}",
-                                 signal, s.step, s.time, dir);
+      record.message = result.message = fmt::format(
+          "interrupted{} at step {}, t = {:.6e} s; checkpoint written; resume with: rupture "
+          "resume {}",
+          caught_signal ? fmt::format(" by signal {}", caught_signal) : std::string(), s.step,
+          s.time, dir);
     } else {
       result.ok = true;
       result.outcome = Outcome::completed;

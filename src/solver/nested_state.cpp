@@ -345,6 +345,7 @@ NestedState make_nested_state(const Case& c) {
     n.levels.push_back(make_level_state(c, level_grid(n.grid, l),
                                         [&g, l](double x, double y) { return g.level_of(x, y) == l; }));
     State& s = n.levels.back();
+    s.nested_level = true;
     s.whole_grid_fields = true;
     fit_field_windows(s);
     set_level_boundary(s, c, L, n.base_lines[std::size_t(l)]);

@@ -120,9 +120,10 @@ struct State {
   // State keeps the run's clock, energies and step limits, holds the interfaces (lent to their
   // level during a step), `grid` is that level's (the finest without interfaces), and
   // `particles` is every level's particles merged, as of step `particles_step`
-  // (gather_particles). Not checkpointed: nested runs do not checkpoint yet.
+  // (gather_particles). io/checkpoint.cpp stores the levels.
   std::shared_ptr<NestedState> nested;
   long particles_step = -1;
+  bool nested_level = false;  // one level of a nested run (checkpointed as such)
 
   double cohesive_seconds = 0.0;  // wall time spent in the cohesive phases so far, s
   double external_work = 0.0;  // work of the prescribed velocities and loads so far, J (per unit thickness)
