@@ -292,6 +292,10 @@ void grid_to_particles_impl(State& s, const double* gvx, const double* gvy) {
     Gathered g;
     for (std::size_t p0 = plan.strip_begin[std::size_t(strip)]; p0 < end; p0 += kBatch) {
       const int n = int(std::min<std::size_t>(kBatch, end - p0));
+      for (const std::vector<double>* a : {&P.vx, &P.vy, &P.sxx, &P.syy, &P.sxy, &P.szz, &P.exx,
+                                           &P.eyy, &P.exy, &P.volume, &P.volume0})
+        prefetch_batch(a->data(), p0);
+      prefetch_batch(P.material.data(), p0);
       batch_stencils(s, p0, n, B);
       gather_nodes<do_stress, do_velocity, do_move>(B, n, gvx, gvy, G, g);
       if constexpr (do_velocity) {

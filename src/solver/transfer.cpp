@@ -137,6 +137,9 @@ void scatter_mass_momentum_force(State& s) {
           }
         }
       }
+    }, [&](std::size_t p0) {
+      for (const std::vector<double>* a : {&P.mass, &P.vx, &P.vy, &P.volume, &P.sxx, &P.syy, &P.sxy})
+        prefetch_batch(a->data(), p0);
     });
     // Strips of one colour never share a node: no race.
     for_each_tile_node(s, T, [&](std::size_t t, std::size_t n) {
@@ -185,7 +188,7 @@ void particles_to_grid_force(State& s) {
           fy[row + a] -= V * (sxy * gx + syy * gy);
         }
       }
-    });
+    }, [](std::size_t) {});
   });
 }
 
@@ -237,6 +240,8 @@ void velocity_update_and_remap(State& s) {
       for (int b = 0; b < 3; ++b)
         for (int a = 0; a < 3; ++a)
           out[t0 + std::size_t(b) * cols + std::size_t(a)] += (B.sx[a][k] * B.sy[b][k]) * mv;
+    }, [&](std::size_t p0) {
+      for (const std::vector<double>* a : {&P.mass, &P.vx, &P.vy}) prefetch_batch(a->data(), p0);
     });
     for_each_tile_node(s, T, [&](std::size_t t, std::size_t n) {
       G.remap_x[n] += out[t][0];
