@@ -61,35 +61,61 @@ void follow_edges(State& s, const std::vector<int>& base) {
 }
 
 // Fields are whole-lattice on every level: element of (field f, node n) is start[f] + n.
-double& element(NestedState& n, std::size_t level, std::uint32_t node, int f, NodalArray a) {
-  GridFields& G = n.levels[level].fields;
-  return (G.*a)[G.start[std::size_t(f)] + node];
+// base[l] = array a of field f on level l, from its first node.
+void level_bases(NestedState& n, int f, NodalArray a, std::vector<double*>& base) {
+  base.resize(n.levels.size());
+  for (std::size_t l = 0; l < n.levels.size(); ++l) {
+    GridFields& G = n.levels[l].fields;
+    base[l] = (G.*a).data() + G.start[std::size_t(f)];
+  }
 }
 
+// grid/nested.hpp's condense over the levels' arrays: every DOF adds c * (slave's value) of
+// the slaves it serves, in slave order (the transposed terms: NestedState::dof_start), so the
+// threads split the DOFs without sharing one and the sums are those of a loop over the
+// slaves; then the slaves are cleared.
 void condense_fields(NestedState& n, std::initializer_list<NodalArray> arrays) {
-  const NestedGrid& g = n.grid;
+  thread_local std::vector<double*> base;
+  const long dofs = long(n.dof_level.size()), slaves = long(n.slave_level.size());
   for (int f = 0; f < n.levels[0].fields.num_fields; ++f)
-    for (NodalArray a : arrays)
-      for (std::size_t k = 0; k < g.slaves.size(); ++k) {
-        double& slave = element(n, n.slave_level[k], n.slave_node[k], f, a);
-        const double v = slave;
-        slave = 0.0;
-        if (v == 0.0) continue;
-        for (std::uint32_t t = g.term_start[k]; t < g.term_start[k + 1]; ++t)
-          element(n, n.term_level[t], n.term_node[t], f, a) += g.terms[t].c * v;
+    for (NodalArray a : arrays) {
+      level_bases(n, f, a, base);
+      double* const* b = base.data();
+#pragma omp parallel
+      {
+#pragma omp for schedule(static)
+        for (long d = 0; d < dofs; ++d) {
+          double& dof = b[n.dof_level[std::size_t(d)]][n.dof_node[std::size_t(d)]];
+          double v = dof;
+          for (std::uint32_t j = n.dof_start[std::size_t(d)]; j < n.dof_start[std::size_t(d) + 1]; ++j) {
+            const std::uint32_t k = n.dof_slave[j];
+            v += n.dof_c[j] * b[n.slave_level[k]][n.slave_node[k]];
+          }
+          dof = v;
+        }
+#pragma omp for schedule(static)
+        for (long k = 0; k < slaves; ++k) b[n.slave_level[std::size_t(k)]][n.slave_node[std::size_t(k)]] = 0.0;
       }
+    }
 }
 
+// grid/nested.hpp's distribute: every slave from its DOFs (slaves only read DOFs: no race).
 void distribute_fields(NestedState& n, std::initializer_list<NodalArray> arrays) {
   const NestedGrid& g = n.grid;
+  thread_local std::vector<double*> base;
+  const long slaves = long(g.slaves.size());
   for (int f = 0; f < n.levels[0].fields.num_fields; ++f)
-    for (NodalArray a : arrays)
-      for (std::size_t k = 0; k < g.slaves.size(); ++k) {
+    for (NodalArray a : arrays) {
+      level_bases(n, f, a, base);
+      double* const* b = base.data();
+#pragma omp parallel for schedule(static)
+      for (long k = 0; k < slaves; ++k) {
         double v = 0.0;
-        for (std::uint32_t t = g.term_start[k]; t < g.term_start[k + 1]; ++t)
-          v += g.terms[t].c * element(n, n.term_level[t], n.term_node[t], f, a);
-        element(n, n.slave_level[k], n.slave_node[k], f, a) = v;
+        for (std::uint32_t t = g.term_start[std::size_t(k)]; t < g.term_start[std::size_t(k) + 1]; ++t)
+          v += g.terms[t].c * b[n.term_level[t]][n.term_node[t]];
+        b[n.slave_level[std::size_t(k)]][n.slave_node[std::size_t(k)]] = v;
       }
+    }
 }
 
 // The level that holds interface `ci` whole: every face node's bilinear stencil (its cell's
@@ -370,6 +396,28 @@ NestedState make_nested_state(const Case& c) {
   n.slave_level.resize(ns), n.slave_node.resize(ns), n.term_level.resize(nt), n.term_node.resize(nt);
   for (std::size_t k = 0; k < ns; ++k) locate(n.grid.slaves[k], n.slave_level[k], n.slave_node[k]);
   for (std::size_t t = 0; t < nt; ++t) locate(n.grid.terms[t].dof, n.term_level[t], n.term_node[t]);
+  // The terms transposed, by DOF (ascending), each DOF's in slave order: condense_fields.
+  std::vector<std::uint32_t> order(nt);
+  for (std::uint32_t t = 0; t < nt; ++t) order[t] = t;
+  std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return n.grid.terms[a].dof < n.grid.terms[b].dof;
+  });
+  std::vector<std::uint32_t> slave_of(nt);
+  for (std::size_t k = 0; k < ns; ++k)
+    for (std::uint32_t t = n.grid.term_start[k]; t < n.grid.term_start[k + 1]; ++t) slave_of[t] = std::uint32_t(k);
+  n.dof_slave.resize(nt), n.dof_c.resize(nt);
+  n.dof_start.assign(1, 0);
+  for (std::size_t j = 0; j < nt; ++j) {
+    const std::uint32_t t = order[j];
+    if (j == 0 || n.grid.terms[t].dof != n.grid.terms[order[j - 1]].dof) {
+      if (j > 0) n.dof_start.push_back(std::uint32_t(j));
+      n.dof_level.push_back(n.term_level[t]);
+      n.dof_node.push_back(n.term_node[t]);
+    }
+    n.dof_slave[j] = slave_of[t];
+    n.dof_c[j] = n.grid.terms[t].c;
+  }
+  n.dof_start.push_back(std::uint32_t(nt));
   n.dt = n.levels[0].dt;
   return n;
 }

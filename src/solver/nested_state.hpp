@@ -9,9 +9,10 @@
 // centre crosses into another level's region move there at the start of a step (batched:
 // kMigrateDrift), keeping their size (uGIMP); one from two or more levels coarser would break
 // the GIMP contract and stops the run with a diagnosis.
-// Not yet supported here (make_nested_state throws InputError naming them): cohesive
-// interfaces and faults, absorbing edges, [loads]. The driver and the writers still run the
-// single-grid State; this is the step the issue "Speed" moves them onto.
+// Cohesive interfaces lie on one level (the one holding them whole); bonded stretches are
+// tied on every level. Not yet supported here (make_nested_state throws InputError naming
+// them): absorbing edges, [loads], interfaces on two levels, USF with interfaces. The run's
+// State wraps the levels (make_nested_run_state), so the driver and writers run unchanged.
 #pragma once
 #include <cstdint>
 #include <functional>
@@ -32,6 +33,11 @@ struct NestedState {
   // The slaves and their terms of grid (same order) as (level, node of that level).
   std::vector<std::uint8_t> slave_level, term_level;
   std::vector<std::uint32_t> slave_node, term_node;
+  // The terms by DOF (condense): DOF d at (dof_level[d], dof_node[d]) takes dof_c[j] times
+  // slave dof_slave[j] for j in [dof_start[d], dof_start[d + 1]), slaves ascending.
+  std::vector<std::uint8_t> dof_level;
+  std::vector<std::uint32_t> dof_node, dof_start, dof_slave;
+  std::vector<double> dof_c;
   // Per level, per velocity condition of that level: its edge line at t = 0 (node index).
   std::vector<std::vector<int>> base_lines;
   double time = 0.0;  // s

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <initializer_list>
 #include <limits>
 #include <type_traits>
 
@@ -155,15 +156,23 @@ void scatter_mass_momentum_force(State& s) {
   });
 }
 
+// Zeroes the arrays, the threads splitting each one (a serial fill leaves the other threads
+// waiting; nested levels' whole-lattice fields are several MB per array).
+void zero_parallel(std::initializer_list<std::vector<double>*> arrays) {
+#pragma omp parallel
+  for (std::vector<double>* a : arrays) {
+    const long n = long(a->size());
+    double* v = a->data();
+#pragma omp for schedule(static) nowait
+    for (long i = 0; i < n; ++i) v[i] = 0.0;
+  }
+}
+
 }  // namespace
 
 void particles_to_grid(State& s, bool with_force) {
   GridFields& G = s.fields;
-  std::fill(G.mass.begin(), G.mass.end(), 0.0);
-  std::fill(G.mom_x.begin(), G.mom_x.end(), 0.0);
-  std::fill(G.mom_y.begin(), G.mom_y.end(), 0.0);
-  std::fill(G.force_x.begin(), G.force_x.end(), 0.0);
-  std::fill(G.force_y.begin(), G.force_y.end(), 0.0);
+  zero_parallel({&G.mass, &G.mom_x, &G.mom_y, &G.force_x, &G.force_y});
   if (with_force)
     scatter_mass_momentum_force<true>(s);
   else
@@ -172,8 +181,7 @@ void particles_to_grid(State& s, bool with_force) {
 
 void particles_to_grid_force(State& s) {
   GridFields& G = s.fields;
-  std::fill(G.force_x.begin(), G.force_x.end(), 0.0);
-  std::fill(G.force_y.begin(), G.force_y.end(), 0.0);
+  zero_parallel({&G.force_x, &G.force_y});
   const Particles& P = s.particles;
   double* fx = G.force_x.data();
   double* fy = G.force_y.data();
@@ -254,8 +262,7 @@ void velocity_update_and_remap(State& s) {
 
 void update_particle_velocity_and_remap(State& s) {
   GridFields& G = s.fields;
-  std::fill(G.remap_x.begin(), G.remap_x.end(), 0.0);
-  std::fill(G.remap_y.begin(), G.remap_y.end(), 0.0);
+  zero_parallel({&G.remap_x, &G.remap_y});
   if (s.flip == 1.0)
     velocity_update_and_remap<true>(s);
   else
