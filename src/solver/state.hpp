@@ -42,6 +42,11 @@ struct ScatterPlan {
   std::vector<std::uint32_t> order;      // scratch for the sort
   std::vector<std::uint32_t> bucket;     // scratch: count per (strip, row)
   std::vector<double> scratch;           // scratch for the permutation
+  // Node rows each strip's particles touch, per field (solver/transfer.cpp's tiles): found by
+  // the mass scatter, reused by the velocity gather and re-map of the same step (the particles
+  // have not moved between them). tile_step: the step they belong to (-1: none).
+  long tile_step = -1;
+  std::vector<int> tile_row0, tile_rows;  // [strip * fields + field]
 };
 
 // Every member must also be written in io/checkpoint.cpp.

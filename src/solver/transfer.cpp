@@ -47,13 +47,25 @@ struct TileLayout {
   }
 };
 
+// Tile offsets of each field from T.rows.
+void tile_offsets(TileLayout& T) {
+  T.start.assign(T.rows.size() + 1, 0);
+  for (std::size_t f = 0; f < T.rows.size(); ++f)
+    T.start[f + 1] = T.start[f] + std::size_t(T.rows[f]) * std::size_t(T.cols);
+}
+
+void tile_columns(const State& s, int strip, TileLayout& T) {
+  T.col0 = strip * s.plan.strip_cells - 2;
+  T.cols = s.plan.strip_cells + 5;
+}
+
+// The strip's tile, its node rows found from its particles.
 void tile_layout(const State& s, int strip, std::size_t begin, std::size_t end, TileLayout& T) {
   const Particles& P = s.particles;
   const int fields = s.fields.num_fields;
   const double oy = s.grid.y.origin, inv_hy = 1.0 / s.grid.y.h;
   const bool graded = s.grid.y.graded();
-  T.col0 = strip * s.plan.strip_cells - 2;
-  T.cols = s.plan.strip_cells + 5;
+  tile_columns(s, strip, T);
   // Node rows per field: a particle in cell row r touches node rows r-1 .. r+2. The cell row
   // is monotonic in y, so the rows of a field's lowest and highest particles bound them all
   // (one min/max pass per field present, vectorized, instead of a row per particle).
@@ -76,11 +88,33 @@ void tile_layout(const State& s, int strip, std::size_t begin, std::size_t end, 
     T.row0[f] = row(lo) - 1;
     T.rows[f] = row(hi) + 2;
   }
-  T.start.assign(std::size_t(fields) + 1, 0);
-  for (std::size_t f = 0; f < std::size_t(fields); ++f) {
+  for (std::size_t f = 0; f < std::size_t(fields); ++f)
     T.rows[f] = T.rows[f] >= T.row0[f] ? T.rows[f] - T.row0[f] + 1 : 0;
-    T.start[f + 1] = T.start[f] + std::size_t(T.rows[f]) * std::size_t(T.cols);
-  }
+  tile_offsets(T);
+}
+
+// The mass scatter keeps each strip's node rows (ScatterPlan::tile_row0) for the velocity
+// gather and re-map of the same step: the particles have not moved between them.
+void keep_tile_rows_sized(State& s) {
+  const std::size_t n = std::size_t(s.plan.num_strips) * std::size_t(s.fields.num_fields);
+  s.plan.tile_row0.resize(n);
+  s.plan.tile_rows.resize(n);
+  s.plan.tile_step = s.step;
+}
+void keep_tile_rows(ScatterPlan& plan, int strip, const TileLayout& T) {
+  const std::size_t k = std::size_t(strip) * T.rows.size();  // strips write disjoint parts
+  std::copy(T.row0.begin(), T.row0.end(), plan.tile_row0.begin() + std::ptrdiff_t(k));
+  std::copy(T.rows.begin(), T.rows.end(), plan.tile_rows.begin() + std::ptrdiff_t(k));
+}
+// The strip's tile: the kept node rows when the mass scatter of this step found them.
+void tile_layout_kept(const State& s, int strip, std::size_t begin, std::size_t end, TileLayout& T) {
+  const ScatterPlan& plan = s.plan;
+  if (plan.tile_step != s.step) return tile_layout(s, strip, begin, end, T);
+  const std::size_t fields = std::size_t(s.fields.num_fields), k = std::size_t(strip) * fields;
+  tile_columns(s, strip, T);
+  T.row0.assign(plan.tile_row0.begin() + std::ptrdiff_t(k), plan.tile_row0.begin() + std::ptrdiff_t(k + fields));
+  T.rows.assign(plan.tile_rows.begin() + std::ptrdiff_t(k), plan.tile_rows.begin() + std::ptrdiff_t(k + fields));
+  tile_offsets(T);
 }
 
 // Calls visit(tile_index, element) for every tile node that lies inside its field's window
@@ -112,11 +146,13 @@ template <bool kWithForce>
 void scatter_mass_momentum_force(State& s) {
   GridFields& G = s.fields;
   const Particles& P = s.particles;
+  keep_tile_rows_sized(s);
   for_each_strip_coloured(s.plan, [&](int strip, std::size_t begin, std::size_t end) {
     if (begin == end) return;
     thread_local TileLayout T;
     thread_local std::vector<Lane8> buffer;
     tile_layout(s, strip, begin, end, T);
+    keep_tile_rows(s.plan, strip, T);
     Lane8* tile = tile_buffer(buffer, T.size(), true);
     const std::size_t cols = std::size_t(T.cols);
     for_each_in_batches(s, begin, end, [&](std::size_t p, int k, const StencilBatch& B) {
@@ -216,7 +252,7 @@ void velocity_update_and_remap(State& s) {
     thread_local TileLayout T;
     thread_local std::vector<In> gather_buffer;
     thread_local std::vector<Lane2> scatter_buffer;
-    tile_layout(s, strip, begin, end, T);
+    tile_layout_kept(s, strip, begin, end, T);
     In* in = tile_buffer(gather_buffer, T.size(), false);
     Lane2* out = tile_buffer(scatter_buffer, T.size(), true);
     for_each_tile_node(s, T, [&](std::size_t t, std::size_t n) {
