@@ -134,6 +134,17 @@ template <bool kStress, bool kVelocity, bool kMove>
 void gather_nodes(const StencilBatch& B, int n, const double* __restrict gvx,
                   const double* __restrict gvy, const GridFields& G, Gathered& out) {
   const std::size_t size = G.size();
+  // The node row above the batch's highest stencil row, asked for ahead: the strip's
+  // particles climb its rows in order, and a row lies a whole row pitch (often over a 4 KiB
+  // page) from the last, where the hardware prefetchers stop.
+  if (n > 0) {
+    const std::size_t ahead = B.base[n - 1] + 3 * B.stride[n - 1];
+    if (ahead + 4 <= size) {
+      if constexpr (kStress) __builtin_prefetch(gvx + ahead), __builtin_prefetch(gvy + ahead);
+      if constexpr (kVelocity || kMove)
+        __builtin_prefetch(G.vel_x.data() + ahead), __builtin_prefetch(G.vel_y.data() + ahead);
+    }
+  }
   for (int k = 0; k < n; ++k) {
     if (B.base[k] + 2 * B.stride[k] + 4 <= size)
       gather_one<kStress, kVelocity, kMove, true>(B, k, gvx, gvy, G, out);
