@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
+#include <stdexcept>
 
 #include "core/errors.hpp"
 #include "solver/cohesive_step.hpp"
@@ -61,13 +62,27 @@ void follow_edges(State& s, const std::vector<int>& base) {
 }
 
 // Fields are whole-lattice on every level: element of (field f, node n) is start[f] + n.
-// base[l] = array a of field f on level l, from its first node.
-void level_bases(NestedState& n, int f, NodalArray a, std::vector<double*>& base) {
-  base.resize(n.levels.size());
-  for (std::size_t l = 0; l < n.levels.size(); ++l) {
-    GridFields& G = n.levels[l].fields;
-    base[l] = (G.*a).data() + G.start[std::size_t(f)];
-  }
+// One column per (field, array) of `arrays`: column c's array on level l starts at
+// base[c * levels + l]. The transitions treat all columns in one pass, so each term's indices
+// are read once for all of them.
+constexpr std::size_t kMaxColumns = 16;
+std::size_t column_bases(NestedState& n, std::initializer_list<NodalArray> arrays,
+                         std::vector<double*>& base) {
+  const std::size_t levels = n.levels.size(), fields = std::size_t(n.levels[0].fields.num_fields);
+  const std::size_t columns = fields * arrays.size();
+  if (columns > kMaxColumns)
+    throw std::logic_error("nested transitions: more than kMaxColumns field arrays in one pass");
+  base.resize(columns * levels);
+  std::size_t c = 0;
+  for (std::size_t f = 0; f < fields; ++f)
+    for (NodalArray a : arrays) {
+      for (std::size_t l = 0; l < levels; ++l) {
+        GridFields& G = n.levels[l].fields;
+        base[c * levels + l] = (G.*a).data() + G.start[f];
+      }
+      ++c;
+    }
+  return columns;
 }
 
 // grid/nested.hpp's condense over the levels' arrays: every DOF adds c * (slave's value) of
@@ -75,47 +90,51 @@ void level_bases(NestedState& n, int f, NodalArray a, std::vector<double*>& base
 // threads split the DOFs without sharing one and the sums are those of a loop over the
 // slaves; then the slaves are cleared.
 void condense_fields(NestedState& n, std::initializer_list<NodalArray> arrays) {
-  thread_local std::vector<double*> base;
+  thread_local std::vector<double*> base_store;
+  const std::size_t columns = column_bases(n, arrays, base_store), levels = n.levels.size();
+  double* const* base = base_store.data();
   const long dofs = long(n.dof_level.size()), slaves = long(n.slave_level.size());
-  for (int f = 0; f < n.levels[0].fields.num_fields; ++f)
-    for (NodalArray a : arrays) {
-      level_bases(n, f, a, base);
-      double* const* b = base.data();
 #pragma omp parallel
-      {
+  {
 #pragma omp for schedule(static)
-        for (long d = 0; d < dofs; ++d) {
-          double& dof = b[n.dof_level[std::size_t(d)]][n.dof_node[std::size_t(d)]];
-          double v = dof;
-          for (std::uint32_t j = n.dof_start[std::size_t(d)]; j < n.dof_start[std::size_t(d) + 1]; ++j) {
-            const std::uint32_t k = n.dof_slave[j];
-            v += n.dof_c[j] * b[n.slave_level[k]][n.slave_node[k]];
-          }
-          dof = v;
-        }
-#pragma omp for schedule(static)
-        for (long k = 0; k < slaves; ++k) b[n.slave_level[std::size_t(k)]][n.slave_node[std::size_t(k)]] = 0.0;
+    for (long d = 0; d < dofs; ++d) {
+      const std::size_t dl = n.dof_level[std::size_t(d)], dn = n.dof_node[std::size_t(d)];
+      double v[kMaxColumns];
+      for (std::size_t c = 0; c < columns; ++c) v[c] = base[c * levels + dl][dn];
+      for (std::uint32_t j = n.dof_start[std::size_t(d)]; j < n.dof_start[std::size_t(d) + 1]; ++j) {
+        const std::uint32_t k = n.dof_slave[j];
+        const std::size_t sl = n.slave_level[k], sn = n.slave_node[k];
+        const double coef = n.dof_c[j];
+        for (std::size_t c = 0; c < columns; ++c) v[c] += coef * base[c * levels + sl][sn];
       }
+      for (std::size_t c = 0; c < columns; ++c) base[c * levels + dl][dn] = v[c];
     }
+#pragma omp for schedule(static)
+    for (long k = 0; k < slaves; ++k) {
+      const std::size_t sl = n.slave_level[std::size_t(k)], sn = n.slave_node[std::size_t(k)];
+      for (std::size_t c = 0; c < columns; ++c) base[c * levels + sl][sn] = 0.0;
+    }
+  }
 }
 
 // grid/nested.hpp's distribute: every slave from its DOFs (slaves only read DOFs: no race).
 void distribute_fields(NestedState& n, std::initializer_list<NodalArray> arrays) {
   const NestedGrid& g = n.grid;
-  thread_local std::vector<double*> base;
+  thread_local std::vector<double*> base_store;
+  const std::size_t columns = column_bases(n, arrays, base_store), levels = n.levels.size();
+  double* const* base = base_store.data();
   const long slaves = long(g.slaves.size());
-  for (int f = 0; f < n.levels[0].fields.num_fields; ++f)
-    for (NodalArray a : arrays) {
-      level_bases(n, f, a, base);
-      double* const* b = base.data();
 #pragma omp parallel for schedule(static)
-      for (long k = 0; k < slaves; ++k) {
-        double v = 0.0;
-        for (std::uint32_t t = g.term_start[std::size_t(k)]; t < g.term_start[std::size_t(k) + 1]; ++t)
-          v += g.terms[t].c * b[n.term_level[t]][n.term_node[t]];
-        b[n.slave_level[std::size_t(k)]][n.slave_node[std::size_t(k)]] = v;
-      }
+  for (long k = 0; k < slaves; ++k) {
+    double v[kMaxColumns] = {};
+    for (std::uint32_t t = g.term_start[std::size_t(k)]; t < g.term_start[std::size_t(k) + 1]; ++t) {
+      const std::size_t tl = n.term_level[t], tn = n.term_node[t];
+      const double coef = g.terms[t].c;
+      for (std::size_t c = 0; c < columns; ++c) v[c] += coef * base[c * levels + tl][tn];
     }
+    const std::size_t sl = n.slave_level[std::size_t(k)], sn = n.slave_node[std::size_t(k)];
+    for (std::size_t c = 0; c < columns; ++c) base[c * levels + sl][sn] = v[c];
+  }
 }
 
 // The level that holds interface `ci` whole: every face node's bilinear stencil (its cell's
