@@ -294,8 +294,8 @@ void tie_bonded_nodes(State& s, TieWhat what) {
   for (const BondedTie& b : s.bonded) {
     const int up = b.upper_field, lo = b.lower_field;
     auto tie = [&](std::vector<double>& v, std::size_t n) {
-      const std::size_t a = G.index(up, n), b = G.index(lo, n);  // in both windows
-      v[a] = v[b] = v[a] + v[b];
+      const std::size_t iu = G.index(up, n), il = G.index(lo, n);  // in both windows
+      v[iu] = v[il] = v[iu] + v[il];
     };
     for (std::size_t n : b.nodes) {
       if (what == TieWhat::mass_momentum) {

@@ -71,9 +71,9 @@ struct Gathered {
 
 // The 3 x 3 node sums of one batch. gvx/gvy: the stress update's velocity; vel/dvel: the
 // t^{n+1} velocity and its increment (move, USL/USF velocity). A stencil row's three nodes are
-// contiguous, so each row is one 4-wide load per array, its fourth lane cleared to +0, and a
-// 4-wide product with the row's weights. Per particle the sums run down each column over the
-// rows, then across the columns. The fourth node lies inside the field's window (its margin,
+// contiguous, so each row is one 4-wide load per array, its fourth lane cleared to +0. Per
+// particle the sums run down each column over the rows (times the row's y weight), then across
+// the columns (times the column's x weight). The fourth node lies inside the field's window (its margin,
 // solver/field_windows.hpp); only a stencil whose fourth node would fall past the end of the
 // arrays builds the row from three loads, which gives the same lanes, so results do not
 // depend on how the fields are stored.
@@ -98,36 +98,40 @@ inline void gather_one(const StencilBatch& B, int k, const double* __restrict gv
                        const double* __restrict gvy, const GridFields& G, Gathered& out) {
   const Lane4 sx = {B.sx[0][k], B.sx[1][k], B.sx[2][k], 0.0};
   const Lane4 dsx = {B.dsx[0][k], B.dsx[1][k], B.dsx[2][k], 0.0};
-  Lane4 L00{}, L01{}, L10{}, L11{}, pic_x{}, pic_y{}, dvx{}, dvy{}, mvx{}, mvy{};
+  // Down each column first, with the y factors (sy_b for S and dS/dx, dsy_b for dS/dy), then
+  // across the columns with the x factors: S = sx_a sy_b, dS/dx = dsx_a sy_b, dS/dy = sx_a dsy_b.
+  Lane4 u_sy{}, u_dsy{}, v_sy{}, v_dsy{}, vel_x{}, vel_y{}, dvx{}, dvy{};
   for (int b = 0; b < 3; ++b) {
     const std::size_t row = B.base[k] + std::size_t(b) * B.stride[k];
-    const Lane4 w = sx * B.sy[b][k];
+    const double sy = B.sy[b][k];
     if constexpr (kStress) {
-      const Lane4 gx = dsx * B.sy[b][k], gy = sx * B.dsy[b][k];
+      const double dsy = B.dsy[b][k];
       const Lane4 u = row3<kWide>(gvx + row), v = row3<kWide>(gvy + row);
-      L00 += u * gx;
-      L01 += u * gy;
-      L10 += v * gx;
-      L11 += v * gy;
+      u_sy += sy * u;
+      u_dsy += dsy * u;
+      v_sy += sy * v;
+      v_dsy += dsy * v;
     }
     if constexpr (kVelocity || kMove) {
-      const Lane4 u = row3<kWide>(G.vel_x.data() + row), v = row3<kWide>(G.vel_y.data() + row);
+      vel_x += sy * row3<kWide>(G.vel_x.data() + row);
+      vel_y += sy * row3<kWide>(G.vel_y.data() + row);
       if constexpr (kVelocity) {
-        pic_x += w * u;
-        pic_y += w * v;
-        dvx += w * row3<kWide>(G.dvel_x.data() + row);
-        dvy += w * row3<kWide>(G.dvel_y.data() + row);
-      }
-      if constexpr (kMove) {
-        mvx += w * u;
-        mvy += w * v;
+        dvx += sy * row3<kWide>(G.dvel_x.data() + row);
+        dvy += sy * row3<kWide>(G.dvel_y.data() + row);
       }
     }
   }
-  out.L00[k] = sum4(L00), out.L01[k] = sum4(L01), out.L10[k] = sum4(L10), out.L11[k] = sum4(L11);
-  out.pic_x[k] = sum4(pic_x), out.pic_y[k] = sum4(pic_y);
-  out.dv_x[k] = sum4(dvx), out.dv_y[k] = sum4(dvy);
-  out.mv_x[k] = sum4(mvx), out.mv_y[k] = sum4(mvy);
+  if constexpr (kStress) {
+    out.L00[k] = sum4(u_sy * dsx), out.L01[k] = sum4(u_dsy * sx);
+    out.L10[k] = sum4(v_sy * dsx), out.L11[k] = sum4(v_dsy * sx);
+  }
+  if constexpr (kVelocity || kMove) {
+    // The t^{n+1} velocity at the particle: the PIC part of the velocity update and the move.
+    const double px = sum4(vel_x * sx), py = sum4(vel_y * sx);
+    out.pic_x[k] = px, out.pic_y[k] = py;
+    out.mv_x[k] = px, out.mv_y[k] = py;
+    if constexpr (kVelocity) out.dv_x[k] = sum4(dvx * sx), out.dv_y[k] = sum4(dvy * sx);
+  }
 }
 
 template <bool kStress, bool kVelocity, bool kMove>

@@ -163,15 +163,25 @@ void scatter_mass_momentum_force(State& s) {
       const Lane8 Fx = {0, 0, 0, -vsxx, -vsxy, 0, 0, 0};
       const Lane8 Fy = {0, 0, 0, -vsxy, -vsyy, 0, 0, 0};
       Lane8* t0 = tile + T.index(P.field[p], B.first_x[k], B.first_y[k]);
+      // Node (a, b) takes S A + dS/dx Fx + dS/dy Fy with S = sx_a sy_b, dS/dx = dsx_a sy_b,
+      // dS/dy = sx_a dsy_b: the column factors sx_a A + dsx_a Fx and sx_a Fy once per column,
+      // then two vector operations per node.
+      Lane8 col[3], col_y[3];
+      for (int a = 0; a < 3; ++a) {
+        col[a] = B.sx[a][k] * A;
+        if constexpr (kWithForce) {
+          col[a] += B.dsx[a][k] * Fx;
+          col_y[a] = B.sx[a][k] * Fy;
+        }
+      }
       for (int b = 0; b < 3; ++b) {
         Lane8* t = t0 + std::size_t(b) * cols;
         const double wy = B.sy[b][k], gy_b = B.dsy[b][k];
         for (int a = 0; a < 3; ++a) {
-          if constexpr (kWithForce) {
-            t[a] += (B.sx[a][k] * wy) * A + (B.dsx[a][k] * wy) * Fx + (B.sx[a][k] * gy_b) * Fy;
-          } else {
-            t[a] += (B.sx[a][k] * wy) * A;
-          }
+          if constexpr (kWithForce)
+            t[a] += wy * col[a] + gy_b * col_y[a];
+          else
+            t[a] += wy * col[a];
         }
       }
     }, [&](std::size_t p0) {
@@ -264,10 +274,12 @@ void velocity_update_and_remap(State& s) {
     const std::size_t cols = std::size_t(T.cols);
     for_each_in_batches(s, begin, end, [&](std::size_t p, int k, const StencilBatch& B) {
       const std::size_t t0 = T.index(P.field[p], B.first_x[k], B.first_y[k]);
+      // sum_b sy_b (sum_a sx_a in(a, b)): a row's sum, then the rows.
       In acc = {};  // dv x, dv y [, v x, v y]
-      for (int b = 0; b < 3; ++b)
-        for (int a = 0; a < 3; ++a)
-          acc += (B.sx[a][k] * B.sy[b][k]) * in[t0 + std::size_t(b) * cols + std::size_t(a)];
+      for (int b = 0; b < 3; ++b) {
+        const In* r = in + t0 + std::size_t(b) * cols;
+        acc += B.sy[b][k] * (B.sx[0][k] * r[0] + B.sx[1][k] * r[1] + B.sx[2][k] * r[2]);
+      }
       // FLIP/PIC blend of the particle velocity update.
       double vx, vy;
       if constexpr (kPureFlip) {
@@ -281,9 +293,9 @@ void velocity_update_and_remap(State& s) {
       P.vy[p] = vy;
       const double m = P.mass[p];
       const Lane2 mv = {m * vx, m * vy};
+      const Lane2 col[3] = {B.sx[0][k] * mv, B.sx[1][k] * mv, B.sx[2][k] * mv};
       for (int b = 0; b < 3; ++b)
-        for (int a = 0; a < 3; ++a)
-          out[t0 + std::size_t(b) * cols + std::size_t(a)] += (B.sx[a][k] * B.sy[b][k]) * mv;
+        for (int a = 0; a < 3; ++a) out[t0 + std::size_t(b) * cols + std::size_t(a)] += B.sy[b][k] * col[a];
     }, [&](std::size_t p0) {
       for (const std::vector<double>* a : {&P.mass, &P.vx, &P.vy}) prefetch_batch(a->data(), p0);
     });

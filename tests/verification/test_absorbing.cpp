@@ -143,7 +143,7 @@ velocity = 0.0
 // incident one's at a receiver lp before the edge. The packet starts 2 to 3 lp from the edge,
 // so the receiver sees the incident pulse, then the reflected one, apart; the longer block's
 // edge is too far for its reflection to come back in time.
-double normal_reflection(bool shear, double lp) {
+[[maybe_unused]] double normal_reflection(bool shear, double lp) {
   const double c = shear ? kCs : kCp;
   const double Lx = 4.0 * lp, xr = Lx - lp + 0.5 * kH, end = 4.5 * lp / c;
   const Packet k{Lx - 2.5 * lp, 2.0 * kH, 1.0, 0.0, shear, lp, 0.0};
