@@ -93,7 +93,7 @@ void condense_fields(NestedState& n, std::initializer_list<NodalArray> arrays) {
   thread_local std::vector<double*> base_store;
   const std::size_t columns = column_bases(n, arrays, base_store), levels = n.levels.size();
   double* const* base = base_store.data();
-  const long dofs = long(n.dof_level.size()), slaves = long(n.slave_level.size());
+  const long dofs = long(n.dof_level.size()), slaves = long(n.active_slaves.size());
 #pragma omp parallel
   {
 #pragma omp for schedule(static)
@@ -110,8 +110,9 @@ void condense_fields(NestedState& n, std::initializer_list<NodalArray> arrays) {
       for (std::size_t c = 0; c < columns; ++c) base[c * levels + dl][dn] = v[c];
     }
 #pragma omp for schedule(static)
-    for (long k = 0; k < slaves; ++k) {
-      const std::size_t sl = n.slave_level[std::size_t(k)], sn = n.slave_node[std::size_t(k)];
+    for (long i = 0; i < slaves; ++i) {
+      const std::uint32_t k = n.active_slaves[std::size_t(i)];
+      const std::size_t sl = n.slave_level[k], sn = n.slave_node[k];
       for (std::size_t c = 0; c < columns; ++c) base[c * levels + sl][sn] = 0.0;
     }
   }
@@ -123,16 +124,17 @@ void distribute_fields(NestedState& n, std::initializer_list<NodalArray> arrays)
   thread_local std::vector<double*> base_store;
   const std::size_t columns = column_bases(n, arrays, base_store), levels = n.levels.size();
   double* const* base = base_store.data();
-  const long slaves = long(g.slaves.size());
+  const long slaves = long(n.active_slaves.size());
 #pragma omp parallel for schedule(static)
-  for (long k = 0; k < slaves; ++k) {
+  for (long i = 0; i < slaves; ++i) {
+    const std::uint32_t k = n.active_slaves[std::size_t(i)];
     double v[kMaxColumns] = {};
-    for (std::uint32_t t = g.term_start[std::size_t(k)]; t < g.term_start[std::size_t(k) + 1]; ++t) {
+    for (std::uint32_t t = g.term_start[k]; t < g.term_start[k + 1]; ++t) {
       const std::size_t tl = n.term_level[t], tn = n.term_node[t];
       const double coef = g.terms[t].c;
       for (std::size_t c = 0; c < columns; ++c) v[c] += coef * base[c * levels + tl][tn];
     }
-    const std::size_t sl = n.slave_level[std::size_t(k)], sn = n.slave_node[std::size_t(k)];
+    const std::size_t sl = n.slave_level[k], sn = n.slave_node[k];
     for (std::size_t c = 0; c < columns; ++c) base[c * levels + sl][sn] = v[c];
   }
 }
@@ -415,18 +417,39 @@ NestedState make_nested_state(const Case& c) {
   n.slave_level.resize(ns), n.slave_node.resize(ns), n.term_level.resize(nt), n.term_node.resize(nt);
   for (std::size_t k = 0; k < ns; ++k) locate(n.grid.slaves[k], n.slave_level[k], n.slave_node[k]);
   for (std::size_t t = 0; t < nt; ++t) locate(n.grid.terms[t].dof, n.term_level[t], n.term_node[t]);
-  // The terms transposed, by DOF (ascending), each DOF's in slave order: condense_fields.
-  std::vector<std::uint32_t> order(nt);
-  for (std::uint32_t t = 0; t < nt; ++t) order[t] = t;
+  // The slaves their level's particles can reach: all but covered nodes kInactiveDepth cells
+  // of their level or more inside the finer rectangle (its outer sides do not count).
+  for (std::size_t k = 0; k < ns; ++k) {
+    const std::size_t l = n.slave_level[k];
+    bool deep = l + 1 < n.grid.levels.size();
+    if (deep) {
+      const Level& L = n.grid.levels[l];
+      const Level& F = n.grid.levels[l + 1];
+      const long node = long(n.slave_node[k]);
+      const long u[2] = {L.node0[0] + (node % L.nodes_x()) * L.unit, L.node0[1] + (node / L.nodes_x()) * L.unit};
+      const long depth = long(kInactiveDepth) * L.unit;
+      for (int d = 0; d < 2; ++d) {
+        deep = deep && (F.outer_lo[d] ? u[d] >= F.lo[d] : u[d] - F.lo[d] >= depth);
+        deep = deep && (F.outer_hi[d] ? u[d] <= F.hi[d] : F.hi[d] - u[d] >= depth);
+      }
+    }
+    if (!deep) n.active_slaves.push_back(std::uint32_t(k));
+  }
+  // The active slaves' terms transposed, by DOF (ascending), each DOF's in slave order:
+  // condense_fields.
+  std::vector<std::uint32_t> order, slave_of(nt);
+  for (const std::uint32_t k : n.active_slaves)
+    for (std::uint32_t t = n.grid.term_start[k]; t < n.grid.term_start[k + 1]; ++t) {
+      order.push_back(t);
+      slave_of[t] = k;
+    }
   std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
     return n.grid.terms[a].dof < n.grid.terms[b].dof;
   });
-  std::vector<std::uint32_t> slave_of(nt);
-  for (std::size_t k = 0; k < ns; ++k)
-    for (std::uint32_t t = n.grid.term_start[k]; t < n.grid.term_start[k + 1]; ++t) slave_of[t] = std::uint32_t(k);
-  n.dof_slave.resize(nt), n.dof_c.resize(nt);
+  const std::size_t na = order.size();
+  n.dof_slave.resize(na), n.dof_c.resize(na);
   n.dof_start.assign(1, 0);
-  for (std::size_t j = 0; j < nt; ++j) {
+  for (std::size_t j = 0; j < na; ++j) {
     const std::uint32_t t = order[j];
     if (j == 0 || n.grid.terms[t].dof != n.grid.terms[order[j - 1]].dof) {
       if (j > 0) n.dof_start.push_back(std::uint32_t(j));
@@ -436,7 +459,7 @@ NestedState make_nested_state(const Case& c) {
     n.dof_slave[j] = slave_of[t];
     n.dof_c[j] = n.grid.terms[t].c;
   }
-  n.dof_start.push_back(std::uint32_t(nt));
+  n.dof_start.push_back(std::uint32_t(na));
   n.dt = n.levels[0].dt;
   return n;
 }

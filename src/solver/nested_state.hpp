@@ -26,6 +26,9 @@ namespace rupture {
 // Particles move to the level owning their centre once any may have moved this many cells of
 // the finest level since the last move (solver/nested_state.cpp).
 inline constexpr double kMigrateDrift = 0.25;
+// Covered nodes this many cells of their level inside the finer level's rectangle are never
+// reached by their level's particles (NestedState::active_slaves).
+inline constexpr int kInactiveDepth = 3;
 
 struct NestedState {
   NestedGrid grid;
@@ -33,8 +36,15 @@ struct NestedState {
   // The slaves and their terms of grid (same order) as (level, node of that level).
   std::vector<std::uint8_t> slave_level, term_level;
   std::vector<std::uint32_t> slave_node, term_node;
-  // The terms by DOF (condense): DOF d at (dof_level[d], dof_node[d]) takes dof_c[j] times
-  // slave dof_slave[j] for j in [dof_start[d], dof_start[d + 1]), slaves ascending.
+  // The slaves a particle of their level can reach (indices into grid.slaves, ascending):
+  // all but covered nodes kInactiveDepth or more cells of their level inside the finer
+  // rectangle. The others stay zero (no particle of their level gets within two cells of
+  // them: particles change level once they may have drifted a quarter of a finest cell, and a
+  // stencil reaches 1.5 cells), so condense and distribute skip them.
+  std::vector<std::uint32_t> active_slaves;
+  // The terms of the active slaves by DOF (condense): DOF d at (dof_level[d], dof_node[d])
+  // takes dof_c[j] times slave dof_slave[j] for j in [dof_start[d], dof_start[d + 1]), slaves
+  // ascending.
   std::vector<std::uint8_t> dof_level;
   std::vector<std::uint32_t> dof_node, dof_start, dof_slave;
   std::vector<double> dof_c;
