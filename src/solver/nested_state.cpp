@@ -249,16 +249,25 @@ void cohesive_forces_and_ties(NestedState& n) {
   });
 }
 
+// Every level's State, for the scatters that run over all levels at once.
+std::vector<State*>& level_pointers(NestedState& n) {
+  thread_local std::vector<State*> p;
+  p.clear();
+  for (State& s : n.levels) p.push_back(&s);
+  return p;
+}
+
 // MUSL (solver/step.cpp's step_musl), level by level, joined at the transitions.
 void step_musl(NestedState& n) {
-  each_level(n, [](State& s) { particles_to_grid(s, true); });  // E4
+  std::vector<State*>& all = level_pointers(n);
+  particles_to_grid(all.data(), all.size(), true);  // E4
   condense_fields(n, {&GridFields::mass, &GridFields::mom_x, &GridFields::mom_y,
                       &GridFields::force_x, &GridFields::force_y});
   tie_stencils_and_time_step(n);                                 // bonded, faces, dt (E6)
   cohesive_forces_and_ties(n);                                   // E7-E9, bonded
   each_level(n, [](State& s) { integrate_grid(s); });            // E4 + E2 velocity BCs
   distribute_fields(n, {&GridFields::vel_x, &GridFields::vel_y, &GridFields::dvel_x, &GridFields::dvel_y});
-  each_level(n, [](State& s) { update_particle_velocity_and_remap(s); });
+  update_particle_velocity_and_remap(all.data(), all.size());
   condense_fields(n, {&GridFields::remap_x, &GridFields::remap_y});
   each_level(n, [](State& s) { tie_bonded_nodes(s, TieWhat::remapped_momentum); });
   each_level(n, [](State& s) { remapped_grid_velocity(s); });    // + E2 at t^{n+1}
@@ -269,7 +278,8 @@ void step_musl(NestedState& n) {
 }
 
 void step_usl(NestedState& n) {
-  each_level(n, [](State& s) { particles_to_grid(s, true); });
+  std::vector<State*>& all = level_pointers(n);
+  particles_to_grid(all.data(), all.size(), true);
   condense_fields(n, {&GridFields::mass, &GridFields::mom_x, &GridFields::mom_y,
                       &GridFields::force_x, &GridFields::force_y});
   tie_stencils_and_time_step(n);

@@ -183,4 +183,23 @@ void for_each_strip_coloured(const ScatterPlan& plan, Body&& body) {
   }
 }
 
+// The same over several States with separate arrays (nested levels): body(s, strip, begin,
+// end). One parallel region; within a colour a thread moves on to the next level's strips
+// without waiting for the others (the levels share no array), and all wait once per colour,
+// instead of twice per level.
+template <class Body>
+void for_each_strip_coloured(State* const* states, std::size_t count, Body&& body) {
+#pragma omp parallel
+  for (int colour = 0; colour < 2; ++colour) {
+    for (std::size_t l = 0; l < count; ++l) {
+      State& s = *states[l];
+      const ScatterPlan& plan = s.plan;
+#pragma omp for schedule(dynamic, 1) nowait
+      for (int strip = colour; strip < plan.num_strips; strip += 2)
+        body(s, strip, plan.strip_begin[std::size_t(strip)], plan.strip_begin[std::size_t(strip) + 1]);
+    }
+#pragma omp barrier
+  }
+}
+
 }  // namespace rupture::detail

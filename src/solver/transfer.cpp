@@ -142,12 +142,12 @@ Lane* tile_buffer(std::vector<Lane>& buffer, std::size_t size, bool zero) {
   return buffer.data();
 }
 
+// One strip of the mass, momentum [and force] scatter (strips of one colour run in parallel).
 template <bool kWithForce>
-void scatter_mass_momentum_force(State& s) {
+void scatter_strip(State& s, int strip, std::size_t begin, std::size_t end) {
   GridFields& G = s.fields;
   const Particles& P = s.particles;
-  keep_tile_rows_sized(s);
-  for_each_strip_coloured(s.plan, [&](int strip, std::size_t begin, std::size_t end) {
+  {
     if (begin == end) return;
     thread_local TileLayout T;
     thread_local std::vector<Lane8> buffer;
@@ -199,7 +199,7 @@ void scatter_mass_momentum_force(State& s) {
         G.force_y[n] += v[4];
       }
     });
-  });
+  }
 }
 
 // Zeroes the arrays, the threads splitting each one (a serial fill leaves the other threads
@@ -217,12 +217,20 @@ void zero_parallel(std::initializer_list<std::vector<double>*> arrays) {
 }  // namespace
 
 void particles_to_grid(State& s, bool with_force) {
-  GridFields& G = s.fields;
-  zero_parallel({&G.mass, &G.mom_x, &G.mom_y, &G.force_x, &G.force_y});
+  State* one = &s;
+  particles_to_grid(&one, 1, with_force);
+}
+
+void particles_to_grid(State* const* states, std::size_t count, bool with_force) {
+  for (std::size_t l = 0; l < count; ++l) {
+    GridFields& G = states[l]->fields;
+    zero_parallel({&G.mass, &G.mom_x, &G.mom_y, &G.force_x, &G.force_y});
+    keep_tile_rows_sized(*states[l]);
+  }
   if (with_force)
-    scatter_mass_momentum_force<true>(s);
+    for_each_strip_coloured(states, count, scatter_strip<true>);
   else
-    scatter_mass_momentum_force<false>(s);
+    for_each_strip_coloured(states, count, scatter_strip<false>);
 }
 
 void particles_to_grid_force(State& s) {
@@ -251,13 +259,14 @@ namespace {
 // kPureFlip: flip == 1, so the PIC part (the gathered velocity) is not needed and the gather
 // tile holds only the velocity increment (two lanes). The scatter tile holds the two momentum
 // components. Each lane's sum runs in the same order whatever the lane count.
+// One strip of the velocity update and re-map (strips of one colour run in parallel).
 template <bool kPureFlip>
-void velocity_update_and_remap(State& s) {
+void velocity_remap_strip(State& s, int strip, std::size_t begin, std::size_t end) {
   using In = std::conditional_t<kPureFlip, Lane2, Lane4>;
   GridFields& G = s.fields;
   Particles& P = s.particles;
   const double flip = s.flip;
-  for_each_strip_coloured(s.plan, [&](int strip, std::size_t begin, std::size_t end) {
+  {
     if (begin == end) return;
     thread_local TileLayout T;
     thread_local std::vector<In> gather_buffer;
@@ -303,18 +312,26 @@ void velocity_update_and_remap(State& s) {
       G.remap_x[n] += out[t][0];
       G.remap_y[n] += out[t][1];
     });
-  });
+  }
 }
 
 }  // namespace
 
 void update_particle_velocity_and_remap(State& s) {
-  GridFields& G = s.fields;
-  zero_parallel({&G.remap_x, &G.remap_y});
-  if (s.flip == 1.0)
-    velocity_update_and_remap<true>(s);
+  State* one = &s;
+  update_particle_velocity_and_remap(&one, 1);
+}
+
+void update_particle_velocity_and_remap(State* const* states, std::size_t count) {
+  for (std::size_t l = 0; l < count; ++l) {
+    GridFields& G = states[l]->fields;
+    zero_parallel({&G.remap_x, &G.remap_y});
+  }
+  // One FLIP fraction per run (every level's State copies the case's).
+  if (count > 0 && states[0]->flip == 1.0)
+    for_each_strip_coloured(states, count, velocity_remap_strip<true>);
   else
-    velocity_update_and_remap<false>(s);
+    for_each_strip_coloured(states, count, velocity_remap_strip<false>);
 }
 
 }  // namespace rupture

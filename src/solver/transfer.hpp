@@ -5,6 +5,8 @@
 // grid_to_particles throws SimulationError (what, where, when) on a non-finite particle or one
 // leaving the grid; a re-sort checks the GIMP contract on graded grids.
 #pragma once
+#include <cstddef>
+
 #include "solver/state.hpp"
 
 namespace rupture {
@@ -14,6 +16,10 @@ void sort_particles(State& s);
 void particles_to_grid(State& s, bool with_force);  // mass, momentum [, internal force] (E4)
 void particles_to_grid_force(State& s);             // internal force only (USF)
 void update_particle_velocity_and_remap(State& s);  // FLIP/PIC blend + MUSL re-map (scatter)
+// The same two scatters over several States at once (nested levels: one parallel region, the
+// threads' work spread over every level's strips). Same results as one call per State.
+void particles_to_grid(State* const* states, std::size_t count, bool with_force);
+void update_particle_velocity_and_remap(State* const* states, std::size_t count);
 // Stress update with the velocity in (gvx, gvy) (E5); optionally update velocity (USL) and
 // move particles with the t^{n+1} grid velocity.
 enum class G2PMode { stress_and_move, stress_velocity_and_move, stress_only, velocity_and_move };
