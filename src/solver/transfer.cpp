@@ -76,17 +76,24 @@ void tile_layout(const State& s, int strip, std::size_t begin, std::size_t end, 
   };
   const double* __restrict y = P.y.data();
   const std::uint8_t* __restrict field = P.field.data();
-  for (std::size_t f = 0; f < std::size_t(fields); ++f) {
-    double lo = INFINITY, hi = -INFINITY;
-    const std::uint8_t ff = std::uint8_t(f);
-#pragma omp simd reduction(min : lo) reduction(max : hi)
-    for (std::size_t p = begin; p < end; ++p) {
-      lo = std::min(lo, field[p] == ff ? y[p] : INFINITY);
-      hi = std::max(hi, field[p] == ff ? y[p] : -INFINITY);
-    }
-    if (lo > hi) continue;  // no particle of this field in the strip
+  // Two fields per pass (two bodies are the common case: one pass over the strip).
+  const auto rows_of = [&](std::size_t f, double lo, double hi) {
+    if (lo > hi) return;  // no particle of this field in the strip
     T.row0[f] = row(lo) - 1;
     T.rows[f] = row(hi) + 2;
+  };
+  for (std::size_t f = 0; f < std::size_t(fields); f += 2) {
+    double lo0 = INFINITY, hi0 = -INFINITY, lo1 = INFINITY, hi1 = -INFINITY;
+    const std::uint8_t f0 = std::uint8_t(f), f1 = std::uint8_t(f + 1);
+#pragma omp simd reduction(min : lo0, lo1) reduction(max : hi0, hi1)
+    for (std::size_t p = begin; p < end; ++p) {
+      lo0 = std::min(lo0, field[p] == f0 ? y[p] : INFINITY);
+      hi0 = std::max(hi0, field[p] == f0 ? y[p] : -INFINITY);
+      lo1 = std::min(lo1, field[p] == f1 ? y[p] : INFINITY);
+      hi1 = std::max(hi1, field[p] == f1 ? y[p] : -INFINITY);
+    }
+    rows_of(f, lo0, hi0);
+    if (f + 1 < std::size_t(fields)) rows_of(f + 1, lo1, hi1);
   }
   for (std::size_t f = 0; f < std::size_t(fields); ++f)
     T.rows[f] = T.rows[f] >= T.row0[f] ? T.rows[f] - T.row0[f] + 1 : 0;
