@@ -154,59 +154,57 @@ template <bool kWithForce>
 void scatter_strip(State& s, int strip, std::size_t begin, std::size_t end) {
   GridFields& G = s.fields;
   const Particles& P = s.particles;
-  {
-    if (begin == end) return;
-    thread_local TileLayout T;
-    thread_local std::vector<Lane8> buffer;
-    tile_layout(s, strip, begin, end, T);
-    keep_tile_rows(s.plan, strip, T);
-    Lane8* tile = tile_buffer(buffer, T.size(), true);
-    const std::size_t cols = std::size_t(T.cols);
-    for_each_in_batches(s, begin, end, [&](std::size_t p, int k, const StencilBatch& B) {
-      const double m = P.mass[p], V = P.volume[p];
-      const Lane8 A = {m, m * P.vx[p], m * P.vy[p], 0, 0, 0, 0, 0};
-      const double vsxx = V * P.sxx[p], vsyy = V * P.syy[p], vsxy = V * P.sxy[p];
-      // SPEC E4: f_i = -sum_p V_p sigma_p . grad S_ip
-      const Lane8 Fx = {0, 0, 0, -vsxx, -vsxy, 0, 0, 0};
-      const Lane8 Fy = {0, 0, 0, -vsxy, -vsyy, 0, 0, 0};
-      Lane8* t0 = tile + T.index(P.field[p], B.first_x[k], B.first_y[k]);
-      // Node (a, b) takes S A + dS/dx Fx + dS/dy Fy with S = sx_a sy_b, dS/dx = dsx_a sy_b,
-      // dS/dy = sx_a dsy_b: the column factors sx_a A + dsx_a Fx and sx_a Fy once per column,
-      // then two vector operations per node.
-      Lane8 col[3], col_y[3];
-      for (int a = 0; a < 3; ++a) {
-        col[a] = B.sx[a][k] * A;
-        if constexpr (kWithForce) {
-          col[a] += B.dsx[a][k] * Fx;
-          col_y[a] = B.sx[a][k] * Fy;
-        }
-      }
-      for (int b = 0; b < 3; ++b) {
-        Lane8* t = t0 + std::size_t(b) * cols;
-        const double wy = B.sy[b][k], gy_b = B.dsy[b][k];
-        for (int a = 0; a < 3; ++a) {
-          if constexpr (kWithForce)
-            t[a] += wy * col[a] + gy_b * col_y[a];
-          else
-            t[a] += wy * col[a];
-        }
-      }
-    }, [&](std::size_t p0) {
-      for (const std::vector<double>* a : {&P.mass, &P.vx, &P.vy, &P.volume, &P.sxx, &P.syy, &P.sxy})
-        prefetch_batch(a->data(), p0);
-    });
-    // Strips of one colour never share a node: no race.
-    for_each_tile_node(s, T, [&](std::size_t t, std::size_t n) {
-      const Lane8 v = tile[t];
-      G.mass[n] += v[0];
-      G.mom_x[n] += v[1];
-      G.mom_y[n] += v[2];
+  if (begin == end) return;
+  thread_local TileLayout T;
+  thread_local std::vector<Lane8> buffer;
+  tile_layout(s, strip, begin, end, T);
+  keep_tile_rows(s.plan, strip, T);
+  Lane8* tile = tile_buffer(buffer, T.size(), true);
+  const std::size_t cols = std::size_t(T.cols);
+  for_each_in_batches(s, begin, end, [&](std::size_t p, int k, const StencilBatch& B) {
+    const double m = P.mass[p], V = P.volume[p];
+    const Lane8 A = {m, m * P.vx[p], m * P.vy[p], 0, 0, 0, 0, 0};
+    const double vsxx = V * P.sxx[p], vsyy = V * P.syy[p], vsxy = V * P.sxy[p];
+    // SPEC E4: f_i = -sum_p V_p sigma_p . grad S_ip
+    const Lane8 Fx = {0, 0, 0, -vsxx, -vsxy, 0, 0, 0};
+    const Lane8 Fy = {0, 0, 0, -vsxy, -vsyy, 0, 0, 0};
+    Lane8* t0 = tile + T.index(P.field[p], B.first_x[k], B.first_y[k]);
+    // Node (a, b) takes S A + dS/dx Fx + dS/dy Fy with S = sx_a sy_b, dS/dx = dsx_a sy_b,
+    // dS/dy = sx_a dsy_b: the column factors sx_a A + dsx_a Fx and sx_a Fy once per column,
+    // then two vector operations per node.
+    Lane8 col[3], col_y[3];
+    for (int a = 0; a < 3; ++a) {
+      col[a] = B.sx[a][k] * A;
       if constexpr (kWithForce) {
-        G.force_x[n] += v[3];
-        G.force_y[n] += v[4];
+        col[a] += B.dsx[a][k] * Fx;
+        col_y[a] = B.sx[a][k] * Fy;
       }
-    });
-  }
+    }
+    for (int b = 0; b < 3; ++b) {
+      Lane8* t = t0 + std::size_t(b) * cols;
+      const double wy = B.sy[b][k], gy_b = B.dsy[b][k];
+      for (int a = 0; a < 3; ++a) {
+        if constexpr (kWithForce)
+          t[a] += wy * col[a] + gy_b * col_y[a];
+        else
+          t[a] += wy * col[a];
+      }
+    }
+  }, [&](std::size_t p0) {
+    for (const std::vector<double>* a : {&P.mass, &P.vx, &P.vy, &P.volume, &P.sxx, &P.syy, &P.sxy})
+      prefetch_batch(a->data(), p0);
+  });
+  // Strips of one colour never share a node: no race.
+  for_each_tile_node(s, T, [&](std::size_t t, std::size_t n) {
+    const Lane8 v = tile[t];
+    G.mass[n] += v[0];
+    G.mom_x[n] += v[1];
+    G.mom_y[n] += v[2];
+    if constexpr (kWithForce) {
+      G.force_x[n] += v[3];
+      G.force_y[n] += v[4];
+    }
+  });
 }
 
 // Zeroes the arrays, the threads splitting each one (a serial fill leaves the other threads
@@ -273,53 +271,51 @@ void velocity_remap_strip(State& s, int strip, std::size_t begin, std::size_t en
   GridFields& G = s.fields;
   Particles& P = s.particles;
   const double flip = s.flip;
-  {
-    if (begin == end) return;
-    thread_local TileLayout T;
-    thread_local std::vector<In> gather_buffer;
-    thread_local std::vector<Lane2> scatter_buffer;
-    tile_layout_kept(s, strip, begin, end, T);
-    In* in = tile_buffer(gather_buffer, T.size(), false);
-    Lane2* out = tile_buffer(scatter_buffer, T.size(), true);
-    for_each_tile_node(s, T, [&](std::size_t t, std::size_t n) {
-      if constexpr (kPureFlip)
-        in[t] = In{G.dvel_x[n], G.dvel_y[n]};
-      else
-        in[t] = In{G.dvel_x[n], G.dvel_y[n], G.vel_x[n], G.vel_y[n]};
-    });
-    const std::size_t cols = std::size_t(T.cols);
-    for_each_in_batches(s, begin, end, [&](std::size_t p, int k, const StencilBatch& B) {
-      const std::size_t t0 = T.index(P.field[p], B.first_x[k], B.first_y[k]);
-      // sum_b sy_b (sum_a sx_a in(a, b)): a row's sum, then the rows.
-      In acc = {};  // dv x, dv y [, v x, v y]
-      for (int b = 0; b < 3; ++b) {
-        const In* r = in + t0 + std::size_t(b) * cols;
-        acc += B.sy[b][k] * (B.sx[0][k] * r[0] + B.sx[1][k] * r[1] + B.sx[2][k] * r[2]);
-      }
-      // FLIP/PIC blend of the particle velocity update.
-      double vx, vy;
-      if constexpr (kPureFlip) {
-        vx = P.vx[p] + acc[0];
-        vy = P.vy[p] + acc[1];
-      } else {
-        vx = flip * (P.vx[p] + acc[0]) + (1.0 - flip) * acc[2];
-        vy = flip * (P.vy[p] + acc[1]) + (1.0 - flip) * acc[3];
-      }
-      P.vx[p] = vx;
-      P.vy[p] = vy;
-      const double m = P.mass[p];
-      const Lane2 mv = {m * vx, m * vy};
-      const Lane2 col[3] = {B.sx[0][k] * mv, B.sx[1][k] * mv, B.sx[2][k] * mv};
-      for (int b = 0; b < 3; ++b)
-        for (int a = 0; a < 3; ++a) out[t0 + std::size_t(b) * cols + std::size_t(a)] += B.sy[b][k] * col[a];
-    }, [&](std::size_t p0) {
-      for (const std::vector<double>* a : {&P.mass, &P.vx, &P.vy}) prefetch_batch(a->data(), p0);
-    });
-    for_each_tile_node(s, T, [&](std::size_t t, std::size_t n) {
-      G.remap_x[n] += out[t][0];
-      G.remap_y[n] += out[t][1];
-    });
-  }
+  if (begin == end) return;
+  thread_local TileLayout T;
+  thread_local std::vector<In> gather_buffer;
+  thread_local std::vector<Lane2> scatter_buffer;
+  tile_layout_kept(s, strip, begin, end, T);
+  In* in = tile_buffer(gather_buffer, T.size(), false);
+  Lane2* out = tile_buffer(scatter_buffer, T.size(), true);
+  for_each_tile_node(s, T, [&](std::size_t t, std::size_t n) {
+    if constexpr (kPureFlip)
+      in[t] = In{G.dvel_x[n], G.dvel_y[n]};
+    else
+      in[t] = In{G.dvel_x[n], G.dvel_y[n], G.vel_x[n], G.vel_y[n]};
+  });
+  const std::size_t cols = std::size_t(T.cols);
+  for_each_in_batches(s, begin, end, [&](std::size_t p, int k, const StencilBatch& B) {
+    const std::size_t t0 = T.index(P.field[p], B.first_x[k], B.first_y[k]);
+    // sum_b sy_b (sum_a sx_a in(a, b)): a row's sum, then the rows.
+    In acc = {};  // dv x, dv y [, v x, v y]
+    for (int b = 0; b < 3; ++b) {
+      const In* r = in + t0 + std::size_t(b) * cols;
+      acc += B.sy[b][k] * (B.sx[0][k] * r[0] + B.sx[1][k] * r[1] + B.sx[2][k] * r[2]);
+    }
+    // FLIP/PIC blend of the particle velocity update.
+    double vx, vy;
+    if constexpr (kPureFlip) {
+      vx = P.vx[p] + acc[0];
+      vy = P.vy[p] + acc[1];
+    } else {
+      vx = flip * (P.vx[p] + acc[0]) + (1.0 - flip) * acc[2];
+      vy = flip * (P.vy[p] + acc[1]) + (1.0 - flip) * acc[3];
+    }
+    P.vx[p] = vx;
+    P.vy[p] = vy;
+    const double m = P.mass[p];
+    const Lane2 mv = {m * vx, m * vy};
+    const Lane2 col[3] = {B.sx[0][k] * mv, B.sx[1][k] * mv, B.sx[2][k] * mv};
+    for (int b = 0; b < 3; ++b)
+      for (int a = 0; a < 3; ++a) out[t0 + std::size_t(b) * cols + std::size_t(a)] += B.sy[b][k] * col[a];
+  }, [&](std::size_t p0) {
+    for (const std::vector<double>* a : {&P.mass, &P.vx, &P.vy}) prefetch_batch(a->data(), p0);
+  });
+  for_each_tile_node(s, T, [&](std::size_t t, std::size_t n) {
+    G.remap_x[n] += out[t][0];
+    G.remap_y[n] += out[t][1];
+  });
 }
 
 }  // namespace
