@@ -172,21 +172,10 @@ inline void for_each_in_batches(const State& s, std::size_t begin, std::size_t e
   }
 }
 
-// Runs body(strip, begin, end) over the particle range of every strip, strips of one colour
-// in parallel (see ScatterPlan).
-template <class Body>
-void for_each_strip_coloured(const ScatterPlan& plan, Body&& body) {
-  for (int colour = 0; colour < 2; ++colour) {
-#pragma omp parallel for schedule(dynamic, 1)
-    for (int strip = colour; strip < plan.num_strips; strip += 2)
-      body(strip, plan.strip_begin[std::size_t(strip)], plan.strip_begin[std::size_t(strip) + 1]);
-  }
-}
-
-// The same over several States with separate arrays (nested levels): body(s, strip, begin,
-// end). One parallel region; within a colour a thread moves on to the next level's strips
-// without waiting for the others (the levels share no array), and all wait once per colour,
-// instead of twice per level.
+// Runs body(s, strip, begin, end) over the particle range of every strip of every State,
+// strips of one colour in parallel (see ScatterPlan). Several States (nested levels) share no
+// array: one parallel region, within a colour a thread moves on to the next State's strips
+// without waiting for the others, and all wait once per colour.
 template <class Body>
 void for_each_strip_coloured(State* const* states, std::size_t count, Body&& body) {
 #pragma omp parallel

@@ -244,7 +244,8 @@ void particles_to_grid_force(State& s) {
   const Particles& P = s.particles;
   double* fx = G.force_x.data();
   double* fy = G.force_y.data();
-  for_each_strip_coloured(s.plan, [&](int, std::size_t begin, std::size_t end) {
+  State* one = &s;
+  for_each_strip_coloured(&one, 1, [&](State&, int, std::size_t begin, std::size_t end) {
     for_each_in_batches(s, begin, end, [&](std::size_t p, int k, const StencilBatch& B) {
       const double V = P.volume[p], sxx = P.sxx[p], syy = P.syy[p], sxy = P.sxy[p];
       for (int b = 0; b < 3; ++b) {
