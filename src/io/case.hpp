@@ -72,6 +72,10 @@ struct GridSpec {
   }
 };
 
+// Per-level time steps on nested levels (solver/nested_subcycle.cpp): none (one dt for every
+// level) or levels (each level at its own CFL step).
+enum class Subcycling { none, levels };
+
 struct TimeSpec {
   double end = 0.0;  // s
   double cfl = 0.4;  // Delta t = cfl * h / c_D (SPEC E6)
@@ -83,6 +87,7 @@ struct TimeSpec {
   // (see CrackSummary::end_reached_time): a crack running into the bonded part stops there, and
   // the sustained speed (last 4 us of the run) would then measure the arrest, not the crack.
   bool stop_at_interface_end = false;
+  Subcycling subcycling = Subcycling::none;
 };
 
 struct SolverSpec {

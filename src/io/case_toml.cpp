@@ -58,6 +58,11 @@ void parse_time(Section& top, Case& c) {
   if (!(c.time.cohesive_safety > 0 && c.time.cohesive_safety <= 1))
     fail(t.key("cohesive_safety"), c.time.cohesive_safety, "must lie in (0, 1]");
   c.time.stop_at_interface_end = t.boolean("stop_at_interface_end", false);
+  const std::string subcycling = t.string("subcycling", "none", {"none", "levels"});
+  c.time.subcycling = subcycling == "levels" ? Subcycling::levels : Subcycling::none;
+  if (c.time.subcycling == Subcycling::levels && !c.grid.nested)
+    fail(t.key("subcycling"), "\"levels\"",
+         "needs grid.refinement = \"nested\" (per-level time steps step nested levels)");
 }
 
 void parse_solver(Section& top, Case& c) {

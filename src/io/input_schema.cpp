@@ -182,6 +182,9 @@ std::vector<KeyDoc> build_schema() {
       {"time.stop_at_interface_end", "boolean", "", "false", "true, false",
        "end the run once a crack tip comes within two cells of the end of its cohesive line",
        "true"},
+      {"time.subcycling", "string", "", "\"none\"", "\"none\" or \"levels\" (needs grid.refinement = \"nested\"; MUSL or USL)",
+       "per-level time steps: each nested level steps at its own CFL step (2^k finest steps, "
+       "docs/performance.md); the interface's level and finer ones every finest step", "\"levels\""},
 
       {"solver", "table", "", "optional", "", "The MPM update and threads.", ""},
       {"solver.scheme", "string", "", "\"MUSL\"", "\"MUSL\", \"USL\", \"USF\"",

@@ -62,6 +62,7 @@ std::string run_json(const Case& c, const CaseSummary& s, const RunRecord& r) {
   t.insert("dt_cohesive_limit", s.dt_cohesive);
   if (std::isfinite(r.min_cohesive_dt)) t.insert("dt_cohesive_limit_min", r.min_cohesive_dt);
   t.insert("cohesive_safety", c.time.cohesive_safety);
+  t.insert("subcycling", c.time.subcycling == Subcycling::levels ? "levels" : "none");
   if (!r.cracks.empty()) {
     toml::array all;
     for (std::size_t k = 0; k < r.cracks.size(); ++k) {

@@ -266,8 +266,17 @@ RunResult run_case(const Case& c, const RunOptions& options) {
   try {
     while (s.time < c.time.end - eps) {
       s.dt_cap = c.time.end - s.time;  // land exactly on the end time
+      // Nested per-level time steps: every level ends its step together by the next time an
+      // output needs the particles (solver/nested_state.hpp).
+      s.sync_by = c.time.end - eps;
+      for (const Schedule* due : {&hist, &snap, &ctx.station_schedule, &ctx.mach_schedule, &ctx.checkpoint})
+        if (due->interval > 0) s.sync_by = std::min(s.sync_by, due->next - eps);
+      if (!c.stations.empty() && ctx.station_schedule.interval <= 0) s.sync_by = -INFINITY;  // every step
       step(s);
       const bool last = s.time >= c.time.end - eps;
+      // Between the finest steps of a coarser level's step (per-level time steps) some particles
+      // are behind the run's time: what reads particles waits for the levels to end together.
+      const bool synced = synchronized(s);
       // Crack samples at exact multiples of the interval (E10, E11), however long the step.
       while (crack.due(s.time, eps)) {
         for (std::size_t k = 0; k < cracks.size(); ++k) cracks[k].sample(s.interfaces[k], crack.next);
@@ -279,7 +288,7 @@ RunResult run_case(const Case& c, const RunOptions& options) {
       bool crack_at_end = false;
       if (c.time.stop_at_interface_end)
         for (const CrackTracker& ct : cracks) crack_at_end = crack_at_end || ct.end_reached_time() >= 0.0;
-      if (crack_at_end && !last) {
+      if (crack_at_end && !last && synced) {
         // Close the record at this time: final samples of every output.
         for (std::size_t k = 0; k < cracks.size(); ++k)
           if (cracks[k].samples().back().time < s.time) cracks[k].sample(s.interfaces[k], s.time);
@@ -293,11 +302,11 @@ RunResult run_case(const Case& c, const RunOptions& options) {
         break;
       }
       Schedule& st = ctx.station_schedule;
-      if (!c.stations.empty() && (st.interval <= 0 || st.due(s.time, eps) || last)) {
+      if (!c.stations.empty() && synced && (st.interval <= 0 || st.due(s.time, eps) || last)) {
         sample_stations_now();
         st.advance(s.time, eps);
       }
-      if (hist.due(s.time, eps) || last) {
+      if (synced && (hist.due(s.time, eps) || last)) {
         gather_particles(s);  // nested levels: every level's particles, merged
         history.samples.push_back(sample(s));
         check_energy(s, history.samples.back());
@@ -307,12 +316,12 @@ RunResult run_case(const Case& c, const RunOptions& options) {
         write_interfaces();
         prof.advance(s.time, eps);
       }
-      if (ctx.mach_schedule.due(s.time, eps) || (last && ctx.mach_schedule.interval > 0)) {
+      if (synced && (ctx.mach_schedule.due(s.time, eps) || (last && ctx.mach_schedule.interval > 0))) {
         read_mach_angles();
         ctx.mach_schedule.advance(s.time, eps);
       }
       bool flushed = false;
-      if (snapshots && (snap.due(s.time, eps) || last)) {
+      if (snapshots && synced && (snap.due(s.time, eps) || last)) {
         gather_particles(s);
         snapshots->write(s.particles, s.time, s.step);
         flush();
@@ -326,6 +335,9 @@ RunResult run_case(const Case& c, const RunOptions& options) {
       caught_signal = interrupt_signal();
       const bool stop = caught_signal != 0 ||
                         (options.stop_after_steps > 0 && s.step >= options.stop_after_steps);
+      // A checkpoint holds the particles at one time: a stop waits for the levels' steps to
+      // end where they would anyway, so the resumed run is bitwise the uninterrupted one.
+      if (!synced) continue;
       if (ctx.checkpoint.due(s.time, eps) || stop) {
         ctx.checkpoint.advance(s.time, eps);
         checkpoint();

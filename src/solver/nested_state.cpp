@@ -13,12 +13,12 @@
 #include "solver/field_windows.hpp"
 #include "solver/grid_update.hpp"
 #include "solver/time_step.hpp"
+#include "solver/nested_phases.hpp"
 #include "solver/transfer.hpp"
 
 namespace rupture {
+using namespace detail;
 namespace {
-
-using NodalArray = std::vector<double> GridFields::*;
 
 // The velocity conditions of the domain edges this level reaches (its outer sides), on the
 // level's lattice line of the edge.
@@ -59,84 +59,6 @@ void follow_edges(State& s, const std::vector<int>& base) {
     s.bc_lines[k] = line;
   }
   if (changed) s.bc_nodes = resolve_nodes(s.boundary, s.grid, s.fields.num_fields, s.bc_lines);
-}
-
-// Fields are whole-lattice on every level: element of (field f, node n) is start[f] + n.
-// One column per (field, array) of `arrays`: column c's array on level l starts at
-// base[c * levels + l]. The transitions treat all columns in one pass, so each term's indices
-// are read once for all of them.
-constexpr std::size_t kMaxColumns = 16;
-std::size_t column_bases(NestedState& n, std::initializer_list<NodalArray> arrays,
-                         std::vector<double*>& base) {
-  const std::size_t levels = n.levels.size(), fields = std::size_t(n.levels[0].fields.num_fields);
-  const std::size_t columns = fields * arrays.size();
-  if (columns > kMaxColumns)
-    throw std::logic_error("nested transitions: more than kMaxColumns field arrays in one pass");
-  base.resize(columns * levels);
-  std::size_t c = 0;
-  for (std::size_t f = 0; f < fields; ++f)
-    for (NodalArray a : arrays) {
-      for (std::size_t l = 0; l < levels; ++l) {
-        GridFields& G = n.levels[l].fields;
-        base[c * levels + l] = (G.*a).data() + G.start[f];
-      }
-      ++c;
-    }
-  return columns;
-}
-
-// grid/nested.hpp's condense over the levels' arrays: every DOF adds c * (slave's value) of
-// the slaves it serves, in slave order (the transposed terms: NestedState::dof_start), so the
-// threads split the DOFs without sharing one and the sums are those of a loop over the
-// slaves; then the slaves are cleared.
-void condense_fields(NestedState& n, std::initializer_list<NodalArray> arrays) {
-  thread_local std::vector<double*> base_store;
-  const std::size_t columns = column_bases(n, arrays, base_store), levels = n.levels.size();
-  double* const* base = base_store.data();
-  const long dofs = long(n.dof_level.size()), slaves = long(n.active_slaves.size());
-#pragma omp parallel
-  {
-#pragma omp for schedule(static)
-    for (long d = 0; d < dofs; ++d) {
-      const std::size_t dl = n.dof_level[std::size_t(d)], dn = n.dof_node[std::size_t(d)];
-      double v[kMaxColumns];
-      for (std::size_t c = 0; c < columns; ++c) v[c] = base[c * levels + dl][dn];
-      for (std::uint32_t j = n.dof_start[std::size_t(d)]; j < n.dof_start[std::size_t(d) + 1]; ++j) {
-        const std::uint32_t k = n.dof_slave[j];
-        const std::size_t sl = n.slave_level[k], sn = n.slave_node[k];
-        const double coef = n.dof_c[j];
-        for (std::size_t c = 0; c < columns; ++c) v[c] += coef * base[c * levels + sl][sn];
-      }
-      for (std::size_t c = 0; c < columns; ++c) base[c * levels + dl][dn] = v[c];
-    }
-#pragma omp for schedule(static)
-    for (long i = 0; i < slaves; ++i) {
-      const std::uint32_t k = n.active_slaves[std::size_t(i)];
-      const std::size_t sl = n.slave_level[k], sn = n.slave_node[k];
-      for (std::size_t c = 0; c < columns; ++c) base[c * levels + sl][sn] = 0.0;
-    }
-  }
-}
-
-// grid/nested.hpp's distribute: every slave from its DOFs (slaves only read DOFs: no race).
-void distribute_fields(NestedState& n, std::initializer_list<NodalArray> arrays) {
-  const NestedGrid& g = n.grid;
-  thread_local std::vector<double*> base_store;
-  const std::size_t columns = column_bases(n, arrays, base_store), levels = n.levels.size();
-  double* const* base = base_store.data();
-  const long slaves = long(n.active_slaves.size());
-#pragma omp parallel for schedule(static)
-  for (long i = 0; i < slaves; ++i) {
-    const std::uint32_t k = n.active_slaves[std::size_t(i)];
-    double v[kMaxColumns] = {};
-    for (std::uint32_t t = g.term_start[k]; t < g.term_start[k + 1]; ++t) {
-      const std::size_t tl = n.term_level[t], tn = n.term_node[t];
-      const double coef = g.terms[t].c;
-      for (std::size_t c = 0; c < columns; ++c) v[c] += coef * base[c * levels + tl][tn];
-    }
-    const std::size_t sl = n.slave_level[k], sn = n.slave_node[k];
-    for (std::size_t c = 0; c < columns; ++c) base[c * levels + sl][sn] = v[c];
-  }
 }
 
 // The level that holds interface `ci` whole: every face node's bilinear stencil (its cell's
@@ -216,99 +138,6 @@ void migrate(NestedState& n) {
   }
 }
 
-template <class Phase>
-void each_level(NestedState& n, Phase&& phase) {
-  for (State& s : n.levels) phase(s);
-}
-
-// One dt for every level: the smallest of their limits (SPEC E6).
-void common_time_step(NestedState& n) {
-  double dt = INFINITY;
-  each_level(n, [&](State& s) {
-    choose_time_step(s);
-    dt = std::min(dt, s.dt);
-  });
-  each_level(n, [&](State& s) { s.dt = dt; });
-  n.dt = dt;
-}
-
-// After the condensed scatter: bonded stretches tied (on every level they cross), the face
-// stencils of each interface (on its level) with this step's masses, then one dt (E6).
-void tie_stencils_and_time_step(NestedState& n) {
-  each_level(n, [](State& s) {
-    tie_bonded_nodes(s, TieWhat::mass_momentum);
-    if (!s.interfaces.empty()) update_face_stencils(s);
-  });
-  common_time_step(n);
-}
-
-void cohesive_forces_and_ties(NestedState& n) {
-  each_level(n, [](State& s) {
-    if (!s.interfaces.empty()) add_cohesive_forces(s);  // E7-E9
-    tie_bonded_nodes(s, TieWhat::force);
-  });
-}
-
-// Every level's State, for the scatters that run over all levels at once.
-std::vector<State*>& level_pointers(NestedState& n) {
-  thread_local std::vector<State*> p;
-  p.clear();
-  for (State& s : n.levels) p.push_back(&s);
-  return p;
-}
-
-// MUSL (solver/step.cpp's step_musl), level by level, joined at the transitions.
-void step_musl(NestedState& n) {
-  std::vector<State*>& all = level_pointers(n);
-  particles_to_grid(all.data(), all.size(), true);  // E4
-  condense_fields(n, {&GridFields::mass, &GridFields::mom_x, &GridFields::mom_y,
-                      &GridFields::force_x, &GridFields::force_y});
-  tie_stencils_and_time_step(n);                                 // bonded, faces, dt (E6)
-  cohesive_forces_and_ties(n);                                   // E7-E9, bonded
-  each_level(n, [](State& s) { integrate_grid(s); });            // E4 + E2 velocity BCs
-  distribute_fields(n, {&GridFields::vel_x, &GridFields::vel_y, &GridFields::dvel_x, &GridFields::dvel_y});
-  update_particle_velocity_and_remap(all.data(), all.size());
-  condense_fields(n, {&GridFields::remap_x, &GridFields::remap_y});
-  each_level(n, [](State& s) { tie_bonded_nodes(s, TieWhat::remapped_momentum); });
-  each_level(n, [](State& s) { remapped_grid_velocity(s); });    // + E2 at t^{n+1}
-  distribute_fields(n, {&GridFields::remap_x, &GridFields::remap_y});
-  each_level(n, [](State& s) {
-    grid_to_particles(s, s.fields.remap_x.data(), s.fields.remap_y.data(), G2PMode::stress_and_move);  // E5
-  });
-}
-
-void step_usl(NestedState& n) {
-  std::vector<State*>& all = level_pointers(n);
-  particles_to_grid(all.data(), all.size(), true);
-  condense_fields(n, {&GridFields::mass, &GridFields::mom_x, &GridFields::mom_y,
-                      &GridFields::force_x, &GridFields::force_y});
-  tie_stencils_and_time_step(n);
-  cohesive_forces_and_ties(n);
-  each_level(n, [](State& s) { integrate_grid(s); });
-  distribute_fields(n, {&GridFields::vel_x, &GridFields::vel_y, &GridFields::dvel_x, &GridFields::dvel_y});
-  each_level(n, [](State& s) {
-    grid_to_particles(s, s.fields.vel_x.data(), s.fields.vel_y.data(), G2PMode::stress_velocity_and_move);
-  });
-}
-
-void step_usf(NestedState& n) {
-  each_level(n, [](State& s) { particles_to_grid(s, false); });
-  condense_fields(n, {&GridFields::mass, &GridFields::mom_x, &GridFields::mom_y});
-  common_time_step(n);
-  each_level(n, [](State& s) { grid_velocity_from_momentum(s, s.time); });
-  distribute_fields(n, {&GridFields::remap_x, &GridFields::remap_y});
-  each_level(n, [](State& s) {
-    grid_to_particles(s, s.fields.remap_x.data(), s.fields.remap_y.data(), G2PMode::stress_only);
-    particles_to_grid_force(s);
-  });
-  condense_fields(n, {&GridFields::force_x, &GridFields::force_y});
-  each_level(n, [](State& s) { integrate_grid(s); });
-  distribute_fields(n, {&GridFields::vel_x, &GridFields::vel_y, &GridFields::dvel_x, &GridFields::dvel_y});
-  each_level(n, [](State& s) {
-    grid_to_particles(s, s.fields.vel_x.data(), s.fields.vel_y.data(), G2PMode::velocity_and_move);
-  });
-}
-
 }  // namespace
 
 std::size_t NestedState::num_particles() const {
@@ -316,6 +145,12 @@ std::size_t NestedState::num_particles() const {
   for (const State& s : levels) n += s.particles.size();
   return n;
 }
+
+bool NestedState::subcycled() const {
+  return std::any_of(period.begin(), period.end(), [](int p) { return p > 1; });
+}
+
+bool synchronized(const State& s) { return !s.nested || s.nested->synchronized(); }
 
 double NestedState::external_work() const {
   double w = 0.0;
@@ -354,6 +189,7 @@ State make_nested_run_state(const Case& c) {
 void step_nested_run(State& s) {
   NestedState& n = *s.nested;
   for (State& l : n.levels) l.dt_cap = s.dt_cap, l.forced_dt = s.forced_dt;
+  n.sync_by = s.sync_by;
   const int il = n.interface_level;
   State* owner = il >= 0 ? &n.levels[std::size_t(il)] : nullptr;
   if (owner) owner->interfaces.swap(s.interfaces);  // lent for the step
@@ -386,6 +222,8 @@ NestedState make_nested_state(const Case& c) {
   };
   if (!c.interfaces.empty() && c.solver.scheme == Scheme::USF)
     throw unsupported("solver.scheme = \"USF\" with interfaces");
+  if (c.time.subcycling == Subcycling::levels && c.solver.scheme == Scheme::USF)
+    throw unsupported("time.subcycling = \"levels\" with solver.scheme = \"USF\" (MUSL or USL)");
   if (!c.absorbing_edges.empty()) throw unsupported("[absorbing]");
   if (!c.loads.empty()) throw unsupported("[loads]");
   if (!c.grid.refined()) throw unsupported("a grid without [grid.refine] boxes");
@@ -403,6 +241,11 @@ NestedState make_nested_state(const Case& c) {
                                         [&g, l](double x, double y) { return g.level_of(x, y) == l; }));
     State& s = n.levels.back();
     s.nested_level = true;
+    // The case's step limits are the finest cell's (solver/summary.cpp); a level's scale with
+    // its cells: the CFL step with h, the bulk eigenvalue bound with 1 / h^2.
+    const double scale = L.x.h / c.grid.cell_size;
+    s.limits.cfl_dt *= scale;
+    s.limits.bulk_eigen_bound /= scale * scale;
     s.whole_grid_fields = true;
     fit_field_windows(s);
     set_level_boundary(s, c, L, n.base_lines[std::size_t(l)]);
@@ -470,6 +313,15 @@ NestedState make_nested_state(const Case& c) {
     n.dof_c[j] = n.grid.terms[t].c;
   }
   n.dof_start.push_back(std::uint32_t(na));
+  // Per-level time steps: level l at its own CFL step, period 2^(K - l) finest steps, K the
+  // interface's level (its cohesive bound is recomputed every finest step: it and the finer
+  // levels step every h) or, without interfaces, the finest.
+  int reference = levels - 1;
+  for (int l = 0; l < levels; ++l)
+    if (!n.levels[std::size_t(l)].interfaces.empty()) reference = l;
+  n.period.assign(std::size_t(levels), 1);
+  if (c.time.subcycling == Subcycling::levels)
+    for (int l = 0; l < reference; ++l) n.period[std::size_t(l)] = 1 << (reference - l);
   n.dt = n.levels[0].dt;
   return n;
 }
@@ -482,38 +334,48 @@ void step(NestedState& n) {
   // the stencil reaches 1.5) or inside a finer one (its nodes there are covered slaves): the
   // GIMP contract holds either way (tests/test_nested_grid.cpp), and each migration costs a
   // re-sort of the levels it touches.
+  // With per-level time steps (solver/nested_subcycle.cpp) particles change level only when
+  // every level begins a step, and sooner (kSubcycleDrift): a level's step may not end before.
+  const bool subcycled = n.subcycled();
+  const bool all_begin = !subcycled || n.substep == 0;
   double drift = 0.0;
   for (const State& s : n.levels) drift = std::max(drift, s.window_drift);
-  if (n.step == 0 || drift >= kMigrateDrift * n.levels.back().grid.x.h) {
+  const double due = (subcycled ? kSubcycleDrift : 1.0) * kMigrateDrift * n.levels.back().grid.x.h;
+  if (all_begin && (n.step == 0 || drift >= due)) {
     migrate(n);
     for (State& s : n.levels) s.window_drift = 0.0;
   }
   for (std::size_t l = 0; l < n.levels.size(); ++l) {
     State& s = n.levels[l];
-    build_scatter_plan(s);
-    fit_field_windows(s);
+    if (!subcycled || n.substep % n.period[l] == 0) {  // the particles have moved since
+      build_scatter_plan(s);
+      fit_field_windows(s);
+    }
     follow_edges(s, n.base_lines[l]);
   }
-  switch (n.levels[0].scheme) {
-    case Scheme::MUSL:
-      step_musl(n);
-      break;
-    case Scheme::USL:
-      step_usl(n);
-      break;
-    case Scheme::USF:
-      step_usf(n);
-      break;
-  }
-  each_level(n, [&n](State& s) {
+  if (subcycled)
+    step_subcycled(n);
+  else
+    switch (n.levels[0].scheme) {
+      case Scheme::MUSL:
+        step_musl(n);
+        break;
+      case Scheme::USL:
+        step_usl(n);
+        break;
+      case Scheme::USF:
+        step_usf(n);
+        break;
+    }
+  for (State& s : n.levels) {
     s.time += s.dt;
     ++s.step;
     // Face nodes follow their fields (solver/step.cpp): MUSL's re-mapped velocity, USL's t^{n+1}.
-    if (s.interfaces.empty()) return;
+    if (s.interfaces.empty()) continue;
     const bool musl = n.levels[0].scheme == Scheme::MUSL;
     advance_interfaces(s, musl ? s.fields.remap_x.data() : s.fields.vel_x.data(),
                        musl ? s.fields.remap_y.data() : s.fields.vel_y.data());
-  });
+  }
   n.time += n.dt;
   ++n.step;
 }

@@ -5,7 +5,8 @@
 // single-grid step (solver/step.cpp, SPEC E4-E5) run level by level, with the levels joined
 // at the transition nodes: after every scatter the slaves' mass, momentum and force are
 // condensed onto their DOFs, before every gather the slaves take their DOFs' velocities.
-// Every level steps with the same dt (the smallest of the levels' limits). Particles whose
+// Every level steps with the same dt (the smallest of the levels' limits), or, with
+// time.subcycling = "levels", each at its own (solver/nested_subcycle.cpp). Particles whose
 // centre crosses into another level's region move there at the start of a step (batched:
 // kMigrateDrift), keeping their size (uGIMP); one from two or more levels coarser would break
 // the GIMP contract and stops the run with a diagnosis.
@@ -14,6 +15,7 @@
 // them): absorbing edges, [loads], interfaces on two levels, USF with interfaces. The run's
 // State wraps the levels (make_nested_run_state), so the driver and writers run unchanged.
 #pragma once
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -29,6 +31,19 @@ inline constexpr double kMigrateDrift = 0.25;
 // Covered nodes this many cells of their level inside the finer level's rectangle are never
 // reached by their level's particles (NestedState::active_slaves).
 inline constexpr int kInactiveDepth = 3;
+// With per-level time steps particles change level only when every level ends its step
+// together; every level ends its step once any may have drifted this fraction of
+// kMigrateDrift (a coarse level's step moves its particles by up to its period's worth).
+inline constexpr double kSubcycleDrift = 0.5;
+
+// A level's scatter held while its step spans several finest steps, and the velocity
+// increments summed over it (per field node of its lattice, as GridFields). Scratch: a step
+// that spans several finest steps never spans an output or checkpoint time.
+struct LevelHold {
+  std::vector<double> mass, mom_x, mom_y, force_x, force_y;  // kg, kg m/s, N
+  std::vector<double> inc_x, inc_y;                          // m/s
+  double span = 0.0;                                         // the step so far, s
+};
 
 struct NestedState {
   NestedGrid grid;
@@ -55,6 +70,17 @@ struct NestedState {
   long step = 0;
   long migrations = 0;  // particles moved between levels so far
   int interface_level = -1;  // the level holding every interface (-1: none)
+  // Per-level time steps (time.subcycling = "levels"): level l takes one step every period[l]
+  // finest steps (all 1 without them). substep: finest steps since every level last ended a
+  // step together (0: all at one time; checkpoints and outputs only then).
+  std::vector<int> period;
+  int substep = 0;
+  double sync_by = INFINITY;  // every level ends its step at the first finest step ending at or
+                              // after this time (the driver's next output), s
+  std::vector<LevelHold> hold;  // per level
+
+  bool subcycled() const;
+  bool synchronized() const { return substep == 0; }
 
   std::size_t num_particles() const;
   double external_work() const;  // J per unit thickness, summed over the levels
@@ -77,6 +103,9 @@ void step(NestedState& n);
 State make_nested_run_state(const Case& c);
 // One step of s.nested (step(State&) calls it), then the clock, energies and limits of s.
 void step_nested_run(State& s);
+// Whether every particle of the run is at the run's time (always, but between the finest steps
+// of a coarser level's step with per-level time steps): outputs and checkpoints wait for it.
+bool synchronized(const State& s);
 // Merges every level's particles into s.particles, once per step (a no-op for other runs).
 void gather_particles(State& s);
 

@@ -110,6 +110,8 @@ struct State {
   StepLimits limits;
   double dt = 0.0;       // this step's, set by choose_time_step (solver/time_step.hpp), s
   double dt_cap = INFINITY;     // no step goes past this much time (the driver: time to the end), s
+  double sync_by = INFINITY;    // nested per-level steps: every level ends its step once the time
+                                // reaches this (the driver: its next output), s
   double forced_dt = 0.0;       // > 0: a fixed step that bypasses E6 (tests of instability only), s
   double cohesive_safety = 0.2; // dt <= safety x the cohesive limit (time.cohesive_safety)
   double time = 0.0;     // s

@@ -1,0 +1,38 @@
+// rupture/solver/nested_phases.hpp
+// The phases of the time step on nested levels (solver/nested_state.hpp), shared by the
+// step with one dt for every level (solver/nested_step.cpp) and the step with a dt per level
+// (solver/nested_subcycle.cpp). Internal to solver/.
+#pragma once
+#include <initializer_list>
+#include <vector>
+
+#include "solver/nested_state.hpp"
+
+namespace rupture::detail {
+
+using NodalArray = std::vector<double> GridFields::*;
+
+// grid/nested.hpp's condense over the levels' arrays (every field): the active slaves' values
+// added to their DOFs times the coefficients, then cleared. Extensive values only.
+void condense_fields(NestedState& n, std::initializer_list<NodalArray> arrays);
+// grid/nested.hpp's distribute: every active slave takes the combination of its DOFs.
+void distribute_fields(NestedState& n, std::initializer_list<NodalArray> arrays);
+
+// Every level's State, for the scatters that run over all levels at once.
+std::vector<State*>& level_pointers(NestedState& n);
+
+// After the condensed scatter: bonded stretches tied (on every level they cross) and the face
+// stencils of each interface (on its level) with this step's masses.
+void tie_and_face_stencils(NestedState& n);
+// E7-E9 on the interface's level, then the bonded ties of the forces on every level.
+void cohesive_forces_and_ties(NestedState& n);
+
+// One step with one dt (the smallest of the levels' limits) for every level.
+void step_musl(NestedState& n);
+void step_usl(NestedState& n);
+void step_usf(NestedState& n);
+// One finest step of the levels stepping at their own dt (time.subcycling = "levels"): MUSL
+// and USL.
+void step_subcycled(NestedState& n);
+
+}  // namespace rupture::detail

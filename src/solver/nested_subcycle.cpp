@@ -1,0 +1,176 @@
+// rupture/solver/nested_subcycle.cpp
+// Per-level time steps on nested levels (time.subcycling = "levels", docs/performance.md):
+// level l takes one step of period[l] finest steps h (its own CFL step: its cells are
+// period[l] times the finest), the interface's level and the finer ones every h.
+//
+// The grid takes every finest step; a level whose step spans several holds its particles'
+// scatter from the start of its step (mass, momentum, internal force: the particles have not
+// moved, their stress is that of the step's start) and adds it to the other levels' at each
+// finest step. Each finest step, after the condensed nodal update:
+//   - the held momentum takes its mass times the step's velocity increment, and the
+//     increments are summed per node over the level's step;
+//   - a level whose step ends gathers the summed increments (FLIP, SPEC E5), re-maps, and
+//     updates stress and position over its whole step (MUSL: with the re-mapped velocity; a
+//     held level's re-map is its held momentum).
+// Each finest step the condensed nodal momentum changes by h times the nodal force, and that
+// change goes, node by node, to the levels in proportion to the mass each put there (held or
+// fresh), which is exactly what their particles receive when their step ends: total momentum
+// is kept to round-off, as in one step per level. A level's step is never longer than its CFL
+// step (h is the smallest of level l's limit / period[l]); every level ends together at the
+// run's output times and before particles are due to change level (NestedState::sync_by,
+// migrate), so outputs, checkpoints and migrations see every particle at one time.
+#include <algorithm>
+#include <cmath>
+
+#include "solver/cohesive_step.hpp"
+#include "solver/grid_update.hpp"
+#include "solver/nested_phases.hpp"
+#include "solver/time_step.hpp"
+#include "solver/transfer.hpp"
+
+namespace rupture::detail {
+namespace {
+
+// Elementwise loops over whole-lattice arrays, split over the threads.
+template <class Body>
+void parallel_nodes(std::size_t n, Body&& body) {
+  const long count = long(n);
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < count; ++i) body(std::size_t(i));
+}
+
+// The held scatter of a level: saved when its step begins, put back at every finest step after.
+void hold_scatter(GridFields& G, LevelHold& H) {
+  const std::size_t n = G.mass.size();
+  for (std::vector<double>* a : {&H.mass, &H.mom_x, &H.mom_y, &H.force_x, &H.force_y, &H.inc_x, &H.inc_y})
+    a->resize(n);
+  parallel_nodes(n, [&](std::size_t i) {
+    H.mass[i] = G.mass[i], H.mom_x[i] = G.mom_x[i], H.mom_y[i] = G.mom_y[i];
+    H.force_x[i] = G.force_x[i], H.force_y[i] = G.force_y[i];
+  });
+}
+void restore_scatter(GridFields& G, const LevelHold& H) {
+  parallel_nodes(G.mass.size(), [&](std::size_t i) {
+    G.mass[i] = H.mass[i], G.mom_x[i] = H.mom_x[i], G.mom_y[i] = H.mom_y[i];
+    G.force_x[i] = H.force_x[i], G.force_y[i] = H.force_y[i];
+  });
+}
+
+// After the nodal update (velocity increments distributed to the slaves): the level's summed
+// increments, and, for a level whose step goes on, its held momentum advanced by its own mass
+// times the increment (what its particles will receive: the FLIP gather of the sums).
+void advance_hold(const GridFields& G, LevelHold& H, bool first, bool goes_on) {
+  parallel_nodes(G.mass.size(), [&](std::size_t i) {
+    const double dx = G.dvel_x[i], dy = G.dvel_y[i];
+    H.inc_x[i] = first ? dx : H.inc_x[i] + dx;
+    H.inc_y[i] = first ? dy : H.inc_y[i] + dy;
+    if (goes_on) {
+      H.mom_x[i] += H.mass[i] * dx;
+      H.mom_y[i] += H.mass[i] * dy;
+    }
+  });
+}
+
+// h: the smallest of every level's stability limit (SPEC E6: its CFL step, and on the
+// interface's level the cohesive bound) over its period, within the time left to the end.
+void subcycled_time_step(NestedState& n) {
+  double h = INFINITY;
+  const double cap = n.levels[0].dt_cap, forced = n.levels[0].forced_dt;
+  for (std::size_t l = 0; l < n.levels.size(); ++l) {
+    State& s = n.levels[l];
+    s.dt_cap = INFINITY;  // the cap applies to h, not to the level's step
+    choose_time_step(s);
+    s.dt_cap = cap;
+    h = std::min(h, s.dt / double(n.period[l]));
+  }
+  if (forced > 0.0) h = forced;
+  h = std::min(h, cap);
+  for (State& s : n.levels) s.dt = h;
+  n.dt = h;
+}
+
+}  // namespace
+
+void step_subcycled(NestedState& n) {
+  const std::size_t levels = n.levels.size();
+  const bool musl = n.levels[0].scheme == Scheme::MUSL;
+  n.hold.resize(levels);
+  thread_local std::vector<State*> starting, ending;
+  thread_local std::vector<unsigned char> starts, ends;
+  starts.assign(levels, 0), ends.assign(levels, 0);
+  starting.clear(), ending.clear();
+  for (std::size_t l = 0; l < levels; ++l)
+    if (n.substep % n.period[l] == 0) starts[l] = 1, starting.push_back(&n.levels[l]);
+
+  particles_to_grid(starting.data(), starting.size(), true);  // E4: the levels beginning a step
+  for (std::size_t l = 0; l < levels; ++l) {
+    if (n.period[l] == 1) continue;
+    if (starts[l])
+      hold_scatter(n.levels[l].fields, n.hold[l]);
+    else
+      restore_scatter(n.levels[l].fields, n.hold[l]);
+  }
+  condense_fields(n, {&GridFields::mass, &GridFields::mom_x, &GridFields::mom_y,
+                      &GridFields::force_x, &GridFields::force_y});
+  tie_and_face_stencils(n);                                  // bonded, faces
+  subcycled_time_step(n);                                    // h (E6)
+  cohesive_forces_and_ties(n);                               // E7-E9, bonded
+  for (State& s : n.levels) integrate_grid(s);               // E4 + E2 velocity BCs
+  distribute_fields(n, {&GridFields::vel_x, &GridFields::vel_y, &GridFields::dvel_x, &GridFields::dvel_y});
+
+  // Which levels end their step now: their period is over, or every level (the driver's next
+  // output or the end of the run, particles due to change level).
+  const double h = n.dt;
+  double drift = 0.0;
+  for (const State& s : n.levels) drift = std::max(drift, s.window_drift);
+  int longest = 1;
+  for (int p : n.period) longest = std::max(longest, p);
+  const bool all = n.time + h >= n.sync_by || (n.substep + 1) % longest == 0 ||
+                   drift >= kSubcycleDrift * kMigrateDrift * n.levels.back().grid.x.h;
+  for (std::size_t l = 0; l < levels; ++l) {
+    ends[l] = all || (n.substep + 1) % n.period[l] == 0;
+    if (ends[l]) ending.push_back(&n.levels[l]);
+    if (n.period[l] == 1) continue;
+    LevelHold& H = n.hold[l];
+    H.span = starts[l] ? h : H.span + h;
+    advance_hold(n.levels[l].fields, H, starts[l] != 0, ends[l] == 0);
+    if (ends[l]) {  // the gathers read the increments of the whole step
+      n.levels[l].fields.dvel_x.swap(H.inc_x);
+      n.levels[l].fields.dvel_y.swap(H.inc_y);
+    }
+  }
+  // The step each ending level's particles take: its span (E5's stress increment and move).
+  const auto with_span = [&](std::size_t l, auto&& phase) {
+    State& s = n.levels[l];
+    s.dt = n.period[l] == 1 ? h : n.hold[l].span;
+    phase(s);
+    s.dt = h;
+  };
+  if (musl) {
+    update_particle_velocity_and_remap(ending.data(), ending.size());
+    for (std::size_t l = 0; l < levels; ++l) {
+      if (ends[l]) continue;  // a held level's re-mapped momentum is its held momentum
+      GridFields& G = n.levels[l].fields;
+      const LevelHold& H = n.hold[l];
+      parallel_nodes(G.mass.size(), [&](std::size_t i) { G.remap_x[i] = H.mom_x[i], G.remap_y[i] = H.mom_y[i]; });
+    }
+    condense_fields(n, {&GridFields::remap_x, &GridFields::remap_y});
+    for (State& s : n.levels) tie_bonded_nodes(s, TieWhat::remapped_momentum);
+    for (State& s : n.levels) remapped_grid_velocity(s);  // + E2 at t + h
+    distribute_fields(n, {&GridFields::remap_x, &GridFields::remap_y});
+    for (std::size_t l = 0; l < levels; ++l)
+      if (ends[l])
+        with_span(l, [](State& s) {
+          grid_to_particles(s, s.fields.remap_x.data(), s.fields.remap_y.data(), G2PMode::stress_and_move);  // E5
+        });
+  } else {
+    for (std::size_t l = 0; l < levels; ++l)
+      if (ends[l])
+        with_span(l, [](State& s) {
+          grid_to_particles(s, s.fields.vel_x.data(), s.fields.vel_y.data(), G2PMode::stress_velocity_and_move);
+        });
+  }
+  n.substep = all ? 0 : n.substep + 1;
+}
+
+}  // namespace rupture::detail
