@@ -320,8 +320,35 @@ NestedState make_nested_state(const Case& c) {
   for (int l = 0; l < levels; ++l)
     if (!n.levels[std::size_t(l)].interfaces.empty()) reference = l;
   n.period.assign(std::size_t(levels), 1);
-  if (c.time.subcycling == Subcycling::levels)
+  if (c.time.subcycling == Subcycling::levels) {
     for (int l = 0; l < reference; ++l) n.period[std::size_t(l)] = 1 << (reference - l);
+    // The finest level reaching each DOF through its lattice (the DOF's own, or an active
+    // slave's with a term on it), then the nodes of each level whose DOFs a finer one reaches.
+    const std::vector<std::size_t>& st = n.grid.level_start;
+    std::vector<std::uint8_t> reach(n.grid.num_nodes(), 0);
+    for (int l = 0; l < levels; ++l)
+      for (std::size_t g = st[std::size_t(l)]; g < st[std::size_t(l) + 1]; ++g) reach[g] = std::uint8_t(l);
+    for (const std::uint32_t k : n.active_slaves)
+      for (std::uint32_t t = n.grid.term_start[k]; t < n.grid.term_start[k + 1]; ++t)
+        reach[n.grid.terms[t].dof] = std::max(reach[n.grid.terms[t].dof], n.slave_level[k]);
+    n.mixed.resize(std::size_t(levels));
+    std::vector<long> slave_of(n.grid.num_nodes(), -1);
+    for (std::size_t k = 0; k < n.grid.slaves.size(); ++k) slave_of[n.grid.slaves[k]] = long(k);
+    for (int l = 0; l < levels; ++l) {
+      std::vector<unsigned char>& m = n.mixed[std::size_t(l)];
+      m.assign(st[std::size_t(l) + 1] - st[std::size_t(l)], 0);
+      for (std::size_t node = 0; node < m.size(); ++node) {
+        const std::size_t g = st[std::size_t(l)] + node;
+        if (slave_of[g] < 0) {
+          m[node] = reach[g] > l;
+          continue;
+        }
+        const std::uint32_t k = std::uint32_t(slave_of[g]);
+        for (std::uint32_t t = n.grid.term_start[k]; t < n.grid.term_start[k + 1]; ++t)
+          m[node] = m[node] || reach[n.grid.terms[t].dof] > l;
+      }
+    }
+  }
   n.dt = n.levels[0].dt;
   return n;
 }

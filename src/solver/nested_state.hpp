@@ -43,6 +43,9 @@ struct LevelHold {
   std::vector<double> mass, mom_x, mom_y, force_x, force_y;  // kg, kg m/s, N
   std::vector<double> inc_x, inc_y;                          // m/s
   double span = 0.0;                                         // the step so far, s
+  // The level's particles whose stencil reaches a node of NestedState::mixed (found when its
+  // step begins): their re-mapped momentum is needed while the step goes on.
+  std::vector<std::uint32_t> band;
 };
 
 struct NestedState {
@@ -78,6 +81,10 @@ struct NestedState {
   double sync_by = INFINITY;  // every level ends its step at the first finest step ending at or
                               // after this time (the driver's next output), s
   std::vector<LevelHold> hold;  // per level
+  // Per level, per lattice node: 1 where the node's DOFs are also reached through a finer
+  // level's lattice (its DOFs, or the terms of its active slaves): there a finer level's
+  // particles may read the re-mapped velocity while this level's step goes on.
+  std::vector<std::vector<unsigned char>> mixed;
 
   bool subcycled() const;
   bool synchronized() const { return substep == 0; }

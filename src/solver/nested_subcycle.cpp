@@ -21,10 +21,12 @@
 // migrate), so outputs, checkpoints and migrations see every particle at one time.
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 #include "solver/cohesive_step.hpp"
 #include "solver/grid_update.hpp"
 #include "solver/nested_phases.hpp"
+#include "solver/stencil_batch.hpp"
 #include "solver/time_step.hpp"
 #include "solver/transfer.hpp"
 
@@ -71,6 +73,68 @@ void advance_hold(const GridFields& G, LevelHold& H, bool first, bool goes_on) {
   });
 }
 
+// The level's particles whose stencil reaches a node of `mixed` (its step begins: they stay
+// where they are until it ends).
+void find_band(const State& s, const std::vector<unsigned char>& mixed, LevelHold& H) {
+  const Particles& P = s.particles;
+  const int nx = s.grid.nodes_x();
+  H.band.clear();
+  for (std::size_t p0 = 0; p0 < P.size(); p0 += std::size_t(kBatch)) {
+    const int n = int(std::min<std::size_t>(std::size_t(kBatch), P.size() - p0));
+    StencilBatch B;
+    batch_stencils(s, p0, n, B);
+    for (int k = 0; k < n; ++k) {
+      bool reaches = false;
+      for (int b = 0; b < 3; ++b)
+        for (int a = 0; a < 3; ++a)
+          reaches = reaches || mixed[std::size_t(B.first_y[k] + b) * std::size_t(nx) + std::size_t(B.first_x[k] + a)];
+      if (reaches) H.band.push_back(std::uint32_t(p0 + std::size_t(k)));
+    }
+  }
+}
+
+// The re-mapped momentum of a level whose step goes on, where finer levels' particles may read
+// it (SPEC E5's re-map with the velocity its particles would have now: v_p + sum S_ip inc_i;
+// the other particles reach no such node). The particles keep their velocity. Exact, where
+// the held momentum (v_p + inc_i lumped per node) is not: mixing the two at a node shared
+// with a level that re-maps its particles makes the coupled step unstable (a free vibration
+// across a transition grew 106 % in 20 000 steps; docs/performance.md).
+void band_remap(State& s, const LevelHold& H) {
+  GridFields& G = s.fields;
+  const Particles& P = s.particles;
+  std::fill(G.remap_x.begin(), G.remap_x.end(), 0.0);
+  std::fill(G.remap_y.begin(), G.remap_y.end(), 0.0);
+  alignas(64) double x[kBatch], y[kBatch], hx[kBatch], hy[kBatch];
+  StencilBatch B;
+  for (std::size_t j0 = 0; j0 < H.band.size(); j0 += std::size_t(kBatch)) {
+    const int n = int(std::min<std::size_t>(std::size_t(kBatch), H.band.size() - j0));
+    for (int k = 0; k < n; ++k) {
+      const std::size_t p = H.band[j0 + std::size_t(k)];
+      x[k] = P.x[p], y[k] = P.y[p], hx[k] = P.half_x[p], hy[k] = P.half_y[p];
+    }
+    axis_stencils(s.grid.x, x, hx, n, B.sx, B.dsx, B.first_x);
+    axis_stencils(s.grid.y, y, hy, n, B.sy, B.dsy, B.first_y);
+    for (int k = 0; k < n; ++k) {
+      const std::size_t p = H.band[j0 + std::size_t(k)];
+      const std::size_t base = G.index(P.field[p], B.first_x[k], B.first_y[k]), stride = G.stride(P.field[p]);
+      double vx = P.vx[p], vy = P.vy[p];
+      for (int b = 0; b < 3; ++b)
+        for (int a = 0; a < 3; ++a) {
+          const std::size_t i = base + std::size_t(b) * stride + std::size_t(a);
+          const double w = B.sx[a][k] * B.sy[b][k];
+          vx += w * H.inc_x[i], vy += w * H.inc_y[i];
+        }
+      const double m = P.mass[p];
+      for (int b = 0; b < 3; ++b)
+        for (int a = 0; a < 3; ++a) {
+          const std::size_t i = base + std::size_t(b) * stride + std::size_t(a);
+          const double w = m * B.sx[a][k] * B.sy[b][k];
+          G.remap_x[i] += w * vx, G.remap_y[i] += w * vy;
+        }
+    }
+  }
+}
+
 // h: the smallest of every level's stability limit (SPEC E6: its CFL step, and on the
 // interface's level the cohesive bound) over its period, within the time left to the end.
 void subcycled_time_step(NestedState& n) {
@@ -105,8 +169,10 @@ void step_subcycled(NestedState& n) {
   particles_to_grid(starting.data(), starting.size(), true);  // E4: the levels beginning a step
   for (std::size_t l = 0; l < levels; ++l) {
     if (n.period[l] == 1) continue;
-    if (starts[l])
+    if (starts[l]) {
       hold_scatter(n.levels[l].fields, n.hold[l]);
+      if (musl) find_band(n.levels[l], n.mixed[l], n.hold[l]);
+    }
     else
       restore_scatter(n.levels[l].fields, n.hold[l]);
   }
@@ -148,12 +214,8 @@ void step_subcycled(NestedState& n) {
   };
   if (musl) {
     update_particle_velocity_and_remap(ending.data(), ending.size());
-    for (std::size_t l = 0; l < levels; ++l) {
-      if (ends[l]) continue;  // a held level's re-mapped momentum is its held momentum
-      GridFields& G = n.levels[l].fields;
-      const LevelHold& H = n.hold[l];
-      parallel_nodes(G.mass.size(), [&](std::size_t i) { G.remap_x[i] = H.mom_x[i], G.remap_y[i] = H.mom_y[i]; });
-    }
+    for (std::size_t l = 0; l < levels; ++l)
+      if (!ends[l]) band_remap(n.levels[l], n.hold[l]);
     condense_fields(n, {&GridFields::remap_x, &GridFields::remap_y});
     for (State& s : n.levels) tie_bonded_nodes(s, TieWhat::remapped_momentum);
     for (State& s : n.levels) remapped_grid_velocity(s);  // + E2 at t + h

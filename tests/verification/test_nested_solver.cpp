@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <regex>
 #include <set>
 
 #include "core/errors.hpp"
@@ -37,7 +38,7 @@ double nested_energy(const NestedState& n) {
 }
 
 struct PulseRun {
-  std::vector<double> probe_a;
+  std::vector<double> probe_a, time;  // probe_a NaN where the levels are between steps
   double arrival_b = NAN, energy_error = 0.0;
   std::size_t particles = 0;
   long migrations = 0;
@@ -46,9 +47,13 @@ struct PulseRun {
 // The strip of test_refinement.cpp (60 mm, plateau 2 us between a rise and a fall of `rise`,
 // rollers on top and bottom) of height `height`, refined by `boxes` (level 2: 0.125 mm) on nested levels, or
 // uniform at 0.5 mm on the single grid at the same step.
-PulseRun pulse(double height, double rise, const std::vector<RefineLevel>& boxes) {
+// With per-level time steps (time.subcycling = "levels") a probe is read only when every level
+// has ended its step (NaN in between).
+PulseRun pulse(double height, double rise, const std::vector<RefineLevel>& boxes,
+               Subcycling subcycling = Subcycling::none, double uniform_cfl = 0.1) {
   const double end = 30e-6, v = 1.0;
   Case c = test::strip_1d(0.06, height, 0.5e-3, "x", v, end);
+  c.time.subcycling = subcycling;
   for (VelocityBC& bc : c.boundary)
     if (bc.name == "drive") bc.velocity = TimeFunction{TimeFunction::Kind::trapezoid, v, rise, 2e-6, rise};
   c.grid.cell_size = 0.125e-3;
@@ -59,13 +64,14 @@ PulseRun pulse(double height, double rise, const std::vector<RefineLevel>& boxes
   double prev_t = 0, prev_b = 0;
   const auto record = [&](double t, double a, double b, double energy, double work) {
     r.probe_a.push_back(a);
+    r.time.push_back(t);
     if (std::isnan(r.arrival_b) && std::fabs(b) >= 0.5 * amplitude)
       r.arrival_b = prev_t + (-0.5 * amplitude - prev_b) / (b - prev_b) * (t - prev_t);
     prev_t = t, prev_b = b;
     if (t > 2e-6 + 2 * rise) r.energy_error = std::max(r.energy_error, std::fabs(energy - work) / work);
   };
   if (boxes.empty()) {
-    c.time.cfl = 0.1;  // the nested run's step (its finest cells are 4x smaller)
+    c.time.cfl = uniform_cfl;  // 0.1: the nested run's finest step (its cells are 4x smaller)
     State s = make_state(c);
     r.particles = s.particles.size();
     while (s.time < end) {
@@ -78,8 +84,13 @@ PulseRun pulse(double height, double rise, const std::vector<RefineLevel>& boxes
   }
   NestedState n = make_nested_state(c);
   r.particles = n.num_particles();
-  while (n.time < end) {
+  while (n.time < end || !n.synchronized()) {
     step(n);
+    if (!n.synchronized()) {
+      r.probe_a.push_back(NAN);
+      r.time.push_back(n.time);
+      continue;
+    }
     record(n.time, nested_mean_sxx(n, 0.0095, 0.0105), nested_mean_sxx(n, 0.0495, 0.0505),
            nested_energy(n), n.external_work());
   }
@@ -87,23 +98,35 @@ PulseRun pulse(double height, double rise, const std::vector<RefineLevel>& boxes
   return r;
 }
 
-void check_pulse(const char* what, double height, double rise, const std::vector<RefineLevel>& boxes) {
-  const PulseRun nested = pulse(height, rise, boxes), plain = pulse(height, rise, {});
-  ASSERT_EQ(nested.probe_a.size(), plain.probe_a.size());
+void check_pulse(const char* what, double height, double rise, const std::vector<RefineLevel>& boxes,
+                 Subcycling subcycling = Subcycling::none) {
+  // With per-level steps the uniform 0.5 mm strip takes the coarse level's own step (CFL 0.4,
+  // four finest steps): the probe at 10 mm lies on the coarse level, and the comparison then
+  // measures the transitions, not the coarse level's longer step.
+  const double uniform_cfl = subcycling == Subcycling::levels ? 0.4 : 0.1;
+  const PulseRun nested = pulse(height, rise, boxes, subcycling), plain = pulse(height, rise, {}, Subcycling::none, uniform_cfl);
   const Case c = test::strip_1d(0.06, height, 0.5e-3, "x", 1.0, 1.0);
   const double cd = wave_speeds(c.materials[0], c.plane).dilatational;
   const double incident = c.materials[0].density * cd * 1.0;
-  const double dt = 0.4 * 0.125e-3 / cd;
+  const double dt = uniform_cfl * 0.5e-3 / cd;
   double reflected = 0, plateau = 0;
-  int in_plateau = 0;
+  int in_plateau = 0, compared = 0;
   // At x = 10 mm the plateau lasts from 3.9 us + rise to 5.9 us + rise and the tail has passed
   // by 5.9 us + 2 rise; what the transition at 20 mm sends back arrives from 11.8 us.
   const double arrive = 0.01 / cd;
-  for (std::size_t k = 0; k < nested.probe_a.size(); ++k) {
-    const double t = double(k + 1) * dt;
+  std::size_t j = 0;  // the nested sample at the uniform one's time
+  for (std::size_t k = 0; k < plain.probe_a.size(); ++k) {
+    const double t = plain.time[k];
     if (t > arrive + rise + 0.2e-6 && t < arrive + rise + 1.8e-6) plateau += plain.probe_a[k], ++in_plateau;
-    if (t > arrive + 2e-6 + 2 * rise + 0.5e-6) reflected = std::max(reflected, std::fabs(nested.probe_a[k] - plain.probe_a[k]));
+    while (j < nested.time.size() && nested.time[j] < t - 1e-3 * dt) ++j;
+    ASSERT_LT(j, nested.time.size());
+    ASSERT_NEAR(nested.time[j], t, 1e-3 * dt) << "the nested run has a sample at each uniform step";
+    if (std::isnan(nested.probe_a[j])) continue;
+    ++compared;
+    if (t > arrive + 2e-6 + 2 * rise + 0.5e-6)
+      reflected = std::max(reflected, std::fabs(nested.probe_a[j] - plain.probe_a[k]));
   }
+  EXPECT_EQ(compared, int(plain.probe_a.size())) << "the levels end together at every uniform step";
   plateau /= in_plateau;
   const double expected = 0.05 / cd + 0.5 * rise;
   std::printf("%s: %zu particles nested (%ld migrations), %zu uniform; plateau %.4g Pa (rho c_D V = "
@@ -115,7 +138,14 @@ void check_pulse(const char* what, double height, double rise, const std::vector
   EXPECT_NEAR(-plateau, incident, 0.05 * incident) << "the incident pulse itself";
   EXPECT_LT(reflected, 0.02 * incident);
   EXPECT_NEAR(nested.arrival_b, expected, 0.01 * expected);
-  EXPECT_LT(nested.energy_error, 0.01) << "energy balance through the nested levels";
+  if (subcycling == Subcycling::none) {
+    EXPECT_LT(nested.energy_error, 0.01) << "energy balance through the nested levels";
+  } else {
+    // MUSL's own energy error at the coarse level's step (CFL 0.4 on 0.5 mm cells: 1.3-1.7 %
+    // in the uniform strip) is the baseline; the transitions may add a quarter of a percent.
+    EXPECT_LT(plain.energy_error, 0.02);
+    EXPECT_LT(nested.energy_error, plain.energy_error + 0.0025) << "energy balance through the nested levels";
+  }
 }
 
 }  // namespace
@@ -132,6 +162,18 @@ TEST(NestedSolver, plane_wave_crosses_nested_levels_across_the_path) {
 TEST(NestedSolver, plane_wave_crosses_a_nested_band_with_hanging_nodes_along_it) {
   check_pulse("middle band", 0.004, 2e-6,
               {{"band", {0.02, 0.001}, {0.04, 0.003}, 1}, {"core", {0.024, 0.0015}, {0.036, 0.0025}, 2}});
+}
+
+// The same two checks with per-level time steps (solver/nested_subcycle.cpp): the coarse
+// 0.5 mm strip steps once every 4 finest steps, the 0.25 mm bands every 2.
+TEST(NestedSolver, per_level_steps_plane_wave_crosses_nested_levels_across_the_path) {
+  check_pulse("full-height box, per-level steps", 0.001, 1e-6, {{"fine", {0.02, 0.0}, {0.04, 0.001}, 2}},
+              Subcycling::levels);
+}
+TEST(NestedSolver, per_level_steps_plane_wave_crosses_a_nested_band_with_hanging_nodes) {
+  check_pulse("middle band, per-level steps", 0.004, 2e-6,
+              {{"band", {0.02, 0.001}, {0.04, 0.003}, 1}, {"core", {0.024, 0.0015}, {0.036, 0.0025}, 2}},
+              Subcycling::levels);
 }
 
 namespace {
@@ -179,18 +221,18 @@ std::size_t nonzero_inactive_slaves(const NestedState& n) {
   return bad;
 }
 
-}  // namespace
-
 // The block moves 2 mm in 50 us through a 0.5 mm box [6, 9] x [3, 7] mm: its coarse particles
 // enter the box, its fine ones leave it. The motion must stay a rigid translation (no strain,
 // every particle at 40 m/s) with mass and momentum kept to round-off.
-TEST(NestedSolver, free_block_translates_rigidly_through_transitions) {
-  NestedState n = make_nested_state(moving_block("[0.006, 0.003]", "[0.009, 0.007]", 1));
+void check_rigid_translation(Subcycling subcycling) {
+  Case c = moving_block("[0.006, 0.003]", "[0.009, 0.007]", 1);
+  c.time.subcycling = subcycling;
+  NestedState n = make_nested_state(c);
   double mass0 = 0, px0 = 0;
   std::size_t count0 = n.num_particles();
   for (const State& s : n.levels)
     for (std::size_t i = 0; i < s.particles.size(); ++i) mass0 += s.particles.mass[i], px0 += s.particles.mass[i] * s.particles.vx[i];
-  while (n.time < 50e-6) step(n);
+  while (n.time < 50e-6 || !n.synchronized()) step(n);
   double mass = 0, px = 0, py = 0, worst_v = 0, worst_s = 0;
   std::set<std::uint32_t> ids;
   for (const State& s : n.levels) {
@@ -214,6 +256,15 @@ TEST(NestedSolver, free_block_translates_rigidly_through_transitions) {
   EXPECT_LT(std::fabs(py), 1e-12 * px0);
   EXPECT_LT(worst_v, 1e-9);
   EXPECT_LT(worst_s, 1e-3);  // Pa, against a stress scale rho c_D v0 ~ 1e8 Pa
+}
+
+}  // namespace
+
+TEST(NestedSolver, free_block_translates_rigidly_through_transitions) {
+  check_rigid_translation(Subcycling::none);
+}
+TEST(NestedSolver, per_level_steps_free_block_translates_rigidly_through_transitions) {
+  check_rigid_translation(Subcycling::levels);
 }
 
 // Condense and distribute skip the covered nodes kInactiveDepth cells inside a finer box. The
@@ -284,6 +335,10 @@ cell_size = 0.25e-3
   EXPECT_FALSE(parse_case(base + boxes).grid.nested);
   const Case nested = parse_case(base + "refinement = \"nested\"\n" + boxes);
   EXPECT_TRUE(nested.grid.nested);
+  Case usf = nested;
+  usf.solver.scheme = Scheme::USF;
+  usf.time.subcycling = Subcycling::levels;
+  EXPECT_THROW(make_nested_state(usf), InputError) << "per-level time steps: MUSL or USL";
   // make_state gives the nested run: every level's particles merged, the levels stepping.
   State s = make_state(nested);
   ASSERT_TRUE(s.nested);
@@ -295,7 +350,13 @@ cell_size = 0.25e-3
   for (const auto& [text, words] :
        std::vector<std::pair<std::string, std::vector<std::string>>>{
            {base + "refinement = \"nested\"\n", {"grid.refinement", "nested", "needs grid.coarse_cell_size"}},
-           {base + "refinement = \"octree\"\n" + boxes, {"grid.refinement", "octree", "graded", "nested"}}}) {
+           {base + "refinement = \"octree\"\n" + boxes, {"grid.refinement", "octree", "graded", "nested"}},
+           // per-level time steps step nested levels; "none" and "levels" only
+           {std::regex_replace(base, std::regex("end = 1e-6"), "end = 1e-6\nsubcycling = \"levels\"") + boxes,
+            {"time.subcycling", "levels", "nested"}},
+           {std::regex_replace(base, std::regex("end = 1e-6"), "end = 1e-6\nsubcycling = \"always\"") +
+                "refinement = \"nested\"\n" + boxes,
+            {"time.subcycling", "always", "none", "levels"}}}) {
     try {
       parse_case(text);
       ADD_FAILURE() << "no error for " << text;
@@ -314,7 +375,7 @@ void check_nested_checkpoint(const Case& c, int before, int after, bool expect_m
   RunContext a;
   a.s = make_state(c);
   ASSERT_TRUE(a.s.nested);
-  for (int k = 0; k < before; ++k) step(a.s);
+  for (int k = 0; k < before || !synchronized(a.s); ++k) step(a.s);  // a checkpoint's time
   const long moved = a.s.nested->migrations;
   const std::string bytes = checkpoint_bytes(source, a);
   RunContext b;
@@ -354,4 +415,110 @@ TEST(NestedSolver, checkpoint_round_trip_and_continuation_are_bitwise) {
                                "bodies.lower.min=[0.0,-0.06]", "bodies.lower.max=[0.075,0.0]",
                                "interface.weak_plane.bonded_to=0.075", "grid.refinement=\"nested\""});
   check_nested_checkpoint(crop, 15, 10, false);
+  block.time.subcycling = Subcycling::levels;  // per-level time steps: at a step all levels end
+  check_nested_checkpoint(block, 301, 301, true);
+}
+
+namespace {
+
+// One body of two blocks in one velocity field, [2, 6] and [6, 14] x [2, 8] mm, moving against
+// each other along x with zero total momentum and angular momentum (20 and -10 m/s), the right
+// one prestressed: waves run through the 0.5 mm box [6, 9] x [3, 7] mm and its transitions for
+// as long as the run lasts (a free body: nothing leaves, nothing is added).
+Case colliding_blocks(Subcycling subcycling) {
+  Case c = parse_case(std::string(test::kHomaliteToml) + R"(
+[grid]
+min = [0.0, 0.0]
+max = [0.02, 0.01]
+cell_size = 0.5e-3
+coarse_cell_size = 1e-3
+margin = 0.0
+refinement = "nested"
+[grid.refine.fine]
+min = [0.006, 0.003]
+max = [0.009, 0.007]
+level = 1
+[bodies.left]
+material = "homalite"
+min = [0.002, 0.002]
+max = [0.006, 0.008]
+velocity = [20.0, 0.0]
+field = "solid"
+[bodies.right]
+material = "homalite"
+min = [0.006, 0.002]
+max = [0.014, 0.008]
+velocity = [-10.0, 0.0]
+stress = [2e6, -1e6, 5e5]
+field = "solid"
+[time]
+end = 1.0
+)");
+  c.time.subcycling = subcycling;
+  return c;
+}
+
+struct Totals {
+  double px = 0, py = 0, scale = 0, energy = 0;
+};
+Totals totals(const NestedState& n) {
+  Totals t;
+  for (const State& s : n.levels) {
+    const Particles& P = s.particles;
+    for (std::size_t i = 0; i < P.size(); ++i) {
+      t.px += P.mass[i] * P.vx[i], t.py += P.mass[i] * P.vy[i];
+      t.scale += P.mass[i] * std::hypot(P.vx[i], P.vy[i]);
+    }
+    t.energy += kinetic_energy(P) + strain_energy(P);
+  }
+  return t;
+}
+
+// Total momentum (zero) after every step where the levels end together, relative to sum m |v|
+// at the start, and the energy relative to the start (no external work): its extremes, and its
+// largest value over the first and the last tenth of the run.
+struct FreeRun {
+  double momentum = 0, energy_lo = 0, energy_hi = 0, early_hi = -INFINITY, late_hi = -INFINITY;
+  long steps = 0;
+};
+FreeRun free_run(Subcycling subcycling, long steps) {
+  NestedState n = make_nested_state(colliding_blocks(subcycling));
+  const Totals t0 = totals(n);
+  FreeRun r;
+  while (n.step < steps || !n.synchronized()) {
+    step(n);
+    if (!n.synchronized()) continue;
+    const Totals t = totals(n);
+    r.momentum = std::max(r.momentum, std::hypot(t.px - t0.px, t.py - t0.py) / t0.scale);
+    const double e = t.energy / t0.energy - 1.0;
+    r.energy_lo = std::min(r.energy_lo, e), r.energy_hi = std::max(r.energy_hi, e);
+    if (n.step <= steps / 10) r.early_hi = std::max(r.early_hi, e);
+    if (n.step >= steps - steps / 10) r.late_hi = std::max(r.late_hi, e);
+  }
+  r.steps = n.step;
+  return r;
+}
+
+}  // namespace
+
+// The known failure of multi-time-step schemes is a slow growth at the interface between
+// step sizes. 20 000 finest steps (the 1 mm level steps every 2): momentum stays zero to
+// round-off and the energy does not grow (its largest value over the last tenth of the run
+// stays below that over the first tenth; the one-dt run for comparison). With the held
+// momentum as the re-mapped one on the band where the levels meet (instead of
+// solver/nested_subcycle.cpp's band_remap) the energy doubles by the end (+106 %).
+// RUPTURE_LONG_STEPS=100000 runs it longer.
+TEST(NestedSolver, per_level_steps_keep_momentum_and_energy_over_a_long_free_vibration) {
+  const long steps = std::getenv("RUPTURE_LONG_STEPS") ? std::atol(std::getenv("RUPTURE_LONG_STEPS")) : 20000;
+  for (const Subcycling sc : {Subcycling::none, Subcycling::levels}) {
+    const FreeRun r = free_run(sc, steps);
+    std::printf("%s: %ld steps; momentum %.2e of sum m|v|; energy %+.3e .. %+.3e of E0, largest over "
+                "the first tenth %+.3e, the last %+.3e\n",
+                sc == Subcycling::none ? "one dt" : "per-level dt", r.steps, r.momentum, r.energy_lo,
+                r.energy_hi, r.early_hi, r.late_hi);
+    EXPECT_LT(r.momentum, 1e-13);
+    EXPECT_LT(r.late_hi, r.early_hi) << "the energy grows";
+    EXPECT_LT(r.energy_hi, 0.05);
+    EXPECT_GT(r.energy_lo, -0.05);
+  }
 }
