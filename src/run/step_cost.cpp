@@ -5,12 +5,14 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
 
 #include "io/interface_csv.hpp"
 #include "io/snapshot.hpp"
+#include "solver/nested_state.hpp"
 #include "solver/state.hpp"
 #include "solver/step.hpp"
 
@@ -28,6 +30,13 @@ StepCost measure_step_cost(const Case& c, double budget_seconds, int min_steps, 
   const auto t1 = clock::now();
   cost.setup_seconds = seconds(t0, t1);
   cost.particles = s.particles.size();
+  // Per-level time steps (nested levels): a level does its particles' work once per period, so
+  // the timed steps are whole cycles of the longest period.
+  int cycle = 1;
+  if (s.nested)
+    for (int p : s.nested->period) cycle = std::max(cycle, p);
+  min_steps = std::max(min_steps, cycle);
+  max_steps = std::max(max_steps, (max_steps + cycle - 1) / cycle * cycle);
   // One warm-up step (first sort, window fit, pages touched), then the timed ones.
   s.dt_cap = c.time.end - s.time;
   step(s);
@@ -36,7 +45,7 @@ StepCost measure_step_cost(const Case& c, double budget_seconds, int min_steps, 
     s.dt_cap = c.time.end - s.time;
     step(s);
     ++cost.steps;
-    if (cost.steps >= min_steps && seconds(t2, clock::now()) >= budget_seconds) break;
+    if (cost.steps >= min_steps && cost.steps % cycle == 0 && seconds(t2, clock::now()) >= budget_seconds) break;
   }
   const double stepping = seconds(t2, clock::now());
   cost.step_seconds = cost.steps > 0 ? stepping / cost.steps : 0.0;

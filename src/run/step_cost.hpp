@@ -23,7 +23,8 @@ struct StepCost {
   double interface_seconds = 0.0;  // one set of interface profiles (0 without them), s
 };
 
-// Times at least `min_steps` and at most `max_steps` steps, stopping early once `budget_seconds`
+// Times at least `min_steps` and at most `max_steps` steps (nested levels with per-level time
+// steps: whole cycles of the longest period, whatever the two say), stopping early once `budget_seconds`
 // of stepping have passed. Throws what the solver throws (an unstable start is reported as a
 // run would report it).
 StepCost measure_step_cost(const Case& c, double budget_seconds = 1.0, int min_steps = 3,

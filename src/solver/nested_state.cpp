@@ -332,18 +332,18 @@ NestedState make_nested_state(const Case& c) {
       for (std::uint32_t t = n.grid.term_start[k]; t < n.grid.term_start[k + 1]; ++t)
         reach[n.grid.terms[t].dof] = std::max(reach[n.grid.terms[t].dof], n.slave_level[k]);
     n.mixed.resize(std::size_t(levels));
-    std::vector<long> slave_of(n.grid.num_nodes(), -1);
-    for (std::size_t k = 0; k < n.grid.slaves.size(); ++k) slave_of[n.grid.slaves[k]] = long(k);
+    std::vector<long> slave_index(n.grid.num_nodes(), -1);
+    for (std::size_t k = 0; k < n.grid.slaves.size(); ++k) slave_index[n.grid.slaves[k]] = long(k);
     for (int l = 0; l < levels; ++l) {
       std::vector<unsigned char>& m = n.mixed[std::size_t(l)];
       m.assign(st[std::size_t(l) + 1] - st[std::size_t(l)], 0);
       for (std::size_t node = 0; node < m.size(); ++node) {
         const std::size_t g = st[std::size_t(l)] + node;
-        if (slave_of[g] < 0) {
+        if (slave_index[g] < 0) {
           m[node] = reach[g] > l;
           continue;
         }
-        const std::uint32_t k = std::uint32_t(slave_of[g]);
+        const std::uint32_t k = std::uint32_t(slave_index[g]);
         for (std::uint32_t t = n.grid.term_start[k]; t < n.grid.term_start[k + 1]; ++t)
           m[node] = m[node] || reach[n.grid.terms[t].dof] > l;
       }
