@@ -19,6 +19,8 @@
 // step (h is the smallest of level l's limit / period[l]); every level ends together at the
 // run's output times and before particles are due to change level (NestedState::sync_by,
 // migrate), so outputs, checkpoints and migrations see every particle at one time.
+#include <omp.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -74,23 +76,36 @@ void advance_hold(const GridFields& G, LevelHold& H, bool first, bool goes_on) {
 }
 
 // The level's particles whose stencil reaches a node of `mixed` (its step begins: they stay
-// where they are until it ends).
+// where they are until it ends), in particle order. Only the first node of each stencil is
+// needed (solver/stencil_batch.hpp's rule on a uniform lattice: cell - 1 in the cell's lower
+// half); the threads take fixed chunks and their lists are joined in order.
 void find_band(const State& s, const std::vector<unsigned char>& mixed, LevelHold& H) {
   const Particles& P = s.particles;
   const int nx = s.grid.nodes_x();
+  const double ox = s.grid.x.origin, oy = s.grid.y.origin, ix = 1.0 / s.grid.x.h, iy = 1.0 / s.grid.y.h;
+  const auto first = [](double xi) {
+    const double cell = double(int(xi));  // xi > 0: truncation is floor
+    return int(xi - cell < 0.5 ? cell - 1.0 : cell);
+  };
+  std::vector<std::vector<std::uint32_t>> parts;  // shared: one list per thread
   H.band.clear();
-  for (std::size_t p0 = 0; p0 < P.size(); p0 += std::size_t(kBatch)) {
-    const int n = int(std::min<std::size_t>(std::size_t(kBatch), P.size() - p0));
-    StencilBatch B;
-    batch_stencils(s, p0, n, B);
-    for (int k = 0; k < n; ++k) {
+#pragma omp parallel
+  {
+#pragma omp single
+    parts.resize(std::size_t(omp_get_num_threads()));
+    std::vector<std::uint32_t>& mine = parts[std::size_t(omp_get_thread_num())];
+    mine.clear();
+#pragma omp for schedule(static)
+    for (long p = 0; p < long(P.size()); ++p) {
+      const int fx = first((P.x[std::size_t(p)] - ox) * ix), fy = first((P.y[std::size_t(p)] - oy) * iy);
       bool reaches = false;
       for (int b = 0; b < 3; ++b)
         for (int a = 0; a < 3; ++a)
-          reaches = reaches || mixed[std::size_t(B.first_y[k] + b) * std::size_t(nx) + std::size_t(B.first_x[k] + a)];
-      if (reaches) H.band.push_back(std::uint32_t(p0 + std::size_t(k)));
+          reaches = reaches || mixed[std::size_t(fy + b) * std::size_t(nx) + std::size_t(fx + a)];
+      if (reaches) mine.push_back(std::uint32_t(p));
     }
   }
+  for (const std::vector<std::uint32_t>& part : parts) H.band.insert(H.band.end(), part.begin(), part.end());
 }
 
 // The re-mapped momentum of a level whose step goes on, where finer levels' particles may read
@@ -102,8 +117,7 @@ void find_band(const State& s, const std::vector<unsigned char>& mixed, LevelHol
 void band_remap(State& s, const LevelHold& H) {
   GridFields& G = s.fields;
   const Particles& P = s.particles;
-  std::fill(G.remap_x.begin(), G.remap_x.end(), 0.0);
-  std::fill(G.remap_y.begin(), G.remap_y.end(), 0.0);
+  parallel_nodes(G.remap_x.size(), [&](std::size_t i) { G.remap_x[i] = 0.0, G.remap_y[i] = 0.0; });
   alignas(64) double x[kBatch], y[kBatch], hx[kBatch], hy[kBatch];
   StencilBatch B;
   for (std::size_t j0 = 0; j0 < H.band.size(); j0 += std::size_t(kBatch)) {
