@@ -182,7 +182,7 @@ std::vector<KeyDoc> build_schema() {
       {"time.stop_at_interface_end", "boolean", "", "false", "true, false",
        "end the run once a crack tip comes within two cells of the end of its cohesive line",
        "true"},
-      {"time.subcycling", "string", "", "\"none\"", "\"none\" or \"levels\" (needs grid.refinement = \"nested\"; MUSL or USL)",
+      {"time.subcycling", "string", "", "\"none\"", "\"none\" or \"levels\" (needs grid.refinement = \"nested\" and solver.scheme = \"MUSL\")",
        "per-level time steps: each nested level steps at its own CFL step (2^k finest steps, "
        "docs/performance.md); the interface's level and finer ones every finest step", "\"levels\""},
 

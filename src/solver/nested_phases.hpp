@@ -31,8 +31,7 @@ void cohesive_forces_and_ties(NestedState& n);
 void step_musl(NestedState& n);
 void step_usl(NestedState& n);
 void step_usf(NestedState& n);
-// One finest step of the levels stepping at their own dt (time.subcycling = "levels"): MUSL
-// and USL.
+// One finest step of the levels stepping at their own dt (time.subcycling = "levels"), MUSL.
 void step_subcycled(NestedState& n);
 
 }  // namespace rupture::detail

@@ -10,7 +10,7 @@
 //   - the held momentum takes its mass times the step's velocity increment, and the
 //     increments are summed per node over the level's step;
 //   - a level whose step ends gathers the summed increments (FLIP, SPEC E5), re-maps, and
-//     updates stress and position over its whole step (MUSL: with the re-mapped velocity; a
+//     updates stress and position over its whole step (MUSL, with the re-mapped velocity; a
 //     held level's re-map is its held momentum).
 // Each finest step the condensed nodal momentum changes by h times the nodal force, and that
 // change goes, node by node, to the levels in proportion to the mass each put there (held or
@@ -171,7 +171,6 @@ void subcycled_time_step(NestedState& n) {
 
 void step_subcycled(NestedState& n) {
   const std::size_t levels = n.levels.size();
-  const bool musl = n.levels[0].scheme == Scheme::MUSL;
   n.hold.resize(levels);
   thread_local std::vector<State*> starting, ending;
   thread_local std::vector<unsigned char> starts, ends;
@@ -185,7 +184,7 @@ void step_subcycled(NestedState& n) {
     if (n.period[l] == 1) continue;
     if (starts[l]) {
       hold_scatter(n.levels[l].fields, n.hold[l]);
-      if (musl) find_band(n.levels[l], n.mixed[l], n.hold[l]);
+      find_band(n.levels[l], n.mixed[l], n.hold[l]);
     }
     else
       restore_scatter(n.levels[l].fields, n.hold[l]);
@@ -226,26 +225,18 @@ void step_subcycled(NestedState& n) {
     phase(s);
     s.dt = h;
   };
-  if (musl) {
-    update_particle_velocity_and_remap(ending.data(), ending.size());
-    for (std::size_t l = 0; l < levels; ++l)
-      if (!ends[l]) band_remap(n.levels[l], n.hold[l]);
-    condense_fields(n, {&GridFields::remap_x, &GridFields::remap_y});
-    for (State& s : n.levels) tie_bonded_nodes(s, TieWhat::remapped_momentum);
-    for (State& s : n.levels) remapped_grid_velocity(s);  // + E2 at t + h
-    distribute_fields(n, {&GridFields::remap_x, &GridFields::remap_y});
-    for (std::size_t l = 0; l < levels; ++l)
-      if (ends[l])
-        with_span(l, [](State& s) {
-          grid_to_particles(s, s.fields.remap_x.data(), s.fields.remap_y.data(), G2PMode::stress_and_move);  // E5
-        });
-  } else {
-    for (std::size_t l = 0; l < levels; ++l)
-      if (ends[l])
-        with_span(l, [](State& s) {
-          grid_to_particles(s, s.fields.vel_x.data(), s.fields.vel_y.data(), G2PMode::stress_velocity_and_move);
-        });
-  }
+  update_particle_velocity_and_remap(ending.data(), ending.size());
+  for (std::size_t l = 0; l < levels; ++l)
+    if (!ends[l]) band_remap(n.levels[l], n.hold[l]);
+  condense_fields(n, {&GridFields::remap_x, &GridFields::remap_y});
+  for (State& s : n.levels) tie_bonded_nodes(s, TieWhat::remapped_momentum);
+  for (State& s : n.levels) remapped_grid_velocity(s);  // + E2 at t + h
+  distribute_fields(n, {&GridFields::remap_x, &GridFields::remap_y});
+  for (std::size_t l = 0; l < levels; ++l)
+    if (ends[l])
+      with_span(l, [](State& s) {
+        grid_to_particles(s, s.fields.remap_x.data(), s.fields.remap_y.data(), G2PMode::stress_and_move);  // E5
+      });
   n.substep = all ? 0 : n.substep + 1;
 }
 

@@ -335,10 +335,12 @@ cell_size = 0.25e-3
   EXPECT_FALSE(parse_case(base + boxes).grid.nested);
   const Case nested = parse_case(base + "refinement = \"nested\"\n" + boxes);
   EXPECT_TRUE(nested.grid.nested);
-  Case usf = nested;
-  usf.solver.scheme = Scheme::USF;
-  usf.time.subcycling = Subcycling::levels;
-  EXPECT_THROW(make_nested_state(usf), InputError) << "per-level time steps: MUSL or USL";
+  for (const Scheme other : {Scheme::USL, Scheme::USF}) {
+    Case c = nested;
+    c.solver.scheme = other;
+    c.time.subcycling = Subcycling::levels;
+    EXPECT_THROW(make_nested_state(c), InputError) << "per-level time steps: MUSL only";
+  }
   // make_state gives the nested run: every level's particles merged, the levels stepping.
   State s = make_state(nested);
   ASSERT_TRUE(s.nested);
