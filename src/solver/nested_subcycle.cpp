@@ -204,7 +204,16 @@ void step_subcycled(NestedState& n) {
   for (const State& s : n.levels) drift = std::max(drift, s.window_drift);
   int longest = 1;
   for (int p : n.period) longest = std::max(longest, p);
-  const bool all = n.time + h >= n.sync_by || (n.substep + 1) % longest == 0 ||
+  // While a prescribed edge velocity changes (SPEC E2: the impact's rise and fall) every level
+  // steps every h: a level's step spanning a ramp would strain its particles with the
+  // velocity at its end, not over the ramp (62.5 um example: 2.4 % energy balance instead of
+  // 1.2 %, all of it from the rise and the fall).
+  bool loading = false;
+  for (std::size_t l = 0; l < levels && !loading; ++l)
+    if (n.period[l] > 1)
+      for (const VelocityBC& bc : n.levels[l].boundary)
+        loading = loading || bc.velocity(n.time) != bc.velocity(n.time + h);
+  const bool all = loading || n.time + h >= n.sync_by || (n.substep + 1) % longest == 0 ||
                    drift >= kSubcycleDrift * kMigrateDrift * n.levels.back().grid.x.h;
   for (std::size_t l = 0; l < levels; ++l) {
     ends[l] = all || (n.substep + 1) % n.period[l] == 0;
