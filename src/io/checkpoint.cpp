@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 #include <type_traits>
 
 #include "core/errors.hpp"
@@ -380,6 +381,9 @@ void fields(A& a, CohesiveInterface& c) {
 // nodes and forces are rebuilt after the restored sort and in every step; the loads' work is
 // in external_work). Set by the driver before every step: dt_cap; tests only: forced_dt.
 // Not stored, per-step scratch: fields (every grid array is recomputed in each step).
+// Nested per-level time steps (NestedState::period, mixed: from the case; hold, substep: 0 at
+// every checkpoint, which waits for the levels to end their steps together; sync_by: set by
+// the driver before every step).
 // A nested run (solver/nested_state.hpp): every level's State as above (its particle count
 // changes as particles move between levels, and its window_drift decides the next move), the
 // levels' clock and the migration count. The run's own State keeps the interfaces, which live
@@ -535,6 +539,10 @@ std::string checkpoint_path(const std::string& dir) {
 }
 
 std::string checkpoint_bytes(const CaseSource& source, const RunContext& ctx) {
+  // Per-level time steps hold scatters between the finest steps of a level's step; they are
+  // not stored: a checkpoint is written only where every level has ended its step.
+  if (!synchronized(ctx.s))
+    throw std::logic_error("checkpoint: nested levels between the finest steps of a level's step");
   Writer w;
   w("case", source);
   w("run", ctx);

@@ -10,8 +10,10 @@
 //   - the held momentum takes its mass times the step's velocity increment, and the
 //     increments are summed per node over the level's step;
 //   - a level whose step ends gathers the summed increments (FLIP, SPEC E5), re-maps, and
-//     updates stress and position over its whole step (MUSL, with the re-mapped velocity; a
-//     held level's re-map is its held momentum).
+//     updates stress and position over its whole step (MUSL, with the re-mapped velocity);
+//   - a level whose step goes on re-maps, where finer levels read, the velocity its
+//     particles would have now without keeping it (band_remap: exact, and needed for
+//     stability).
 // Each finest step the condensed nodal momentum changes by h times the nodal force, and that
 // change goes, node by node, to the levels in proportion to the mass each put there (held or
 // fresh), which is exactly what their particles receive when their step ends: total momentum
@@ -23,7 +25,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 
 #include "solver/cohesive_step.hpp"
 #include "solver/grid_update.hpp"
@@ -185,9 +186,9 @@ void step_subcycled(NestedState& n) {
     if (starts[l]) {
       hold_scatter(n.levels[l].fields, n.hold[l]);
       find_band(n.levels[l], n.mixed[l], n.hold[l]);
-    }
-    else
+    } else {
       restore_scatter(n.levels[l].fields, n.hold[l]);
+    }
   }
   condense_fields(n, {&GridFields::mass, &GridFields::mom_x, &GridFields::mom_y,
                       &GridFields::force_x, &GridFields::force_y});
