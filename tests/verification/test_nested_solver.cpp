@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <regex>
 #include <set>
 
 #include "core/errors.hpp"
@@ -343,6 +342,12 @@ min = [0.0, 0.0]
 max = [0.02, 0.01]
 cell_size = 0.25e-3
 )";
+  // base with one more line in its [time] table
+  const auto with_time_key = [&base](const std::string& line) {
+    const std::string key = "end = 1e-6\n";
+    std::string text = base;
+    return text.insert(text.find(key) + key.size(), line + "\n");
+  };
   const std::string boxes = "coarse_cell_size = 1e-3\n[grid.refine.fine]\nmin = [0.008, 0.004]\nmax = [0.012, 0.006]\nlevel = 2\n";
   EXPECT_FALSE(parse_case(base + boxes).grid.nested);
   const Case nested = parse_case(base + "refinement = \"nested\"\n" + boxes);
@@ -366,9 +371,9 @@ cell_size = 0.25e-3
            {base + "refinement = \"nested\"\n", {"grid.refinement", "nested", "needs grid.coarse_cell_size"}},
            {base + "refinement = \"octree\"\n" + boxes, {"grid.refinement", "octree", "graded", "nested"}},
            // per-level time steps step nested levels; "none" and "levels" only
-           {std::regex_replace(base, std::regex("end = 1e-6"), "end = 1e-6\nsubcycling = \"levels\"") + boxes,
+           {with_time_key("subcycling = \"levels\"") + boxes,
             {"time.subcycling", "levels", "nested"}},
-           {std::regex_replace(base, std::regex("end = 1e-6"), "end = 1e-6\nsubcycling = \"always\"") +
+           {with_time_key("subcycling = \"always\"") +
                 "refinement = \"nested\"\n" + boxes,
             {"time.subcycling", "always", "none", "levels"}}}) {
     try {
