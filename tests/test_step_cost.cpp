@@ -79,3 +79,17 @@ TEST(StepCost, measures_the_steps_it_says_and_leaves_no_files) {
                    cost.setup_seconds + 10 * cost.step_seconds + 6 * cost.snapshot_seconds +
                        5 * cost.interface_seconds);
 }
+
+// Per-level time steps (nested levels): the timed steps are whole cycles of the longest period
+// whatever the minimum says, and the particle-updates per finest step follow the periods.
+TEST(StepCost, times_whole_cycles_of_per_level_steps) {
+  Case c = small_case(0.0, 0.0);
+  c.grid.nested = true;
+  c.time.subcycling = Subcycling::levels;
+  const StepCost cost = measure_step_cost(c, 0.0, 3, 5);
+  // The example at 0.5 mm: levels 0-2, the interface on level 2.
+  ASSERT_EQ(cost.level_periods, (std::vector<int>{4, 2, 1}));
+  EXPECT_EQ(cost.steps, 4) << "one cycle of the longest period";
+  EXPECT_LT(cost.updates_per_finest_step, double(cost.particles));
+  EXPECT_GT(cost.updates_per_finest_step, double(cost.particles) / 4.0);
+}

@@ -26,6 +26,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <fstream>
 #include <sstream>
 
@@ -146,6 +147,11 @@ void print_predicted_time(const Case& c) {
   fmt::print("measured_step_seconds={:.4e} (mean of {} steps after a warm-up one, {} threads)\n",
              cost.step_seconds, cost.steps, omp_get_max_threads());
   fmt::print("measured_ns_per_particle_update={:.1f}\n", cost.ns_per_particle_update);
+  if (!cost.level_periods.empty())
+    fmt::print("level_periods={} (finest steps per step of levels 0..{}, time.subcycling = \"levels\"; "
+               "{:.0f} particle-updates per finest step instead of {})\n",
+               fmt::join(cost.level_periods, ","), cost.level_periods.size() - 1,
+               cost.updates_per_finest_step, cost.particles);
   if (cost.snapshot_seconds > 0 || cost.interface_seconds > 0)
     fmt::print("measured_output_seconds={:.3f} per snapshot, {:.3f} per set of interface profiles\n",
                cost.snapshot_seconds, cost.interface_seconds);

@@ -33,8 +33,13 @@ StepCost measure_step_cost(const Case& c, double budget_seconds, int min_steps, 
   // Per-level time steps (nested levels): a level does its particles' work once per period, so
   // the timed steps are whole cycles of the longest period.
   int cycle = 1;
-  if (s.nested)
-    for (int p : s.nested->period) cycle = std::max(cycle, p);
+  if (s.nested && s.nested->subcycled()) {
+    cost.level_periods = s.nested->period;
+    for (std::size_t l = 0; l < s.nested->levels.size(); ++l) {
+      cycle = std::max(cycle, s.nested->period[l]);
+      cost.updates_per_finest_step += double(s.nested->levels[l].particles.size()) / double(s.nested->period[l]);
+    }
+  }
   min_steps = std::max(min_steps, cycle);
   max_steps = std::max(max_steps, (max_steps + cycle - 1) / cycle * cycle);
   // One warm-up step (first sort, window fit, pages touched), then the timed ones.

@@ -8,6 +8,7 @@
 // and counted as often as the run writes them; the small ones (history, crack tip) are not.
 #pragma once
 #include <cstddef>
+#include <vector>
 
 #include "io/case.hpp"
 
@@ -21,6 +22,10 @@ struct StepCost {
   std::size_t particles = 0;
   double snapshot_seconds = 0.0;   // one snapshot (0 without snapshots), s
   double interface_seconds = 0.0;  // one set of interface profiles (0 without them), s
+  // Nested levels with per-level time steps: finest steps per step of each level (coarsest
+  // first), and the particle-updates per finest step they give (empty / 0 otherwise).
+  std::vector<int> level_periods;
+  double updates_per_finest_step = 0.0;
 };
 
 // Times at least `min_steps` and at most `max_steps` steps (nested levels with per-level time
