@@ -98,6 +98,34 @@ TEST(Shape, stencil_partition_of_unity_and_zero_gradient_sum) {
   }
 }
 
+// The hot path's three-node form (gimp_uniform_three: outer weights from the box's overlap,
+// the middle node the rest) gives SPEC E3's weights node by node: the branchy closed form and
+// the quadrature agree with it to a few ulps for every box size the contract allows, the
+// gradients sum to zero, and an outer node the box does not reach gets exactly zero.
+// (Offsets c in units of h, h = 1, so the nodes' offsets c + 1, c, c - 1 carry no rounding
+// of their own: through an axis, the offset from the first node rounds at eps x / h.)
+TEST(Shape, three_node_form_matches_closed_form_and_quadrature) {
+  double worst_s = 0.0, worst_ds = 0.0;
+  for (double l : {0.5, 0.25, 1.0 / 6.0, 0.125, 1e-3}) {
+    for (double c = -0.5; c <= 0.5; c += 0.000731) {
+      double s[3], ds[3];
+      gimp_uniform_three(c, l, 0.25 / l, 1.0, s[0], s[1], s[2], ds[0], ds[1], ds[2]);
+      for (int k = 0; k < 3; ++k) {
+        const double d = c - double(k - 1);
+        const Weight1D ref = gimp_uniform(d, 1.0, l);
+        worst_s = std::max(worst_s, std::fabs(s[k] - ref.s));
+        worst_ds = std::max(worst_ds, std::fabs(ds[k] - ref.ds));
+        EXPECT_NEAR(s[k], quadrature_weight(d, 1.0, 1.0, l), 1e-13) << "c = " << c << ", l = " << l;
+        if (k != 1 && ref.s == 0.0) EXPECT_EQ(s[k], 0.0) << "c = " << c << ", node " << k;
+        if (k != 1 && ref.ds == 0.0) EXPECT_EQ(ds[k], 0.0) << "c = " << c << ", node " << k;
+      }
+      EXPECT_EQ(ds[0] + ds[2] + ds[1], 0.0) << "c = " << c;
+    }
+  }
+  EXPECT_LT(worst_s, 1e-15);
+  EXPECT_LT(worst_ds, 1e-15 / 1e-3);  // the gradient's scale: 1 / (2 l h)
+}
+
 TEST(Shape, graded_axis_partition_of_unity_across_size_jumps) {
   // Nodes 0..6 with cells 1, 1, 0.5, 0.5, 1, 2: every kind of size change.
   const std::vector<double> xs = {0, 1, 2, 2.5, 3, 4, 6};

@@ -77,10 +77,8 @@ inline void axis_stencils(const Axis& ax, const double* __restrict xp, const dou
     }
 #pragma omp simd
     for (int k = 0; k < n; ++k) {
-      const double u = (xp[k] - x0[k]) * inv_hl[k], l = lp[k] * inv_hl[k], inv_2l = 0.5 / l;
-      gimp_uniform_node(u, l, inv_2l, inv_hl[k], w0[k], d0[k]);
-      gimp_uniform_node(u - 1.0, l, inv_2l, inv_hl[k], w1[k], d1[k]);
-      gimp_uniform_node(u - 2.0, l, inv_2l, inv_hl[k], w2[k], d2[k]);
+      const double u = (xp[k] - x0[k]) * inv_hl[k], l = lp[k] * inv_hl[k];
+      gimp_uniform_three(u - 1.0, l, 0.25 / l, inv_hl[k], w0[k], w1[k], w2[k], d0[k], d1[k], d2[k]);
     }
     if (straddles) {
       for (int k = 0; k < n; ++k) {
@@ -117,10 +115,8 @@ inline void axis_stencils(const Axis& ax, const double* __restrict xp, const dou
     const double cell = double(int(xi));
     const double f = (xi - cell < 0.5) ? cell - 1.0 : cell;
     fl[k] = f;
-    const double u = xi - f, l = lp[k] * inv_h, inv_2l = 0.5 / l;
-    gimp_uniform_node(u, l, inv_2l, inv_h, w0[k], d0[k]);
-    gimp_uniform_node(u - 1.0, l, inv_2l, inv_h, w1[k], d1[k]);
-    gimp_uniform_node(u - 2.0, l, inv_2l, inv_h, w2[k], d2[k]);
+    const double u = xi - f, l = lp[k] * inv_h;
+    gimp_uniform_three(u - 1.0, l, 0.25 / l, inv_h, w0[k], w1[k], w2[k], d0[k], d1[k], d2[k]);
   }
   for (int k = 0; k < n; ++k) first[k] = int(fl[k]);
 }
