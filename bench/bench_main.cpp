@@ -134,7 +134,7 @@ int main(int argc, char** argv) {
       phase[3] += seconds_since(t), t = Clock::now();
       remapped_grid_velocity(s);
       phase[4] += seconds_since(t), t = Clock::now();
-      grid_to_particles(s, s.fields.remap_x.data(), s.fields.remap_y.data(), G2PMode::stress_and_move);
+      grid_to_particles(s, &GridFields::remap_x, &GridFields::remap_y, G2PMode::stress_and_move);
       phase[5] += seconds_since(t);
       s.time += s.dt;
       ++s.step;

@@ -265,9 +265,33 @@ std::size_t first_bad(const Particles& P, std::size_t p, int n, const MoveLimits
   return kNone;
 }
 
-// One specialization per G2PMode, so the loops carry no mode tests.
+// What one strip's pass leaves for its State's totals, reduced in strip order after the loop
+// (so the totals do not depend on the number of threads or on which thread took the strip).
+struct StripResult {
+  double work = 0.0;     // E14's stress work of the strip's particles, J
+  double fastest = 0.0;  // the largest |v_x| + |v_y| a particle moved with, m/s
+  std::size_t bad = kNone;  // the first non-finite particle or one outside the grid
+  bool drifted = false;     // a particle left the strip's drift tolerance
+};
+
+// The bounds every particle of s must keep: inside the grid with its whole 3-node stencil (the
+// stencil starts at the cell of x - lp, so on the high side the particle stays out of the last
+// cell, where the stencil would reach node cells + 1; on the low side lp <= half a cell
+// suffices).
+struct GridLimits {
+  double xlo, xhi, ylo, yhi;  // m
+};
+GridLimits grid_limits(const State& s) {
+  const Axis& ax = s.grid.x;
+  const Axis& ay = s.grid.y;
+  return {ax.node(0) + 0.5 * ax.width(0), ax.node(ax.cells - 1), ay.node(0) + 0.5 * ay.width(0),
+          ay.node(ay.cells - 1)};
+}
+
+// One strip of s (SPEC E5 for its particles), in batches of kBatch. One specialization per
+// G2PMode, so the loops carry no mode tests.
 template <G2PMode kMode>
-void grid_to_particles_impl(State& s, const double* gvx, const double* gvy) {
+StripResult strip_to_particles(State& s, int strip, const double* gvx, const double* gvy) {
   Particles& P = s.particles;
   const GridFields& G = s.fields;
   const double dt = s.dt, flip = s.flip;
@@ -275,80 +299,106 @@ void grid_to_particles_impl(State& s, const double* gvx, const double* gvy) {
       kMode == G2PMode::stress_velocity_and_move || kMode == G2PMode::velocity_and_move;
   constexpr bool do_stress = kMode != G2PMode::velocity_and_move;
   constexpr bool do_move = kMode != G2PMode::stress_only;
-  // Particles must keep their whole 3-node stencil inside the grid: the stencil starts at the
-  // cell of x - lp, so on the high side the particle stays out of the last cell (there the
-  // stencil would reach node cells + 1); on the low side lp <= half a cell suffices.
-  const Axis& ax = s.grid.x;
-  const Axis& ay = s.grid.y;
-  const double xlo = ax.node(0) + 0.5 * ax.width(0);
-  const double xhi = ax.node(ax.cells - 1);
-  const double ylo = ay.node(0) + 0.5 * ay.width(0);
-  const double yhi = ay.node(ay.cells - 1);
-  const ScatterPlan& plan = s.plan;
-  const int width = plan.strip_cells;
-  std::size_t bad = kNone;
-  bool drifted = false;
-  // The largest |v_x| + |v_y| a particle moved with (solver/field_windows: a bound on how far
-  // any particle has gone since its window was measured).
-  double fastest = 0.0;
-  // The stress work of each strip (E14, solver/energy.hpp), summed in strip order after the
-  // loop, so the total does not depend on the number of threads.
-  thread_local std::vector<double> strip_work;  // the calling thread's: reached by pointer
-  strip_work.assign(std::size_t(plan.num_strips), 0.0);
-  double* const work_of_strip = strip_work.data();
-#pragma omp parallel for schedule(dynamic, 1) reduction(min : bad) reduction(|| : drifted) \
-    reduction(max : fastest)
-  for (int strip = 0; strip < plan.num_strips; ++strip) {
-    // Drift tolerance of the scatter plan: one cell column either side of the strip.
-    const MoveLimits lim{xlo, xhi, ylo, yhi, double(strip * width - 1), double(strip * width + width)};
-    const std::size_t end = plan.strip_begin[std::size_t(strip) + 1];
-    double work = 0.0;
-    StencilBatch B;
-    Gathered g;
-    for (std::size_t p0 = plan.strip_begin[std::size_t(strip)]; p0 < end; p0 += kBatch) {
-      const int n = int(std::min<std::size_t>(kBatch, end - p0));
-      for (const std::vector<double>* a : {&P.vx, &P.vy, &P.sxx, &P.syy, &P.sxy, &P.szz, &P.exx,
-                                           &P.eyy, &P.exy, &P.volume, &P.volume0})
-        prefetch_batch(a->data(), p0);
-      prefetch_batch(P.material.data(), p0);
-      batch_stencils(s, p0, n, B);
-      gather_nodes<do_stress, do_velocity, do_move>(B, n, gvx, gvy, G, g);
-      if constexpr (do_velocity) {
-        double* __restrict vx = P.vx.data() + p0;
-        double* __restrict vy = P.vy.data() + p0;
+  const GridLimits gl = grid_limits(s);
+  const int width = s.plan.strip_cells;
+  // Drift tolerance of the scatter plan: one cell column either side of the strip.
+  const MoveLimits lim{gl.xlo, gl.xhi, gl.ylo, gl.yhi, double(strip * width - 1),
+                       double(strip * width + width)};
+  const std::size_t end = s.plan.strip_begin[std::size_t(strip) + 1];
+  StripResult r;
+  StencilBatch B;
+  Gathered g;
+  for (std::size_t p0 = s.plan.strip_begin[std::size_t(strip)]; p0 < end; p0 += kBatch) {
+    const int n = int(std::min<std::size_t>(kBatch, end - p0));
+    for (const std::vector<double>* a : {&P.vx, &P.vy, &P.sxx, &P.syy, &P.sxy, &P.szz, &P.exx,
+                                         &P.eyy, &P.exy, &P.volume, &P.volume0})
+      prefetch_batch(a->data(), p0);
+    prefetch_batch(P.material.data(), p0);
+    batch_stencils(s, p0, n, B);
+    gather_nodes<do_stress, do_velocity, do_move>(B, n, gvx, gvy, G, g);
+    if constexpr (do_velocity) {
+      double* __restrict vx = P.vx.data() + p0;
+      double* __restrict vy = P.vy.data() + p0;
 #pragma omp simd
-        for (int k = 0; k < n; ++k) {
-          vx[k] = flip * (vx[k] + g.dv_x[k]) + (1.0 - flip) * g.pic_x[k];
-          vy[k] = flip * (vy[k] + g.dv_y[k]) + (1.0 - flip) * g.pic_y[k];
-        }
+      for (int k = 0; k < n; ++k) {
+        vx[k] = flip * (vx[k] + g.dv_x[k]) + (1.0 - flip) * g.pic_x[k];
+        vy[k] = flip * (vy[k] + g.dv_y[k]) + (1.0 - flip) * g.pic_y[k];
       }
-      if constexpr (do_stress) update_stress(P, p0, n, g, s.stiffness, dt, work);
-      if constexpr (do_move) move_particles(P, p0, n, g, dt, ax, lim, drifted, fastest);
-      const std::size_t b = first_bad(P, p0, n, lim);
-      if (b != kNone) bad = std::min(bad, b);
     }
-    work_of_strip[strip] = work;
+    if constexpr (do_stress) update_stress(P, p0, n, g, s.stiffness, dt, r.work);
+    if constexpr (do_move) move_particles(P, p0, n, g, dt, s.grid.x, lim, r.drifted, r.fastest);
+    const std::size_t b = first_bad(P, p0, n, lim);
+    if (b != kNone) r.bad = std::min(r.bad, b);
   }
-  if constexpr (do_stress)
-    for (const double w : strip_work) s.strain_work += w;
-  if (drifted) s.plan.valid = false;
-  if constexpr (do_move) s.window_drift += dt * fastest;  // |dx| + |dy| >= the distance moved
-  if (bad != kNone) throw SimulationError(diagnose_bad_particles(s, xlo, xhi, ylo, yhi));
+  return r;
+}
+
+using StripPass = StripResult (*)(State&, int, const double*, const double*);
+StripPass strip_pass(G2PMode mode) {
+  switch (mode) {
+    case G2PMode::stress_and_move: return strip_to_particles<G2PMode::stress_and_move>;
+    case G2PMode::stress_velocity_and_move: return strip_to_particles<G2PMode::stress_velocity_and_move>;
+    case G2PMode::stress_only: return strip_to_particles<G2PMode::stress_only>;
+    case G2PMode::velocity_and_move: return strip_to_particles<G2PMode::velocity_and_move>;
+  }
+  return nullptr;
+}
+
+// Every strip of every State in one parallel region (nested levels: a thread moves on to the
+// next level's strips instead of waiting at the end of each level's), then each State's
+// totals from its strips' results in strip order. The velocity read is (s.fields.*gx,
+// s.fields.*gy) of each State.
+void states_to_particles(State* const* states, std::size_t count, NodalArray gx, NodalArray gy,
+                         G2PMode mode) {
+  const StripPass pass = strip_pass(mode);
+  thread_local std::vector<std::size_t> first_task;  // the calling thread's: reached by pointer
+  thread_local std::vector<StripResult> results;
+  first_task.assign(count + 1, 0);
+  for (std::size_t l = 0; l < count; ++l)
+    first_task[l + 1] = first_task[l] + std::size_t(states[l]->plan.num_strips);
+  results.assign(first_task[count], StripResult{});
+  const std::size_t* const first = first_task.data();
+  StripResult* const out = results.data();
+  const long tasks = long(first_task[count]);
+#pragma omp parallel for schedule(dynamic, 1)
+  for (long t = 0; t < tasks; ++t) {
+    const std::size_t l = std::size_t(std::upper_bound(first, first + count + 1, std::size_t(t)) - first) - 1;
+    State& s = *states[l];
+    out[t] = pass(s, int(std::size_t(t) - first[l]), (s.fields.*gx).data(), (s.fields.*gy).data());
+  }
+  const bool stress = mode != G2PMode::velocity_and_move, move = mode != G2PMode::stress_only;
+  for (std::size_t l = 0; l < count; ++l) {
+    State& s = *states[l];
+    std::size_t bad = kNone;
+    bool drifted = false;
+    double fastest = 0.0;
+    for (std::size_t t = first[l]; t < first[l + 1]; ++t) {
+      if (stress) s.strain_work += out[t].work;
+      bad = std::min(bad, out[t].bad);
+      drifted = drifted || out[t].drifted;
+      fastest = std::max(fastest, out[t].fastest);
+    }
+    if (drifted) s.plan.valid = false;
+    // |dx| + |dy| >= the distance moved (solver/field_windows: a bound on how far any particle
+    // has gone since its window was measured).
+    if (move) s.window_drift += s.dt * fastest;
+    if (bad != kNone) {
+      const GridLimits gl = grid_limits(s);
+      throw SimulationError(diagnose_bad_particles(s, gl.xlo, gl.xhi, gl.ylo, gl.yhi));
+    }
+  }
 }
 
 }  // namespace
 
-void grid_to_particles(State& s, const double* gvx, const double* gvy, G2PMode mode) {
-  switch (mode) {
-    case G2PMode::stress_and_move:
-      return grid_to_particles_impl<G2PMode::stress_and_move>(s, gvx, gvy);
-    case G2PMode::stress_velocity_and_move:
-      return grid_to_particles_impl<G2PMode::stress_velocity_and_move>(s, gvx, gvy);
-    case G2PMode::stress_only:
-      return grid_to_particles_impl<G2PMode::stress_only>(s, gvx, gvy);
-    case G2PMode::velocity_and_move:
-      return grid_to_particles_impl<G2PMode::velocity_and_move>(s, gvx, gvy);
-  }
+void grid_to_particles(State& s, NodalArray gx, NodalArray gy, G2PMode mode) {
+  State* one = &s;
+  states_to_particles(&one, 1, gx, gy, mode);
+}
+
+void grid_to_particles(State* const* states, std::size_t count, NodalArray gx, NodalArray gy,
+                       G2PMode mode) {
+  states_to_particles(states, count, gx, gy, mode);
 }
 
 }  // namespace rupture

@@ -7,10 +7,11 @@
 #include <vector>
 
 #include "solver/nested_state.hpp"
+#include "solver/transfer.hpp"
 
 namespace rupture::detail {
 
-using NodalArray = std::vector<double> GridFields::*;
+using rupture::NodalArray;
 
 // grid/nested.hpp's condense over the levels' arrays (every field): the active slaves' values
 // added to their DOFs times the coefficients, then cleared. Extensive values only.

@@ -152,9 +152,8 @@ void step_musl(NestedState& n) {
   each_level(n, [](State& s) { tie_bonded_nodes(s, TieWhat::remapped_momentum); });
   each_level(n, [](State& s) { remapped_grid_velocity(s); });    // + E2 at t^{n+1}
   distribute_fields(n, {&GridFields::remap_x, &GridFields::remap_y});
-  each_level(n, [](State& s) {
-    grid_to_particles(s, s.fields.remap_x.data(), s.fields.remap_y.data(), G2PMode::stress_and_move);  // E5
-  });
+  grid_to_particles(all.data(), all.size(), &GridFields::remap_x, &GridFields::remap_y,
+                    G2PMode::stress_and_move);  // E5
 }
 
 void step_usl(NestedState& n) {
@@ -167,9 +166,8 @@ void step_usl(NestedState& n) {
   cohesive_forces_and_ties(n);
   each_level(n, [](State& s) { integrate_grid(s); });
   distribute_fields(n, {&GridFields::vel_x, &GridFields::vel_y, &GridFields::dvel_x, &GridFields::dvel_y});
-  each_level(n, [](State& s) {
-    grid_to_particles(s, s.fields.vel_x.data(), s.fields.vel_y.data(), G2PMode::stress_velocity_and_move);
-  });
+  grid_to_particles(all.data(), all.size(), &GridFields::vel_x, &GridFields::vel_y,
+                    G2PMode::stress_velocity_and_move);
 }
 
 void step_usf(NestedState& n) {
@@ -179,14 +177,14 @@ void step_usf(NestedState& n) {
   each_level(n, [](State& s) { grid_velocity_from_momentum(s, s.time); });
   distribute_fields(n, {&GridFields::remap_x, &GridFields::remap_y});
   each_level(n, [](State& s) {
-    grid_to_particles(s, s.fields.remap_x.data(), s.fields.remap_y.data(), G2PMode::stress_only);
+    grid_to_particles(s, &GridFields::remap_x, &GridFields::remap_y, G2PMode::stress_only);
     particles_to_grid_force(s);
   });
   condense_fields(n, {&GridFields::force_x, &GridFields::force_y});
   each_level(n, [](State& s) { integrate_grid(s); });
   distribute_fields(n, {&GridFields::vel_x, &GridFields::vel_y, &GridFields::dvel_x, &GridFields::dvel_y});
   each_level(n, [](State& s) {
-    grid_to_particles(s, s.fields.vel_x.data(), s.fields.vel_y.data(), G2PMode::velocity_and_move);
+    grid_to_particles(s, &GridFields::vel_x, &GridFields::vel_y, G2PMode::velocity_and_move);
   });
 }
 

@@ -228,13 +228,6 @@ void step_subcycled(NestedState& n) {
       n.levels[l].fields.dvel_y.swap(H.inc_y);
     }
   }
-  // The step each ending level's particles take: its span (E5's stress increment and move).
-  const auto with_span = [&](std::size_t l, auto&& phase) {
-    State& s = n.levels[l];
-    s.dt = n.period[l] == 1 ? h : n.hold[l].span;
-    phase(s);
-    s.dt = h;
-  };
   update_particle_velocity_and_remap(ending.data(), ending.size());
   for (std::size_t l = 0; l < levels; ++l)
     if (!ends[l]) band_remap(n.levels[l], n.hold[l]);
@@ -242,11 +235,12 @@ void step_subcycled(NestedState& n) {
   for (State& s : n.levels) tie_bonded_nodes(s, TieWhat::remapped_momentum);
   for (State& s : n.levels) remapped_grid_velocity(s);  // + E2 at t + h
   distribute_fields(n, {&GridFields::remap_x, &GridFields::remap_y});
+  // The step each ending level's particles take is its span (E5's stress increment and move).
   for (std::size_t l = 0; l < levels; ++l)
-    if (ends[l])
-      with_span(l, [](State& s) {
-        grid_to_particles(s, s.fields.remap_x.data(), s.fields.remap_y.data(), G2PMode::stress_and_move);  // E5
-      });
+    if (ends[l] && n.period[l] > 1) n.levels[l].dt = n.hold[l].span;
+  grid_to_particles(ending.data(), ending.size(), &GridFields::remap_x, &GridFields::remap_y,
+                    G2PMode::stress_and_move);  // E5
+  for (State& s : n.levels) s.dt = h;
   n.substep = all ? 0 : n.substep + 1;
 }
 

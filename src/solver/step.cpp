@@ -67,7 +67,7 @@ void step_musl(State& s) {
   }
   remapped_grid_velocity(s);  // + E2 velocity BCs at t^{n+1}
   prescribe_region_velocity(s, G.remap_x.data(), G.remap_y.data(), s.time + s.dt);
-  grid_to_particles(s, G.remap_x.data(), G.remap_y.data(), G2PMode::stress_and_move);  // E5
+  grid_to_particles(s, &GridFields::remap_x, &GridFields::remap_y, G2PMode::stress_and_move);  // E5
 }
 
 // USL (update stress last): the stress is updated with the t^{n+1} grid velocity.
@@ -80,7 +80,7 @@ void step_usl(State& s) {
   integrate_grid(s);
   apply_velocity_regions(s);
   external_force_work(s);
-  grid_to_particles(s, G.vel_x.data(), G.vel_y.data(), G2PMode::stress_velocity_and_move);  // E5
+  grid_to_particles(s, &GridFields::vel_x, &GridFields::vel_y, G2PMode::stress_velocity_and_move);  // E5
 }
 
 // USF (update stress first): the stress is updated with the t^n grid velocity, before the
@@ -91,14 +91,14 @@ void step_usf(State& s) {
   tie_stencils_and_time_step(s);
   grid_velocity_from_momentum(s, s.time);  // + E2 velocity BCs at t^n
   prescribe_region_velocity(s, G.remap_x.data(), G.remap_y.data(), s.time);
-  grid_to_particles(s, G.remap_x.data(), G.remap_y.data(), G2PMode::stress_only);  // E5
+  grid_to_particles(s, &GridFields::remap_x, &GridFields::remap_y, G2PMode::stress_only);  // E5
   particles_to_grid_force(s);
   add_external_forces(s);
   cohesive_forces_and_ties(s);
   integrate_grid(s);
   apply_velocity_regions(s);
   external_force_work(s);
-  grid_to_particles(s, G.vel_x.data(), G.vel_y.data(), G2PMode::velocity_and_move);
+  grid_to_particles(s, &GridFields::vel_x, &GridFields::vel_y, G2PMode::velocity_and_move);
 }
 
 }  // namespace

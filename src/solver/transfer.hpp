@@ -6,6 +6,7 @@
 // leaving the grid; a re-sort checks the GIMP contract on graded grids.
 #pragma once
 #include <cstddef>
+#include <vector>
 
 #include "solver/state.hpp"
 
@@ -20,9 +21,14 @@ void update_particle_velocity_and_remap(State& s);  // FLIP/PIC blend + MUSL re-
 // threads' work spread over every level's strips). Same results as one call per State.
 void particles_to_grid(State* const* states, std::size_t count, bool with_force);
 void update_particle_velocity_and_remap(State* const* states, std::size_t count);
-// Stress update with the velocity in (gvx, gvy) (E5); optionally update velocity (USL) and
-// move particles with the t^{n+1} grid velocity.
+// Stress update with the grid velocity (s.fields.*gx, s.fields.*gy) (E5); optionally update
+// velocity (USL) and move particles with the t^{n+1} grid velocity. Each State with its own dt.
+using NodalArray = std::vector<double> GridFields::*;
 enum class G2PMode { stress_and_move, stress_velocity_and_move, stress_only, velocity_and_move };
-void grid_to_particles(State& s, const double* gvx, const double* gvy, G2PMode mode);
+void grid_to_particles(State& s, NodalArray gx, NodalArray gy, G2PMode mode);
+// The same over several States in one parallel region (nested levels); same results as one
+// call per State.
+void grid_to_particles(State* const* states, std::size_t count, NodalArray gx, NodalArray gy,
+                       G2PMode mode);
 
 }  // namespace rupture

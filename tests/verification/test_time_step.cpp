@@ -36,7 +36,8 @@ double bulk_max_eigenvalue(State& s, int iterations) {
   double lambda = 0.0;
   for (int it = 0; it < iterations; ++it) {
     for (auto* v : {&P.sxx, &P.syy, &P.sxy, &P.szz, &P.exx, &P.eyy, &P.exy}) std::fill(v->begin(), v->end(), 0.0);
-    grid_to_particles(s, ux.data(), uy.data(), G2PMode::stress_only);
+    G.remap_x = ux, G.remap_y = uy;  // the grid velocity the stress pass reads
+    grid_to_particles(s, &GridFields::remap_x, &GridFields::remap_y, G2PMode::stress_only);
     P.volume = saved.volume;
     particles_to_grid_force(s);
     double uKu = 0.0, uMu = 0.0, norm = 0.0;
