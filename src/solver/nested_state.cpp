@@ -99,10 +99,13 @@ void migrate(NestedState& n) {
     Particles& P = n.levels[l].particles;
     mark.assign(P.size(), 0);
     bool any = false;
-    for (std::size_t p = 0; p < P.size(); ++p) {
-      const bool away = n.grid.level_of(P.x[p], P.y[p]) != int(l);
-      mark[p] = away;
-      any = any || away;
+    const long count = long(P.size());
+    unsigned char* const away = mark.data();
+#pragma omp parallel for schedule(static) reduction(|| : any)
+    for (long p = 0; p < count; ++p) {
+      const std::size_t i = std::size_t(p);
+      away[i] = n.grid.level_of(P.x[i], P.y[i]) != int(l);
+      any = any || away[i];
     }
     if (!any) continue;
     Particles leaving;

@@ -119,34 +119,52 @@ void band_remap(State& s, const LevelHold& H) {
   GridFields& G = s.fields;
   const Particles& P = s.particles;
   parallel_nodes(G.remap_x.size(), [&](std::size_t i) { G.remap_x[i] = 0.0, G.remap_y[i] = 0.0; });
-  alignas(64) double x[kBatch], y[kBatch], hx[kBatch], hy[kBatch];
-  StencilBatch B;
-  for (std::size_t j0 = 0; j0 < H.band.size(); j0 += std::size_t(kBatch)) {
-    const int n = int(std::min<std::size_t>(std::size_t(kBatch), H.band.size() - j0));
-    for (int k = 0; k < n; ++k) {
-      const std::size_t p = H.band[j0 + std::size_t(k)];
-      x[k] = P.x[p], y[k] = P.y[p], hx[k] = P.half_x[p], hy[k] = P.half_y[p];
+  // The band's particles of band[j0, j1), in batches (their stencils SIMD over the batch).
+  const auto remap = [&](std::size_t j0, std::size_t j1) {
+    alignas(64) double x[kBatch], y[kBatch], hx[kBatch], hy[kBatch];
+    StencilBatch B;
+    for (; j0 < j1; j0 += std::size_t(kBatch)) {
+      const int n = int(std::min<std::size_t>(std::size_t(kBatch), j1 - j0));
+      for (int k = 0; k < n; ++k) {
+        const std::size_t p = H.band[j0 + std::size_t(k)];
+        x[k] = P.x[p], y[k] = P.y[p], hx[k] = P.half_x[p], hy[k] = P.half_y[p];
+      }
+      axis_stencils(s.grid.x, x, hx, n, B.sx, B.dsx, B.first_x);
+      axis_stencils(s.grid.y, y, hy, n, B.sy, B.dsy, B.first_y);
+      for (int k = 0; k < n; ++k) {
+        const std::size_t p = H.band[j0 + std::size_t(k)];
+        const std::size_t base = G.index(P.field[p], B.first_x[k], B.first_y[k]), stride = G.stride(P.field[p]);
+        double vx = P.vx[p], vy = P.vy[p];
+        for (int b = 0; b < 3; ++b)
+          for (int a = 0; a < 3; ++a) {
+            const std::size_t i = base + std::size_t(b) * stride + std::size_t(a);
+            const double w = B.sx[a][k] * B.sy[b][k];
+            vx += w * H.inc_x[i], vy += w * H.inc_y[i];
+          }
+        const double m = P.mass[p];
+        for (int b = 0; b < 3; ++b)
+          for (int a = 0; a < 3; ++a) {
+            const std::size_t i = base + std::size_t(b) * stride + std::size_t(a);
+            const double w = m * B.sx[a][k] * B.sy[b][k];
+            G.remap_x[i] += w * vx, G.remap_y[i] += w * vy;
+          }
+      }
     }
-    axis_stencils(s.grid.x, x, hx, n, B.sx, B.dsx, B.first_x);
-    axis_stencils(s.grid.y, y, hy, n, B.sy, B.dsy, B.first_y);
-    for (int k = 0; k < n; ++k) {
-      const std::size_t p = H.band[j0 + std::size_t(k)];
-      const std::size_t base = G.index(P.field[p], B.first_x[k], B.first_y[k]), stride = G.stride(P.field[p]);
-      double vx = P.vx[p], vy = P.vy[p];
-      for (int b = 0; b < 3; ++b)
-        for (int a = 0; a < 3; ++a) {
-          const std::size_t i = base + std::size_t(b) * stride + std::size_t(a);
-          const double w = B.sx[a][k] * B.sy[b][k];
-          vx += w * H.inc_x[i], vy += w * H.inc_y[i];
-        }
-      const double m = P.mass[p];
-      for (int b = 0; b < 3; ++b)
-        for (int a = 0; a < 3; ++a) {
-          const std::size_t i = base + std::size_t(b) * stride + std::size_t(a);
-          const double w = m * B.sx[a][k] * B.sy[b][k];
-          G.remap_x[i] += w * vx, G.remap_y[i] += w * vy;
-        }
-    }
+  };
+  // Strip by strip in the two colours of the level's scatter plan (built when its step began;
+  // its particles have not moved since): strips of one colour share no node, so no locks, and
+  // each node's sum runs in the same order whatever the number of threads (the scatter's rule).
+  const ScatterPlan& plan = s.plan;
+  const std::uint32_t* band = H.band.data();
+  const std::size_t size = H.band.size();
+  const auto band_at = [&](std::size_t p) {
+    return std::size_t(std::lower_bound(band, band + size, std::uint32_t(p)) - band);
+  };
+#pragma omp parallel
+  for (int colour = 0; colour < 2; ++colour) {
+#pragma omp for schedule(dynamic, 1)
+    for (int strip = colour; strip < plan.num_strips; strip += 2)
+      remap(band_at(plan.strip_begin[std::size_t(strip)]), band_at(plan.strip_begin[std::size_t(strip) + 1]));
   }
 }
 

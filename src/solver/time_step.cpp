@@ -62,24 +62,35 @@ double bulk_eigen_bound(const ElasticStiffness& C, double density, int ppc, doub
 double cohesive_eigen_bound(const State& s) {
   // Row i of M^-1 K_coh: K_coh = sum_k k_k B_k^T B_k with B_k = [c_up, -c_lo] (each sums to
   // 1), so sum_j |K_ij| / m_i = (2 / m_i) sum_k k_k c_ki; c_ki / m_i = w_ki / M_k for the
-  // mass-weighted stencils. Accumulated per touched grid node in a compact scratch array.
+  // mass-weighted stencils. Accumulated per touched grid node in a compact scratch array: one
+  // per face when the faces map to different fields (their nodes are different grid elements,
+  // each face's a band of two node rows), both together when they share one.
   double bound = 0.0;
+  thread_local std::vector<double> row;  // scratch, kept between steps (no allocation)
   for (const CohesiveInterface& c : s.interfaces) {
     const std::size_t n = c.num_nodes();
     if (c.face_up.size() != n) continue;
-    std::size_t lo = SIZE_MAX, hi = 0;
-    for (std::size_t k = 0; k < n; ++k)
-      for (const FaceStencil* f : {&c.face_up[k], &c.face_lo[k]})
-        for (int q = 0; q < 4; ++q)
-          if (f->c[q] > 0.0) lo = std::min(lo, f->node[q]), hi = std::max(hi, f->node[q]);
-    if (lo > hi) continue;
-    thread_local std::vector<double> row;  // scratch, kept between steps (no allocation)
-    row.assign(hi - lo + 1, 0.0);
-    for (std::size_t k = 0; k < n; ++k)
-      for (const FaceStencil* f : {&c.face_up[k], &c.face_lo[k]})
-        for (int q = 0; q < 4; ++q)
-          if (f->c[q] > 0.0) row[f->node[q] - lo] += 2.0 * c.stiffness_node[k] * f->c[q] / s.fields.mass[f->node[q]];
-    for (double r : row) bound = std::max(bound, r);
+    const bool shared = c.spec.upper_field == c.spec.lower_field;
+    const std::vector<FaceStencil>* faces[2] = {&c.face_up, &c.face_lo};
+    for (int first = 0; first < 2; first += shared ? 2 : 1) {
+      const int last = shared ? 1 : first;
+      std::size_t lo = SIZE_MAX, hi = 0;
+      for (std::size_t k = 0; k < n; ++k)
+        for (int side = first; side <= last; ++side) {
+          const FaceStencil& f = (*faces[side])[k];
+          for (int q = 0; q < 4; ++q)
+            if (f.c[q] > 0.0) lo = std::min(lo, f.node[q]), hi = std::max(hi, f.node[q]);
+        }
+      if (lo > hi) continue;
+      row.assign(hi - lo + 1, 0.0);
+      for (std::size_t k = 0; k < n; ++k)
+        for (int side = first; side <= last; ++side) {
+          const FaceStencil& f = (*faces[side])[k];
+          for (int q = 0; q < 4; ++q)
+            if (f.c[q] > 0.0) row[f.node[q] - lo] += 2.0 * c.stiffness_node[k] * f.c[q] / s.fields.mass[f.node[q]];
+        }
+      for (double r : row) bound = std::max(bound, r);
+    }
   }
   return bound;
 }
