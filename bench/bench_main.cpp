@@ -65,7 +65,8 @@ double seconds_since(Clock::time_point t0) {
 //   P2G: x y hx hy m V vx vy sxx syy sxy + field                      -> 11 x 8 + 1
 //   G2P velocity + re-map: x y hx hy vx vy m + field; writes vx vy    -> 7 x 8 + 1 + 2 x 8
 //   stress + move: x y hx hy V0 exx eyy exy sxx syy sxy szz + field, material; writes x y
-//     exx eyy exy sxx syy sxy szz, and V (write-allocate: + 8)         -> 12 x 8 + 2 + 10 x 8 + 8
+//     exx eyy exy sxx syy sxy szz, and V (write-allocate: + 8); not vx vy (the MUSL pass's
+//     finiteness check reads the stress: solver/gather.cpp) -> 12 x 8 + 2 + 10 x 8 + 8
 //   sort, every 25 steps: x y twice, then each of the 134 B per particle read, written to
 //     scratch and copied back                                          -> (4 x 8 + 4 x 134) / 25
 constexpr double kBytesP2G = 11 * 8 + 1;

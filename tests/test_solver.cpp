@@ -84,6 +84,27 @@ TEST(Solver, rigid_translation_is_exact_and_stress_free) {
   }
 }
 
+// MUSL's stress pass does not read the particle velocity: a non-finite one (NaN, or infinite,
+// whose S = 0 terms are NaN) reaches the momentum of all its nodes, hence the stress of its
+// neighbours and its own in the same step, which the pass checks.
+TEST(Solver, non_finite_velocity_is_caught_in_the_same_musl_step) {
+  for (const double bad : {double(NAN), double(INFINITY)}) {
+    State s = strip_state();
+    ASSERT_EQ(s.scheme, Scheme::MUSL);
+    std::size_t seed = 0;
+    while (s.particles.id[seed] != 41) ++seed;
+    s.particles.vy[seed] = bad;
+    try {
+      step(s);
+      FAIL() << "no SimulationError for v_y = " << bad;
+    } catch (const SimulationError& e) {
+      const std::string m = e.what();
+      EXPECT_NE(m.find("unstable: non-finite"), std::string::npos) << m;
+      EXPECT_NE(m.find("step 0, t = 0 s"), std::string::npos) << m;
+    }
+  }
+}
+
 TEST(Solver, non_finite_state_is_diagnosed_with_particle_and_time) {
   State s = strip_state();
   // The particle created 41st (the solver sorts particles, so look it up by id).

@@ -241,6 +241,11 @@ void move_particles(Particles& P, std::size_t p, int n, const Gathered& g, doubl
 }
 
 // The first of particles [p, p + n) that is non-finite or outside the limits; kNone if none.
+// kVelocity = false: the velocity is not read (the MUSL pass, where it was updated before the
+// re-map: a non-finite particle velocity makes the re-mapped momentum of all nine of its nodes
+// non-finite, m S v with S = 0 included, hence its velocity gradient and stress in this pass,
+// which are checked; the diagnosis then names the velocity). Saves reading two arrays.
+template <bool kVelocity>
 std::size_t first_bad(const Particles& P, std::size_t p, int n, const MoveLimits& lim) {
   const double* __restrict x = P.x.data() + p;
   const double* __restrict y = P.y.data() + p;
@@ -252,7 +257,8 @@ std::size_t first_bad(const Particles& P, std::size_t p, int n, const MoveLimits
   bool any = false;
 #pragma omp simd reduction(|| : any)
   for (int k = 0; k < n; ++k) {
-    const bool finite = std::fabs(vx[k] + vy[k] + sxx[k] + syy[k] + sxy[k]) <= DBL_MAX;
+    const double v = kVelocity ? vx[k] + vy[k] : 0.0;
+    const bool finite = std::fabs(v + sxx[k] + syy[k] + sxy[k]) <= DBL_MAX;
     const bool inside = x[k] > lim.xlo && x[k] < lim.xhi && y[k] > lim.ylo && y[k] < lim.yhi;
     any = any || !(finite && inside);
   }
@@ -310,8 +316,10 @@ StripResult strip_to_particles(State& s, int strip, const double* gvx, const dou
   Gathered g;
   for (std::size_t p0 = s.plan.strip_begin[std::size_t(strip)]; p0 < end; p0 += kBatch) {
     const int n = int(std::min<std::size_t>(kBatch, end - p0));
-    for (const std::vector<double>* a : {&P.vx, &P.vy, &P.sxx, &P.syy, &P.sxy, &P.szz, &P.exx,
-                                         &P.eyy, &P.exy, &P.volume, &P.volume0})
+    if constexpr (kMode != G2PMode::stress_and_move)
+      for (const std::vector<double>* a : {&P.vx, &P.vy}) prefetch_batch(a->data(), p0);
+    for (const std::vector<double>* a : {&P.sxx, &P.syy, &P.sxy, &P.szz, &P.exx, &P.eyy, &P.exy,
+                                         &P.volume, &P.volume0})
       prefetch_batch(a->data(), p0);
     prefetch_batch(P.material.data(), p0);
     batch_stencils(s, p0, n, B);
@@ -327,7 +335,7 @@ StripResult strip_to_particles(State& s, int strip, const double* gvx, const dou
     }
     if constexpr (do_stress) update_stress(P, p0, n, g, s.stiffness, dt, r.work);
     if constexpr (do_move) move_particles(P, p0, n, g, dt, s.grid.x, lim, r.drifted, r.fastest);
-    const std::size_t b = first_bad(P, p0, n, lim);
+    const std::size_t b = first_bad<kMode != G2PMode::stress_and_move>(P, p0, n, lim);
     if (b != kNone) r.bad = std::min(r.bad, b);
   }
   return r;
