@@ -54,9 +54,15 @@ void add_faces_and_ties(const State& s, Need& need) {
     }
 }
 
-// Whether every window holds what its field needs and, when `tight`, reaches at most one
-// margin beyond the window a re-fit would make (so a field that moved away gives its old nodes
-// back).
+// Nodes a measured field keeps between what it needs and its window's side (unless the side is
+// the grid's edge): the particles may move kWindowDrift cells before they are measured again
+// (plus one: a cell index of a point moved that far can change by one more).
+constexpr int kSlack = int(kWindowDrift) + 1;
+static_assert(kSlack <= kWindowMargin, "a fresh window must keep the slack");
+
+// Whether every window holds what its field needs and, when `tight` (the particles were
+// measured), keeps kSlack nodes to spare on every side, and reaches at most one margin beyond
+// the window a re-fit would make (so a field that moved away gives its old nodes back).
 bool fits(const GridFields& G, const Need& need, const int n[2], bool tight) {
   if (G.start.size() != need.lo[0].size() + 1) return false;
   const std::vector<int>* first[2] = {&G.col0, &G.row0};
@@ -66,6 +72,10 @@ bool fits(const GridFields& G, const Need& need, const int n[2], bool tight) {
     for (int d = 0; d < 2; ++d) {
       const int a = (*first[d])[f], b = a + (*count[d])[f] - 1;
       if (need.lo[d][f] < a || need.hi[d][f] > b) return false;
+      // Without the slack a window measured as just fitting let its particles move out of it
+      // before the next measure (a block flying at 400 m/s, re-sorted only every 25 steps).
+      if (tight && ((a > 0 && need.lo[d][f] - kSlack < a) || (b < n[d] - 1 && need.hi[d][f] + kSlack > b)))
+        return false;
       const int ideal_a = std::max(0, need.lo[d][f] - kWindowMargin);
       const int ideal_b = std::min(n[d] - 1, need.hi[d][f] + kWindowMargin);
       if (tight && (a < ideal_a - kWindowMargin || b > ideal_b + kWindowMargin)) return false;

@@ -13,9 +13,10 @@
 // measured at every re-sort, and again once any of them may have moved kWindowDrift cells since
 // the last measure: the particle move sums the largest |v_x| + |v_y| times dt over the steps
 // (State::window_drift), a bound on every particle's displacement, so the per-particle cost is
-// one max and no check. A particle's stencil reaches 2 nodes past its cell and the margin is 8,
-// so kWindowDrift = 5 cells keeps every stencil inside the window (with one cell to spare) at
-// every scatter. (Not a re-sort: that would change the summation order, hence the round-off.)
+// one max and no check. A particle's stencil reaches 2 nodes past its cell; a measure keeps
+// the window only if it leaves kWindowDrift + 1 nodes beyond every particle's stencil (else it
+// re-fits, with the margin of 8), so every stencil stays inside the window at every scatter
+// until the next measure. (Not a re-sort: that would change the summation order, hence the round-off.)
 #pragma once
 #include "geometry/shape.hpp"
 #include "solver/state.hpp"
