@@ -25,15 +25,18 @@ struct NestedState;  // solver/nested_state.hpp
 // Race-free scatter without locks: particles are kept physically sorted by vertical strips
 // of `strip_cells` cell columns, and by cell row inside a strip (so consecutive particles
 // touch the same nodes and memory is walked in order). A particle in cell column c touches
-// node columns c-1..c+2. With 5-column strips, strips two apart stay node-disjoint even when
-// particles drift up to one column out of their strip, so strips are processed in two colours
-// (even, then odd), each colour in parallel, and the sort is redone only every
+// node columns c-1..c+2. With strips of 5 columns or more, strips two apart stay node-disjoint
+// even when particles drift up to one column out of their strip, so strips are processed in
+// two colours (even, then odd), each colour in parallel, and the sort is redone only every
 // `sort_interval` steps or as soon as a particle drifts further (`valid` false). The
 // summation order at every node is fixed by the sort, so results do not depend on the
-// number of threads.
+// number of threads. 16 columns: each strip's tiles (solver/transfer.cpp) span its columns
+// plus 5, so narrow strips zero, fill and add back up to twice the nodes they need (62.5 um
+// nested example to 3 us, 2 threads: 6.74 s with 5 columns, 6.59 with 8, 6.39 with 12, 6.22
+// with 16, 6.20 with 24; bench/README.md).
 // Every member must also be written in io/checkpoint.cpp, or be listed there as scratch.
 struct ScatterPlan {
-  int strip_cells = 5;
+  int strip_cells = 16;
   int sort_interval = 25;
   int num_strips = 0;
   long sorted_step = -1;                 // step of the last sort
