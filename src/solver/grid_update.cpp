@@ -3,6 +3,8 @@
 // plain parallel loops over every field's nodes.
 #include "solver/grid_update.hpp"
 
+#include <stdexcept>
+
 namespace rupture {
 namespace {
 
@@ -42,19 +44,7 @@ void integrate_grid(State& s) {
   const long n = long(G.mass.size());
   const double dt = s.dt, floor = s.mass_floor;
 #pragma omp parallel for schedule(static)
-  for (long i = 0; i < n; ++i) {
-    const double m = G.mass[i];
-    if (m > floor) {
-      // Nodal momentum update p^{n+1} = p^n + dt f (E4), stored as velocity and increment.
-      const double inv_m = 1.0 / m;
-      G.dvel_x[i] = dt * G.force_x[i] * inv_m;
-      G.dvel_y[i] = dt * G.force_y[i] * inv_m;
-      G.vel_x[i] = G.mom_x[i] * inv_m + G.dvel_x[i];
-      G.vel_y[i] = G.mom_y[i] * inv_m + G.dvel_y[i];
-    } else {
-      G.dvel_x[i] = G.dvel_y[i] = G.vel_x[i] = G.vel_y[i] = 0.0;
-    }
-  }
+  for (long i = 0; i < n; ++i) integrate_node(G, std::size_t(i), dt, floor);
   apply_absorbing_edges(s);
   apply_velocity_bcs(s);
 }
@@ -90,12 +80,13 @@ void apply_absorbing_edges(State& s) {
   }
 }
 
-void apply_velocity_bcs(State& s) {
+void apply_velocity_bcs(State& s, const std::vector<unsigned char>* only) {
   GridFields& G = s.fields;
   const double t0 = s.time, t1 = s.time + s.dt;
   for (const NodeBC& e : s.bc_nodes) {
     if (!G.holds(e.field, e.node)) continue;  // outside the field's window: no mass there
     const std::size_t i = G.index(e.field, e.node);
+    if (only && !(*only)[i]) continue;
     const double m = G.mass[i];
     if (m <= s.mass_floor) continue;
     const double v0 = bc_value(s, e, t0), v1 = bc_value(s, e, t1);
@@ -109,17 +100,45 @@ void apply_velocity_bcs(State& s) {
   }
 }
 
-void remapped_grid_velocity(State& s) {
+namespace {
+
+// The prescribed velocities at t^{n+1} in the re-mapped velocity (at the elements `only`
+// marks, when given).
+void remapped_bcs(State& s, const std::vector<unsigned char>* only) {
   GridFields& G = s.fields;
-  velocity_into_remap(s, G.remap_x.data(), G.remap_y.data());  // in place: re-mapped momentum
   const double floor = s.mass_floor;
   const double t1 = s.time + s.dt;
   for (const NodeBC& e : s.bc_nodes) {
     if (!G.holds(e.field, e.node)) continue;  // outside the field's window: no mass there
     const std::size_t i = G.index(e.field, e.node);
-    if (G.mass[i] <= floor) continue;
+    if (G.mass[i] <= floor || (only && !(*only)[i])) continue;
     (e.component == 0 ? G.remap_x : G.remap_y)[i] = bc_value(s, e, t1);
   }
+}
+
+}  // namespace
+
+void remapped_grid_velocity(State& s, const std::vector<std::uint32_t>& nodes,
+                            const std::vector<unsigned char>& only) {
+  GridFields& G = s.fields;
+  const long n = long(nodes.size());
+  const double floor = s.mass_floor;
+#pragma omp parallel for schedule(static)
+  for (long k = 0; k < n; ++k) {
+    const std::size_t i = nodes[std::size_t(k)];
+    const double m = G.mass[i];
+    G.remap_x[i] = m > floor ? G.remap_x[i] / m : 0.0;
+    G.remap_y[i] = m > floor ? G.remap_y[i] / m : 0.0;
+  }
+  remapped_bcs(s, &only);
+  if (!s.absorbing.empty()) throw std::logic_error("remapped_grid_velocity on a node list: absorbing edges");
+}
+
+void remapped_grid_velocity(State& s) {
+  GridFields& G = s.fields;
+  velocity_into_remap(s, G.remap_x.data(), G.remap_y.data());  // in place: re-mapped momentum
+  const double floor = s.mass_floor;
+  remapped_bcs(s, nullptr);
   // The absorbing edges keep their dashpot's velocity, as prescribed edges keep theirs: the
   // re-map would otherwise blend it with the inner particles' (FLIP) velocities, and the
   // strain at the edge would not see the absorption (3.4 % reflected instead of 1.2 %, P pulse

@@ -219,6 +219,44 @@ void gather_particles(State& s) {
   s.particles_step = s.step;
 }
 
+namespace {
+
+// NestedState::coupled of every level with period > 1 (after `mixed` and the transposed terms).
+void coupled_nodes(NestedState& n) {
+  const std::size_t levels = n.levels.size();
+  n.coupled.assign(levels, {});
+  n.coupled_mask.assign(levels, {});
+  std::vector<std::vector<unsigned char>> seed(levels);
+  for (std::size_t l = 0; l < levels; ++l) seed[l] = n.mixed[l];
+  for (std::size_t d = 0; d < n.dof_level.size(); ++d) seed[n.dof_level[d]][n.dof_node[d]] = 1;
+  for (const std::uint32_t k : n.active_slaves) seed[n.slave_level[k]][n.slave_node[k]] = 1;
+  for (std::size_t l = 0; l < levels; ++l) {
+    if (n.period[l] == 1) continue;
+    const State& s = n.levels[l];
+    const long nx = s.grid.nodes_x(), ny = s.grid.nodes_y();
+    std::vector<unsigned char> near(seed[l].size(), 0);
+    for (long j = 0; j < ny; ++j)
+      for (long i = 0; i < nx; ++i) {
+        if (!seed[l][std::size_t(j * nx + i)]) continue;
+        for (long b = std::max(0L, j - 2); b <= std::min(ny - 1, j + 2); ++b)
+          for (long a = std::max(0L, i - 2); a <= std::min(nx - 1, i + 2); ++a) near[std::size_t(b * nx + a)] = 1;
+      }
+    for (const BondedTie& t : s.bonded)
+      for (const std::size_t node : t.nodes) near[node] = 1;
+    const GridFields& G = s.fields;
+    n.coupled_mask[l].assign(G.size(), 0);
+    for (int f = 0; f < G.num_fields; ++f)
+      for (std::size_t node = 0; node < near.size(); ++node)
+        if (near[node]) {
+          const std::size_t e = G.start[std::size_t(f)] + node;
+          n.coupled[l].push_back(std::uint32_t(e));
+          n.coupled_mask[l][e] = 1;
+        }
+  }
+}
+
+}  // namespace
+
 NestedState make_nested_state(const Case& c) {
   const auto unsupported = [](const char* what) {
     return InputError(fmt::format("{}: not yet supported on nested levels (solver/nested_state.hpp)", what));
@@ -353,6 +391,7 @@ NestedState make_nested_state(const Case& c) {
           m[node] = m[node] || reach[n.grid.terms[t].dof] > l;
       }
     }
+    coupled_nodes(n);
   }
   n.dt = n.levels[0].dt;
   return n;

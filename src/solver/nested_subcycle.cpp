@@ -21,6 +21,11 @@
 // step (h is the smallest of level l's limit / period[l]); every level ends together at the
 // run's output times and before particles are due to change level (NestedState::sync_by,
 // migrate), so outputs, checkpoints and migrations see every particle at one time.
+// While a level's step goes on, only its coupled nodes (NestedState::coupled: where other
+// levels' terms meet it, the band's stencils, the ties) are updated each finest step; its
+// other nodes carry its held scatter alone, so they are updated once, when its step ends, over
+// the whole span (integrate_ending: the same update to round-off, without the whole-lattice
+// passes of every finest step).
 #include <omp.h>
 
 #include <algorithm>
@@ -36,44 +41,86 @@
 namespace rupture::detail {
 namespace {
 
-// Elementwise loops over whole-lattice arrays, split over the threads.
+// Elementwise loops over a list of elements, split over the threads.
 template <class Body>
-void parallel_nodes(std::size_t n, Body&& body) {
-  const long count = long(n);
+void parallel_list(const std::vector<std::uint32_t>& list, Body&& body) {
+  const long count = long(list.size());
 #pragma omp parallel for schedule(static)
-  for (long i = 0; i < count; ++i) body(std::size_t(i));
+  for (long k = 0; k < count; ++k) body(std::size_t(list[std::size_t(k)]));
 }
 
-// The held scatter of a level: saved when its step begins, put back at every finest step after.
-void hold_scatter(GridFields& G, LevelHold& H) {
+// The held scatter of a level: saved when its step begins, put back at every finest step after
+// where condense, the ties and the other levels change it (NestedState::coupled; elsewhere
+// the arrays keep it: nothing else writes there until the level's step ends).
+void hold_scatter(GridFields& G, LevelHold& H, const std::vector<std::uint32_t>& coupled) {
   const std::size_t n = G.mass.size();
   for (std::vector<double>* a : {&H.mass, &H.mom_x, &H.mom_y, &H.force_x, &H.force_y, &H.inc_x, &H.inc_y})
     a->resize(n);
-  parallel_nodes(n, [&](std::size_t i) {
+  parallel_list(coupled, [&](std::size_t i) {
     H.mass[i] = G.mass[i], H.mom_x[i] = G.mom_x[i], H.mom_y[i] = G.mom_y[i];
     H.force_x[i] = G.force_x[i], H.force_y[i] = G.force_y[i];
   });
 }
-void restore_scatter(GridFields& G, const LevelHold& H) {
-  parallel_nodes(G.mass.size(), [&](std::size_t i) {
+void restore_scatter(GridFields& G, const LevelHold& H, const std::vector<std::uint32_t>& coupled) {
+  parallel_list(coupled, [&](std::size_t i) {
     G.mass[i] = H.mass[i], G.mom_x[i] = H.mom_x[i], G.mom_y[i] = H.mom_y[i];
     G.force_x[i] = H.force_x[i], G.force_y[i] = H.force_y[i];
   });
 }
 
+// E4 for a level whose step goes on: at its coupled elements only, with the finest step (the
+// others are not read before its step ends), and their prescribed velocities.
+void integrate_coupled(State& s, const std::vector<std::uint32_t>& coupled,
+                       const std::vector<unsigned char>& mask) {
+  GridFields& G = s.fields;
+  const double dt = s.dt, floor = s.mass_floor;
+  parallel_list(coupled, [&](std::size_t i) { integrate_node(G, i, dt, floor); });
+  apply_velocity_bcs(s, &mask);
+}
+
+// E4 for a level whose step ends: its coupled elements over the finest step (their earlier
+// increments are summed in LevelHold::inc), the others over the whole span in one update:
+// their mass and force are the held ones, their momentum the step's start's, and no other
+// level adds to them, so this is the sum of the finest steps' updates to round-off. The
+// prescribed velocities are constant over a span longer than h (step_subcycled's rule for
+// ramps), so the velocity conditions at t + h hold for the whole span.
+void integrate_ending(State& s, const std::vector<unsigned char>& mask, double span) {
+  GridFields& G = s.fields;
+  const double h = s.dt, floor = s.mass_floor;
+  const long n = long(G.mass.size());
+#pragma omp parallel for schedule(static)
+  for (long k = 0; k < n; ++k) {
+    const std::size_t i = std::size_t(k);
+    integrate_node(G, i, mask[i] ? h : span, floor);
+  }
+  apply_velocity_bcs(s);
+}
+
 // After the nodal update (velocity increments distributed to the slaves): the level's summed
 // increments, and, for a level whose step goes on, its held momentum advanced by its own mass
-// times the increment (what its particles will receive: the FLIP gather of the sums).
-void advance_hold(const GridFields& G, LevelHold& H, bool first, bool goes_on) {
-  parallel_nodes(G.mass.size(), [&](std::size_t i) {
-    const double dx = G.dvel_x[i], dy = G.dvel_y[i];
-    H.inc_x[i] = first ? dx : H.inc_x[i] + dx;
-    H.inc_y[i] = first ? dy : H.inc_y[i] + dy;
-    if (goes_on) {
+// times the increment (what its particles will receive: the FLIP gather of the sums), at its
+// coupled elements. When its step ends, every other element's increment is its update over
+// the whole span (integrate_ending).
+void advance_hold(const GridFields& G, LevelHold& H, bool first, bool goes_on,
+                  const std::vector<std::uint32_t>& coupled, const std::vector<unsigned char>& mask) {
+  if (goes_on) {
+    parallel_list(coupled, [&](std::size_t i) {
+      const double dx = G.dvel_x[i], dy = G.dvel_y[i];
+      H.inc_x[i] = first ? dx : H.inc_x[i] + dx;
+      H.inc_y[i] = first ? dy : H.inc_y[i] + dy;
       H.mom_x[i] += H.mass[i] * dx;
       H.mom_y[i] += H.mass[i] * dy;
-    }
-  });
+    });
+    return;
+  }
+  const long n = long(G.mass.size());
+#pragma omp parallel for schedule(static)
+  for (long k = 0; k < n; ++k) {
+    const std::size_t i = std::size_t(k);
+    const bool whole = first || !mask[i];
+    H.inc_x[i] = whole ? G.dvel_x[i] : H.inc_x[i] + G.dvel_x[i];
+    H.inc_y[i] = whole ? G.dvel_y[i] : H.inc_y[i] + G.dvel_y[i];
+  }
 }
 
 // The level's particles whose stencil reaches a node of `mixed` (its step begins: they stay
@@ -115,10 +162,12 @@ void find_band(const State& s, const std::vector<unsigned char>& mixed, LevelHol
 // the held momentum (v_p + inc_i lumped per node) is not: mixing the two at a node shared
 // with a level that re-maps its particles makes the coupled step unstable (a free vibration
 // across a transition grew 106 % in 20 000 steps; docs/performance.md).
-void band_remap(State& s, const LevelHold& H) {
+void band_remap(State& s, const LevelHold& H, const std::vector<std::uint32_t>& coupled) {
   GridFields& G = s.fields;
   const Particles& P = s.particles;
-  parallel_nodes(G.remap_x.size(), [&](std::size_t i) { G.remap_x[i] = 0.0, G.remap_y[i] = 0.0; });
+  // The band's stencils lie in the coupled elements, and nothing reads the others' re-mapped
+  // momentum before the level's step ends.
+  parallel_list(coupled, [&](std::size_t i) { G.remap_x[i] = 0.0, G.remap_y[i] = 0.0; });
   // The band's particles of band[j0, j1), in batches (their stencils SIMD over the batch).
   const auto remap = [&](std::size_t j0, std::size_t j1) {
     alignas(64) double x[kBatch], y[kBatch], hx[kBatch], hy[kBatch];
@@ -202,19 +251,16 @@ void step_subcycled(NestedState& n) {
   for (std::size_t l = 0; l < levels; ++l) {
     if (n.period[l] == 1) continue;
     if (starts[l]) {
-      hold_scatter(n.levels[l].fields, n.hold[l]);
+      hold_scatter(n.levels[l].fields, n.hold[l], n.coupled[l]);
       find_band(n.levels[l], n.mixed[l], n.hold[l]);
     } else {
-      restore_scatter(n.levels[l].fields, n.hold[l]);
+      restore_scatter(n.levels[l].fields, n.hold[l], n.coupled[l]);
     }
   }
   condense_fields(n, {&GridFields::mass, &GridFields::mom_x, &GridFields::mom_y,
                       &GridFields::force_x, &GridFields::force_y});
   tie_and_face_stencils(n);                                  // bonded, faces
   subcycled_time_step(n);                                    // h (E6)
-  cohesive_forces_and_ties(n);                               // E7-E9, bonded
-  for (State& s : n.levels) integrate_grid(s);               // E4 + E2 velocity BCs
-  distribute_fields(n, {&GridFields::vel_x, &GridFields::vel_y, &GridFields::dvel_x, &GridFields::dvel_y});
 
   // Which levels end their step now: their period is over, or every level (the driver's next
   // output or the end of the run, particles due to change level).
@@ -237,10 +283,24 @@ void step_subcycled(NestedState& n) {
   for (std::size_t l = 0; l < levels; ++l) {
     ends[l] = all || (n.substep + 1) % n.period[l] == 0;
     if (ends[l]) ending.push_back(&n.levels[l]);
+    if (n.period[l] > 1) n.hold[l].span = starts[l] ? h : n.hold[l].span + h;
+  }
+
+  cohesive_forces_and_ties(n);  // E7-E9, bonded
+  for (std::size_t l = 0; l < levels; ++l) {  // E4 + E2 velocity BCs
+    State& s = n.levels[l];
+    if (n.period[l] == 1)
+      integrate_grid(s);
+    else if (ends[l])
+      integrate_ending(s, n.coupled_mask[l], n.hold[l].span);
+    else
+      integrate_coupled(s, n.coupled[l], n.coupled_mask[l]);
+  }
+  distribute_fields(n, {&GridFields::vel_x, &GridFields::vel_y, &GridFields::dvel_x, &GridFields::dvel_y});
+  for (std::size_t l = 0; l < levels; ++l) {
     if (n.period[l] == 1) continue;
     LevelHold& H = n.hold[l];
-    H.span = starts[l] ? h : H.span + h;
-    advance_hold(n.levels[l].fields, H, starts[l] != 0, ends[l] == 0);
+    advance_hold(n.levels[l].fields, H, starts[l] != 0, ends[l] == 0, n.coupled[l], n.coupled_mask[l]);
     if (ends[l]) {  // the gathers read the increments of the whole step
       n.levels[l].fields.dvel_x.swap(H.inc_x);
       n.levels[l].fields.dvel_y.swap(H.inc_y);
@@ -248,10 +308,15 @@ void step_subcycled(NestedState& n) {
   }
   update_particle_velocity_and_remap(ending.data(), ending.size());
   for (std::size_t l = 0; l < levels; ++l)
-    if (!ends[l]) band_remap(n.levels[l], n.hold[l]);
+    if (!ends[l]) band_remap(n.levels[l], n.hold[l], n.coupled[l]);
   condense_fields(n, {&GridFields::remap_x, &GridFields::remap_y});
   for (State& s : n.levels) tie_bonded_nodes(s, TieWhat::remapped_momentum);
-  for (State& s : n.levels) remapped_grid_velocity(s);  // + E2 at t + h
+  for (std::size_t l = 0; l < levels; ++l) {  // + E2 at t + h
+    if (ends[l])
+      remapped_grid_velocity(n.levels[l]);
+    else
+      remapped_grid_velocity(n.levels[l], n.coupled[l], n.coupled_mask[l]);
+  }
   distribute_fields(n, {&GridFields::remap_x, &GridFields::remap_y});
   // The step each ending level's particles take is its span (E5's stress increment and move).
   for (std::size_t l = 0; l < levels; ++l)

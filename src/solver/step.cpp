@@ -72,7 +72,6 @@ void step_musl(State& s) {
 
 // USL (update stress last): the stress is updated with the t^{n+1} grid velocity.
 void step_usl(State& s) {
-  GridFields& G = s.fields;
   particles_to_grid(s, true);
   tie_stencils_and_time_step(s);
   add_external_forces(s);
