@@ -226,10 +226,16 @@ void coupled_nodes(NestedState& n) {
   const std::size_t levels = n.levels.size();
   n.coupled.assign(levels, {});
   n.coupled_mask.assign(levels, {});
+  // Mixed nodes but the inactive slaves (covered nodes no particle of their level reaches: they
+  // stay empty, and condense and distribute skip them), the DOFs with terms, the active slaves.
   std::vector<std::vector<unsigned char>> seed(levels);
   for (std::size_t l = 0; l < levels; ++l) seed[l] = n.mixed[l];
-  for (std::size_t d = 0; d < n.dof_level.size(); ++d) seed[n.dof_level[d]][n.dof_node[d]] = 1;
-  for (const std::uint32_t k : n.active_slaves) seed[n.slave_level[k]][n.slave_node[k]] = 1;
+  for (std::size_t k = 0; k < n.slave_level.size(); ++k) seed[n.slave_level[k]][n.slave_node[k]] = 0;
+  for (const std::uint32_t k : n.active_slaves) seed[n.slave_level[k]][n.slave_node[k]] = n.mixed[n.slave_level[k]][n.slave_node[k]];
+  std::vector<std::vector<unsigned char>> exact(levels);  // DOFs with terms, active slaves
+  for (std::size_t l = 0; l < levels; ++l) exact[l].assign(seed[l].size(), 0);
+  for (std::size_t d = 0; d < n.dof_level.size(); ++d) exact[n.dof_level[d]][n.dof_node[d]] = 1;
+  for (const std::uint32_t k : n.active_slaves) exact[n.slave_level[k]][n.slave_node[k]] = 1;
   for (std::size_t l = 0; l < levels; ++l) {
     if (n.period[l] == 1) continue;
     const State& s = n.levels[l];
@@ -241,6 +247,7 @@ void coupled_nodes(NestedState& n) {
         for (long b = std::max(0L, j - 2); b <= std::min(ny - 1, j + 2); ++b)
           for (long a = std::max(0L, i - 2); a <= std::min(nx - 1, i + 2); ++a) near[std::size_t(b * nx + a)] = 1;
       }
+    for (std::size_t node = 0; node < near.size(); ++node) near[node] = near[node] || exact[l][node];
     for (const BondedTie& t : s.bonded)
       for (const std::size_t node : t.nodes) near[node] = 1;
     const GridFields& G = s.fields;

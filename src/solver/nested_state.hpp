@@ -86,11 +86,12 @@ struct NestedState {
   // particles may read the re-mapped velocity while this level's step goes on.
   std::vector<std::vector<unsigned char>> mixed;
   // Per level with period > 1, the elements (node and field, every field) its arrays must hold
-  // up to date at every finest step while its step goes on: within two nodes of a node that is
-  // mixed, a DOF with condensed terms or an active slave (what other levels read and write, and
-  // the band's stencils), and the bonded stretches' nodes; ascending, and as a mask. Elsewhere
-  // nothing changes during its step (held scatter, no other level's terms), so those nodes are
-  // updated once, when its step ends, over the whole span (solver/nested_subcycle.cpp).
+  // up to date at every finest step while its step goes on: the DOFs with condensed terms and
+  // the active slaves (what other levels read and write), the nodes within two of a mixed one
+  // that is not an inactive slave (the band's stencils), and the bonded stretches' nodes;
+  // ascending, and as a mask. Elsewhere nothing changes during its step (held scatter, no other
+  // level's terms), so those nodes are updated once, when its step ends, over the whole span
+  // (solver/nested_subcycle.cpp).
   std::vector<std::vector<std::uint32_t>> coupled;
   std::vector<std::vector<unsigned char>> coupled_mask;
 

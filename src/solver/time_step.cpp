@@ -66,13 +66,15 @@ double cohesive_eigen_bound(const State& s) {
   // per face when the faces map to different fields (their nodes are different grid elements,
   // each face's a band of two node rows), both together when they share one.
   double bound = 0.0;
-  thread_local std::vector<double> row;  // scratch, kept between steps (no allocation)
   for (const CohesiveInterface& c : s.interfaces) {
     const std::size_t n = c.num_nodes();
     if (c.face_up.size() != n) continue;
     const bool shared = c.spec.upper_field == c.spec.lower_field;
     const std::vector<FaceStencil>* faces[2] = {&c.face_up, &c.face_lo};
-    for (int first = 0; first < 2; first += shared ? 2 : 1) {
+    // The two faces' scratch rows are independent: one thread each.
+#pragma omp parallel for schedule(static, 1) reduction(max : bound) if (!shared)
+    for (int first = 0; first < (shared ? 1 : 2); ++first) {
+      thread_local std::vector<double> row;  // scratch, kept between steps (no allocation)
       const int last = shared ? 1 : first;
       std::size_t lo = SIZE_MAX, hi = 0;
       for (std::size_t k = 0; k < n; ++k)
