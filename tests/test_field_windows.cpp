@@ -83,11 +83,11 @@ TEST(FieldWindows, inclusion_gives_the_same_answer_with_a_fraction_of_the_memory
   EXPECT_LT(double(G.size()), 1.3 * whole);
 }
 
-// A block flying diagonally at 400 m/s past a block at rest: its window follows it (re-fits),
-// always covering it, with results equal to whole-grid fields; at the end the window no longer
-// holds where the block started, so the field stays local as it moves.
-TEST(FieldWindows, window_follows_a_moving_body) {
-  const Case c = parse_case(std::string(test::kHomaliteToml) + R"(
+namespace {
+
+// A block flying diagonally at 400 m/s past a block at rest.
+Case flying_block_case() {
+  return parse_case(std::string(test::kHomaliteToml) + R"(
 [grid]
 min = [0.0, 0.0]
 max = [0.03, 0.03]
@@ -104,6 +104,15 @@ velocity = [400.0, 400.0]
 [time]
 end = 40e-6
 )");
+}
+
+}  // namespace
+
+// A block flying diagonally at 400 m/s past a block at rest: its window follows it (re-fits),
+// always covering it, with results equal to whole-grid fields; at the end the window no longer
+// holds where the block started, so the field stays local as it moves.
+TEST(FieldWindows, window_follows_a_moving_body) {
+  const Case c = flying_block_case();
   const State s = run_both_ways(c, 300);
   const GridFields& G = s.fields;
   std::printf("flying block after %.2f us: moved %.2f mm; window columns %d..%d, rows %d..%d; "
@@ -123,23 +132,7 @@ end = 40e-6
 // field's window, and the result equals whole-grid fields. (Failed at step 286 before the
 // slack rule, with 16-column strips.)
 TEST(FieldWindows, measured_window_keeps_room_for_the_drift_until_the_next_measure) {
-  const Case c = parse_case(std::string(test::kHomaliteToml) + R"(
-[grid]
-min = [0.0, 0.0]
-max = [0.03, 0.03]
-cell_size = 0.5e-3
-[bodies.still]
-material = "homalite"
-min = [0.02, 0.0]
-max = [0.03, 0.01]
-[bodies.flying]
-material = "homalite"
-min = [0.002, 0.002]
-max = [0.006, 0.006]
-velocity = [400.0, 400.0]
-[time]
-end = 40e-6
-)");
+  const Case c = flying_block_case();
   State a = make_state(c), b = make_state(c);
   b.whole_grid_fields = true;
   a.plan.strip_cells = b.plan.strip_cells = 64;
