@@ -244,7 +244,7 @@ void move_particles(Particles& P, std::size_t p, int n, const Gathered& g, doubl
 // kVelocity = false: the velocity is not read (the MUSL pass, where it was updated before the
 // re-map: a non-finite particle velocity makes the re-mapped momentum of all nine of its nodes
 // non-finite, m S v with S = 0 included, hence its velocity gradient and stress in this pass,
-// which are checked; the diagnosis then names the velocity). Saves reading two arrays.
+// which are checked: tests/test_solver). Saves reading two arrays.
 template <bool kVelocity>
 std::size_t first_bad(const Particles& P, std::size_t p, int n, const MoveLimits& lim) {
   const double* __restrict x = P.x.data() + p;
