@@ -4,6 +4,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstdint>
+#include <vector>
 
 #include "core/errors.hpp"
 #include "solver/stencil_batch.hpp"
@@ -65,15 +67,22 @@ void sort_particles(State& s) {
     return std::size_t(col / width) * std::size_t(cy) + std::size_t(row);
   };
   const std::size_t buckets = std::size_t(plan.num_strips) * std::size_t(cy);
+  // Each particle's bucket once, split over the threads (the cell lookups are most of the
+  // sort's work); the counting passes below stay serial, so the order is the same.
+  thread_local std::vector<std::uint32_t> key;  // the calling thread's: reached by pointer
+  key.resize(n);
+  std::uint32_t* const k_of = key.data();
+#pragma omp parallel for schedule(static)
+  for (long p = 0; p < long(n); ++p) k_of[p] = std::uint32_t(bucket_of(std::size_t(p)));
   plan.bucket.assign(buckets + 1, 0);
-  for (std::size_t p = 0; p < n; ++p) ++plan.bucket[bucket_of(p) + 1];
+  for (std::size_t p = 0; p < n; ++p) ++plan.bucket[k_of[p] + 1];
   for (std::size_t k = 0; k < buckets; ++k) plan.bucket[k + 1] += plan.bucket[k];
   plan.strip_begin.resize(std::size_t(plan.num_strips) + 1);
   for (int k = 0; k <= plan.num_strips; ++k)
     plan.strip_begin[std::size_t(k)] = plan.bucket[std::size_t(k) * std::size_t(cy)];
   // Stable counting sort: particles keep their previous relative order inside a bucket.
   plan.order.resize(n);
-  for (std::size_t p = 0; p < n; ++p) plan.order[plan.bucket[bucket_of(p)]++] = std::uint32_t(p);
+  for (std::size_t p = 0; p < n; ++p) plan.order[plan.bucket[k_of[p]]++] = std::uint32_t(p);
   P.permute(plan.order, plan.scratch);
   plan.valid = true;
   plan.sorted_step = s.step;
