@@ -398,6 +398,18 @@ NestedState make_nested_state(const Case& c) {
           m[node] = m[node] || reach[n.grid.terms[t].dof] > l;
       }
     }
+    n.mixed_reach.resize(std::size_t(levels));
+    for (int l = 0; l < levels; ++l) {
+      const std::vector<unsigned char>& m = n.mixed[std::size_t(l)];
+      const long nx = n.levels[std::size_t(l)].grid.nodes_x(), ny = n.levels[std::size_t(l)].grid.nodes_y();
+      std::vector<unsigned char>& r = n.mixed_reach[std::size_t(l)];
+      r.assign(m.size(), 0);
+      for (long j = 0; j < ny; ++j)
+        for (long i = 0; i < nx; ++i)
+          for (long b = j; b < std::min(ny, j + 3); ++b)
+            for (long a = i; a < std::min(nx, i + 3); ++a)
+              r[std::size_t(j * nx + i)] = r[std::size_t(j * nx + i)] || m[std::size_t(b * nx + a)];
+    }
     coupled_nodes(n);
   }
   n.dt = n.levels[0].dt;

@@ -85,6 +85,9 @@ struct NestedState {
   // level's lattice (its DOFs, or the terms of its active slaves): there a finer level's
   // particles may read the re-mapped velocity while this level's step goes on.
   std::vector<std::vector<unsigned char>> mixed;
+  // Per level, per lattice node (i, j): 1 where a 3 x 3 stencil whose first node is (i, j)
+  // reaches a mixed node (so finding the band is one lookup per particle).
+  std::vector<std::vector<unsigned char>> mixed_reach;
   // Per level with period > 1, the elements (node and field, every field) its arrays must hold
   // up to date at every finest step while its step goes on: the DOFs with condensed terms and
   // the active slaves (what other levels read and write), the nodes within two of a mixed one

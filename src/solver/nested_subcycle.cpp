@@ -126,8 +126,9 @@ void advance_hold(const GridFields& G, LevelHold& H, bool first, bool goes_on,
 // The level's particles whose stencil reaches a node of `mixed` (its step begins: they stay
 // where they are until it ends), in particle order. Only the first node of each stencil is
 // needed (solver/stencil_batch.hpp's rule on a uniform lattice: cell - 1 in the cell's lower
-// half); the threads take fixed chunks and their lists are joined in order.
-void find_band(const State& s, const std::vector<unsigned char>& mixed, LevelHold& H) {
+// half), looked up in NestedState::mixed_reach; the threads take fixed chunks and their lists
+// are joined in order.
+void find_band(const State& s, const std::vector<unsigned char>& reach, LevelHold& H) {
   const Particles& P = s.particles;
   const int nx = s.grid.nodes_x();
   const double ox = s.grid.x.origin, oy = s.grid.y.origin, ix = 1.0 / s.grid.x.h, iy = 1.0 / s.grid.y.h;
@@ -146,11 +147,7 @@ void find_band(const State& s, const std::vector<unsigned char>& mixed, LevelHol
 #pragma omp for schedule(static)
     for (long p = 0; p < long(P.size()); ++p) {
       const int fx = first((P.x[std::size_t(p)] - ox) * ix), fy = first((P.y[std::size_t(p)] - oy) * iy);
-      bool reaches = false;
-      for (int b = 0; b < 3; ++b)
-        for (int a = 0; a < 3; ++a)
-          reaches = reaches || mixed[std::size_t(fy + b) * std::size_t(nx) + std::size_t(fx + a)];
-      if (reaches) mine.push_back(std::uint32_t(p));
+      if (reach[std::size_t(fy) * std::size_t(nx) + std::size_t(fx)]) mine.push_back(std::uint32_t(p));
     }
   }
   for (const std::vector<std::uint32_t>& part : parts) H.band.insert(H.band.end(), part.begin(), part.end());
@@ -252,7 +249,7 @@ void step_subcycled(NestedState& n) {
     if (n.period[l] == 1) continue;
     if (starts[l]) {
       hold_scatter(n.levels[l].fields, n.hold[l], n.coupled[l]);
-      find_band(n.levels[l], n.mixed[l], n.hold[l]);
+      find_band(n.levels[l], n.mixed_reach[l], n.hold[l]);
     } else {
       restore_scatter(n.levels[l].fields, n.hold[l], n.coupled[l]);
     }
