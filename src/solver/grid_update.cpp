@@ -120,6 +120,8 @@ void remapped_bcs(State& s, const std::vector<unsigned char>* only) {
 
 void remapped_grid_velocity(State& s, const std::vector<std::uint32_t>& nodes,
                             const std::vector<unsigned char>& only) {
+  if (!s.absorbing.empty())  // nested levels refuse absorbing edges (solver/nested_state.hpp)
+    throw std::logic_error("remapped_grid_velocity on a node list: absorbing edges");
   GridFields& G = s.fields;
   const long n = long(nodes.size());
   const double floor = s.mass_floor;
@@ -131,7 +133,6 @@ void remapped_grid_velocity(State& s, const std::vector<std::uint32_t>& nodes,
     G.remap_y[i] = m > floor ? G.remap_y[i] / m : 0.0;
   }
   remapped_bcs(s, &only);
-  if (!s.absorbing.empty()) throw std::logic_error("remapped_grid_velocity on a node list: absorbing edges");
 }
 
 void remapped_grid_velocity(State& s) {
