@@ -62,16 +62,16 @@ double seconds_since(Clock::time_point t0) {
 // particle_sort.cpp. Every batch of weights reads x, y, half_x, half_y. A written array that
 // is not also read costs a read too (write-allocate). Grid arrays are not counted: a strip's
 // nodes stay in cache while its particles are scattered.
-//   P2G: x y hx hy m V vx vy sxx syy sxy + field                      -> 11 x 8 + 1
+//   P2G: x y hx hy m V0 vx vy sxx syy sxy + field, material           -> 11 x 8 + 2
 //   G2P velocity + re-map: x y hx hy vx vy m + field; writes vx vy    -> 7 x 8 + 1 + 2 x 8
-//   stress + move: x y hx hy V0 exx eyy exy sxx syy sxy szz + field, material; writes x y
-//     exx eyy exy sxx syy sxy szz, and V (write-allocate: + 8); not vx vy (the MUSL pass's
-//     finiteness check reads the stress: solver/gather.cpp) -> 12 x 8 + 2 + 10 x 8 + 8
-//   sort, every 25 steps: x y twice, then each of the 134 B per particle read, written to
-//     scratch and copied back                                          -> (4 x 8 + 4 x 134) / 25
-constexpr double kBytesP2G = 11 * 8 + 1;
+//   stress + move: x y hx hy V0 sxx syy sxy + field, material; writes x y sxx syy sxy; not
+//     vx vy (the MUSL pass's finiteness check reads the stress: solver/gather.cpp); strain,
+//     sigma_zz and V are derived from the stress, not stored  -> 8 x 8 + 2 + 5 x 8
+//   sort, every 25 steps: x y twice, then each of the bytes_per_particle read, written to
+//     scratch and copied back                                          -> (4 x 8 + 4 x 94) / 25
+constexpr double kBytesP2G = 11 * 8 + 2;
 constexpr double kBytesVelocity = 7 * 8 + 1 + 2 * 8;
-constexpr double kBytesStress = 12 * 8 + 2 + 10 * 8 + 8;
+constexpr double kBytesStress = 8 * 8 + 2 + 5 * 8;
 constexpr double kBytesSort = (4 * 8 + 4 * double(Particles::bytes_per_particle())) / 25.0;
 constexpr double kBytesPerUpdate = kBytesP2G + kBytesVelocity + kBytesStress + kBytesSort;
 

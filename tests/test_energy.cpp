@@ -54,7 +54,7 @@ TEST(Energy, balance_of_a_strongly_compressed_strip_closes_with_the_stored_stres
   State s = make_state(test::strip_1d(length, 4 * h, h, "x", V, end));
   while (s.time < end) step(s);
   const Particles& P = s.particles;
-  const double half_sigma_eps = strain_energy(P);
+  const double half_sigma_eps = strain_energy(P, s.stiffness);
   const double K = kinetic_energy(P), W = s.strain_work, work = s.external_work;
   const double err = (K + W - work) / work, err_old = (K + half_sigma_eps - work) / work;
   std::printf("work %.6e J/m: kinetic %.6e, stored stress work %.6e (balance %+.3f %%), "

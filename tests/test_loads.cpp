@@ -51,7 +51,7 @@ std::string strip_with(const std::string& loads) {
 }
 
 double energy_error(const State& s) {
-  const double total = kinetic_energy(s.particles) + strain_energy(s.particles);
+  const double total = kinetic_energy(s.particles) + strain_energy(s.particles, s.stiffness);
   return std::fabs(s.initial_energy + s.external_work - total) /
          (s.initial_energy + std::fabs(s.external_work));
 }

@@ -54,3 +54,32 @@ TEST(Elastic, plane_stress_has_no_sigma_zz_and_zero_lateral_stress_in_uniaxial_s
   EXPECT_NEAR(C.c12 * exx + C.c11 * eyy, 0.0, 1e-3);
   EXPECT_NEAR(C.c11 * exx + C.c12 * eyy, m.youngs_modulus * exx, 1e-3);
 }
+
+// The particles store the stress only: strain, sigma_zz and tr eps are recovered from it
+// (strain_of, stress_zz, strain_trace). Each must invert C : eps for any strain, in both plane
+// modes and for nu across its range, and agree with the compliance of prestressed_state
+// (Hooke's law written in E and nu, an independent form).
+TEST(Elastic, strain_and_sigma_zz_recovered_from_the_in_plane_stress_invert_C) {
+  for (double nu : {-0.3, 0.0, 0.25, 0.34, 0.49}) {
+    const ElasticMaterial m{"m", 3.1e9, nu, 1000.0};
+    for (PlaneMode mode : {PlaneMode::strain, PlaneMode::stress}) {
+      const ElasticStiffness C = stiffness(m, mode);
+      EXPECT_NEAR(C.c11 - C.c12, 2 * C.mu, 1e-9 * C.c11) << nu;  // isotropy
+      const double e[3] = {1.3e-3, -7e-4, 4.1e-4};             // exx, eyy, exy
+      const double sxx = C.c11 * e[0] + C.c12 * e[1], syy = C.c12 * e[0] + C.c11 * e[1];
+      const double sxy = 2 * C.mu * e[2];
+      double exx, eyy, exy;
+      strain_of(C, sxx, syy, sxy, exx, eyy, exy);
+      EXPECT_NEAR(exx, e[0], 1e-15) << nu;
+      EXPECT_NEAR(eyy, e[1], 1e-15) << nu;
+      EXPECT_NEAR(exy, e[2], 1e-15) << nu;
+      EXPECT_NEAR(strain_trace(C, sxx, syy), e[0] + e[1], 1e-15) << nu;
+      EXPECT_NEAR(stress_zz(C, sxx, syy), C.cz * (e[0] + e[1]), 1e-9 * std::fabs(sxx)) << nu;
+      const ElasticState ps = prestressed_state(m, mode, sxx, syy, sxy);
+      EXPECT_NEAR(ps.exx, exx, 1e-15) << nu;
+      EXPECT_NEAR(ps.eyy, eyy, 1e-15) << nu;
+      EXPECT_NEAR(ps.exy, exy, 1e-15) << nu;
+      EXPECT_NEAR(ps.szz, stress_zz(C, sxx, syy), 1e-9 * std::fabs(sxx)) << nu;
+    }
+  }
+}

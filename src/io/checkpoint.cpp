@@ -298,16 +298,11 @@ void fields(A& a, Particles& p) {
   a("vy", p.vy);
   a("mass", p.mass);
   a("volume0", p.volume0);
-  a("volume", p.volume);
   a("half_x", p.half_x);
   a("half_y", p.half_y);
   a("sxx", p.sxx);
   a("syy", p.syy);
   a("sxy", p.sxy);
-  a("szz", p.szz);
-  a("exx", p.exx);
-  a("eyy", p.eyy);
-  a("exy", p.exy);
   a("field", p.field);
   a("material", p.material);
   a("id", p.id);

@@ -16,9 +16,10 @@
 
 namespace rupture {
 
-inline constexpr int kCheckpointVersion = 5;  // 2: State::strain_work; 3: Mach readings;
+inline constexpr int kCheckpointVersion = 6;  // 2: State::strain_work; 3: Mach readings;
                                               // 4: interface rupture times, peak slip rates;
-                                              // 5: nested levels
+                                              // 5: nested levels; 6: particles store the
+                                              // stress only (no strain, szz, volume)
 
 std::string checkpoint_path(const std::string& dir);  // DIR/checkpoint/checkpoint.bin
 

@@ -86,7 +86,8 @@ SnapshotWriter::SnapshotWriter(std::string dir, const Particles& p, const double
   selected_ = ids.size();
 }
 
-void SnapshotWriter::write(const Particles& p, double time, long step) {
+void SnapshotWriter::write(const Particles& p, const std::vector<ElasticStiffness>& stiffness,
+                           double time, long step) {
   const std::size_t n = selected_;
   std::vector<double> pos(3 * n), vel(3 * n), tau(n), sxx(n), syy(n), sxy(n), szz(n);
   std::vector<int> body(n), id(n), vertex(n);
@@ -101,7 +102,7 @@ void SnapshotWriter::write(const Particles& p, double time, long step) {
     vel[3 * k] = p.vx[i];
     vel[3 * k + 1] = p.vy[i];
     vel[3 * k + 2] = 0.0;
-    sxx[k] = p.sxx[i], syy[k] = p.syy[i], sxy[k] = p.sxy[i], szz[k] = p.szz[i];
+    sxx[k] = p.sxx[i], syy[k] = p.syy[i], sxy[k] = p.sxy[i], szz[k] = stress_zz(stiffness[p.material[i]], p.sxx[i], p.syy[i]);
     const double a = 0.5 * (p.sxx[i] - p.syy[i]);
     tau[k] = std::sqrt(a * a + p.sxy[i] * p.sxy[i]);  // (sigma_1 - sigma_2)/2, SPEC E13
     body[k] = p.field[i];

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "material/elastic.hpp"
 #include "particles/particles.hpp"
 
 namespace rupture {
@@ -23,7 +24,9 @@ class SnapshotWriter {
   // Writes every particle, or only those that start inside `region` (xmin, ymin, xmax, ymax)
   // when given: the same particles at every output time, so ParaView sees one point set.
   SnapshotWriter(std::string dir, const Particles& p, const double* region = nullptr);
-  void write(const Particles& p, double time, long step);
+  // stiffness: the run's table indexed by p.material (sigma_zz follows from the in-plane stress).
+  void write(const Particles& p, const std::vector<ElasticStiffness>& stiffness, double time,
+             long step);
   const std::vector<std::string>& files() const { return files_; }
 
  private:

@@ -18,8 +18,11 @@ struct ElasticMaterial {
 
 // In-plane stiffness for the chosen plane mode: sigma = C : eps with
 //   sxx = c11 exx + c12 eyy, syy = c12 exx + c11 eyy, sxy = 2 mu exy, szz = cz (exx + eyy).
+// Isotropy gives c11 - c12 = 2 mu in both plane modes. tr_per_stress = 1 / (c11 + c12), 1/Pa:
+// tr eps = (sxx + syy) tr_per_stress.
 struct ElasticStiffness {
   double c11, c12, mu, cz;
+  double tr_per_stress;
 };
 
 ElasticStiffness stiffness(const ElasticMaterial& m, PlaneMode mode);
@@ -36,6 +39,25 @@ struct ElasticState {
 // (SPEC E5) assumes, and 0.5 sigma:eps is the strain energy density from the start.
 ElasticState prestressed_state(const ElasticMaterial& m, PlaneMode mode, double sxx, double syy,
                                double sxy);
+
+// A linear elastic point holds sigma = C : eps at every instant (from the start: see
+// prestressed_state; the stress update adds C : d eps), so its strain, sigma_zz and current
+// volume follow from the in-plane stress: the particles store the stress only
+// (particles/particles.hpp). Each equals the incrementally summed quantity up to round-off.
+inline double strain_trace(const ElasticStiffness& C, double sxx, double syy) {
+  return (sxx + syy) * C.tr_per_stress;
+}
+inline double stress_zz(const ElasticStiffness& C, double sxx, double syy) {
+  return C.cz * strain_trace(C, sxx, syy);
+}
+// eps = C^-1 sigma in plane: [c11 c12; c12 c11]^-1 = [c11 -c12; -c12 c11] / ((c11 - c12)(c11 + c12)).
+inline void strain_of(const ElasticStiffness& C, double sxx, double syy, double sxy, double& exx,
+                      double& eyy, double& exy) {
+  const double two_mu = 2.0 * C.mu, det = two_mu / C.tr_per_stress;  // (c11 - c12)(c11 + c12)
+  exx = (C.c11 * sxx - C.c12 * syy) / det;
+  eyy = (C.c11 * syy - C.c12 * sxx) / det;
+  exy = sxy / two_mu;
+}
 
 struct WaveSpeeds {
   double dilatational;  // c_D, m/s

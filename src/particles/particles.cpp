@@ -7,8 +7,7 @@
 namespace rupture {
 
 void Particles::resize(std::size_t n) {
-  for (auto* v : {&x, &y, &vx, &vy, &mass, &volume0, &volume, &half_x, &half_y, &sxx, &syy, &sxy,
-                  &szz, &exx, &eyy, &exy}) {
+  for (auto* v : {&x, &y, &vx, &vy, &mass, &volume0, &half_x, &half_y, &sxx, &syy, &sxy}) {
     v->resize(n, 0.0);
   }
   field.resize(n, 0);
@@ -31,8 +30,7 @@ void permute_one(std::vector<T>& v, const std::vector<std::uint32_t>& order, std
 }  // namespace
 
 void Particles::permute(const std::vector<std::uint32_t>& order, std::vector<double>& scratch) {
-  for (auto* v : {&x, &y, &vx, &vy, &mass, &volume0, &volume, &half_x, &half_y, &sxx, &syy, &sxy,
-                  &szz, &exx, &eyy, &exy}) {
+  for (auto* v : {&x, &y, &vx, &vy, &mass, &volume0, &half_x, &half_y, &sxx, &syy, &sxy}) {
     permute_one(*v, order, scratch);
   }
   thread_local std::vector<std::uint8_t> tmp8;
@@ -60,10 +58,9 @@ void move_one(std::vector<T>& from, std::vector<T>& to, const std::vector<unsign
 std::size_t Particles::move_marked(const std::vector<unsigned char>& mark, Particles& to) {
   const std::size_t before = size();
   for (auto [a, b] : {std::pair{&x, &to.x}, {&y, &to.y}, {&vx, &to.vx}, {&vy, &to.vy},
-                      {&mass, &to.mass}, {&volume0, &to.volume0}, {&volume, &to.volume},
+                      {&mass, &to.mass}, {&volume0, &to.volume0},
                       {&half_x, &to.half_x}, {&half_y, &to.half_y}, {&sxx, &to.sxx},
-                      {&syy, &to.syy}, {&sxy, &to.sxy}, {&szz, &to.szz}, {&exx, &to.exx},
-                      {&eyy, &to.eyy}, {&exy, &to.exy}}) {
+                      {&syy, &to.syy}, {&sxy, &to.sxy}}) {
     move_one(*a, *b, mark);
   }
   move_one(field, to.field, mark);
@@ -75,9 +72,8 @@ std::size_t Particles::move_marked(const std::vector<unsigned char>& mark, Parti
 void Particles::append_copy(const Particles& from) {
   const auto add = [](auto& to, const auto& v) { to.insert(to.end(), v.begin(), v.end()); };
   add(x, from.x), add(y, from.y), add(vx, from.vx), add(vy, from.vy), add(mass, from.mass);
-  add(volume0, from.volume0), add(volume, from.volume), add(half_x, from.half_x);
-  add(half_y, from.half_y), add(sxx, from.sxx), add(syy, from.syy), add(sxy, from.sxy);
-  add(szz, from.szz), add(exx, from.exx), add(eyy, from.eyy), add(exy, from.exy);
+  add(volume0, from.volume0), add(half_x, from.half_x), add(half_y, from.half_y);
+  add(sxx, from.sxx), add(syy, from.syy), add(sxy, from.sxy);
   add(field, from.field), add(material, from.material), add(id, from.id);
 }
 
@@ -99,7 +95,7 @@ void seed_rectangle(Particles& p, const double min[2], const double max[2], doub
       p.y[k] = lattice_centre(origin[1], side, iy + j);
       p.vx[k] = velocity[0];
       p.vy[k] = velocity[1];
-      p.volume0[k] = p.volume[k] = side * side;
+      p.volume0[k] = side * side;
       p.mass[k] = density * side * side;
       p.half_x[k] = p.half_y[k] = 0.5 * side;
       p.field[k] = field;

@@ -1,9 +1,11 @@
 // rupture/particles/particles.hpp
 // Structure-of-arrays particle store (SI: m, m/s, kg, m^3 per unit thickness -> m^2, Pa).
 // Every array has size(); index p is one material point. The solver re-sorts particles by
-// cell (solver/step.hpp), so an index is not stable in time: `id` is. Stress and strain are the
-// in-plane components plus sigma_zz (kept for plane strain, SPEC E5). `field` is the velocity
-// field the particle maps to (one per body), `material` indexes the material table.
+// cell (solver/step.hpp), so an index is not stable in time: `id` is. The state is the in-plane
+// Cauchy stress: for the linear elastic materials (material/elastic.hpp) the strain, sigma_zz
+// and the current area V = V0 (1 + tr eps) follow from it and the particle's material, so they
+// are not stored (each array costs every particle loop that streams it). `field` is the
+// velocity field the particle maps to (one per body), `material` indexes the material table.
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -17,10 +19,8 @@ struct Particles {
   std::vector<double> vx, vy;          // velocity, m/s
   std::vector<double> mass;            // kg (per unit thickness)
   std::vector<double> volume0;         // initial area (volume per unit thickness), m^2
-  std::vector<double> volume;          // current area, m^2
   std::vector<double> half_x, half_y;  // GIMP half-widths l_p, m (fixed: uGIMP)
-  std::vector<double> sxx, syy, sxy, szz;  // Cauchy stress, Pa
-  std::vector<double> exx, eyy, exy;       // small strain (tensor components), -
+  std::vector<double> sxx, syy, sxy;       // in-plane Cauchy stress, Pa
   std::vector<std::uint8_t> field;         // velocity field (body) id
   std::vector<std::uint8_t> material;      // material id
   std::vector<std::uint32_t> id;           // creation index: identity across re-sorting
@@ -30,7 +30,7 @@ struct Particles {
   void resize(std::size_t n);
   // Bytes held per particle by the arrays above.
   static constexpr std::size_t bytes_per_particle() {
-    return 16 * sizeof(double) + 2 * sizeof(std::uint8_t) + sizeof(std::uint32_t);
+    return 11 * sizeof(double) + 2 * sizeof(std::uint8_t) + sizeof(std::uint32_t);
   }
   // Reorders every array so that the particle now at index k is the one that was at
   // order[k]. `scratch` is reused between calls to avoid allocating in the time loop.

@@ -53,7 +53,7 @@ void fill(Particles& p, std::size_t k, const SeedPoint& s, const SeedProperties&
   p.y[k] = s.y;
   p.vx[k] = props.velocity[0];
   p.vy[k] = props.velocity[1];
-  p.volume0[k] = p.volume[k] = s.lx * s.ly;
+  p.volume0[k] = s.lx * s.ly;
   p.mass[k] = props.density * s.lx * s.ly;
   p.half_x[k] = 0.5 * s.lx;
   p.half_y[k] = 0.5 * s.ly;

@@ -212,7 +212,7 @@ RunResult run_case(const Case& c, const RunOptions& options) {
   if (!options.resume) {
     if (!c.stations.empty()) sample_stations_now();
     history.samples.push_back(sample(s));
-    if (snapshots) snapshots->write(s.particles, s.time, s.step);
+    if (snapshots) snapshots->write(s.particles, s.stiffness, s.time, s.step);
     if (c.output.interface_interval > 0) write_interfaces();
     for (std::size_t k = 0; k < cracks.size(); ++k) cracks[k].sample(s.interfaces[k], s.time);
   }
@@ -296,7 +296,7 @@ RunResult run_case(const Case& c, const RunOptions& options) {
         history.samples.push_back(sample(s));
         check_energy(s, history.samples.back());
         if (prof.interval > 0) write_interfaces();
-        if (snapshots) snapshots->write(s.particles, s.time, s.step);  // gathered above
+        if (snapshots) snapshots->write(s.particles, s.stiffness, s.time, s.step);  // gathered above
         if (ctx.mach_schedule.interval > 0) read_mach_angles();
         record.stop_reason = result.stop_reason = "crack_reached_interface_end";
         break;
@@ -323,7 +323,7 @@ RunResult run_case(const Case& c, const RunOptions& options) {
       bool flushed = false;
       if (snapshots && synced && (snap.due(s.time, eps) || last)) {
         gather_particles(s);
-        snapshots->write(s.particles, s.time, s.step);
+        snapshots->write(s.particles, s.stiffness, s.time, s.step);
         flush();
         flushed = true;
         snap.advance(s.time, eps);

@@ -68,7 +68,7 @@ StepCost measure_step_cost(const Case& c, double budget_seconds, int min_steps, 
       const auto a = clock::now();
       SnapshotWriter w(tmp.string(), s.particles,
                        c.output.has_snapshot_region ? c.output.snapshot_region : nullptr);
-      w.write(s.particles, s.time, s.step);
+      w.write(s.particles, s.stiffness, s.time, s.step);
       cost.snapshot_seconds = seconds(a, clock::now());
     }
     if (c.output.interface_interval > 0) {

@@ -11,11 +11,12 @@ double kinetic_energy(const Particles& p) {
   return e;
 }
 
-double strain_energy(const Particles& p) {
+double strain_energy(const Particles& p, const std::vector<ElasticStiffness>& stiffness) {
   const long n = long(p.size());
   double e = 0.0;
 #pragma omp parallel for reduction(+ : e) schedule(static)
-  for (long i = 0; i < n; ++i) e += elastic_energy(p, std::size_t(i));
+  for (long i = 0; i < n; ++i)
+    e += elastic_energy(p, stiffness[p.material[std::size_t(i)]], std::size_t(i));
   return e;
 }
 

@@ -15,17 +15,22 @@
 #pragma once
 #include <cstddef>
 
+#include <vector>
+
+#include "material/elastic.hpp"
 #include "particles/particles.hpp"
 
 namespace rupture {
 
 double kinetic_energy(const Particles& p);
-double strain_energy(const Particles& p);  // the elastic sum, 1/2 V0 sigma : eps
-// 1/2 V0 sigma : eps of particle p (plane strain: eps_zz = 0; plane stress: sigma_zz = 0, so
-// no out-of-plane term either way), J/m.
-inline double elastic_energy(const Particles& P, std::size_t p) {
-  return 0.5 * P.volume0[p] *
-         (P.sxx[p] * P.exx[p] + P.syy[p] * P.eyy[p] + 2.0 * P.sxy[p] * P.exy[p]);
+// The elastic sum, 1/2 V0 sigma : eps; stiffness: the run's table, indexed by P.material.
+double strain_energy(const Particles& p, const std::vector<ElasticStiffness>& stiffness);
+// 1/2 V0 sigma : eps of particle p with eps = C^-1 sigma (plane strain: eps_zz = 0; plane
+// stress: sigma_zz = 0, so no out-of-plane term either way), J/m.
+inline double elastic_energy(const Particles& P, const ElasticStiffness& C, std::size_t p) {
+  double exx, eyy, exy;
+  strain_of(C, P.sxx[p], P.syy[p], P.sxy[p], exx, eyy, exy);
+  return 0.5 * P.volume0[p] * (P.sxx[p] * exx + P.syy[p] * eyy + 2.0 * P.sxy[p] * exy);
 }
 // The work V sigma : d eps of one strain increment d eps (d exy: tensor component) that takes
 // the stress from (sxx, syy, sxy) by (dsxx, dsyy, dsxy), with tr eps = tr_eps before it; both

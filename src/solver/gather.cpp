@@ -159,39 +159,31 @@ void gather_nodes(const StencilBatch& B, int n, const double* __restrict gvx,
 
 // SPEC E5 for particles [p, p + n): eps_dot = sym(L), sigma_dot = C : eps_dot (small strain,
 // plane mode in C), and E14's stress work of the increment (solver/energy.hpp), summed in
-// particle order into `work`.
+// particle order into `work`. The stress is the stored state: tr eps (for the volume) follows
+// from it (material/elastic.hpp), and sigma_zz and the strain are derived where needed.
 void update_stress(Particles& P, std::size_t p, int n, const Gathered& g,
                    const std::vector<ElasticStiffness>& stiffness, double dt, double& work) {
-  alignas(64) double c11[kBatch], c12[kBatch], mu[kBatch], cz[kBatch], wk[kBatch];
+  alignas(64) double c11[kBatch], c12[kBatch], mu[kBatch], kt[kBatch], wk[kBatch];
   const std::uint8_t* mat = P.material.data() + p;
   for (int k = 0; k < n; ++k) {
     const ElasticStiffness& C = stiffness[mat[k]];
-    c11[k] = C.c11, c12[k] = C.c12, mu[k] = C.mu, cz[k] = C.cz;
+    c11[k] = C.c11, c12[k] = C.c12, mu[k] = C.mu, kt[k] = C.tr_per_stress;
   }
-  double* __restrict exx = P.exx.data() + p;
-  double* __restrict eyy = P.eyy.data() + p;
-  double* __restrict exy = P.exy.data() + p;
   double* __restrict sxx = P.sxx.data() + p;
   double* __restrict syy = P.syy.data() + p;
   double* __restrict sxy = P.sxy.data() + p;
-  double* __restrict szz = P.szz.data() + p;
-  double* __restrict vol = P.volume.data() + p;
   const double* __restrict vol0 = P.volume0.data() + p;
 #pragma omp simd
   for (int k = 0; k < n; ++k) {
     const double dexx = g.L00[k] * dt, deyy = g.L11[k] * dt, dexy = 0.5 * (g.L01[k] + g.L10[k]) * dt;
     const double dsxx = c11[k] * dexx + c12[k] * deyy, dsyy = c12[k] * dexx + c11[k] * deyy,
                  dsxy = 2.0 * mu[k] * dexy;
-    wk[k] = stress_work(vol0[k], exx[k] + eyy[k], sxx[k], syy[k], sxy[k], dexx, deyy, dexy, dsxx,
-                        dsyy, dsxy);
-    exx[k] += dexx;
-    eyy[k] += deyy;
-    exy[k] += dexy;
+    const double tr_eps = (sxx[k] + syy[k]) * kt[k];  // strain_trace, before the increment
+    wk[k] = stress_work(vol0[k], tr_eps, sxx[k], syy[k], sxy[k], dexx, deyy, dexy, dsxx, dsyy,
+                        dsxy);
     sxx[k] += dsxx;
     syy[k] += dsyy;
     sxy[k] += dsxy;
-    szz[k] += cz[k] * (dexx + deyy);
-    vol[k] = vol0[k] * (1.0 + exx[k] + eyy[k]);
   }
   for (int k = 0; k < n; ++k) work += wk[k];
 }
@@ -318,8 +310,7 @@ StripResult strip_to_particles(State& s, int strip, const double* gvx, const dou
     const int n = int(std::min<std::size_t>(kBatch, end - p0));
     if constexpr (kMode != G2PMode::stress_and_move)
       for (const std::vector<double>* a : {&P.vx, &P.vy}) prefetch_batch(a->data(), p0);
-    for (const std::vector<double>* a : {&P.sxx, &P.syy, &P.sxy, &P.szz, &P.exx, &P.eyy, &P.exy,
-                                         &P.volume, &P.volume0})
+    for (const std::vector<double>* a : {&P.sxx, &P.syy, &P.sxy, &P.volume0})
       prefetch_batch(a->data(), p0);
     prefetch_batch(P.material.data(), p0);
     batch_stencils(s, p0, n, B);

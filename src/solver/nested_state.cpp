@@ -179,6 +179,7 @@ State make_nested_run_state(const Case& c) {
   s.grid = n->levels[std::size_t(il >= 0 ? il : int(n->levels.size()) - 1)].grid;
   s.scheme = first.scheme;
   s.flip = first.flip;
+  s.stiffness = first.stiffness;  // the gathered particles' derived state (material/elastic.hpp)
   s.limits = first.limits;
   s.dt = first.dt;
   s.cohesive_safety = first.cohesive_safety;

@@ -24,8 +24,7 @@ void prestress(Particles& P, std::size_t first, std::size_t last, const BodySpec
   if (b.stress[0] == 0.0 && b.stress[1] == 0.0 && b.stress[2] == 0.0) return;
   const ElasticState e = prestressed_state(m, plane, b.stress[0], b.stress[1], b.stress[2]);
   for (std::size_t p = first; p < last; ++p) {
-    P.sxx[p] = e.sxx, P.syy[p] = e.syy, P.sxy[p] = e.sxy, P.szz[p] = e.szz;
-    P.exx[p] = e.exx, P.eyy[p] = e.eyy, P.exy[p] = e.exy;
+    P.sxx[p] = e.sxx, P.syy[p] = e.syy, P.sxy[p] = e.sxy;  // strain, sigma_zz: derived
   }
 }
 
@@ -97,7 +96,7 @@ State make_state_on(const Case& c, Grid grid, const std::function<bool(double, d
   // treated as empty. A higher floor zeroes the velocity of lightly touched nodes whose weight
   // gradient is not small (dS ~ sqrt(S)), which breaks rigid-body motion at the 1e-9 level.
   s.mass_floor = 1e-20 * min_mass;
-  s.strain_work = strain_energy(s.particles);  // the elastic energy at t = 0 (prestress)
+  s.strain_work = strain_energy(s.particles, s.stiffness);  // the elastic energy at t = 0 (prestress)
   s.initial_energy = kinetic_energy(s.particles) + s.strain_work;
   // Sorted from the start, so particle indices are stable until the first re-sort.
   build_scatter_plan(s);

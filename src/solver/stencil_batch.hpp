@@ -155,7 +155,8 @@ inline void batch_stencils(const State& s, std::size_t p0, int n, StencilBatch& 
 }
 
 // Runs body(p, k, B) for particles [begin, end), batch by batch (k: index in the batch B);
-// ahead(p0) first for each batch (the loop's prefetches: prefetch_batch).
+// ahead(p0) first for each batch (the loop's prefetches: prefetch_batch; per-batch factors
+// computed SIMD over the batch's particles).
 template <class Body, class Ahead>
 inline void for_each_in_batches(const State& s, std::size_t begin, std::size_t end, Body&& body,
                                 Ahead&& ahead) {

@@ -110,15 +110,14 @@ velocity = 0.0
     const double wp = one_d ? 0.0 : -kPi / k.width * std::sin(2.0 * kPi * eta / k.width);
     const double gx = k.dx * fp * w - k.dy * f * wp, gy = k.dy * fp * w + k.dx * f * wp;
     P.vx[p] = -c * ax * fp * w, P.vy[p] = -c * ay * fp * w;
-    P.exx[p] = ax * gx, P.eyy[p] = ay * gy, P.exy[p] = 0.5 * (ax * gy + ay * gx);
-    const double tr = P.exx[p] + P.eyy[p];
-    P.sxx[p] = lambda * tr + 2.0 * mu * P.exx[p];
-    P.syy[p] = lambda * tr + 2.0 * mu * P.eyy[p];
-    P.sxy[p] = 2.0 * mu * P.exy[p];
-    P.szz[p] = lambda * tr;
+    const double exx = ax * gx, eyy = ay * gy, exy = 0.5 * (ax * gy + ay * gx);
+    const double tr = exx + eyy;
+    P.sxx[p] = lambda * tr + 2.0 * mu * exx;  // strain, sigma_zz: derived from the stress
+    P.syy[p] = lambda * tr + 2.0 * mu * eyy;
+    P.sxy[p] = 2.0 * mu * exy;
   }
   Run r;
-  r.e0 = kinetic_energy(P) + strain_energy(P);
+  r.e0 = kinetic_energy(P) + strain_energy(P, s.stiffness);
   std::vector<Key> key_of_id(P.size());
   for (std::size_t p = 0; p < P.size(); ++p)
     key_of_id[P.id[p]] = {std::lround(4.0 * P.x[p] / kH), std::lround(4.0 * P.y[p] / kH)};
@@ -133,9 +132,12 @@ velocity = 0.0
     r.receiver.push_back(sum / count);
   }
   r.steps = s.step;
-  for (std::size_t p = 0; p < P.size(); ++p)
+  for (std::size_t p = 0; p < P.size(); ++p) {
+    double exx, eyy, exy;
+    strain_of(s.stiffness[P.material[p]], P.sxx[p], P.syy[p], P.sxy[p], exx, eyy, exy);
     r.final[key_of_id[P.id[p]]] = {P.mass[p], P.volume0[p], P.vx[p], P.vy[p], P.sxx[p],
-                                   P.syy[p],  P.sxy[p],     P.exx[p], P.eyy[p], P.exy[p]};
+                                   P.syy[p],  P.sxy[p],     exx,      eyy,      exy};
+  }
   return r;
 }
 

@@ -56,7 +56,7 @@ Debonding run_inclusion(double end, const std::vector<std::string>& overrides) {
   d.length = ci.length();
   d.dissipated = ci.work - ci.stored_energy();
   d.phi_n = std::get<XuNeedleman>(ci.spec.law).phi_n();
-  const double total = kinetic_energy(s.particles) + strain_energy(s.particles) + ci.work;
+  const double total = kinetic_energy(s.particles) + strain_energy(s.particles, s.stiffness) + ci.work;
   d.energy_error = std::fabs(total - s.external_work) / s.external_work;
   return d;
 }

@@ -32,7 +32,7 @@ double nested_mean_sxx(const NestedState& n, double x0, double x1) {
 
 double nested_energy(const NestedState& n) {
   double e = 0;
-  for (const State& s : n.levels) e += kinetic_energy(s.particles) + strain_energy(s.particles);
+  for (const State& s : n.levels) e += kinetic_energy(s.particles) + strain_energy(s.particles, s.stiffness);
   return e;
 }
 
@@ -89,7 +89,7 @@ PulseRun pulse(double height, double rise, const std::vector<RefineLevel>& boxes
       step(s);
       record(s.time, test::mean_over(s.particles, s.particles.sxx, 0.0095, 0.0105),
              test::mean_over(s.particles, s.particles.sxx, 0.0495, 0.0505),
-             kinetic_energy(s.particles) + strain_energy(s.particles), s.external_work);
+             kinetic_energy(s.particles) + strain_energy(s.particles, s.stiffness), s.external_work);
     }
     return r;
   }
@@ -488,7 +488,7 @@ Totals totals(const NestedState& n) {
       t.px += P.mass[i] * P.vx[i], t.py += P.mass[i] * P.vy[i];
       t.scale += P.mass[i] * std::hypot(P.vx[i], P.vy[i]);
     }
-    t.energy += kinetic_energy(P) + strain_energy(P);
+    t.energy += kinetic_energy(P) + strain_energy(P, s.stiffness);
   }
   return t;
 }

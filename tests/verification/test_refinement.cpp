@@ -164,7 +164,7 @@ PulseRun pulse(bool refined) {
       r.arrival_b = prev_t + (-0.5 * r.amplitude - prev_b) / (b - prev_b) * (s.time - prev_t);
     prev_t = s.time, prev_b = b;
     if (s.time > 4e-6) {  // after the loading: W_ext is final
-      const double e = kinetic_energy(s.particles) + strain_energy(s.particles);
+      const double e = kinetic_energy(s.particles) + strain_energy(s.particles, s.stiffness);
       r.energy_error = std::max(r.energy_error, std::fabs(e - s.external_work) / s.external_work);
     }
   }
