@@ -19,17 +19,15 @@ inline constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
 
 // Stencils of a batch of consecutive particles, computed SIMD over particles (the weights are
 // then reused across the batch's node loops). For particle k: weights sx[a][k], sy[b][k] of
-// node (first_x + a, first_y + b) and their derivatives; base[k] = the element of node
-// (first_x, first_y) in the particle's field, stride[k] = elements from one node row to the
-// next there (the field's window holds all nine nodes: solver/field_windows.hpp).
+// node (first_x + a, first_y + b) and their derivatives (the field's window holds all nine
+// nodes: solver/field_windows.hpp; the loops reach them through their strip's tile,
+// solver/strip_tile.hpp).
 constexpr int kBatch = 16;
 struct StencilBatch {
   alignas(64) double sx[3][kBatch];
   alignas(64) double dsx[3][kBatch];
   alignas(64) double sy[3][kBatch];
   alignas(64) double dsy[3][kBatch];
-  std::size_t base[kBatch];
-  std::size_t stride[kBatch];
   int first_x[kBatch], first_y[kBatch];
 };
 
@@ -139,19 +137,16 @@ inline void batch_stencils(const State& s, std::size_t p0, int n, StencilBatch& 
   prefetch_batch(P.half_x.data(), p0);
   prefetch_batch(P.half_y.data(), p0);
   prefetch_batch(P.field.data(), p0);
-  int fx[kBatch], fy[kBatch];
-  axis_stencils(s.grid.x, P.x.data() + p0, P.half_x.data() + p0, n, B.sx, B.dsx, fx);
-  axis_stencils(s.grid.y, P.y.data() + p0, P.half_y.data() + p0, n, B.sy, B.dsy, fy);
+  axis_stencils(s.grid.x, P.x.data() + p0, P.half_x.data() + p0, n, B.sx, B.dsx, B.first_x);
+  axis_stencils(s.grid.y, P.y.data() + p0, P.half_y.data() + p0, n, B.sy, B.dsy, B.first_y);
+#ifndef NDEBUG
+  // The 3 x 3 stencil lies in the field's window (the tiles are filled from it).
   const GridFields& G = s.fields;
   for (int k = 0; k < n; ++k) {
     const int f = P.field[p0 + std::size_t(k)];
-    // Debug builds: the 3 x 3 stencil lies in the field's window (the gathers index it
-    // directly).
-    assert(G.holds(f, fx[k], fy[k]) && G.holds(f, fx[k] + 2, fy[k] + 2));
-    B.first_x[k] = fx[k], B.first_y[k] = fy[k];
-    B.base[k] = G.index(f, fx[k], fy[k]);
-    B.stride[k] = G.stride(f);
+    assert(G.holds(f, B.first_x[k], B.first_y[k]) && G.holds(f, B.first_x[k] + 2, B.first_y[k] + 2));
   }
+#endif
 }
 
 // Runs body(p, k, B) for particles [begin, end), batch by batch (k: index in the batch B);

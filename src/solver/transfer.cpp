@@ -142,9 +142,11 @@ void particles_to_grid_force(State& s) {
   State* one = &s;
   for_each_strip_coloured(&one, 1, [&](State&, int, std::size_t begin, std::size_t end) {
     BatchForce f;
-    for_each_in_batches(s, begin, end, [&](std::size_t, int k, const StencilBatch& B) {
+    for_each_in_batches(s, begin, end, [&](std::size_t p, int k, const StencilBatch& B) {
+      const int field = P.field[p];
+      const std::size_t base = G.index(field, B.first_x[k], B.first_y[k]), stride = G.stride(field);
       for (int b = 0; b < 3; ++b) {
-        const std::size_t row = B.base[k] + std::size_t(b) * B.stride[k];
+        const std::size_t row = base + std::size_t(b) * stride;
         for (int a = 0; a < 3; ++a) {
           const double gx = B.dsx[a][k] * B.sy[b][k], gy = B.sx[a][k] * B.dsy[b][k];
           fx[row + a] += f.xx[k] * gx + f.xy[k] * gy;
