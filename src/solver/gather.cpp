@@ -87,12 +87,13 @@ struct GatherTile {
   static constexpr int kVelLane = kStress ? 2 : 0, kDvLane = kVelLane + 2;
   static constexpr int kLanes = (kStress ? 2 : 0) + (kVel ? 2 : 0) + (kDv ? 2 : 0);
   using Lane = std::conditional_t<kLanes == 2, Lane2, std::conditional_t<kLanes == 4, Lane4, Lane8>>;
-  static Lane pack(const double* gvx, const double* gvy, const GridFields& G, std::size_t n) {
-    Lane v{};
+  // Written through a reference: a vector return value changes the ABI without AVX.
+  static void pack(const double* gvx, const double* gvy, const GridFields& G, std::size_t n,
+                   Lane& v) {
+    v = Lane{};
     if constexpr (kStress) v[0] = gvx[n], v[1] = gvy[n];
     if constexpr (kVel) v[kVelLane] = G.vel_x[n], v[kVelLane + 1] = G.vel_y[n];
     if constexpr (kDv) v[kDvLane] = G.dvel_x[n], v[kDvLane + 1] = G.dvel_y[n];
-    return v;
   }
 };
 
@@ -289,7 +290,7 @@ StripResult strip_to_particles(State& s, int strip, const double* gvx, const dou
   thread_local std::vector<typename GT::Lane> buffer;
   tile_layout_kept(s, strip, begin, end, T);
   typename GT::Lane* tile = tile_buffer(buffer, T.size(), false);
-  for_each_tile_node(s, T, [&](std::size_t t, std::size_t n) { tile[t] = GT::pack(gvx, gvy, G, n); });
+  for_each_tile_node(s, T, [&](std::size_t t, std::size_t n) { GT::pack(gvx, gvy, G, n, tile[t]); });
   StencilBatch B;
   Gathered g;
   for (std::size_t p0 = begin; p0 < end; p0 += kBatch) {
