@@ -94,13 +94,23 @@ TEST(Solver, non_finite_velocity_is_caught_in_the_same_musl_step) {
     std::size_t seed = 0;
     while (s.particles.id[seed] != 41) ++seed;
     s.particles.vy[seed] = bad;
+    const double x = s.particles.x[seed], y = s.particles.y[seed];
     try {
       step(s);
       FAIL() << "no SimulationError for v_y = " << bad;
     } catch (const SimulationError& e) {
       const std::string m = e.what();
       EXPECT_NE(m.find("unstable: non-finite"), std::string::npos) << m;
+      EXPECT_NE(m.find("velocity"), std::string::npos) << m;
       EXPECT_NE(m.find("step 0, t = 0 s"), std::string::npos) << m;
+      // The particles the bad velocity reached are not moved with it: the reported region is
+      // finite, local, and holds where it started.
+      double x0, x1, y0, y1;
+      const auto pos = m.find("x in [");
+      ASSERT_NE(pos, std::string::npos) << m;
+      ASSERT_EQ(std::sscanf(m.c_str() + pos, "x in [%lf, %lf], y in [%lf, %lf]", &x0, &x1, &y0, &y1), 4) << m;
+      EXPECT_TRUE(x >= x0 && x <= x1 && y >= y0 && y <= y1) << m;
+      EXPECT_LT(x1 - x0, 0.003) << "region should be local: " << m;
     }
   }
 }

@@ -15,7 +15,9 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <string>
 #include <type_traits>
+#include <utility>
 
 #include "core/errors.hpp"
 #include "solver/energy.hpp"
@@ -28,38 +30,49 @@ using namespace detail;
 namespace {
 
 // A failure spreads through the grid within one step, so the diagnosis reports every bad
-// particle's extent (where it started lies inside) and the worst one, not just the first index.
+// particle's extent (where it started lies inside: a particle is not moved with a non-finite
+// velocity, move_particles) and the worst one, not just the first index, naming every
+// quantity found non-finite.
 std::string diagnose_bad_particles(const State& s, double xlo, double xhi, double ylo, double yhi) {
   const Particles& P = s.particles;
   std::size_t nonfinite = 0, outside = 0, first = kNone;
+  bool bad_x = false, bad_v = false, bad_s = false;
   double bx0 = INFINITY, bx1 = -INFINITY, by0 = INFINITY, by1 = -INFINITY;
-  const char* quantity = "velocity";
   for (std::size_t p = 0; p < P.size(); ++p) {
+    const bool x_ok = std::isfinite(P.x[p]) && std::isfinite(P.y[p]);
     const bool v_ok = std::isfinite(P.vx[p] + P.vy[p]);
     const bool s_ok = std::isfinite(P.sxx[p] + P.syy[p] + P.sxy[p]);
     const bool in = P.x[p] > xlo && P.x[p] < xhi && P.y[p] > ylo && P.y[p] < yhi;
     if (v_ok && s_ok && in) continue;
     if (first == kNone) first = p;
-    if (!v_ok || !s_ok) {
+    if (!x_ok || !v_ok || !s_ok) {
       ++nonfinite;
-      if (!s_ok && v_ok) quantity = "stress";
+      bad_x = bad_x || !x_ok, bad_v = bad_v || !v_ok, bad_s = bad_s || !s_ok;
     } else {
       ++outside;
     }
-    if (std::isfinite(P.x[p]) && std::isfinite(P.y[p])) {
+    if (x_ok) {
       bx0 = std::min(bx0, P.x[p]), bx1 = std::max(bx1, P.x[p]);
       by0 = std::min(by0, P.y[p]), by1 = std::max(by1, P.y[p]);
     }
   }
+  const std::string region =
+      bx0 <= bx1 ? fmt::format("affected region x in [{:.6g}, {:.6g}], y in [{:.6g}, {:.6g}] m",
+                               bx0, bx1, by0, by1)
+                 : std::string("no affected particle has a finite position");
   const std::string where = fmt::format(
-      "at step {}, t = {:.6g} s; affected region x in [{:.6g}, {:.6g}], y in [{:.6g}, {:.6g}] m; "
-      "first: particle {} (field {}) at (x, y) = ({:.6g}, {:.6g}) m, v = ({:.4g}, {:.4g}) m/s",
-      s.step, s.time, bx0, bx1, by0, by1, P.id[first], int(P.field[first]), P.x[first], P.y[first],
+      "at step {}, t = {:.6g} s; {}; first: particle {} (field {}) at (x, y) = ({:.6g}, {:.6g}) "
+      "m, v = ({:.4g}, {:.4g}) m/s",
+      s.step, s.time, region, P.id[first], int(P.field[first]), P.x[first], P.y[first],
       P.vx[first], P.vy[first]);
-  if (nonfinite > 0)
+  if (nonfinite > 0) {
+    std::string what;
+    for (const auto& [bad, name] : {std::pair{bad_x, "position"}, {bad_v, "velocity"}, {bad_s, "stress"}})
+      if (bad) what += (what.empty() ? "" : ", ") + std::string(name);
     return fmt::format(
         "unstable: non-finite {} in {} particle(s) {}; reduce time.cfl or check the loading",
-        quantity, nonfinite, where);
+        what, nonfinite, where);
+  }
   return fmt::format(
       "particle left the grid: {} particle(s) {}; the grid with its ghost cells spans x in "
       "[{:.6g}, {:.6g}], y in [{:.6g}, {:.6g}] m",
@@ -175,7 +188,10 @@ struct MoveLimits {
 };
 
 // Moves particles [p, p + n) with the gathered velocity; sets `drifted` when one left its
-// strip's tolerance, raises `fastest` to the largest |v_x| + |v_y| of a finite particle.
+// strip's tolerance, raises `fastest` to the largest |v_x| + |v_y| of a finite particle. A
+// non-finite velocity does not move its particle: the run stops at the end of the pass
+// (first_bad: that velocity reaches the particle's stress or velocity in the same pass), and
+// the diagnosis then reports where the particles went bad.
 void move_particles(Particles& P, std::size_t p, int n, const Gathered& g, double dt,
                     const Axis& ax, const MoveLimits& lim, bool& drifted, double& fastest) {
   double* __restrict x = P.x.data() + p;
@@ -185,16 +201,20 @@ void move_particles(Particles& P, std::size_t p, int n, const Gathered& g, doubl
   bool out = false;
   if (ax.graded()) {
     for (int k = 0; k < n; ++k) {
-      x[k] += dt * g.mv_x[k];
-      y[k] += dt * g.mv_y[k];
+      const double dx = dt * g.mv_x[k], dy = dt * g.mv_y[k];
+      const bool finite = std::fabs(dx + dy) <= DBL_MAX;
+      x[k] += finite ? dx : 0.0;
+      y[k] += finite ? dy : 0.0;
       col[k] = std::isfinite(x[k]) ? double(ax.cell_of(x[k])) : lim.col_lo;
     }
   } else {
     const double inv_h = 1.0 / ax.h, origin = ax.origin;
 #pragma omp simd
     for (int k = 0; k < n; ++k) {
-      x[k] += dt * g.mv_x[k];
-      y[k] += dt * g.mv_y[k];
+      const double dx = dt * g.mv_x[k], dy = dt * g.mv_y[k];
+      const bool finite = std::fabs(dx + dy) <= DBL_MAX;
+      x[k] += finite ? dx : 0.0;
+      y[k] += finite ? dy : 0.0;
       // floor for the particles inside the grid (u > 0); a non-finite or outside one is
       // diagnosed by the caller, so its column is only kept inside the tolerance here.
       const double u = (x[k] - origin) * inv_h;
@@ -205,7 +225,8 @@ void move_particles(Particles& P, std::size_t p, int n, const Gathered& g, doubl
   for (int k = 0; k < n; ++k) {
     const bool finite = std::fabs(x[k] + y[k]) <= DBL_MAX;
     out = out || (finite && (col[k] < lim.col_lo || col[k] > lim.col_hi));
-    fast = std::max(fast, finite ? std::fabs(g.mv_x[k]) + std::fabs(g.mv_y[k]) : 0.0);
+    const double speed = std::fabs(g.mv_x[k]) + std::fabs(g.mv_y[k]);
+    fast = std::max(fast, speed <= DBL_MAX ? speed : 0.0);  // a non-finite one did not move
   }
   drifted = drifted || out;
   fastest = fast;
