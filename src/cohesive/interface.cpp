@@ -6,10 +6,6 @@
 
 namespace rupture {
 
-namespace {
-constexpr int kGaussPoints = CohesiveInterface::kGauss;
-}  // namespace
-
 Polyline InterfaceSpec::geometry() const {
   if (line.num_vertices() >= 2) return line;
   Polyline p;
@@ -80,8 +76,7 @@ CohesiveInterface make_interface(const InterfaceSpec& spec) {
         if (s >= spec.stretches[k].from && s <= spec.stretches[k].to) w = std::uint16_t(k + 1);
       return w;
     };
-    static constexpr double xi[kGaussPoints] = {-0.8611363115940526, -0.3399810435848563,
-                                                0.3399810435848563, 0.8611363115940526};
+    const double* xi = CohesiveInterface::kGaussXi;
     c.gp_law.resize(g);
     for (std::size_t s = 0; s < nseg; ++s)
       for (int q = 0; q < CohesiveInterface::kGauss; ++q)
@@ -96,9 +91,7 @@ CohesiveInterface make_interface(const InterfaceSpec& spec) {
 }
 
 double CohesiveInterface::stored_energy() const {
-  // 4-point Gauss weights (they sum to 2 over [-1, 1]).
-  static constexpr double w[kGauss] = {0.3478548451374538, 0.6521451548625461, 0.6521451548625461,
-                                       0.3478548451374538};
+  const double* w = kGaussWeight;
   return std::visit(
       [&](const auto& law) {
         double e = 0.0;

@@ -81,6 +81,11 @@ struct FaceStencil {
 // which is rebuilt from the case, and the derived scratch arrays marked so.
 struct CohesiveInterface {
   static constexpr int kGauss = 4;  // Gauss points per segment (E9)
+  // The 4-point Gauss-Legendre rule on [-1, 1]: abscissae and weights (they sum to 2).
+  static constexpr double kGaussXi[kGauss] = {-0.8611363115940526, -0.3399810435848563,
+                                              0.3399810435848563, 0.8611363115940526};
+  static constexpr double kGaussWeight[kGauss] = {0.3478548451374538, 0.6521451548625461,
+                                                  0.6521451548625461, 0.3478548451374538};
   InterfaceSpec spec;
   bool closed = false;                     // the last segment ends on node 0
   std::vector<double> x0, y0;              // reference node positions, m (N + 1; N if closed)

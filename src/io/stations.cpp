@@ -85,8 +85,10 @@ void write_stations(const std::string& dir, const std::vector<StationSpec>& spec
                             : "time,x,y,vx,vy\n";
     const std::vector<double>& r = series[i].rows;
     for (std::size_t k = 0; k + cols <= r.size(); k += cols) {
-      for (std::size_t j = 0; j < cols; ++j)
-        out += (j == 0 ? "" : ",") + fmt::format("{:.9e}", r[k + j]);
+      for (std::size_t j = 0; j < cols; ++j) {
+        if (j > 0) out += ',';
+        out += fmt::format("{:.9e}", r[k + j]);
+      }
       out += '\n';
     }
     write_file_atomic(dir + "/stations/" + specs[i].name + ".csv", out);

@@ -14,11 +14,9 @@ namespace rupture {
 namespace {
 
 constexpr int kG = CohesiveInterface::kGauss;
-// 4-point Gauss-Legendre rule on [-1, 1] (E9).
-constexpr double kXi[kG] = {-0.8611363115940526, -0.3399810435848563, 0.3399810435848563,
-                            0.8611363115940526};
-constexpr double kW[kG] = {0.3478548451374538, 0.6521451548625461, 0.6521451548625461,
-                           0.3478548451374538};
+// The 4-point Gauss-Legendre rule on [-1, 1] (E9).
+constexpr const double* kXi = CohesiveInterface::kGaussXi;
+constexpr const double* kW = CohesiveInterface::kGaussWeight;
 
 // Bilinear hat weights of the point (x, y): nodes (i, j), (i+1, j), (i, j+1), (i+1, j+1).
 struct PointStencil {

@@ -53,7 +53,14 @@ Measured run(double L) {
     std::snprintf(b, sizeof b, "%.17g", v);
     return std::string(b);
   };
-  auto pair = [&](double a, double b) { return "[" + num(a) + "," + num(b) + "]"; };
+  auto pair = [&](double a, double b) {
+    std::string s = "[";  // appended, not "[" + ...: GCC 12 warns (-Wrestrict) on the latter
+    s += num(a);
+    s += ',';
+    s += num(b);
+    s += ']';
+    return s;
+  };
   std::vector<std::string> set;
   if (L != 1.0)
     set = {"grid.min=" + pair(0.0, -1000.0 * L),     "grid.max=" + pair(40.0 * L, 1000.0 * L),
