@@ -5,11 +5,14 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 
 #include "core/errors.hpp"
 #include "io/case_toml.hpp"
+#include "solver/field_windows.hpp"
 #include "solver/state.hpp"
+#include "solver/transfer.hpp"
 #include "solver/step.hpp"
 #include "support.hpp"
 
@@ -135,13 +138,36 @@ TEST(GimpContract, coarse_particle_driven_into_2x_finer_region_runs) {
 // Debug builds (NDEBUG undefined) check every stencil against its tile: a particle far too
 // wide for its cells, here bypassing the re-sort check, stops at an assertion instead of
 // writing outside the tile. Release builds carry no such check (and skip this test).
+// A stencil starts at the cell of x - l_p, and a strip's tile reaches two node columns left of
+// the strip, so the particle must lie in a strip's first column with l_p over three cells
+// (strip 0's tile reaches the grid's first column: no stencil starts left of it). Strips as
+// wide as the block's first cell column (>= 5, the block moved 2 mm right) put particles in
+// the first column of strip 1.
 TEST(GimpContractDeathTest, debug_build_stops_a_stencil_outside_its_tile) {
 #ifdef NDEBUG
   GTEST_SKIP() << "assertions are compiled out (NDEBUG)";
 #else
   GTEST_FLAG_SET(death_test_style, "threadsafe");
   State s = make_state(moving_block(2));
-  s.particles.half_x[0] = 2.5e-3;  // 2.5 cells of 1 mm either side: five nodes along x
+  const Axis& ax = s.grid.x;
+  int first_column = ax.cells;
+  for (double& x : s.particles.x) {
+    x += 2e-3;  // the block over [5, 7] mm
+    first_column = std::min(first_column, ax.cell_of(x));
+  }
+  ASSERT_GE(first_column, 5);
+  s.plan.strip_cells = first_column;  // strip 1 starts at the block's first column
+  s.plan.valid = false;
+  build_scatter_plan(s);
+  fit_field_windows(s);
+  std::size_t wide = s.particles.size();
+  for (std::size_t p = 0; p < s.particles.size() && wide == s.particles.size(); ++p)
+    if (ax.cell_of(s.particles.x[p]) == first_column) wide = p;
+  ASSERT_LT(wide, s.particles.size()) << "no particle in the first column of strip 1";
+  // x - l_p in the cell three left of the strip: the stencil starts a column left of its tile.
+  const double x = s.particles.x[wide];
+  s.particles.half_x[wide] = x - 0.5 * (ax.node(first_column - 3) + ax.node(first_column - 2));
+  ASSERT_EQ(ax.cell_of(x - s.particles.half_x[wide]), first_column - 3);
   EXPECT_DEATH(particles_to_grid(s, true), "outside the tile");
 #endif
 }
