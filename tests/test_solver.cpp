@@ -20,6 +20,16 @@ namespace {
 State strip_state(const std::vector<std::string>& overrides = {}) {
   return make_state(parse_case(test::strip_case_toml(), overrides));
 }
+// The diagnosis message m reports a finite region "x in [x0, x1], y in [y0, y1]" that holds
+// (x, y) and spans less than 3 mm along x (local to where the run went bad).
+void expect_local_region_holding(const std::string& m, double x, double y) {
+  double x0, x1, y0, y1;
+  const auto pos = m.find("x in [");
+  ASSERT_NE(pos, std::string::npos) << m;
+  ASSERT_EQ(std::sscanf(m.c_str() + pos, "x in [%lf, %lf], y in [%lf, %lf]", &x0, &x1, &y0, &y1), 4) << m;
+  EXPECT_TRUE(x >= x0 && x <= x1 && y >= y0 && y <= y1) << m;
+  EXPECT_LT(x1 - x0, 0.003) << "region should be local: " << m;
+}
 }  // namespace
 
 TEST(Solver, particle_to_grid_conserves_mass_and_momentum) {
@@ -105,12 +115,7 @@ TEST(Solver, non_finite_velocity_is_caught_in_the_same_musl_step) {
       EXPECT_NE(m.find("step 0, t = 0 s"), std::string::npos) << m;
       // The particles the bad velocity reached are not moved with it: the reported region is
       // finite, local, and holds where it started.
-      double x0, x1, y0, y1;
-      const auto pos = m.find("x in [");
-      ASSERT_NE(pos, std::string::npos) << m;
-      ASSERT_EQ(std::sscanf(m.c_str() + pos, "x in [%lf, %lf], y in [%lf, %lf]", &x0, &x1, &y0, &y1), 4) << m;
-      EXPECT_TRUE(x >= x0 && x <= x1 && y >= y0 && y <= y1) << m;
-      EXPECT_LT(x1 - x0, 0.003) << "region should be local: " << m;
+      expect_local_region_holding(m, x, y);
     }
   }
 }
@@ -130,12 +135,7 @@ TEST(Solver, non_finite_state_is_diagnosed_with_particle_and_time) {
     EXPECT_NE(m.find("non-finite"), std::string::npos) << m;
     EXPECT_NE(m.find("step 0, t = 0 s"), std::string::npos) << m;
     // The reported region must contain the particle that went bad.
-    double x0, x1, y0, y1;
-    const auto pos = m.find("x in [");
-    ASSERT_NE(pos, std::string::npos) << m;
-    ASSERT_EQ(std::sscanf(m.c_str() + pos, "x in [%lf, %lf], y in [%lf, %lf]", &x0, &x1, &y0, &y1), 4) << m;
-    EXPECT_TRUE(x >= x0 && x <= x1 && y >= y0 && y <= y1) << m;
-    EXPECT_LT(x1 - x0, 0.003) << "region should be local: " << m;
+    expect_local_region_holding(m, x, y);
   }
 }
 
