@@ -293,10 +293,8 @@ StripResult strip_to_particles(State& s, int strip, const double* gvx, const dou
   Particles& P = s.particles;
   const GridFields& G = s.fields;
   const double dt = s.dt, flip = s.flip;
-  constexpr bool do_velocity =
-      kMode == G2PMode::stress_velocity_and_move || kMode == G2PMode::velocity_and_move;
-  constexpr bool do_stress = kMode != G2PMode::velocity_and_move;
-  constexpr bool do_move = kMode != G2PMode::stress_only;
+  using GT = GatherTile<kMode>;  // which updates the pass makes: the lanes it gathers
+  constexpr bool do_velocity = GT::kDv, do_stress = GT::kStress, do_move = GT::kVel;
   const GridLimits gl = grid_limits(s);
   const int width = s.plan.strip_cells;
   // Drift tolerance of the scatter plan: one cell column either side of the strip.
@@ -306,7 +304,6 @@ StripResult strip_to_particles(State& s, int strip, const double* gvx, const dou
   const std::size_t end = s.plan.strip_begin[std::size_t(strip) + 1];
   StripResult r;
   if (begin == end) return r;
-  using GT = GatherTile<kMode>;
   thread_local TileLayout T;
   thread_local std::vector<typename GT::Lane> buffer;
   tile_layout_kept(s, strip, begin, end, T);
