@@ -57,9 +57,16 @@ struct Stencil1D {
 // nodes first..first+2 (SPEC E3). Uniform: nodes i0-1..i0+1 if xp lies in the left half of
 // cell i0, else i0..i0+2. Graded: first is the cell holding the particle's left edge xp - lp
 // (its box overlaps at most two cells; the third weight may be zero).
+// The first node of that stencil.
+inline int stencil_first(const Axis& a, double xp, double lp) {
+  if (a.graded()) return a.cell_of(xp - lp);
+  const double xi = (xp - a.origin) / a.h;
+  const double cell = std::floor(xi);
+  return int(cell) - (xi - cell < 0.5 ? 1 : 0);
+}
 inline void stencil(const Axis& a, double xp, double lp, Stencil1D& st) {
   if (a.graded()) {
-    const int first = a.cell_of(xp - lp);
+    const int first = stencil_first(a, xp, lp);
     st.first = first;
     // Inside a region of equal cells (all but the transitions) the uniform form applies.
     const double h = a.width(first);

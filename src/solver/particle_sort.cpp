@@ -60,13 +60,20 @@ void sort_particles(State& s) {
   const std::size_t n = P.size();
   const int cx = s.grid.x.cells, cy = s.grid.y.cells, width = plan.strip_cells;
   plan.num_strips = (cx + width - 1) / width;
-  // Bucket (strip, row): strip-major, so every strip is one contiguous particle range.
+  // Bucket (strip, stencil row, stencil column): strip-major, so every strip is one contiguous
+  // particle range; inside a strip, the particles whose 3 x 3 stencils start at the same node
+  // (SPEC E3: grid/grid.hpp stencil_first; about four at 2 x 2 per cell) are adjacent, and the
+  // transfers handle such a run with one read of its nine tile nodes (solver/transfer.cpp).
+  // The strip is the cell column's; its stencils start at columns strip * width - 1 .. + width.
+  const std::size_t stencil_cols = std::size_t(width) + 2;
   auto bucket_of = [&](std::size_t p) {
-    const int col = std::clamp(s.grid.x.cell_of(P.x[p]), 0, cx - 1);
-    const int row = std::clamp(s.grid.y.cell_of(P.y[p]), 0, cy - 1);
-    return std::size_t(col / width) * std::size_t(cy) + std::size_t(row);
+    const int strip = std::clamp(s.grid.x.cell_of(P.x[p]), 0, cx - 1) / width;
+    const int row = std::clamp(stencil_first(s.grid.y, P.y[p], P.half_y[p]), 0, cy - 1);
+    const int col = std::clamp(stencil_first(s.grid.x, P.x[p], P.half_x[p]) - strip * width + 1, 0,
+                               int(stencil_cols) - 1);
+    return (std::size_t(strip) * std::size_t(cy) + std::size_t(row)) * stencil_cols + std::size_t(col);
   };
-  const std::size_t buckets = std::size_t(plan.num_strips) * std::size_t(cy);
+  const std::size_t buckets = std::size_t(plan.num_strips) * std::size_t(cy) * stencil_cols;
   // Each particle's bucket once, split over the threads (the cell lookups are most of the
   // sort's work); the counting passes below stay serial, so the order is the same.
   thread_local std::vector<std::uint32_t> key;  // the calling thread's: reached by pointer
@@ -79,7 +86,7 @@ void sort_particles(State& s) {
   for (std::size_t k = 0; k < buckets; ++k) plan.bucket[k + 1] += plan.bucket[k];
   plan.strip_begin.resize(std::size_t(plan.num_strips) + 1);
   for (int k = 0; k <= plan.num_strips; ++k)
-    plan.strip_begin[std::size_t(k)] = plan.bucket[std::size_t(k) * std::size_t(cy)];
+    plan.strip_begin[std::size_t(k)] = plan.bucket[std::size_t(k) * std::size_t(cy) * stencil_cols];
   // Stable counting sort: particles keep their previous relative order inside a bucket.
   plan.order.resize(n);
   for (std::size_t p = 0; p < n; ++p) plan.order[plan.bucket[k_of[p]]++] = std::uint32_t(p);

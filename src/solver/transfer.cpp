@@ -41,6 +41,17 @@ inline void batch_force(const Particles& P, const ElasticStiffness* stiffness, s
   }
 }
 
+// Particle k's contribution to node (a, b) of its stencil from its column factors
+// (scatter_strip): sy_b col_a [+ dsy_b col_y_a].
+template <bool kWithForce>
+inline Lane8 node_contribution(const StencilBatch& B, int k, int b, const Lane8& col,
+                               const Lane8& col_y) {
+  if constexpr (kWithForce)
+    return B.sy[b][k] * col + B.dsy[b][k] * col_y;
+  else
+    return B.sy[b][k] * col;
+}
+
 // One strip of the mass, momentum [and force] scatter (strips of one colour run in parallel).
 template <bool kWithForce>
 void scatter_strip(State& s, int strip, std::size_t begin, std::size_t end) {
@@ -55,6 +66,15 @@ void scatter_strip(State& s, int strip, std::size_t begin, std::size_t end) {
   const std::size_t cols = std::size_t(T.cols);
   const ElasticStiffness* stiffness = s.stiffness.data();
   BatchForce f;
+  // Particles whose stencils start at the same node are adjacent (sort_particles): a run of
+  // them sums its contributions to the nine nodes in registers and adds them to the tile once.
+  Lane8 run[9];
+  Lane8* run_t0 = nullptr;
+  const auto end_run = [&]() {
+    if (run_t0 == nullptr) return;
+    for (int b = 0; b < 3; ++b)
+      for (int a = 0; a < 3; ++a) run_t0[std::size_t(b) * cols + std::size_t(a)] += run[3 * b + a];
+  };
   for_each_in_batches(s, begin, end, [&](std::size_t p, int k, const StencilBatch& B) {
     const double m = P.mass[p];
     const Lane8 A = {m, m * P.vx[p], m * P.vy[p], 0, 0, 0, 0, 0};
@@ -65,7 +85,7 @@ void scatter_strip(State& s, int strip, std::size_t begin, std::size_t end) {
     // Node (a, b) takes S A + dS/dx Fx + dS/dy Fy with S = sx_a sy_b, dS/dx = dsx_a sy_b,
     // dS/dy = sx_a dsy_b: the column factors sx_a A + dsx_a Fx and sx_a Fy once per column,
     // then two vector operations per node.
-    Lane8 col[3], col_y[3];
+    Lane8 col[3], col_y[3] = {};
     for (int a = 0; a < 3; ++a) {
       col[a] = B.sx[a][k] * A;
       if constexpr (kWithForce) {
@@ -73,15 +93,18 @@ void scatter_strip(State& s, int strip, std::size_t begin, std::size_t end) {
         col_y[a] = B.sx[a][k] * Fy;
       }
     }
-    for (int b = 0; b < 3; ++b) {
-      Lane8* t = t0 + std::size_t(b) * cols;
-      const double wy = B.sy[b][k], gy_b = B.dsy[b][k];
-      for (int a = 0; a < 3; ++a) {
-        if constexpr (kWithForce)
-          t[a] += wy * col[a] + gy_b * col_y[a];
-        else
-          t[a] += wy * col[a];
-      }
+    const bool first = t0 != run_t0;
+    if (first) {
+      end_run();
+      run_t0 = t0;
+    }
+    // (Two loops, not a select per node: the compiler keeps the run in registers then.)
+    if (first) {
+      for (int b = 0; b < 3; ++b)
+        for (int a = 0; a < 3; ++a) run[3 * b + a] = node_contribution<kWithForce>(B, k, b, col[a], col_y[a]);
+    } else {
+      for (int b = 0; b < 3; ++b)
+        for (int a = 0; a < 3; ++a) run[3 * b + a] += node_contribution<kWithForce>(B, k, b, col[a], col_y[a]);
     }
   }, [&](std::size_t p0) {
     for (const std::vector<double>* a : {&P.mass, &P.vx, &P.vy, &P.volume0, &P.sxx, &P.syy, &P.sxy})
@@ -89,6 +112,7 @@ void scatter_strip(State& s, int strip, std::size_t begin, std::size_t end) {
     prefetch_batch(P.material.data(), p0);
     if constexpr (kWithForce) batch_force(P, stiffness, p0, int(std::min<std::size_t>(kBatch, end - p0)), f);
   });
+  end_run();
   // Strips of one colour never share a node: no race.
   for_each_tile_node(s, T, [&](std::size_t t, std::size_t n) {
     const Lane8 v = tile[t];
@@ -185,12 +209,29 @@ void velocity_remap_strip(State& s, int strip, std::size_t begin, std::size_t en
       in[t] = In{G.dvel_x[n], G.dvel_y[n], G.vel_x[n], G.vel_y[n]};
   });
   const std::size_t cols = std::size_t(T.cols);
+  // A run of particles sharing a stencil (sort_particles) reads its nine nodes once and sums
+  // its re-mapped momentum in registers, added to the tile once.
+  std::size_t run_t0 = kNone;
+  In node[9] = {};
+  Lane2 run[9];
+  const auto end_run = [&]() {
+    if (run_t0 == kNone) return;
+    for (int b = 0; b < 3; ++b)
+      for (int a = 0; a < 3; ++a) out[run_t0 + std::size_t(b) * cols + std::size_t(a)] += run[3 * b + a];
+  };
   for_each_in_batches(s, begin, end, [&](std::size_t p, int k, const StencilBatch& B) {
     const std::size_t t0 = T.index(P.field[p], B.first_x[k], B.first_y[k]);
+    const bool first = t0 != run_t0;
+    if (first) {
+      end_run();
+      run_t0 = t0;
+      for (int b = 0; b < 3; ++b)
+        for (int a = 0; a < 3; ++a) node[3 * b + a] = in[t0 + std::size_t(b) * cols + std::size_t(a)];
+    }
     // sum_b sy_b (sum_a sx_a in(a, b)): a row's sum, then the rows.
     In acc = {};  // dv x, dv y [, v x, v y]
     for (int b = 0; b < 3; ++b) {
-      const In* r = in + t0 + std::size_t(b) * cols;
+      const In* r = node + 3 * b;
       acc += B.sy[b][k] * (B.sx[0][k] * r[0] + B.sx[1][k] * r[1] + B.sx[2][k] * r[2]);
     }
     // FLIP/PIC blend of the particle velocity update.
@@ -207,11 +248,17 @@ void velocity_remap_strip(State& s, int strip, std::size_t begin, std::size_t en
     const double m = P.mass[p];
     const Lane2 mv = {m * vx, m * vy};
     const Lane2 col[3] = {B.sx[0][k] * mv, B.sx[1][k] * mv, B.sx[2][k] * mv};
-    for (int b = 0; b < 3; ++b)
-      for (int a = 0; a < 3; ++a) out[t0 + std::size_t(b) * cols + std::size_t(a)] += B.sy[b][k] * col[a];
+    if (first) {
+      for (int b = 0; b < 3; ++b)
+        for (int a = 0; a < 3; ++a) run[3 * b + a] = B.sy[b][k] * col[a];
+    } else {
+      for (int b = 0; b < 3; ++b)
+        for (int a = 0; a < 3; ++a) run[3 * b + a] += B.sy[b][k] * col[a];
+    }
   }, [&](std::size_t p0) {
     for (const std::vector<double>* a : {&P.mass, &P.vx, &P.vy}) prefetch_batch(a->data(), p0);
   });
+  end_run();
   for_each_tile_node(s, T, [&](std::size_t t, std::size_t n) {
     G.remap_x[n] += out[t][0];
     G.remap_y[n] += out[t][1];
