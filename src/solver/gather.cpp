@@ -116,7 +116,7 @@ struct GatherTile {
 template <class Lane>
 struct RunNodes {
   const Lane* t0 = nullptr;  // the run's first node in the tile
-  Lane node[9];              // node (a, b) at 3 b + a
+  Lane node[9] = {};         // node (a, b) at 3 b + a
 };
 
 // The 3 x 3 node sums of one batch from the strip's tile. Per particle, per stencil row b: the
@@ -323,7 +323,7 @@ StripResult strip_to_particles(State& s, int strip, const double* gvx, const dou
   if (begin == end) return r;
   thread_local TileLayout T;
   thread_local std::vector<typename GT::Lane> buffer;
-  tile_layout_kept(s, strip, begin, end, T);
+  tile_layout(s, strip, begin, end, T);
   typename GT::Lane* tile = tile_buffer(buffer, T.size(), false);
   for_each_tile_node(s, T, [&](std::size_t t, std::size_t n) { GT::pack(gvx, gvy, G, n, tile[t]); });
   StencilBatch B;
@@ -403,7 +403,10 @@ void states_to_particles(State* const* states, std::size_t count, NodalArray gx,
     if (drifted) s.plan.valid = false;
     // |dx| + |dy| >= the distance moved (solver/field_windows: a bound on how far any particle
     // has gone since its window was measured).
-    if (move) s.window_drift += s.dt * fastest;
+    if (move) {
+      s.window_drift += s.dt * fastest;
+      s.plan.drift += s.dt * fastest;
+    }
     if (bad != kNone) {
       const GridLimits gl = grid_limits(s);
       throw SimulationError(diagnose_bad_particles(s, gl.xlo, gl.xhi, gl.ylo, gl.yhi));

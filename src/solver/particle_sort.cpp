@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "core/errors.hpp"
@@ -51,6 +52,32 @@ void check_gimp_contract(const State& s) {
   }
 }
 
+// Per strip and field, the lowest and highest first stencil row of the particles just sorted
+// (ScatterPlan::row_lo, row_hi; their keys, by the particles' previous index, hold the row).
+void strip_rows(State& s, const std::uint32_t* key, int cy, std::size_t stencil_cols) {
+  ScatterPlan& plan = s.plan;
+  const Particles& P = s.particles;
+  const std::size_t fields = std::size_t(s.fields.num_fields);
+  plan.row_lo.assign(std::size_t(plan.num_strips) * fields, std::numeric_limits<int>::max());
+  plan.row_hi.assign(std::size_t(plan.num_strips) * fields, std::numeric_limits<int>::min());
+  int* const lo = plan.row_lo.data();
+  int* const hi = plan.row_hi.data();
+  const std::uint32_t* const order = plan.order.data();
+  const std::size_t* const begin = plan.strip_begin.data();
+#pragma omp parallel for schedule(static)
+  for (int k = 0; k < plan.num_strips; ++k) {  // each strip writes its own entries
+    for (std::size_t p = begin[k]; p < begin[k + 1]; ++p) {
+      const int row = int((key[order[p]] / stencil_cols) % std::size_t(cy));
+      const std::size_t e = std::size_t(k) * fields + P.field[p];
+      lo[e] = std::min(lo[e], row);
+      hi[e] = std::max(hi[e], row);
+    }
+  }
+  plan.drift = 0.0;
+  plan.row_height = s.grid.y.graded() ? s.grid.y.min_width() : s.grid.y.h;
+  plan.rows_known = true;
+}
+
 }  // namespace
 
 void sort_particles(State& s) {
@@ -91,6 +118,7 @@ void sort_particles(State& s) {
   plan.order.resize(n);
   for (std::size_t p = 0; p < n; ++p) plan.order[plan.bucket[k_of[p]]++] = std::uint32_t(p);
   P.permute(plan.order, plan.scratch);
+  strip_rows(s, k_of, cy, stencil_cols);
   plan.valid = true;
   plan.sorted_step = s.step;
 }

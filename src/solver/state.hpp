@@ -48,13 +48,19 @@ struct ScatterPlan {
   bool valid = false;                    // particles within their strips' drift tolerance
   std::vector<std::size_t> strip_begin;  // particles of strip k: [strip_begin[k], strip_begin[k+1])
   std::vector<std::uint32_t> order;      // scratch for the sort
-  std::vector<std::uint32_t> bucket;     // scratch: count per (strip, row)
+  std::vector<std::uint32_t> bucket;     // scratch: count per (strip, stencil row, column)
   std::vector<double> scratch;           // scratch for the permutation
-  // Node rows each strip's particles touch, per field (solver/transfer.cpp's tiles): found by
-  // the mass scatter, reused by the velocity gather and re-map of the same step (the particles
-  // have not moved between them). tile_step: the step they belong to (-1: none).
-  long tile_step = -1;
-  std::vector<int> tile_row0, tile_rows;  // [strip * fields + field]
+  // Where each strip's particles lie, for the strip tiles' node rows (solver/strip_tile.hpp),
+  // so no particle loop has to find them: per strip and field, the lowest and highest first
+  // stencil row of its particles at the sort (row_lo > row_hi: none), and a bound on how far
+  // any particle has moved since (summed by the move like State::window_drift), m, which
+  // widens them by whole rows of height row_height (the smallest cell height, m).
+  // Not in checkpoints (rows_known is false after a restart until the next sort: the tiles
+  // then find their rows from the particles); the rows do not change any result.
+  bool rows_known = false;
+  std::vector<int> row_lo, row_hi;  // [strip * fields + field]
+  double drift = 0.0;
+  double row_height = 0.0;
 };
 
 // Every member must also be written in io/checkpoint.cpp.

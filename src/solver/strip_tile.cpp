@@ -20,17 +20,15 @@ void tile_columns(const State& s, int strip, TileLayout& T) {
   T.cols = s.plan.strip_cells + 5;
 }
 
-}  // namespace
-
-void tile_layout(const State& s, int strip, std::size_t begin, std::size_t end, TileLayout& T) {
+// Node rows per field from the particles: a particle in cell row r touches node rows r-1 ..
+// r+2. The cell row is monotonic in y, so the rows of a field's lowest and highest particles
+// bound them all (one min/max pass per field present, vectorized, instead of a row per
+// particle).
+void rows_from_particles(const State& s, std::size_t begin, std::size_t end, TileLayout& T) {
   const Particles& P = s.particles;
   const int fields = s.fields.num_fields;
   const double oy = s.grid.y.origin, inv_hy = 1.0 / s.grid.y.h;
   const bool graded = s.grid.y.graded();
-  tile_columns(s, strip, T);
-  // Node rows per field: a particle in cell row r touches node rows r-1 .. r+2. The cell row
-  // is monotonic in y, so the rows of a field's lowest and highest particles bound them all
-  // (one min/max pass per field present, vectorized, instead of a row per particle).
   T.row0.assign(std::size_t(fields), std::numeric_limits<int>::max());
   T.rows.assign(std::size_t(fields), std::numeric_limits<int>::min());  // last row, then count
   const auto row = [&](double y) {
@@ -59,27 +57,37 @@ void tile_layout(const State& s, int strip, std::size_t begin, std::size_t end, 
   }
   for (std::size_t f = 0; f < std::size_t(fields); ++f)
     T.rows[f] = T.rows[f] >= T.row0[f] ? T.rows[f] - T.row0[f] + 1 : 0;
-  tile_offsets(T);
 }
 
-void keep_tile_rows_sized(State& s) {
-  const std::size_t n = std::size_t(s.plan.num_strips) * std::size_t(s.fields.num_fields);
-  s.plan.tile_row0.resize(n);
-  s.plan.tile_rows.resize(n);
-  s.plan.tile_step = s.step;
-}
-void keep_tile_rows(ScatterPlan& plan, int strip, const TileLayout& T) {
-  const std::size_t k = std::size_t(strip) * T.rows.size();  // strips write disjoint parts
-  std::copy(T.row0.begin(), T.row0.end(), plan.tile_row0.begin() + std::ptrdiff_t(k));
-  std::copy(T.rows.begin(), T.rows.end(), plan.tile_rows.begin() + std::ptrdiff_t(k));
-}
-void tile_layout_kept(const State& s, int strip, std::size_t begin, std::size_t end, TileLayout& T) {
+// Node rows per field from the sort's bounds. A particle's first stencil row moves by at most
+// ceil(d / row_height) rows when it moves by d (a row is at least row_height high); one row
+// more on each side absorbs the round-off of the summed drift. The window holds every
+// particle's stencil (solver/field_windows.hpp), so clipping to it loses none.
+void rows_from_plan(const State& s, int strip, TileLayout& T) {
   const ScatterPlan& plan = s.plan;
-  if (plan.tile_step != s.step) return tile_layout(s, strip, begin, end, T);
-  const std::size_t fields = std::size_t(s.fields.num_fields), k = std::size_t(strip) * fields;
+  const GridFields& G = s.fields;
+  const std::size_t fields = std::size_t(G.num_fields);
+  const int widen = int(std::ceil(plan.drift / plan.row_height)) + 1;
+  T.row0.assign(fields, 0);
+  T.rows.assign(fields, 0);
+  for (std::size_t f = 0; f < fields; ++f) {
+    const std::size_t e = std::size_t(strip) * fields + f;
+    if (plan.row_lo[e] > plan.row_hi[e]) continue;  // no particle of this field in the strip
+    const int r0 = std::max(plan.row_lo[e] - widen, G.row0[f]);
+    const int r1 = std::min(plan.row_hi[e] + 2 + widen, G.row0[f] + G.rows[f] - 1);
+    T.row0[f] = r0;
+    T.rows[f] = r1 >= r0 ? r1 - r0 + 1 : 0;
+  }
+}
+
+}  // namespace
+
+void tile_layout(const State& s, int strip, std::size_t begin, std::size_t end, TileLayout& T) {
   tile_columns(s, strip, T);
-  T.row0.assign(plan.tile_row0.begin() + std::ptrdiff_t(k), plan.tile_row0.begin() + std::ptrdiff_t(k + fields));
-  T.rows.assign(plan.tile_rows.begin() + std::ptrdiff_t(k), plan.tile_rows.begin() + std::ptrdiff_t(k + fields));
+  if (s.plan.rows_known)
+    rows_from_plan(s, strip, T);
+  else
+    rows_from_particles(s, begin, end, T);
   tile_offsets(T);
 }
 

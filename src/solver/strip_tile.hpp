@@ -41,15 +41,12 @@ struct TileLayout {
   }
 };
 
-// The strip's tile, its node rows found from its particles [begin, end).
+// The strip's tile. Its node rows per field: those the strip's particles reached at the last
+// sort, widened by their drift since and clipped to the field's window (ScatterPlan::row_lo,
+// row_hi, drift); after a restart, until the next sort, found from the particles
+// [begin, end) themselves (one pass over them: 2.5 ns per particle-update in rupture-bench's
+// scatter, which the sort's bounds save).
 void tile_layout(const State& s, int strip, std::size_t begin, std::size_t end, TileLayout& T);
-// The mass scatter keeps each strip's node rows (ScatterPlan::tile_row0) for the gathers and
-// re-map of the same step: the particles have not moved between them. keep_tile_rows_sized
-// once per step before the scatter, keep_tile_rows per strip.
-void keep_tile_rows_sized(State& s);
-void keep_tile_rows(ScatterPlan& plan, int strip, const TileLayout& T);
-// The strip's tile: the kept node rows when the mass scatter of this step found them.
-void tile_layout_kept(const State& s, int strip, std::size_t begin, std::size_t end, TileLayout& T);
 
 // Calls visit(tile_index, element) for every tile node that lies inside its field's window
 // (the window lies inside the grid; the particles' nodes lie inside it).

@@ -61,7 +61,6 @@ void scatter_strip(State& s, int strip, std::size_t begin, std::size_t end) {
   thread_local TileLayout T;
   thread_local std::vector<Lane8> buffer;
   tile_layout(s, strip, begin, end, T);
-  keep_tile_rows(s.plan, strip, T);
   Lane8* tile = tile_buffer(buffer, T.size(), true);
   const std::size_t cols = std::size_t(T.cols);
   const ElasticStiffness* stiffness = s.stiffness.data();
@@ -149,7 +148,6 @@ void particles_to_grid(State* const* states, std::size_t count, bool with_force)
   for (std::size_t l = 0; l < count; ++l) {
     GridFields& G = states[l]->fields;
     zero_parallel({&G.mass, &G.mom_x, &G.mom_y, &G.force_x, &G.force_y});
-    keep_tile_rows_sized(*states[l]);
   }
   if (with_force)
     for_each_strip_coloured(states, count, scatter_strip<true>);
@@ -199,7 +197,7 @@ void velocity_remap_strip(State& s, int strip, std::size_t begin, std::size_t en
   thread_local TileLayout T;
   thread_local std::vector<In> gather_buffer;
   thread_local std::vector<Lane2> scatter_buffer;
-  tile_layout_kept(s, strip, begin, end, T);
+  tile_layout(s, strip, begin, end, T);
   In* in = tile_buffer(gather_buffer, T.size(), false);
   Lane2* out = tile_buffer(scatter_buffer, T.size(), true);
   for_each_tile_node(s, T, [&](std::size_t t, std::size_t n) {
