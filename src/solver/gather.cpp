@@ -100,13 +100,12 @@ struct GatherTile {
   static constexpr int kVelLane = kStress ? 2 : 0, kDvLane = kVelLane + 2;
   static constexpr int kLanes = (kStress ? 2 : 0) + (kVel ? 2 : 0) + (kDv ? 2 : 0);
   using Lane = std::conditional_t<kLanes == 2, Lane2, std::conditional_t<kLanes == 4, Lane4, Lane8>>;
-  // Written through a reference: a vector return value changes the ABI without AVX.
-  static void pack(const double* gvx, const double* gvy, const GridFields& G, std::size_t n,
-                   Lane& v) {
-    v = Lane{};
-    if constexpr (kStress) v[0] = gvx[n], v[1] = gvy[n];
-    if constexpr (kVel) v[kVelLane] = G.vel_x[n], v[kVelLane + 1] = G.vel_y[n];
-    if constexpr (kDv) v[kDvLane] = G.dvel_x[n], v[kDvLane + 1] = G.dvel_y[n];
+  // The grid arrays of the tile's lanes, in lane order (the tile is packed from them).
+  static void sources(const double* gvx, const double* gvy, const GridFields& G,
+                      const double* (&lanes)[6]) {
+    if constexpr (kStress) lanes[0] = gvx, lanes[1] = gvy;
+    if constexpr (kVel) lanes[kVelLane] = G.vel_x.data(), lanes[kVelLane + 1] = G.vel_y.data();
+    if constexpr (kDv) lanes[kDvLane] = G.dvel_x.data(), lanes[kDvLane + 1] = G.dvel_y.data();
   }
 };
 
@@ -325,7 +324,11 @@ StripResult strip_to_particles(State& s, int strip, const double* gvx, const dou
   thread_local std::vector<typename GT::Lane> buffer;
   tile_layout(s, strip, begin, end, T);
   typename GT::Lane* tile = tile_buffer(buffer, T.size(), false);
-  for_each_tile_node(s, T, [&](std::size_t t, std::size_t n) { GT::pack(gvx, gvy, G, n, tile[t]); });
+  const double* lanes[6] = {};
+  GT::sources(gvx, gvy, G, lanes);
+  for_each_tile_row(s, T, [&](std::size_t t, std::size_t e, int count) {
+    pack_tile_row<GT::kLanes>(tile + t, count, lanes, e);
+  });
   StencilBatch B;
   Gathered g;
   RunNodes<typename GT::Lane> run;

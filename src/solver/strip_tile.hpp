@@ -48,21 +48,54 @@ struct TileLayout {
 // scatter, which the sort's bounds save).
 void tile_layout(const State& s, int strip, std::size_t begin, std::size_t end, TileLayout& T);
 
-// Calls visit(tile_index, element) for every tile node that lies inside its field's window
-// (the window lies inside the grid; the particles' nodes lie inside it).
+// Calls visit(tile_index, element, count) for every row of tile nodes that lie inside their
+// field's window (the window lies inside the grid; the particles' nodes lie inside it): count
+// nodes from tile_index on in the tile and from element on in the grid arrays.
 template <class Visit>
-void for_each_tile_node(const State& s, const TileLayout& T, Visit&& visit) {
+void for_each_tile_row(const State& s, const TileLayout& T, Visit&& visit) {
   const GridFields& G = s.fields;
   for (std::size_t f = 0; f < T.rows.size(); ++f) {
     const int fi = int(f);
     const int r_lo = std::max(T.row0[f], G.row0[f]), r_hi = std::min(T.row0[f] + T.rows[f], G.row0[f] + G.rows[f]);
     const int c_lo = std::max(T.col0, G.col0[f]), c_hi = std::min(T.col0 + T.cols, G.col0[f] + G.cols[f]);
+    if (c_hi <= c_lo) continue;
     for (int gy = r_lo; gy < r_hi; ++gy) {
       const std::size_t t = T.start[f] + std::size_t(gy - T.row0[f]) * std::size_t(T.cols) +
                             std::size_t(c_lo - T.col0);
-      const std::size_t e = G.index(fi, c_lo, gy);
-      for (int c = 0; c < c_hi - c_lo; ++c) visit(t + std::size_t(c), e + std::size_t(c));
+      visit(t, G.index(fi, c_lo, gy), c_hi - c_lo);
     }
+  }
+}
+
+// Calls visit(tile_index, element) for every tile node that lies inside its field's window.
+template <class Visit>
+void for_each_tile_node(const State& s, const TileLayout& T, Visit&& visit) {
+  for_each_tile_row(s, T, [&](std::size_t t, std::size_t e, int count) {
+    for (int c = 0; c < count; ++c) visit(t + std::size_t(c), e + std::size_t(c));
+  });
+}
+
+// One tile row and the grid arrays: tile[c] = {in[0][e + c], .., in[kLanes-1][e + c], 0, ..}
+// (pack_tile_row), or out[lane][e + c] += tile[c][lane] (add_tile_row), c < count. The array
+// pointers are copied in first: reached through the GridFields vectors node by node, they
+// were reloaded for every node (rupture-bench P2G 18.8 -> 18.2 ns per particle-update).
+template <int kLanes, class Lane>
+inline void pack_tile_row(Lane* __restrict tile, int count, const double* const* in, std::size_t e) {
+  const double* src[kLanes];
+  for (int lane = 0; lane < kLanes; ++lane) src[lane] = in[lane] + e;
+  for (int c = 0; c < count; ++c) {
+    Lane v = {};
+    for (int lane = 0; lane < kLanes; ++lane) v[lane] = src[lane][c];
+    tile[c] = v;
+  }
+}
+template <int kLanes, class Lane>
+inline void add_tile_row(const Lane* __restrict tile, int count, double* const* out, std::size_t e) {
+  double* dst[kLanes];
+  for (int lane = 0; lane < kLanes; ++lane) dst[lane] = out[lane] + e;
+  for (int c = 0; c < count; ++c) {
+    const Lane v = tile[c];
+    for (int lane = 0; lane < kLanes; ++lane) dst[lane][c] += v[lane];
   }
 }
 

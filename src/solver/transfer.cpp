@@ -55,7 +55,6 @@ inline Lane8 node_contribution(const StencilBatch& B, int k, int b, const Lane8&
 // One strip of the mass, momentum [and force] scatter (strips of one colour run in parallel).
 template <bool kWithForce>
 void scatter_strip(State& s, int strip, std::size_t begin, std::size_t end) {
-  GridFields& G = s.fields;
   const Particles& P = s.particles;
   if (begin == end) return;
   thread_local TileLayout T;
@@ -113,15 +112,11 @@ void scatter_strip(State& s, int strip, std::size_t begin, std::size_t end) {
   });
   end_run();
   // Strips of one colour never share a node: no race.
-  for_each_tile_node(s, T, [&](std::size_t t, std::size_t n) {
-    const Lane8 v = tile[t];
-    G.mass[n] += v[0];
-    G.mom_x[n] += v[1];
-    G.mom_y[n] += v[2];
-    if constexpr (kWithForce) {
-      G.force_x[n] += v[3];
-      G.force_y[n] += v[4];
-    }
+  GridFields& G = s.fields;
+  double* const out[5] = {G.mass.data(), G.mom_x.data(), G.mom_y.data(), G.force_x.data(),
+                          G.force_y.data()};
+  for_each_tile_row(s, T, [&](std::size_t t, std::size_t e, int count) {
+    add_tile_row<kWithForce ? 5 : 3>(tile + t, count, out, e);
   });
 }
 
@@ -200,11 +195,9 @@ void velocity_remap_strip(State& s, int strip, std::size_t begin, std::size_t en
   tile_layout(s, strip, begin, end, T);
   In* in = tile_buffer(gather_buffer, T.size(), false);
   Lane2* out = tile_buffer(scatter_buffer, T.size(), true);
-  for_each_tile_node(s, T, [&](std::size_t t, std::size_t n) {
-    if constexpr (kPureFlip)
-      in[t] = In{G.dvel_x[n], G.dvel_y[n]};
-    else
-      in[t] = In{G.dvel_x[n], G.dvel_y[n], G.vel_x[n], G.vel_y[n]};
+  const double* const gathered[4] = {G.dvel_x.data(), G.dvel_y.data(), G.vel_x.data(), G.vel_y.data()};
+  for_each_tile_row(s, T, [&](std::size_t t, std::size_t e, int count) {
+    pack_tile_row<kPureFlip ? 2 : 4>(in + t, count, gathered, e);
   });
   const std::size_t cols = std::size_t(T.cols);
   // A run of particles sharing a stencil (sort_particles) reads its nine nodes once and sums
@@ -257,9 +250,9 @@ void velocity_remap_strip(State& s, int strip, std::size_t begin, std::size_t en
     for (const std::vector<double>* a : {&P.mass, &P.vx, &P.vy}) prefetch_batch(a->data(), p0);
   });
   end_run();
-  for_each_tile_node(s, T, [&](std::size_t t, std::size_t n) {
-    G.remap_x[n] += out[t][0];
-    G.remap_y[n] += out[t][1];
+  double* const remap[2] = {G.remap_x.data(), G.remap_y.data()};
+  for_each_tile_row(s, T, [&](std::size_t t, std::size_t e, int count) {
+    add_tile_row<2>(out + t, count, remap, e);
   });
 }
 
