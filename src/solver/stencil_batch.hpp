@@ -33,6 +33,9 @@ struct StencilBatch {
 
 // One axis for n <= kBatch particles: the stencil rule of grid/grid.hpp (stencil()), with
 // the weights of gimp_uniform_node written out over plain arrays so the loop vectorizes.
+// kGradients = false: dw is left unset where the axis is uniform (the velocity pass reads
+// the weights only: a third fewer operations there).
+template <bool kGradients = true>
 inline void axis_stencils(const Axis& ax, const double* __restrict xp, const double* __restrict lp,
                           int n, double (&w)[3][kBatch], double (&dw)[3][kBatch],
                           int* __restrict first) {
@@ -114,7 +117,9 @@ inline void axis_stencils(const Axis& ax, const double* __restrict xp, const dou
     const double f = (xi - cell < 0.5) ? cell - 1.0 : cell;
     fl[k] = f;
     const double u = xi - f, l = lp[k] * inv_h;
-    gimp_uniform_three(u - 1.0, l, 0.25 / l, inv_h, w0[k], w1[k], w2[k], d0[k], d1[k], d2[k]);
+    double g0, g1, g2;
+    gimp_uniform_three(u - 1.0, l, 0.25 / l, inv_h, w0[k], w1[k], w2[k], g0, g1, g2);
+    if constexpr (kGradients) d0[k] = g0, d1[k] = g1, d2[k] = g2;
   }
   for (int k = 0; k < n; ++k) first[k] = int(fl[k]);
 }
@@ -130,6 +135,7 @@ inline void prefetch_batch(const T* a, std::size_t p0) {
   if constexpr (sizeof(T) == 8) __builtin_prefetch(a + p0 + kPrefetchAhead + 8);
 }
 
+template <bool kGradients = true>
 inline void batch_stencils(const State& s, std::size_t p0, int n, StencilBatch& B) {
   const Particles& P = s.particles;
   prefetch_batch(P.x.data(), p0);
@@ -137,8 +143,8 @@ inline void batch_stencils(const State& s, std::size_t p0, int n, StencilBatch& 
   prefetch_batch(P.half_x.data(), p0);
   prefetch_batch(P.half_y.data(), p0);
   prefetch_batch(P.field.data(), p0);
-  axis_stencils(s.grid.x, P.x.data() + p0, P.half_x.data() + p0, n, B.sx, B.dsx, B.first_x);
-  axis_stencils(s.grid.y, P.y.data() + p0, P.half_y.data() + p0, n, B.sy, B.dsy, B.first_y);
+  axis_stencils<kGradients>(s.grid.x, P.x.data() + p0, P.half_x.data() + p0, n, B.sx, B.dsx, B.first_x);
+  axis_stencils<kGradients>(s.grid.y, P.y.data() + p0, P.half_y.data() + p0, n, B.sy, B.dsy, B.first_y);
 #ifndef NDEBUG
   // The 3 x 3 stencil lies in the field's window (the tiles are filled from it).
   const GridFields& G = s.fields;
@@ -151,15 +157,15 @@ inline void batch_stencils(const State& s, std::size_t p0, int n, StencilBatch& 
 
 // Runs body(p, k, B) for particles [begin, end), batch by batch (k: index in the batch B);
 // ahead(p0) first for each batch (the loop's prefetches: prefetch_batch; per-batch factors
-// computed SIMD over the batch's particles).
-template <class Body, class Ahead>
+// computed SIMD over the batch's particles). kGradients: as in axis_stencils.
+template <bool kGradients = true, class Body, class Ahead>
 inline void for_each_in_batches(const State& s, std::size_t begin, std::size_t end, Body&& body,
                                 Ahead&& ahead) {
   StencilBatch B;
   for (std::size_t p0 = begin; p0 < end; p0 += kBatch) {
     const int n = int(std::min<std::size_t>(kBatch, end - p0));
     ahead(p0);
-    batch_stencils(s, p0, n, B);
+    batch_stencils<kGradients>(s, p0, n, B);
     for (int k = 0; k < n; ++k) body(p0 + std::size_t(k), k, B);
   }
 }

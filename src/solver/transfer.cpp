@@ -210,7 +210,7 @@ void velocity_remap_strip(State& s, int strip, std::size_t begin, std::size_t en
     for (int b = 0; b < 3; ++b)
       for (int a = 0; a < 3; ++a) out[run_t0 + std::size_t(b) * cols + std::size_t(a)] += run[3 * b + a];
   };
-  for_each_in_batches(s, begin, end, [&](std::size_t p, int k, const StencilBatch& B) {
+  for_each_in_batches<false>(s, begin, end, [&](std::size_t p, int k, const StencilBatch& B) {
     const std::size_t t0 = T.index(P.field[p], B.first_x[k], B.first_y[k]);
     const bool first = t0 != run_t0;
     if (first) {
