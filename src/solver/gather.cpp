@@ -212,7 +212,6 @@ void move_particles(Particles& P, std::size_t p, int n, const Gathered& g, doubl
   double* __restrict y = P.y.data() + p;
   alignas(64) double col[kBatch];
   double fast = fastest;
-  bool out = false;
   if (ax.graded()) {
     for (int k = 0; k < n; ++k) {
       const double dx = dt * g.mv_x[k], dy = dt * g.mv_y[k];
@@ -232,17 +231,20 @@ void move_particles(Particles& P, std::size_t p, int n, const Gathered& g, doubl
       // floor for the particles inside the grid (u > 0); a non-finite or outside one is
       // diagnosed by the caller, so its column is only kept inside the tolerance here.
       const double u = (x[k] - origin) * inv_h;
-      col[k] = std::fabs(u) <= DBL_MAX && u > 0.0 ? std::floor(u) : lim.col_lo;
+      col[k] = (std::fabs(u) <= DBL_MAX) & (u > 0.0) ? std::floor(u) : lim.col_lo;
     }
   }
-#pragma omp simd reduction(max : fast) reduction(|| : out)
+  // Non-short-circuit tests and an int or-reduction: with && and a bool || reduction GCC 12
+  // left both loops scalar (rupture-bench stress + move 16.5 -> 15.8 ns per particle-update).
+  int out = 0;
+#pragma omp simd reduction(max : fast) reduction(| : out)
   for (int k = 0; k < n; ++k) {
     const bool finite = std::fabs(x[k] + y[k]) <= DBL_MAX;
-    out = out || (finite && (col[k] < lim.col_lo || col[k] > lim.col_hi));
+    out |= int(finite & ((col[k] < lim.col_lo) | (col[k] > lim.col_hi)));
     const double speed = std::fabs(g.mv_x[k]) + std::fabs(g.mv_y[k]);
     fast = std::max(fast, speed <= DBL_MAX ? speed : 0.0);  // a non-finite one did not move
   }
-  drifted = drifted || out;
+  drifted = drifted || out != 0;
   fastest = fast;
 }
 
