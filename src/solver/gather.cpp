@@ -171,8 +171,9 @@ void update_stress(Particles& P, std::size_t p, int n, const Gathered& g,
                    const std::vector<ElasticStiffness>& stiffness, double dt, double& work) {
   alignas(64) double c11[kBatch], c12[kBatch], mu[kBatch], kt[kBatch], wk[kBatch];
   const std::uint8_t* mat = P.material.data() + p;
+  const bool one = stiffness.size() == 1;  // one material: no lookup per particle
   for (int k = 0; k < n; ++k) {
-    const ElasticStiffness& C = stiffness[mat[k]];
+    const ElasticStiffness& C = stiffness[one ? 0 : mat[k]];
     c11[k] = C.c11, c12[k] = C.c12, mu[k] = C.mu, kt[k] = C.tr_per_stress;
   }
   double* __restrict sxx = P.sxx.data() + p;

@@ -25,11 +25,11 @@ namespace {
 struct BatchForce {
   alignas(64) double xx[kBatch], yy[kBatch], xy[kBatch];
 };
-inline void batch_force(const Particles& P, const ElasticStiffness* stiffness, std::size_t p0,
-                        int n, BatchForce& f) {
+inline void batch_force(const Particles& P, const ElasticStiffness* stiffness, bool one_material,
+                        std::size_t p0, int n, BatchForce& f) {
   alignas(64) double kt[kBatch];
   const std::uint8_t* mat = P.material.data() + p0;
-  for (int k = 0; k < n; ++k) kt[k] = stiffness[mat[k]].tr_per_stress;
+  for (int k = 0; k < n; ++k) kt[k] = stiffness[one_material ? 0 : mat[k]].tr_per_stress;
   const double* __restrict sxx = P.sxx.data() + p0;
   const double* __restrict syy = P.syy.data() + p0;
   const double* __restrict sxy = P.sxy.data() + p0;
@@ -63,6 +63,7 @@ void scatter_strip(State& s, int strip, std::size_t begin, std::size_t end) {
   Lane8* tile = tile_buffer(buffer, T.size(), true);
   const std::size_t cols = std::size_t(T.cols);
   const ElasticStiffness* stiffness = s.stiffness.data();
+  const bool one_material = s.stiffness.size() == 1;
   BatchForce f;
   // Particles whose stencils start at the same node are adjacent (sort_particles): a run of
   // them sums its contributions to the nine nodes in registers and adds them to the tile once.
@@ -108,7 +109,7 @@ void scatter_strip(State& s, int strip, std::size_t begin, std::size_t end) {
     for (const std::vector<double>* a : {&P.mass, &P.vx, &P.vy, &P.volume0, &P.sxx, &P.syy, &P.sxy})
       prefetch_batch(a->data(), p0);
     prefetch_batch(P.material.data(), p0);
-    if constexpr (kWithForce) batch_force(P, stiffness, p0, int(std::min<std::size_t>(kBatch, end - p0)), f);
+    if constexpr (kWithForce) batch_force(P, stiffness, one_material, p0, int(std::min<std::size_t>(kBatch, end - p0)), f);
   });
   end_run();
   // Strips of one colour never share a node: no race.
@@ -171,7 +172,7 @@ void particles_to_grid_force(State& s) {
         }
       }
     }, [&](std::size_t p0) {
-      batch_force(P, s.stiffness.data(), p0, int(std::min<std::size_t>(kBatch, end - p0)), f);
+      batch_force(P, s.stiffness.data(), s.stiffness.size() == 1, p0, int(std::min<std::size_t>(kBatch, end - p0)), f);
     });
   });
 }
