@@ -41,15 +41,15 @@ inline void batch_force(const Particles& P, const ElasticStiffness* stiffness, b
   }
 }
 
-// Particle k's contribution to node (a, b) of its stencil from its column factors
-// (scatter_strip): sy_b col_a [+ dsy_b col_y_a].
+// Adds particle k's contribution to node (a, b) of its stencil, sy_b col_a [+ dsy_b col_y_a],
+// to acc (scatter_strip): one fused multiply-add per term into the sum (forming the
+// contribution first and adding it took a third more vector operations: rupture-bench P2G
+// 18.0 -> 17.1 ns per particle-update).
 template <bool kWithForce>
-inline Lane8 node_contribution(const StencilBatch& B, int k, int b, const Lane8& col,
-                               const Lane8& col_y) {
-  if constexpr (kWithForce)
-    return B.sy[b][k] * col + B.dsy[b][k] * col_y;
-  else
-    return B.sy[b][k] * col;
+inline void add_node_contribution(Lane8& acc, const StencilBatch& B, int k, int b,
+                                  const Lane8& col, const Lane8& col_y) {
+  acc += B.sy[b][k] * col;
+  if constexpr (kWithForce) acc += B.dsy[b][k] * col_y;
 }
 
 // One strip of the mass, momentum [and force] scatter (strips of one colour run in parallel).
@@ -100,10 +100,13 @@ void scatter_strip(State& s, int strip, std::size_t begin, std::size_t end) {
     // (Two loops, not a select per node: the compiler keeps the run in registers then.)
     if (first) {
       for (int b = 0; b < 3; ++b)
-        for (int a = 0; a < 3; ++a) run[3 * b + a] = node_contribution<kWithForce>(B, k, b, col[a], col_y[a]);
+        for (int a = 0; a < 3; ++a) {
+          run[3 * b + a] = Lane8{};
+          add_node_contribution<kWithForce>(run[3 * b + a], B, k, b, col[a], col_y[a]);
+        }
     } else {
       for (int b = 0; b < 3; ++b)
-        for (int a = 0; a < 3; ++a) run[3 * b + a] += node_contribution<kWithForce>(B, k, b, col[a], col_y[a]);
+        for (int a = 0; a < 3; ++a) add_node_contribution<kWithForce>(run[3 * b + a], B, k, b, col[a], col_y[a]);
     }
   }, [&](std::size_t p0) {
     for (const std::vector<double>* a : {&P.mass, &P.vx, &P.vy, &P.volume0, &P.sxx, &P.syy, &P.sxy})
