@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 #include <vector>
 
+#include "core/fp_mode.hpp"
 #include "io/case_toml.hpp"
 #include "solver/state.hpp"
 #include "solver/step.hpp"
@@ -106,6 +107,7 @@ int main(int argc, char** argv) {
   app.add_option("--repeat", repeat, "repeats (median reported)")->check(CLI::Range(1, 100));
   CLI11_PARSE(app, argc, argv);
   if (threads > 0) omp_set_num_threads(threads);
+  flush_subnormals_to_zero();  // as rupture run does (core/fp_mode.hpp)
 
   const Case c = bench_case(cells);
   State s = make_state(c);

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "core/fp_mode.hpp"
 #include "cohesive/crack_tip.hpp"
 #include "io/case_toml.hpp"
 #include "solver/nested_state.hpp"
@@ -124,6 +125,7 @@ int main(int argc, char** argv) {
   app.add_option("--threads", threads, "OpenMP threads (0: the default)")->check(CLI::Range(0, 1024));
   CLI11_PARSE(app, argc, argv);
   if (threads > 0) omp_set_num_threads(threads);
+  flush_subnormals_to_zero();  // as rupture run does (core/fp_mode.hpp)
   try {
     const Case c = load_case(path, sets);
     const CaseSummary summary = summarize(c);

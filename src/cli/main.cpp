@@ -31,6 +31,7 @@
 #include <sstream>
 
 #include "core/errors.hpp"
+#include "core/fp_mode.hpp"
 #include "io/case_toml.hpp"
 #include "io/checkpoint.hpp"
 #include "io/input_schema.hpp"
@@ -237,6 +238,7 @@ int exit_code(Outcome o) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  rupture::flush_subnormals_to_zero();  // core/fp_mode.hpp: before any other thread exists
   CLI::App app{"rupture: dynamic fracture with GIMP and cohesive zones"};
   app.require_subcommand(1);
   std::string case_path, out_dir;
