@@ -309,7 +309,9 @@ void fields(A& a, Particles& p) {
 }
 
 // The particle order and the strips it was sorted into fix the summation order: both stored.
-// order, bucket, scratch are scratch of the sort.
+// order, bucket, scratch are scratch of the sort; rows_known, row_lo, row_hi, row_height only
+// size the strip tiles (false after a restart until the next sort: the tiles then find their
+// rows from the particles), so they change no result.
 template <class A>
 void fields(A& a, ScatterPlan& p) {
   a("strip_cells", p.strip_cells);
@@ -318,6 +320,7 @@ void fields(A& a, ScatterPlan& p) {
   a("sorted_step", p.sorted_step);
   a("valid", p.valid);
   a("strip_begin", p.strip_begin);
+  a("drift", p.drift);  // decides the next re-sort (build_scatter_plan)
 }
 
 template <class A>

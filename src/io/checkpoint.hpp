@@ -16,10 +16,11 @@
 
 namespace rupture {
 
-inline constexpr int kCheckpointVersion = 6;  // 2: State::strain_work; 3: Mach readings;
+inline constexpr int kCheckpointVersion = 7;  // 2: State::strain_work; 3: Mach readings;
                                               // 4: interface rupture times, peak slip rates;
                                               // 5: nested levels; 6: particles store the
-                                              // stress only (no strain, szz, volume)
+                                              // stress only (no strain, szz, volume);
+                                              // 7: the scatter plan's drift since its sort
 
 std::string checkpoint_path(const std::string& dir);  // DIR/checkpoint/checkpoint.bin
 

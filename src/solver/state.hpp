@@ -28,7 +28,8 @@ struct NestedState;  // solver/nested_state.hpp
 // node columns c-1..c+2. With strips of 5 columns or more, strips two apart stay node-disjoint
 // even when particles drift up to one column out of their strip, so strips are processed in
 // two colours (even, then odd), each colour in parallel, and the sort is redone only every
-// `sort_interval` steps or as soon as a particle drifts further (`valid` false). The
+// `sort_interval` steps (on a uniform lattice only once particles may also have moved half a
+// cell: build_scatter_plan) or as soon as a particle drifts further (`valid` false). The
 // summation order at every node is fixed by the sort, so results do not depend on the
 // number of threads. 32 columns: each strip's tiles (solver/transfer.cpp) span its columns
 // plus 5, so narrow strips zero, fill and add back up to twice the nodes they need (62.5 um
@@ -55,8 +56,9 @@ struct ScatterPlan {
   // stencil row of its particles at the sort (row_lo > row_hi: none), and a bound on how far
   // any particle has moved since (summed by the move like State::window_drift), m, which
   // widens them by whole rows of height row_height (the smallest cell height, m).
-  // Not in checkpoints (rows_known is false after a restart until the next sort: the tiles
-  // then find their rows from the particles); the rows do not change any result.
+  // The rows are not in checkpoints (rows_known is false after a restart until the next sort:
+  // the tiles then find their rows from the particles; they change no result); the drift is,
+  // as it decides when to re-sort (build_scatter_plan).
   bool rows_known = false;
   std::vector<int> row_lo, row_hi;  // [strip * fields + field]
   double drift = 0.0;
