@@ -68,13 +68,13 @@ double seconds_since(Clock::time_point t0) {
 //   stress + move: x y hx hy V0 sxx syy sxy + field, material; writes x y sxx syy sxy; not
 //     vx vy (the MUSL pass's finiteness check reads the stress: solver/gather.cpp); strain,
 //     sigma_zz and V are derived from the stress, not stored  -> 8 x 8 + 2 + 5 x 8
-//   sort, every 25 steps: x y twice, then each of the bytes_per_particle read, written to
-//     scratch and copied back                                          -> (4 x 8 + 4 x 94) / 25
+//   a sort (when one is due: solver/particle_sort.cpp; counted in the timed steps): x y hx hy
+//     for the keys, field for the strips' rows, then each of the bytes_per_particle read,
+//     written to scratch (write-allocate) and swapped in      -> 4 x 8 + 1 + 3 x 94 per sort
 constexpr double kBytesP2G = 11 * 8 + 2;
 constexpr double kBytesVelocity = 7 * 8 + 1 + 2 * 8;
 constexpr double kBytesStress = 8 * 8 + 2 + 5 * 8;
-constexpr double kBytesSort = (4 * 8 + 4 * double(Particles::bytes_per_particle())) / 25.0;
-constexpr double kBytesPerUpdate = kBytesP2G + kBytesVelocity + kBytesStress + kBytesSort;
+constexpr double kBytesEachSort = 4 * 8 + 1 + 3 * double(Particles::bytes_per_particle());
 
 // A STREAM-like triad a = b + q c over arrays far larger than the caches, on the same threads:
 // the best of `repeat` passes, in GB/s counted as STREAM does (24 bytes per element).
@@ -121,13 +121,16 @@ int main(int argc, char** argv) {
   constexpr int kPhases = 6;
   std::vector<double> rates;
   double phase_total[kPhases] = {};
+  long sorts = 0;  // in the timed steps
   for (int r = 0; r < repeat; ++r) {
     double phase[kPhases] = {};
     const auto t0 = Clock::now();
     for (int k = 0; k < steps; ++k) {
       // The phases of step() for the MUSL scheme, timed one by one.
       auto t = Clock::now();
+      const long sorted = s.plan.sorted_step;
       build_scatter_plan(s);
+      sorts += s.plan.sorted_step != sorted ? 1 : 0;
       phase[0] += seconds_since(t), t = Clock::now();
       particles_to_grid(s, true);
       phase[1] += seconds_since(t), t = Clock::now();
@@ -160,10 +163,12 @@ int main(int argc, char** argv) {
   fmt::print("memory_bytes_per_particle={:.1f}\n", bytes / n);
   // The distance to the memory bandwidth: the model's bytes at the measured rate, against a
   // triad on 3 x 128 MiB.
-  const double achieved = kBytesPerUpdate * median / 1e9;
+  const double bytes_sort = kBytesEachSort * double(sorts) / double(steps * repeat);
+  const double bytes_update = kBytesP2G + kBytesVelocity + kBytesStress + bytes_sort;
+  const double achieved = bytes_update * median / 1e9;
   const double stream = stream_triad_gb_per_s(std::size_t(1) << 24, 10);
-  fmt::print("model_bytes_per_particle_update={:.1f} (P2G {:.0f}, velocity {:.0f}, stress + move {:.0f}, sort {:.1f})\n",
-             kBytesPerUpdate, kBytesP2G, kBytesVelocity, kBytesStress, kBytesSort);
+  fmt::print("model_bytes_per_particle_update={:.1f} (P2G {:.0f}, velocity {:.0f}, stress + move {:.0f}, sort {:.1f}: {} in {} steps)\n",
+             bytes_update, kBytesP2G, kBytesVelocity, kBytesStress, bytes_sort, sorts, steps * repeat);
   fmt::print("achieved_bandwidth_gb_per_s={:.2f}\n", achieved);
   fmt::print("stream_triad_gb_per_s={:.2f}\n", stream);
   fmt::print("fraction_of_stream={:.2f}\n", achieved / stream);
