@@ -116,8 +116,12 @@ TEST(Shape, three_node_form_matches_closed_form_and_quadrature) {
         worst_s = std::max(worst_s, std::fabs(s[k] - ref.s));
         worst_ds = std::max(worst_ds, std::fabs(ds[k] - ref.ds));
         EXPECT_NEAR(s[k], quadrature_weight(d, 1.0, 1.0, l), 1e-13) << "c = " << c << ", l = " << l;
-        if (k != 1 && ref.s == 0.0) EXPECT_EQ(s[k], 0.0) << "c = " << c << ", node " << k;
-        if (k != 1 && ref.ds == 0.0) EXPECT_EQ(ds[k], 0.0) << "c = " << c << ", node " << k;
+        if (k != 1 && ref.s == 0.0) {
+          EXPECT_EQ(s[k], 0.0) << "c = " << c << ", node " << k;
+        }
+        if (k != 1 && ref.ds == 0.0) {
+          EXPECT_EQ(ds[k], 0.0) << "c = " << c << ", node " << k;
+        }
       }
       EXPECT_EQ(ds[0] + ds[2] + ds[1], 0.0) << "c = " << c;
     }

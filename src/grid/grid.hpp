@@ -57,10 +57,11 @@ struct Stencil1D {
 // nodes first..first+2 (SPEC E3). Uniform: nodes i0-1..i0+1 if xp lies in the left half of
 // cell i0, else i0..i0+2. Graded: first is the cell holding the particle's left edge xp - lp
 // (its box overlaps at most two cells; the third weight may be zero).
-// The first node of that stencil.
+// The first node of that stencil (the same arithmetic as the transfers' batched stencils,
+// solver/stencil_batch.hpp).
 inline int stencil_first(const Axis& a, double xp, double lp) {
   if (a.graded()) return a.cell_of(xp - lp);
-  const double xi = (xp - a.origin) / a.h;
+  const double xi = (xp - a.origin) * (1.0 / a.h);
   const double cell = std::floor(xi);
   return int(cell) - (xi - cell < 0.5 ? 1 : 0);
 }
@@ -87,11 +88,9 @@ inline void stencil(const Axis& a, double xp, double lp, Stencil1D& st) {
     return;
   }
   const double inv_h = 1.0 / a.h;
-  const double xi = (xp - a.origin) * inv_h;
-  const double cell = std::floor(xi);
-  const int first = int(cell) - (xi - cell < 0.5 ? 1 : 0);
+  const int first = stencil_first(a, xp, lp);
   st.first = first;
-  gimp_uniform_stencil(xi - double(first), lp * inv_h, inv_h, st.s, st.ds);
+  gimp_uniform_stencil((xp - a.origin) * inv_h - double(first), lp * inv_h, inv_h, st.s, st.ds);
 }
 
 // The GIMP stencil contract along one graded axis (SPEC E3, graded form). stencil() takes the
