@@ -34,10 +34,12 @@
 #include "core/fp_mode.hpp"
 #include "io/case_toml.hpp"
 #include "io/checkpoint.hpp"
+#include "parallel/rank_plan.hpp"
 #include "io/input_schema.hpp"
 #include "run/driver.hpp"
 #include "run/step_cost.hpp"
 #include "run/sweep.hpp"
+#include "solver/state.hpp"
 #include "solver/summary.hpp"
 
 using namespace rupture;
@@ -235,6 +237,41 @@ int exit_code(Outcome o) {
   return 3;
 }
 
+// rupture check --ranks N: how a distributed run would split the case (parallel/rank_plan.hpp).
+void print_rank_plan(const Case& c, int ranks) {
+  const State s = make_state(c);
+  const RankPlan plan = plan_ranks(s, ranks);
+  fmt::print("ranks={} ({} bisected by particle count{})\n", ranks,
+             plan.levels.size() > 1 ? "each level's cells" : "the grid's cells",
+             plan.levels.size() > 1 ? "; rank r takes block r of every level" : "");
+  std::vector<std::size_t> particles(std::size_t(ranks), 0);
+  std::vector<long> shared(std::size_t(ranks), 0);
+  for (std::size_t l = 0; l < plan.levels.size(); ++l) {
+    const LevelSplit& L = plan.levels[l];
+    fmt::print("{}{} x {} cells{}, imbalance {:.4f}\n",
+               plan.levels.size() > 1 ? fmt::format("level {}: ", l) : std::string("grid: "), L.cols,
+               L.rows, L.period > 1 ? fmt::format(", one step every {} finest", L.period) : "",
+               L.split.imbalance());
+    for (int r = 0; r < ranks; ++r) {
+      const CellBlock& b = L.split.block[std::size_t(r)];
+      fmt::print("  rank {}: cells [{}, {}) x [{}, {}), particles {}, shared nodes {}\n", r, b.c0,
+                 b.c1, b.r0, b.r1, L.split.particles[std::size_t(r)],
+                 L.split.shared_nodes[std::size_t(r)]);
+      particles[std::size_t(r)] += L.split.particles[std::size_t(r)];
+      shared[std::size_t(r)] += L.split.shared_nodes[std::size_t(r)];
+    }
+  }
+  const auto join = [](const auto& v, const char* f) {
+    std::string out;
+    for (const auto& x : v) out += (out.empty() ? "" : ",") + fmt::format(fmt::runtime(f), x);
+    return out;
+  };
+  fmt::print("particles_per_rank={}\n", join(particles, "{}"));
+  fmt::print("work_per_rank={} (particle-updates per finest step)\n", join(plan.work, "{:.0f}"));
+  fmt::print("shared_nodes_per_rank={}\n", join(shared, "{}"));
+  fmt::print("predicted_imbalance={:.4f} (largest work / mean - 1)\n", plan.imbalance());
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -249,6 +286,11 @@ int main(int argc, char** argv) {
   // CASE is required unless --explain is given (checked after parsing).
   auto* check_case = check->add_option("case", case_path, "case file (TOML)");
   check->add_option("--set", overrides, "override an input key: dotted.key=value");
+  int check_ranks = 0;
+  check->add_option("--ranks", check_ranks,
+                    "print how N processes would split the case: blocks, particles and shared "
+                    "nodes per rank, predicted imbalance")
+      ->check(CLI::Range(1, 1 << 20));
   bool no_timing = false;
   check->add_flag("--no-timing", no_timing,
                   "skip the few timed steps behind measured_step_seconds= and predicted_wall_seconds=");
@@ -346,6 +388,7 @@ int main(int argc, char** argv) {
       const Case c = load_case(case_path, overrides);
       warn(c);
       print_check(case_path, c);
+      if (check_ranks > 0) print_rank_plan(c, check_ranks);
       if (!no_timing) print_predicted_time(c);
       return 0;
     }

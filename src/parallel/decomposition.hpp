@@ -1,0 +1,40 @@
+// rupture/parallel/decomposition.hpp
+// How a lattice of cells is split between N processes for a distributed run: recursive
+// coordinate bisection weighted by particle count. Each rank gets one rectangular block of
+// whole cells; a block with k of the N ranks is cut across its longer side (in cells) where
+// the particles on the low side come closest to k_low / k of the block's, with
+// k_low = floor(k / 2) (so any N works, not only powers of two). The particle work of a step is
+// proportional to the particle count (the grid work is a few percent: docs/performance.md),
+// so the largest count over the mean predicts the step's imbalance. A rank owns the nodes of
+// its cells; the nodes on a cut are shared with the neighbouring block (its halo: summed
+// after a scatter, copied after a gather). Nested levels split each level's lattice on its own
+// (each level steps at its own rate), rank r taking block r of every level.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace rupture {
+
+// Cells [c0, c1) x [r0, r1) of a lattice (cell (c, r) at column c, row r).
+struct CellBlock {
+  int c0 = 0, c1 = 0, r0 = 0, r1 = 0;
+  long cells() const { return long(c1 - c0) * long(r1 - r0); }
+};
+
+struct Decomposition {
+  std::vector<CellBlock> block;        // per rank
+  std::vector<std::size_t> particles;  // per rank
+  std::vector<long> shared_nodes;      // per rank: nodes of its block also in another block
+  std::size_t total() const;           // particles in all
+  double imbalance() const;            // largest count / mean - 1 (0: perfectly balanced)
+};
+
+// Splits a cols x rows lattice among `ranks` (>= 1, at most cols x rows). count[c + r * cols]:
+// particles in cell (c, r). Throws std::invalid_argument for a lattice with fewer cells than
+// ranks.
+Decomposition bisect_by_particles(const std::vector<std::uint32_t>& count, int cols, int rows,
+                                  int ranks);
+
+}  // namespace rupture

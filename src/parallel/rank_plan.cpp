@@ -1,0 +1,69 @@
+// rupture/parallel/rank_plan.cpp
+#include "parallel/rank_plan.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <numeric>
+#include <stdexcept>
+
+#include "core/errors.hpp"
+#include "solver/nested_state.hpp"
+
+namespace rupture {
+namespace {
+
+// Particles per cell of s's grid (cell (c, r) at c + r cols), positions at their cells.
+std::vector<std::uint32_t> particles_per_cell(const State& s) {
+  const int cols = s.grid.x.cells, rows = s.grid.y.cells;
+  std::vector<std::uint32_t> count(std::size_t(cols) * std::size_t(rows), 0);
+  const Particles& P = s.particles;
+  for (std::size_t p = 0; p < P.size(); ++p) {
+    const int c = std::clamp(s.grid.x.cell_of(P.x[p]), 0, cols - 1);
+    const int r = std::clamp(s.grid.y.cell_of(P.y[p]), 0, rows - 1);
+    ++count[std::size_t(c) + std::size_t(r) * std::size_t(cols)];
+  }
+  return count;
+}
+
+LevelSplit split_level(const State& s, int period, int ranks) {
+  LevelSplit l;
+  l.cols = s.grid.x.cells;
+  l.rows = s.grid.y.cells;
+  l.period = period;
+  try {
+    l.split = bisect_by_particles(particles_per_cell(s), l.cols, l.rows, ranks);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(fmt::format("--ranks {}: {}", ranks, e.what()));
+  }
+  return l;
+}
+
+}  // namespace
+
+double RankPlan::imbalance() const {
+  if (work.empty()) return 0.0;
+  const double sum = std::accumulate(work.begin(), work.end(), 0.0);
+  if (sum <= 0.0) return 0.0;
+  return *std::max_element(work.begin(), work.end()) / (sum / double(work.size())) - 1.0;
+}
+
+RankPlan plan_ranks(const State& s, int ranks) {
+  if (ranks < 1) throw InputError(fmt::format("--ranks {}: at least 1", ranks));
+  RankPlan plan;
+  plan.ranks = ranks;
+  if (s.nested) {
+    const NestedState& n = *s.nested;
+    for (std::size_t l = 0; l < n.levels.size(); ++l)
+      plan.levels.push_back(split_level(n.levels[l], n.period.empty() ? 1 : n.period[l], ranks));
+  } else {
+    plan.levels.push_back(split_level(s, 1, ranks));
+  }
+  plan.work.assign(std::size_t(ranks), 0.0);
+  for (const LevelSplit& l : plan.levels)
+    for (int r = 0; r < ranks; ++r)
+      plan.work[std::size_t(r)] += double(l.split.particles[std::size_t(r)]) / double(l.period);
+  return plan;
+}
+
+}  // namespace rupture
