@@ -263,12 +263,18 @@ void print_rank_plan(const Case& c, int ranks) {
   }
   const auto join = [](const auto& v, const char* f) {
     std::string out;
-    for (const auto& x : v) out += (out.empty() ? "" : ",") + fmt::format(fmt::runtime(f), x);
+    for (const auto& x : v) {
+      if (!out.empty()) out += ',';
+      out += fmt::format(fmt::runtime(f), x);
+    }
     return out;
   };
   fmt::print("particles_per_rank={}\n", join(particles, "{}"));
   fmt::print("work_per_rank={} (particle-updates per finest step)\n", join(plan.work, "{:.0f}"));
   fmt::print("shared_nodes_per_rank={}\n", join(shared, "{}"));
+  fmt::print("exchange_bytes_per_rank={} (sent + received per finest step, {} values per shared "
+             "node and field)\n",
+             join(plan.exchange_bytes, "{:.0f}"), kExchangedValues);
   fmt::print("predicted_imbalance={:.4f} (largest work / mean - 1)\n", plan.imbalance());
 }
 

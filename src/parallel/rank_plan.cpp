@@ -31,6 +31,7 @@ LevelSplit split_level(const State& s, int period, int ranks) {
   l.cols = s.grid.x.cells;
   l.rows = s.grid.y.cells;
   l.period = period;
+  l.fields = s.fields.num_fields;
   try {
     l.split = bisect_by_particles(particles_per_cell(s), l.cols, l.rows, ranks);
   } catch (const std::invalid_argument& e) {
@@ -60,9 +61,13 @@ RankPlan plan_ranks(const State& s, int ranks) {
     plan.levels.push_back(split_level(s, 1, ranks));
   }
   plan.work.assign(std::size_t(ranks), 0.0);
+  plan.exchange_bytes.assign(std::size_t(ranks), 0.0);
   for (const LevelSplit& l : plan.levels)
-    for (int r = 0; r < ranks; ++r)
-      plan.work[std::size_t(r)] += double(l.split.particles[std::size_t(r)]) / double(l.period);
+    for (std::size_t r = 0; r < std::size_t(ranks); ++r) {
+      plan.work[r] += double(l.split.particles[r]) / double(l.period);
+      plan.exchange_bytes[r] += 8.0 * kExchangedValues * double(l.split.shared_nodes[r]) *
+                                double(l.fields) / double(l.period);
+    }
   return plan;
 }
 
