@@ -23,8 +23,9 @@ namespace rupture {
 struct NestedState;  // solver/nested_state.hpp
 
 // Race-free scatter without locks: particles are kept physically sorted by vertical strips
-// of `strip_cells` cell columns, and by cell row inside a strip (so consecutive particles
-// touch the same nodes and memory is walked in order). A particle in cell column c touches
+// of `strip_cells` cell columns, and inside a strip by the first node of their stencil, row
+// then column (so consecutive particles touch the same nodes, runs of them all nine: the
+// transfers read and write those once, and memory is walked in order). A particle in cell column c touches
 // node columns c-1..c+2. With strips of 5 columns or more, strips two apart stay node-disjoint
 // even when particles drift up to one column out of their strip, so strips are processed in
 // two colours (even, then odd), each colour in parallel, and the sort is redone only every

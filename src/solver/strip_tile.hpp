@@ -67,14 +67,6 @@ void for_each_tile_row(const State& s, const TileLayout& T, Visit&& visit) {
   }
 }
 
-// Calls visit(tile_index, element) for every tile node that lies inside its field's window.
-template <class Visit>
-void for_each_tile_node(const State& s, const TileLayout& T, Visit&& visit) {
-  for_each_tile_row(s, T, [&](std::size_t t, std::size_t e, int count) {
-    for (int c = 0; c < count; ++c) visit(t + std::size_t(c), e + std::size_t(c));
-  });
-}
-
 // One tile row and the grid arrays: tile[c] = {in[0][e + c], .., in[kLanes-1][e + c], 0, ..}
 // (pack_tile_row), or out[lane][e + c] += tile[c][lane] (add_tile_row), c < count. The array
 // pointers are copied in first: reached through the GridFields vectors node by node, they
