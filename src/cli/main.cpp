@@ -21,6 +21,7 @@
 
 #include <CLI/CLI.hpp>
 #include <cerrno>
+#include <cstdio>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -34,6 +35,7 @@
 #include "core/fp_mode.hpp"
 #include "io/case_toml.hpp"
 #include "io/checkpoint.hpp"
+#include "parallel/comm.hpp"
 #include "parallel/rank_plan.hpp"
 #include "io/input_schema.hpp"
 #include "run/driver.hpp"
@@ -282,6 +284,13 @@ void print_rank_plan(const Case& c, int ranks) {
 
 int main(int argc, char** argv) {
   rupture::flush_subnormals_to_zero();  // core/fp_mode.hpp: before any other thread exists
+  // Under mpirun every process runs this; `rupture run` then steps one case together
+  // (parallel/halo.hpp) and rank 0 alone prints and writes (the others' stdout is discarded;
+  // the diagnoses every rank shares are printed by rank 0 only).
+  const MpiSession mpi(launched_by_mpi());
+  const Comm world = Comm::world();
+  if (world.rank() > 0 && !std::freopen("/dev/null", "w", stdout)) return 3;
+  const bool quiet_errors = world.rank() > 0;
   CLI::App app{"rupture: dynamic fracture with GIMP and cohesive zones"};
   app.require_subcommand(1);
   std::string case_path, out_dir;
@@ -387,7 +396,8 @@ int main(int argc, char** argv) {
   }
 
   try {
-    auto warn = [](const Case& c) {
+    auto warn = [&](const Case& c) {
+      if (quiet_errors) return;
       for (const std::string& w : c.warnings) fmt::print(stderr, "warning: {}\n", w);
     };
     if (check->parsed()) {
@@ -412,6 +422,7 @@ int main(int argc, char** argv) {
       options.overwrite = overwrite;
     }
     options.output_dir = out_dir;
+    options.comm = world;
     const Case c = parse_case(options.source.text, options.source.overrides, options.source.origin);
     // A checkpoint must not depend on files that can change or vanish before `rupture resume`:
     // with table_file tables it stores the merged input with the tables inline (exact: the
@@ -428,6 +439,11 @@ int main(int argc, char** argv) {
     fmt::print("wall_seconds={:.3f}\n", r.wall_seconds);
     fmt::print("particle_updates_per_second={:.4e}\n", r.particle_updates_per_second);
     fmt::print("cohesive_seconds={:.3f}\n", r.cohesive_seconds);
+    if (r.ranks > 1) {  // distributed: how the particles were split, and how often they moved
+      fmt::print("ranks={}\n", r.ranks);
+      fmt::print("particles_per_rank={}\n", fmt::join(r.particles_per_rank, ","));
+      fmt::print("migrations={}\n", r.migrations);
+    }
     fmt::print("energy_balance_error={:.4e}\n", r.energy_balance_error);
     fmt::print("energy_balance_error_final={:.4e}\n", r.energy_balance_error_final);
     if (!r.cracks.empty()) {
@@ -480,16 +496,21 @@ int main(int argc, char** argv) {
       }
     }
     fmt::print("output={}\n", out_dir);
-    if (r.outcome == Outcome::interrupted) {
+    if (quiet_errors) {
+    } else if (r.outcome == Outcome::interrupted) {
       fmt::print(stderr, "{}\n", r.message);
     } else if (!r.ok) {
       fmt::print(stderr, "error: {}\n", r.message);
     }
     return exit_code(r.outcome);
-  } catch (const InputError& e) {
-    fmt::print(stderr, "error: {}\n", e.what());
+  } catch (const InputError& e) {  // the same on every rank of a distributed run
+    if (!quiet_errors) fmt::print(stderr, "error: {}\n", e.what());
     return 1;
   } catch (const std::exception& e) {
+    if (world.distributed()) {  // one rank's own failure: say which, and stop the others
+      fmt::print(stderr, "error: rank {}: {}\n", world.rank(), e.what());
+      world.abort(3);
+    }
     fmt::print(stderr, "error: {}\n", e.what());
     return 3;
   }

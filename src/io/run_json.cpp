@@ -38,6 +38,7 @@ std::string run_json(const Case& c, const CaseSummary& s, const RunRecord& r) {
   t.insert("particles", s.particles);
   t.insert("memory_bytes_estimate", std::int64_t(s.memory_bytes));
   t.insert("threads", r.threads);
+  t.insert("ranks", r.ranks);
   t.insert("scheme", scheme_name(c.solver.scheme));
   t.insert("flip", c.solver.flip);
   t.insert("wall_seconds", r.wall_seconds);

@@ -36,6 +36,7 @@ struct RunRecord {
   double cohesive_seconds = 0.0;  // part of wall_seconds spent in the cohesive phases
   double particle_updates_per_second = 0.0;
   int threads = 1;
+  int ranks = 1;  // processes of a distributed run (mpirun -n N)
   double kinetic_energy = 0.0, strain_energy = 0.0, external_work = 0.0;
   double energy_balance_error = 0.0;        // largest |error| after the first microsecond
   double energy_balance_error_final = 0.0;  // at the last history sample

@@ -77,6 +77,21 @@ void Particles::append_copy(const Particles& from) {
   add(field, from.field), add(material, from.material), add(id, from.id);
 }
 
+void Particles::pack(std::size_t p, double* out) const {
+  const double v[kPacked] = {x[p],   y[p],   vx[p],  vy[p],           mass[p],
+                             volume0[p], half_x[p], half_y[p], sxx[p], syy[p],
+                             sxy[p], double(field[p]), double(material[p]), double(id[p])};
+  for (std::size_t k = 0; k < kPacked; ++k) out[k] = v[k];
+}
+
+void Particles::push_packed(const double* in) {
+  std::vector<double>* d[11] = {&x, &y, &vx, &vy, &mass, &volume0, &half_x, &half_y, &sxx, &syy, &sxy};
+  for (std::size_t k = 0; k < 11; ++k) d[k]->push_back(in[k]);
+  field.push_back(std::uint8_t(in[11]));
+  material.push_back(std::uint8_t(in[12]));
+  id.push_back(std::uint32_t(in[13]));
+}
+
 void seed_rectangle(Particles& p, const double min[2], const double max[2], double h, int ppc,
                     double density, std::uint8_t field, std::uint8_t material,
                     const double velocity[2], const double origin[2]) {

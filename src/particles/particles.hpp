@@ -40,6 +40,11 @@ struct Particles {
   std::size_t move_marked(const std::vector<unsigned char>& mark, Particles& to);
   // Appends a copy of every particle of `from`.
   void append_copy(const Particles& from);
+  // One particle as kPacked doubles (every array; the integers are exact in a double), for
+  // sending it to another process (parallel/halo.hpp), and back.
+  static constexpr std::size_t kPacked = 14;
+  void pack(std::size_t p, double* out) const;
+  void push_packed(const double* in);
 };
 
 // The centre of sub-cell k (side `side`) of a uniform lattice starting at `origin` (m): every

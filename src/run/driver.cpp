@@ -20,6 +20,7 @@
 #include "io/interface_csv.hpp"
 #include "io/run_json.hpp"
 #include "io/snapshot.hpp"
+#include "parallel/halo.hpp"
 #include "run/interrupt.hpp"
 #include "run/output_dir.hpp"
 #include "run/progress.hpp"
@@ -33,8 +34,10 @@ namespace rupture {
 namespace {
 
 EnergySample sample(const State& s) {
-  EnergySample e{s.time, kinetic_energy(s.particles), s.strain_work, s.external_work,
-                 s.initial_energy};
+  // Distributed: the sums over particles and owned nodes, added over the ranks.
+  double part[3] = {kinetic_energy(s.particles), s.strain_work, s.external_work};
+  if (s.halo) s.halo->comm.sum(part, 3);
+  EnergySample e{s.time, part[0], part[1], part[2], s.initial_energy};
   for (const CohesiveInterface& c : s.interfaces) {
     const double stored = c.stored_energy();
     e.cohesive_stored += stored;
@@ -85,8 +88,10 @@ void stamp_heartbeat(RunRecord& r) {
 // Sets up a run's context from the case: the initial state, one crack tracker per interface,
 // the snapshot writer and the output schedules. A fresh run starts from it; a resumed one
 // overwrites it with the checkpoint.
-void set_up(RunContext& r, const Case& c, const std::string& dir, double checkpoint_interval) {
+void set_up(RunContext& r, const Case& c, const std::string& dir, double checkpoint_interval,
+            const Comm& comm) {
   r.s = make_state(c);
+  if (comm.distributed()) distribute(r.s, comm);  // this rank's block and particles
   const State& s = r.s;
   if (c.output.snapshot_interval > 0)
     r.snapshots = std::make_unique<SnapshotWriter>(
@@ -113,21 +118,54 @@ void set_up(RunContext& r, const Case& c, const std::string& dir, double checkpo
   r.station_schedule = Schedule(c.output.station_interval);
 }
 
+// What a distributed run does not do yet, refused before any work (every rank alike).
+void check_distributed_outputs(const Case& c, const RunOptions& o) {
+  const int n = o.comm.size();
+  if (n <= 1) return;
+  auto refuse = [&](const std::string& what) {
+    throw InputError(fmt::format("{} is not supported yet by a distributed run (mpirun -n {}); "
+                                 "run it on one process",
+                                 what, n));
+  };
+  if (c.output.snapshot_interval > 0)
+    refuse(fmt::format("output.snapshot_interval = {:g} (snapshots; set it to 0)", c.output.snapshot_interval));
+  if (!c.stations.empty()) refuse("[stations]");
+  if (o.checkpoint_interval > 0) refuse(fmt::format("--checkpoint-interval {:g}", o.checkpoint_interval));
+  if (o.resume) refuse("rupture resume");
+}
+
+// Rank 0 prepares the directory; every rank learns whether it could (InputError on all).
+void prepare_dir(const std::string& dir, const RunOptions& o) {
+  std::string error;
+  if (o.comm.rank() == 0) {
+    try {
+      if (o.resume)
+        std::filesystem::create_directories(dir);
+      else
+        prepare_output_dir(dir, o.overwrite);
+    } catch (const std::exception& e) {
+      error = e.what();
+      if (!o.comm.distributed()) throw;
+    }
+  }
+  error = o.comm.broadcast(error, 0);
+  if (!error.empty()) throw InputError(error);
+}
+
 }  // namespace
 
 RunResult run_case(const Case& c, const RunOptions& options) {
   namespace fs = std::filesystem;
   const std::string dir = options.output_dir;
-  if (options.resume) {
-    fs::create_directories(dir);
-  } else {
-    prepare_output_dir(dir, options.overwrite);
-  }
+  const Comm& comm = options.comm;
+  const bool writer = comm.rank() == 0;  // the rank that writes the run directory
+  check_distributed_outputs(c, options);
+  prepare_dir(dir, options);
   if (c.solver.threads > 0) omp_set_num_threads(c.solver.threads);
 
   const CaseSummary summary = summarize(c);
   RunContext ctx;
-  set_up(ctx, c, dir, options.checkpoint_interval);
+  set_up(ctx, c, dir, options.checkpoint_interval, comm);
   // Where the stations read, from the state at t = 0 (a body station follows the particle
   // nearest its point then), before a checkpoint replaces the state.
   std::vector<StationProbe> probes = make_probes(c.stations, ctx.s);
@@ -141,16 +179,28 @@ RunResult run_case(const Case& c, const RunOptions& options) {
     }
   }
   State& s = ctx.s;
+  const long total_particles = sum_over_ranks(s, long(s.particles.size()));
+  RunResult result;
+  result.ranks = comm.size();
+  {  // every rank's count in its slot, summed: the split, known to every rank
+    std::vector<double> count(std::size_t(comm.size()), 0.0);
+    count[std::size_t(comm.rank())] = double(s.particles.size());
+    comm.sum(count.data(), int(count.size()));
+    for (const double n : count) result.particles_per_rank.push_back(long(n));
+  }
   History& history = ctx.history;
   std::unique_ptr<SnapshotWriter>& snapshots = ctx.snapshots;
   std::vector<CrackTracker>& cracks = ctx.cracks;
   RunRecord record;
   record.threads = omp_get_max_threads();
+  record.ranks = comm.size();
   record.segments = ctx.segments;
   if (options.resume) record.checkpoint_time = s.time, record.checkpoint_step = s.step;
   stamp_heartbeat(record);
-  write_file_atomic(dir + "/run.json", run_json(c, summary, record));
-  write_csv_units(dir);  // what every CSV column holds, in which unit
+  if (writer) {
+    write_file_atomic(dir + "/run.json", run_json(c, summary, record));
+    write_csv_units(dir);  // what every CSV column holds, in which unit
+  }
 
   // Crack speeds are reported against the speeds of the lower body's material.
   std::vector<WaveSpeeds> crack_speeds;  // per interface
@@ -222,14 +272,14 @@ RunResult run_case(const Case& c, const RunOptions& options) {
 
   // The record files (history, crack tip, run.json "running" + heartbeat), every kFlushSeconds
   // of wall time and at every snapshot; and checkpoints.
-  Progress progress(summary.steps, c.time.end, c.output.progress_interval, options.progress);
+  Progress progress(summary.steps, c.time.end, c.output.progress_interval, options.progress && writer);
   auto fill_record = [&](RunRecord& r) {
     const EnergySample& e = history.samples.back();
     r.steps = s.step;
     r.simulated_time = s.time;
     r.wall_seconds = ctx.wall_before + progress.elapsed();
     r.particle_updates_per_second =
-        r.wall_seconds > 0 ? double(s.particles.size()) * double(s.step) / r.wall_seconds : 0.0;
+        r.wall_seconds > 0 ? double(total_particles) * double(s.step) / r.wall_seconds : 0.0;
     r.cohesive_seconds = s.cohesive_seconds;
     r.kinetic_energy = e.kinetic;
     r.strain_energy = e.strain;
@@ -244,6 +294,7 @@ RunResult run_case(const Case& c, const RunOptions& options) {
   };
   auto last_flush = std::chrono::steady_clock::now();
   auto flush = [&]() {
+    if (!writer) return;
     history.write(dir + "/history.csv");
     write_cracks();
     write_stations(dir, c.stations, probes, ctx.stations);
@@ -260,7 +311,6 @@ RunResult run_case(const Case& c, const RunOptions& options) {
     record.checkpoint_step = s.step;
   };
   InterruptGuard interrupt_guard;
-  RunResult result;
   std::string io_failure;  // what failed to be written (then the run stops)
   int caught_signal = 0;
   try {
@@ -333,12 +383,13 @@ RunResult run_case(const Case& c, const RunOptions& options) {
       if (last) break;
       if (!flushed && seconds_since(last_flush) >= kFlushSeconds) flush();
       caught_signal = interrupt_signal();
+      if (comm.distributed()) caught_signal = int(comm.max(double(caught_signal)));  // all stop together
       const bool stop = caught_signal != 0 ||
                         (options.stop_after_steps > 0 && s.step >= options.stop_after_steps);
       // A checkpoint holds the particles at one time: a stop waits for the levels' steps to
       // end where they would anyway, so the resumed run is bitwise the uninterrupted one.
       if (!synced) continue;
-      if (ctx.checkpoint.due(s.time, eps) || stop) {
+      if ((ctx.checkpoint.due(s.time, eps) || stop) && !comm.distributed()) {
         ctx.checkpoint.advance(s.time, eps);
         checkpoint();
       }
@@ -351,11 +402,17 @@ RunResult run_case(const Case& c, const RunOptions& options) {
     if (result.stop_reason == "interrupted") {
       result.outcome = Outcome::interrupted;
       record.status = "interrupted";
-      record.message = result.message = fmt::format(
-          "interrupted{} at step {}, t = {:.6e} s; checkpoint written; resume with: rupture "
-          "resume {}",
-          caught_signal ? fmt::format(" by signal {}", caught_signal) : std::string(), s.step,
-          s.time, dir);
+      record.message = result.message =
+          comm.distributed()
+              ? fmt::format("interrupted{} at step {}, t = {:.6e} s; no checkpoint (not yet "
+                            "written by distributed runs)",
+                            caught_signal ? fmt::format(" by signal {}", caught_signal) : std::string(),
+                            s.step, s.time)
+              : fmt::format(
+                    "interrupted{} at step {}, t = {:.6e} s; checkpoint written; resume with: "
+                    "rupture resume {}",
+                    caught_signal ? fmt::format(" by signal {}", caught_signal) : std::string(),
+                    s.step, s.time, dir);
     } else {
       result.ok = true;
       result.outcome = Outcome::completed;
@@ -376,7 +433,7 @@ RunResult run_case(const Case& c, const RunOptions& options) {
     progress.finish(s.step, s.time);
     io_failure = e.what();
   }
-  if (io_failure.empty()) {
+  if (io_failure.empty() && writer) {
     try {
       history.write(dir + "/history.csv");
       write_cracks();
@@ -403,6 +460,7 @@ RunResult run_case(const Case& c, const RunOptions& options) {
   result.energy_balance_error = record.energy_balance_error;
   result.energy_balance_error_final = record.energy_balance_error_final;
   result.cohesive_seconds = s.cohesive_seconds;
+  if (s.halo) result.migrations = s.halo->migrations;
   for (std::size_t k = 0; k < cracks.size(); ++k) {
     CrackSummary cs = cracks[k].summarize(s.interfaces[k], crack_speeds[k]);
     const MachSummary m = summarize_mach(ctx.mach, int(k), cs.steady_begin, cs.steady_end);
@@ -416,7 +474,7 @@ RunResult run_case(const Case& c, const RunOptions& options) {
   }
   record.cracks = result.cracks;
   try {
-    write_file_atomic(dir + "/run.json", run_json(c, summary, record));
+    if (writer) write_file_atomic(dir + "/run.json", run_json(c, summary, record));
   } catch (const IoError& e) {
     if (result.outcome == Outcome::io_error) {
       result.message += fmt::format("; run.json could not be updated either ({})", e.what());
@@ -427,6 +485,12 @@ RunResult run_case(const Case& c, const RunOptions& options) {
       result.stop_reason = "io_error";
       result.message = e.what();
     }
+  }
+  // Distributed: a write that failed on rank 0 leaves the others inside the time loop; what
+  // could be written is, the diagnosis is printed, and every rank stops.
+  if (comm.distributed() && result.outcome == Outcome::io_error) {
+    fmt::print(stderr, "error: {}\n", result.message);
+    comm.abort(3);
   }
   return result;
 }

@@ -12,6 +12,11 @@
 // then. A failed write stops the run (status "failed", stop_reason "io_error", the operating
 // system's reason). SIGINT/SIGTERM stop it after the current step with a checkpoint (status
 // "interrupted"); run_case with RunOptions::resume continues from the checkpoint, bit for bit.
+// Distributed (RunOptions::comm of N > 1 ranks): each rank steps its block's particles, the
+// energies in history.csv and run.json are sums over the ranks, rank 0 writes every file; a
+// failure on one rank stops all of them with its diagnosis. Not yet distributed (refused
+// before any work, naming the key): snapshots, stations, Mach-angle readings, interfaces,
+// checkpoints and resume.
 #pragma once
 #include <string>
 
@@ -19,6 +24,7 @@
 
 #include "cohesive/crack_tip.hpp"
 #include "io/case.hpp"
+#include "parallel/comm.hpp"
 #include "run/run_context.hpp"
 
 namespace rupture {
@@ -33,6 +39,9 @@ struct RunOptions {
   double checkpoint_interval = 0.0;  // simulated s between checkpoints (0: none; on resume: keep)
   long stop_after_steps = 0;         // tests: stop as if interrupted after this step (0: never)
   CaseSource source;                 // kept in checkpoints, for `rupture resume`
+  // The processes running the case together (mpirun -n N: parallel/halo.hpp); rank 0 writes
+  // the run directory. Every rank calls run_case with the same case and options.
+  Comm comm = Comm::single();
 };
 
 // How a run ended; the CLI maps it to its exit code.
@@ -52,6 +61,9 @@ struct RunResult {
   double energy_balance_error = 0.0;   // relative, largest over the history after 1 us
   double energy_balance_error_final = 0.0;  // relative, last history sample
   std::vector<CrackSummary> cracks;    // one per cohesive interface
+  int ranks = 1;                       // processes (distributed runs)
+  std::vector<long> particles_per_rank;  // at t = 0, after the split
+  long migrations = 0;                 // particle migrations between ranks
 };
 
 RunResult run_case(const Case& c, const RunOptions& options);

@@ -21,6 +21,7 @@
 namespace rupture {
 
 struct NestedState;  // solver/nested_state.hpp
+struct Halo;         // parallel/halo.hpp
 
 // Race-free scatter without locks: particles are kept physically sorted by vertical strips
 // of `strip_cells` cell columns, and inside a strip by the first node of their stencil, row
@@ -148,6 +149,11 @@ struct State {
   std::shared_ptr<NestedState> nested;
   long particles_step = -1;
   bool nested_level = false;  // one level of a nested run (checkpointed as such)
+
+  // A distributed run (MPI, parallel/halo.hpp): this rank's block, its neighbours and their
+  // exchanges; null on one process. `particles` are then this rank's, and strain_work and
+  // external_work this rank's parts of the run's sums.
+  std::shared_ptr<Halo> halo;
 
   double cohesive_seconds = 0.0;  // wall time spent in the cohesive phases so far, s
   double external_work = 0.0;  // work of the prescribed velocities and loads so far, J (per unit thickness)

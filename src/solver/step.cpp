@@ -7,6 +7,8 @@
 
 #include <chrono>
 
+#include "core/errors.hpp"
+#include "parallel/halo.hpp"
 #include "solver/cohesive_step.hpp"
 #include "solver/field_windows.hpp"
 #include "solver/load_step.hpp"
@@ -40,6 +42,28 @@ void tie_stencils_and_time_step(State& s) {
     update_face_stencils(s);
   }
   choose_time_step(s);
+  if (s.halo) s.dt = s.halo->comm.min(s.dt);  // distributed: one step for all ranks
+}
+
+// A gather that may find a bad particle: on several processes the diagnosis waits for the end
+// of the step (every rank takes part in the step's exchanges, then all stop together).
+void gather(State& s, NodalArray gx, NodalArray gy, G2PMode mode) {
+  if (!s.halo) return grid_to_particles(s, gx, gy, mode);
+  try {
+    grid_to_particles(s, gx, gy, mode);
+  } catch (const SimulationError& e) {
+    if (s.halo->failure.empty()) s.halo->failure = e.what();
+  }
+}
+
+// The nodal arrays each scatter adds to, summed over the ranks that share a node (distributed
+// runs; parallel/halo.hpp).
+void sum_mass_momentum(State& s) { halo_sum(s, {&GridFields::mass, &GridFields::mom_x, &GridFields::mom_y}); }
+void sum_force(State& s) { halo_sum(s, {&GridFields::force_x, &GridFields::force_y}); }
+void sum_remapped(State& s) { halo_sum(s, {&GridFields::remap_x, &GridFields::remap_y}); }
+void sum_mass_momentum_force(State& s) {
+  halo_sum(s, {&GridFields::mass, &GridFields::mom_x, &GridFields::mom_y, &GridFields::force_x,
+               &GridFields::force_y});
 }
 
 void cohesive_forces_and_ties(State& s) {
@@ -54,6 +78,7 @@ void cohesive_forces_and_ties(State& s) {
 void step_musl(State& s) {
   GridFields& G = s.fields;
   particles_to_grid(s, true);             // E4: mass, momentum, internal force per field
+  sum_mass_momentum_force(s);             // distributed: shared nodes summed over ranks
   tie_stencils_and_time_step(s);          // bonded stretch, face stencils, dt (E6)
   add_external_forces(s);                 // E4 tractions, body forces ([loads])
   cohesive_forces_and_ties(s);            // E7-E9, bonded stretch
@@ -61,25 +86,27 @@ void step_musl(State& s) {
   apply_velocity_regions(s);              // [loads] velocity regions, along d
   external_force_work(s);                 // E14
   update_particle_velocity_and_remap(s);  // FLIP/PIC velocity, re-mapped momentum
+  sum_remapped(s);
   if (!s.interfaces.empty()) {
     CohesiveTimer timer(s);
     tie_bonded_nodes(s, TieWhat::remapped_momentum);
   }
   remapped_grid_velocity(s);  // + E2 velocity BCs at t^{n+1}
   prescribe_region_velocity(s, G.remap_x.data(), G.remap_y.data(), s.time + s.dt);
-  grid_to_particles(s, &GridFields::remap_x, &GridFields::remap_y, G2PMode::stress_and_move);  // E5
+  gather(s, &GridFields::remap_x, &GridFields::remap_y, G2PMode::stress_and_move);  // E5
 }
 
 // USL (update stress last): the stress is updated with the t^{n+1} grid velocity.
 void step_usl(State& s) {
   particles_to_grid(s, true);
+  sum_mass_momentum_force(s);
   tie_stencils_and_time_step(s);
   add_external_forces(s);
   cohesive_forces_and_ties(s);
   integrate_grid(s);
   apply_velocity_regions(s);
   external_force_work(s);
-  grid_to_particles(s, &GridFields::vel_x, &GridFields::vel_y, G2PMode::stress_velocity_and_move);  // E5
+  gather(s, &GridFields::vel_x, &GridFields::vel_y, G2PMode::stress_velocity_and_move);  // E5
 }
 
 // USF (update stress first): the stress is updated with the t^n grid velocity, before the
@@ -87,17 +114,19 @@ void step_usl(State& s) {
 void step_usf(State& s) {
   GridFields& G = s.fields;
   particles_to_grid(s, false);  // E4: mass, momentum
+  sum_mass_momentum(s);
   tie_stencils_and_time_step(s);
   grid_velocity_from_momentum(s, s.time);  // + E2 velocity BCs at t^n
   prescribe_region_velocity(s, G.remap_x.data(), G.remap_y.data(), s.time);
-  grid_to_particles(s, &GridFields::remap_x, &GridFields::remap_y, G2PMode::stress_only);  // E5
+  gather(s, &GridFields::remap_x, &GridFields::remap_y, G2PMode::stress_only);  // E5
   particles_to_grid_force(s);
+  sum_force(s);
   add_external_forces(s);
   cohesive_forces_and_ties(s);
   integrate_grid(s);
   apply_velocity_regions(s);
   external_force_work(s);
-  grid_to_particles(s, &GridFields::vel_x, &GridFields::vel_y, G2PMode::velocity_and_move);
+  gather(s, &GridFields::vel_x, &GridFields::vel_y, G2PMode::velocity_and_move);
 }
 
 }  // namespace
@@ -107,7 +136,9 @@ void step(State& s) {
     step_nested_run(s);
     return;
   }
+  migrate_if_due(s);  // distributed: particles that left their rank's block move to its owner
   build_scatter_plan(s);
+  const double drift_at_start = s.plan.drift;
   fit_field_windows(s);  // every field's window covers its particles, faces and ties
   // A driven edge that has moved onto another grid line takes its condition with it (E2).
   if (update_edge_lines(s.boundary, s.grid, s.time, s.bc_lines))
@@ -136,6 +167,7 @@ void step(State& s) {
     advance_interfaces(s, musl ? G.remap_x.data() : G.vel_x.data(),
                        musl ? G.remap_y.data() : G.vel_y.data());
   }
+  finish_distributed_step(s, drift_at_start);  // migration bound; a failure on any rank stops all
 }
 
 }  // namespace rupture

@@ -1,0 +1,145 @@
+// rupture/parallel/comm.cpp
+#include "parallel/comm.hpp"
+
+#include <mpi.h>
+
+#include <algorithm>
+#include <climits>
+#include <cstdlib>
+#include <stdexcept>
+
+namespace rupture {
+namespace {
+
+bool mpi_initialized() {
+  int init = 0, fin = 0;
+  MPI_Initialized(&init);
+  MPI_Finalized(&fin);
+  return init && !fin;
+}
+
+void check(int rc, const char* what) {
+  if (rc != MPI_SUCCESS) throw std::runtime_error(std::string("MPI call failed: ") + what);
+}
+
+}  // namespace
+
+bool launched_by_mpi() {
+  for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_SIZE", "PMI_RANK"})
+    if (std::getenv(v)) return true;
+  return false;
+}
+
+MpiSession::MpiSession(bool use) {
+  if (!use || mpi_initialized()) return;
+  int provided = 0;
+  check(MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided), "MPI_Init_thread");
+  active_ = true;
+}
+
+MpiSession::~MpiSession() {
+  if (active_ && mpi_initialized()) MPI_Finalize();
+}
+
+Comm Comm::world() {
+  Comm c;
+  if (!mpi_initialized()) return c;
+  MPI_Comm_rank(MPI_COMM_WORLD, &c.rank_);
+  MPI_Comm_size(MPI_COMM_WORLD, &c.size_);
+  return c;
+}
+
+double Comm::min(double v) const {
+  if (size_ == 1) return v;
+  double r = v;
+  check(MPI_Allreduce(&v, &r, 1, MPI_DOUBLE, MPI_MIN, MPI_COMM_WORLD), "MPI_Allreduce");
+  return r;
+}
+
+double Comm::max(double v) const {
+  if (size_ == 1) return v;
+  double r = v;
+  check(MPI_Allreduce(&v, &r, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD), "MPI_Allreduce");
+  return r;
+}
+
+double Comm::sum(double v) const {
+  sum(&v, 1);
+  return v;
+}
+
+// The reduction's order is MPI's (fixed for a given N): sums over ranks agree with one
+// process to round-off.
+void Comm::sum(double* v, int n) const {
+  if (size_ == 1 || n == 0) return;
+  check(MPI_Allreduce(MPI_IN_PLACE, v, n, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD), "MPI_Allreduce");
+}
+
+long Comm::sum(long v) const {
+  if (size_ == 1) return v;
+  long r = v;
+  check(MPI_Allreduce(&v, &r, 1, MPI_LONG, MPI_SUM, MPI_COMM_WORLD), "MPI_Allreduce");
+  return r;
+}
+
+int Comm::first_with(bool flag) const {
+  const int mine = flag ? rank_ : INT_MAX;
+  int r = mine;
+  if (size_ > 1) check(MPI_Allreduce(&mine, &r, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD), "MPI_Allreduce");
+  return r == INT_MAX ? -1 : r;
+}
+
+std::string Comm::broadcast(const std::string& text, int root) const {
+  if (size_ == 1) return text;
+  long n = rank_ == root ? long(text.size()) : 0;
+  check(MPI_Bcast(&n, 1, MPI_LONG, root, MPI_COMM_WORLD), "MPI_Bcast");
+  std::string out = rank_ == root ? text : std::string(std::size_t(n), '\0');
+  if (n > 0) check(MPI_Bcast(out.data(), int(n), MPI_CHAR, root, MPI_COMM_WORLD), "MPI_Bcast");
+  return out;
+}
+
+void Comm::exchange(std::vector<PeerBuffers>& peers) const {
+  if (peers.empty()) return;
+  std::vector<long> out(peers.size()), in(peers.size());
+  std::vector<MPI_Request> req(2 * peers.size());
+  for (std::size_t k = 0; k < peers.size(); ++k) {
+    out[k] = long(peers[k].send.size());
+    check(MPI_Irecv(&in[k], 1, MPI_LONG, peers[k].rank, 1, MPI_COMM_WORLD, &req[2 * k]), "MPI_Irecv");
+    check(MPI_Isend(&out[k], 1, MPI_LONG, peers[k].rank, 1, MPI_COMM_WORLD, &req[2 * k + 1]), "MPI_Isend");
+  }
+  check(MPI_Waitall(int(req.size()), req.data(), MPI_STATUSES_IGNORE), "MPI_Waitall");
+  for (std::size_t k = 0; k < peers.size(); ++k) peers[k].recv.resize(std::size_t(in[k]));
+  exchange_sized(peers);
+}
+
+void Comm::exchange_sized(std::vector<PeerBuffers>& peers) const {
+  if (peers.empty()) return;
+  std::vector<MPI_Request> req;
+  req.reserve(2 * peers.size());
+  constexpr long kChunk = INT_MAX / 2;  // MPI counts are int: long buffers go in pieces
+  int tag = 2;
+  for (PeerBuffers& p : peers) {
+    for (long off = 0; off < long(p.recv.size()); off += kChunk) {
+      req.emplace_back();
+      const int n = int(std::min(kChunk, long(p.recv.size()) - off));
+      check(MPI_Irecv(p.recv.data() + off, n, MPI_BYTE, p.rank, tag, MPI_COMM_WORLD, &req.back()), "MPI_Irecv");
+    }
+    for (long off = 0; off < long(p.send.size()); off += kChunk) {
+      req.emplace_back();
+      const int n = int(std::min(kChunk, long(p.send.size()) - off));
+      check(MPI_Isend(p.send.data() + off, n, MPI_BYTE, p.rank, tag, MPI_COMM_WORLD, &req.back()), "MPI_Isend");
+    }
+  }
+  check(MPI_Waitall(int(req.size()), req.data(), MPI_STATUSES_IGNORE), "MPI_Waitall");
+}
+
+void Comm::barrier() const {
+  if (size_ > 1) MPI_Barrier(MPI_COMM_WORLD);
+}
+
+void Comm::abort(int code) const {
+  if (size_ > 1) MPI_Abort(MPI_COMM_WORLD, code);
+  std::exit(code);
+}
+
+}  // namespace rupture

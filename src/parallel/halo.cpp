@@ -1,0 +1,243 @@
+// rupture/parallel/halo.cpp
+#include "parallel/halo.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "core/errors.hpp"
+#include "parallel/rank_plan.hpp"
+#include "solver/energy.hpp"
+
+namespace rupture {
+namespace {
+
+NodeBox reach_of(const CellBlock& b, const Grid& g) {
+  return NodeBox{std::max(0, b.c0 - kHaloNodes), std::min(g.nodes_x() - 1, b.c1 + kHaloNodes),
+                 std::max(0, b.r0 - kHaloNodes), std::min(g.nodes_y() - 1, b.r1 + kHaloNodes)};
+}
+
+NodeBox intersect(const NodeBox& a, const NodeBox& b) {
+  return NodeBox{std::max(a.i0, b.i0), std::min(a.i1, b.i1), std::max(a.j0, b.j0), std::min(a.j1, b.j1)};
+}
+
+long place_in(const NodeBox& b, int i, int j) {
+  return long(j - b.j0) * long(b.i1 - b.i0 + 1) + long(i - b.i0);
+}
+
+// The peers (ranks whose reach overlaps this rank's) and the halo nodes with their holders in
+// rank order.
+void build_peers(Halo& h, const Grid& g) {
+  const int me = h.comm.rank();
+  h.reach = reach_of(h.block(), g);
+  for (int q = 0; q < int(h.blocks.size()); ++q) {
+    if (q == me) continue;
+    const NodeBox box = intersect(h.reach, reach_of(h.blocks[std::size_t(q)], g));
+    if (!box.empty()) h.peers.push_back(Halo::Peer{q, box});
+  }
+  // Which peers hold each node of the reach (dense over the reach: its rim only is non-empty).
+  const long w = long(h.reach.i1 - h.reach.i0 + 1);
+  std::vector<std::vector<int>> holders(std::size_t(h.reach.count()));
+  for (std::size_t k = 0; k < h.peers.size(); ++k) {
+    const NodeBox& b = h.peers[k].box;
+    for (int j = b.j0; j <= b.j1; ++j)
+      for (int i = b.i0; i <= b.i1; ++i)
+        holders[std::size_t(long(j - h.reach.j0) * w + long(i - h.reach.i0))].push_back(int(k));
+  }
+  h.first.assign(1, 0);
+  for (int j = h.reach.j0; j <= h.reach.j1; ++j)
+    for (int i = h.reach.i0; i <= h.reach.i1; ++i) {
+      const std::vector<int>& on = holders[std::size_t(long(j - h.reach.j0) * w + long(i - h.reach.i0))];
+      if (on.empty()) continue;
+      h.node_i.push_back(i), h.node_j.push_back(j);
+      bool mine_added = false;  // peers are in rank order: this rank goes before the first above it
+      for (const int k : on) {
+        if (!mine_added && h.peers[std::size_t(k)].rank > me) h.terms.push_back({-1, 0}), mine_added = true;
+        h.terms.push_back({k, place_in(h.peers[std::size_t(k)].box, i, j)});
+      }
+      if (!mine_added) h.terms.push_back({-1, 0});
+      h.first.push_back(h.terms.size());
+    }
+  h.buffers.resize(h.peers.size());
+  for (std::size_t k = 0; k < h.peers.size(); ++k) h.buffers[k].rank = h.peers[k].rank;
+}
+
+double read_double(const std::vector<unsigned char>& buf, std::size_t k) {
+  double v;
+  std::memcpy(&v, buf.data() + k * sizeof(double), sizeof v);
+  return v;
+}
+
+}  // namespace
+
+void check_distributable(const State& s, int ranks) {
+  if (ranks <= 1) return;
+  auto refuse = [&](const std::string& what) {
+    throw InputError(fmt::format("{} is not supported yet by a distributed run (mpirun -n {}); "
+                                 "run it on one process",
+                                 what, ranks));
+  };
+  if (s.nested) refuse("grid.refinement = \"nested\"");
+  if (s.grid.graded()) refuse("a graded grid (grid.refine)");
+  if (!s.interfaces.empty()) refuse("[interfaces] (cohesive interfaces and faults)");
+  if (!s.loads.spec.tractions.empty() || !s.loads.spec.body_forces.empty() ||
+      !s.loads.spec.velocity_regions.empty())
+    refuse("[loads]");
+}
+
+void distribute(State& s, const Comm& comm) {
+  check_distributable(s, comm.size());
+  auto h = std::make_shared<Halo>();
+  h->comm = comm;
+  h->blocks = plan_ranks(s, comm.size()).levels.at(0).split.block;
+  h->cell = std::min(s.grid.x.h, s.grid.y.h);
+  build_peers(*h, s.grid);
+  // Keep this rank's particles (every rank made the same State: the same particles, the same
+  // split).
+  Particles& P = s.particles;
+  std::vector<unsigned char> away(P.size(), 0);
+  for (std::size_t p = 0; p < P.size(); ++p) {
+    const int c = std::clamp(s.grid.x.cell_of(P.x[p]), 0, s.grid.x.cells - 1);
+    const int r = std::clamp(s.grid.y.cell_of(P.y[p]), 0, s.grid.y.cells - 1);
+    away[p] = !h->owns_cell(c, r);
+  }
+  Particles others;
+  P.move_marked(away, others);
+  // E14: the strain work starts from this rank's part of the elastic energy; the initial
+  // energy stays the whole run's (the history sums the parts).
+  s.strain_work = strain_energy(P, s.stiffness);
+  s.halo = std::move(h);
+  s.plan.valid = false;            // re-sort, and
+  s.windows_checked_step = -2;     // re-fit the windows to this rank's particles
+}
+
+void halo_sum(State& s, std::initializer_list<NodalArray> arrays) {
+  if (!s.halo) return;
+  Halo& h = *s.halo;
+  GridFields& G = s.fields;
+  const std::size_t A = arrays.size(), F = std::size_t(G.num_fields);
+  // Pack: per peer, field-major, the box's nodes row by row, the arrays per node (0 where the
+  // field has no window: this rank added nothing there).
+  for (std::size_t k = 0; k < h.peers.size(); ++k) {
+    const NodeBox& b = h.peers[k].box;
+    const std::size_t n = std::size_t(b.count()) * F * A;
+    PeerBuffers& buf = h.buffers[k];
+    buf.send.resize(n * sizeof(double));
+    buf.recv.resize(n * sizeof(double));
+    double* out = reinterpret_cast<double*>(buf.send.data());
+    for (std::size_t f = 0; f < F; ++f)
+      for (int j = b.j0; j <= b.j1; ++j)
+        for (int i = b.i0; i <= b.i1; ++i) {
+          const bool held = G.holds(int(f), i, j);
+          const std::size_t e = held ? G.index(int(f), i, j) : 0;
+          for (const NodalArray a : arrays) *out++ = held ? (G.*a)[e] : 0.0;
+        }
+  }
+  h.comm.exchange_sized(h.buffers);
+  // Every halo node: the holders' values in rank order (this rank's own in its place).
+  for (std::size_t f = 0; f < F; ++f)
+    for (std::size_t n = 0; n + 1 < h.first.size(); ++n) {
+      const int i = h.node_i[n], j = h.node_j[n];
+      if (!G.holds(int(f), i, j)) continue;  // this rank reads nothing there
+      const std::size_t e = G.index(int(f), i, j);
+      std::size_t a_index = 0;
+      for (const NodalArray a : arrays) {
+        double sum = 0.0;
+        for (std::size_t t = h.first[n]; t < h.first[n + 1]; ++t) {
+          const Halo::Term& term = h.terms[t];
+          if (term.peer < 0) {
+            sum += (G.*a)[e];
+            continue;
+          }
+          const long cnt = h.peers[std::size_t(term.peer)].box.count();
+          sum += read_double(h.buffers[std::size_t(term.peer)].recv,
+                             (f * std::size_t(cnt) + std::size_t(term.place)) * A + a_index);
+        }
+        (G.*a)[e] = sum;
+        ++a_index;
+      }
+    }
+}
+
+bool counts_node(const State& s, std::size_t node) {
+  if (!s.halo) return true;
+  const std::size_t nx = std::size_t(s.grid.nodes_x());
+  const int i = int(node % nx), j = int(node / nx);
+  return s.halo->owns_cell(std::min(i, s.grid.x.cells - 1), std::min(j, s.grid.y.cells - 1));
+}
+
+void migrate_if_due(State& s) {
+  if (!s.halo) return;
+  Halo& h = *s.halo;
+  if (h.comm.max(h.drift) < kMigrateCells * h.cell) return;
+  Particles& P = s.particles;
+  // Destination of each particle that left the block: the peer whose block holds its cell.
+  std::vector<unsigned char> leaving(P.size(), 0);
+  std::vector<int> dest(P.size(), -1);
+  std::vector<std::size_t> count(h.peers.size(), 0);
+  for (std::size_t p = 0; p < P.size(); ++p) {
+    const int c = std::clamp(s.grid.x.cell_of(P.x[p]), 0, s.grid.x.cells - 1);
+    const int r = std::clamp(s.grid.y.cell_of(P.y[p]), 0, s.grid.y.cells - 1);
+    if (h.owns_cell(c, r)) continue;
+    for (std::size_t k = 0; k < h.peers.size(); ++k) {
+      const CellBlock& b = h.blocks[std::size_t(h.peers[k].rank)];
+      if (c >= b.c0 && c < b.c1 && r >= b.r0 && r < b.r1) {
+        dest[p] = int(k);
+        break;
+      }
+    }
+    if (dest[p] < 0) {
+      // Cannot happen while the drift bound holds; a diagnosis rather than a lost particle.
+      if (h.failure.empty())
+        h.failure = fmt::format(
+            "particle id {} at (x, y) = ({:.6g}, {:.6g}) m, step {}, t = {:.6g} s, left rank "
+            "{}'s block by more than its halo (drift bound {:.3g} cells)",
+            P.id[p], P.x[p], P.y[p], s.step, s.time, h.comm.rank(), h.drift / h.cell);
+      continue;
+    }
+    leaving[p] = 1;
+    ++count[std::size_t(dest[p])];
+  }
+  for (std::size_t k = 0; k < h.peers.size(); ++k) {
+    h.buffers[k].send.resize(count[k] * Particles::kPacked * sizeof(double));
+    count[k] = 0;
+  }
+  for (std::size_t p = 0; p < P.size(); ++p) {
+    if (!leaving[p]) continue;
+    const std::size_t k = std::size_t(dest[p]);
+    double* out = reinterpret_cast<double*>(h.buffers[k].send.data()) + count[k]++ * Particles::kPacked;
+    P.pack(p, out);
+  }
+  Particles gone;
+  P.move_marked(leaving, gone);
+  h.comm.exchange(h.buffers);
+  for (const PeerBuffers& b : h.buffers) {  // in rank order: the same order on every run
+    const std::size_t n = b.recv.size() / (Particles::kPacked * sizeof(double));
+    for (std::size_t q = 0; q < n; ++q) {
+      double in[Particles::kPacked];
+      std::memcpy(in, b.recv.data() + q * sizeof in, sizeof in);
+      P.push_packed(in);
+    }
+  }
+  h.drift = 0.0;
+  ++h.migrations;
+  s.plan.valid = false;  // re-sort (and re-measure the windows) before the scatter
+}
+
+void finish_distributed_step(State& s, double drift_at_start) {
+  if (!s.halo) return;
+  Halo& h = *s.halo;
+  h.drift += s.plan.drift - drift_at_start;
+  const int failed = h.comm.first_with(!h.failure.empty());
+  if (failed < 0) return;
+  const std::string what = h.comm.broadcast(h.failure, failed);
+  h.failure.clear();
+  throw SimulationError(h.comm.size() > 1 ? fmt::format("{} (rank {})", what, failed) : what);
+}
+
+double sum_over_ranks(const State& s, double v) { return s.halo ? s.halo->comm.sum(v) : v; }
+long sum_over_ranks(const State& s, long v) { return s.halo ? s.halo->comm.sum(v) : v; }
+
+}  // namespace rupture

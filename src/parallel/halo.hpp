@@ -1,0 +1,106 @@
+// rupture/parallel/halo.hpp
+// One rank's part of a distributed run (MPI) and the exchanges the time step makes with its
+// neighbours. The grid's geometry (two axes) is known to every rank; its nodal arrays are not:
+// each velocity field keeps its window (GridFields), fitted to the rank's own particles, so a
+// rank holds the nodes of its block and a rim around it, never the whole grid.
+//   - Blocks: recursive coordinate bisection by particle count (parallel/decomposition.hpp),
+//     made once at t = 0; a particle belongs to the rank whose block holds its centre's cell.
+//   - Reach: the nodes a rank's particles may touch, its block's nodes plus kHaloNodes on every
+//     side. A particle up to 1.5 cells outside its block still touches only nodes of the reach
+//     (uGIMP stencil, lp <= h/2: nodes within 1 cell + lp of the centre), and particles migrate
+//     to their block's rank once any may have moved kMigrateCells since the last migration
+//     (the move's drift bound, summed as for the scatter plan), so they are never further out.
+//   - Halo sum (after each scatter): every node in the reach of several ranks gets the sum of
+//     all their contributions, added in rank order on every rank, so each copy of a node holds
+//     the same bits and the grid update that follows (velocity BCs included) gives the same
+//     velocities on every copy: the gathers need no second exchange. Neighbours only: the
+//     ranks whose reaches overlap; nothing is reduced over all nodes.
+//   - Nodal sums that count a node once (the external work of prescribed and absorbing edges)
+//     count it on its owner: the rank whose block holds the cell above and right of the node.
+// Units: m for lengths, the nodal arrays' own units.
+#pragma once
+#include <cstddef>
+#include <initializer_list>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "parallel/comm.hpp"
+#include "parallel/decomposition.hpp"
+#include "solver/state.hpp"
+#include "solver/transfer.hpp"
+
+namespace rupture {
+
+inline constexpr int kHaloNodes = 2;         // reach beyond the block's nodes, nodes
+inline constexpr double kMigrateCells = 1.0;  // particles migrate once any may have moved this far, cells
+
+// Nodes [i0, i1] x [j0, j1], inclusive (empty when i0 > i1 or j0 > j1).
+struct NodeBox {
+  int i0 = 0, i1 = -1, j0 = 0, j1 = -1;
+  bool empty() const { return i0 > i1 || j0 > j1; }
+  long count() const { return empty() ? 0 : long(i1 - i0 + 1) * long(j1 - j0 + 1); }
+  bool contains(int i, int j) const { return i >= i0 && i <= i1 && j >= j0 && j <= j1; }
+};
+
+struct Halo {
+  Comm comm = Comm::single();
+  std::vector<CellBlock> blocks;  // every rank's block, cells (ghost cells included)
+  NodeBox reach;                  // this rank's reach
+  struct Peer {
+    int rank = 0;
+    NodeBox box;  // nodes in both reaches
+  };
+  std::vector<Peer> peers;  // increasing rank
+  // Halo nodes (in some peer's box), each with its holders in rank order: term k of node n is
+  // terms[first[n] + k]: peer index, or -1 for this rank, and the node's place in that peer's box.
+  struct Term {
+    int peer;
+    long place;
+  };
+  std::vector<int> node_i, node_j;
+  std::vector<std::size_t> first;  // size nodes + 1
+  std::vector<Term> terms;
+  std::vector<PeerBuffers> buffers;  // per peer, reused
+  double cell = 0.0;                 // the cell size, m
+  double drift = 0.0;                // bound on any particle's move since the last migration, m
+  long migrations = 0;               // migrations so far
+  std::string failure;               // a SimulationError caught on this rank this step
+
+  const CellBlock& block() const { return blocks[std::size_t(comm.rank())]; }
+  bool owns_cell(int c, int r) const {
+    const CellBlock& b = block();
+    return c >= b.c0 && c < b.c1 && r >= b.r0 && r < b.r1;
+  }
+};
+
+// Splits s (a State made by make_state on every rank alike: uniform grid, one lattice) among
+// comm's ranks and keeps this rank's particles; the energies that are sums over particles
+// become this rank's parts. Throws InputError for what distributed runs do not support yet
+// (the message names the key).
+void distribute(State& s, const Comm& comm);
+
+// The distributed run's checks of a case, before any work starts (InputError naming the key).
+void check_distributable(const State& s, int ranks);
+
+// Sums the given nodal arrays over the ranks that reach each shared node (collective among
+// neighbours; nothing when s is not distributed).
+void halo_sum(State& s, std::initializer_list<NodalArray> arrays);
+
+// Whether a node-counted sum (external work) counts grid node `node` on this rank.
+bool counts_node(const State& s, std::size_t node);
+
+// At the start of a step: once a particle anywhere may have moved kMigrateCells since the last
+// migration, every rank sends the particles that left its block to the block's rank, and
+// marks its particles for a re-sort (collective).
+void migrate_if_due(State& s);
+
+// At the end of a step: adds the step's particle drift to the migration bound, and stops every
+// rank together when one failed (its diagnosis, thrown as SimulationError on all ranks).
+void finish_distributed_step(State& s, double drift_at_start);
+
+// Sum over ranks of a per-rank quantity (identity when not distributed).
+double sum_over_ranks(const State& s, double v);
+long sum_over_ranks(const State& s, long v);
+
+}  // namespace rupture
