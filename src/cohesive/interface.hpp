@@ -124,6 +124,13 @@ struct CohesiveInterface {
   std::vector<double> last_increment_n, last_increment_t, streak_base;
   std::vector<std::int32_t> reversal_streak;
   double work = 0.0;  // work done on the interface by the bodies so far, J/m (stored + dissipated)
+  // Distributed runs (parallel/halo.hpp): per node, 1 where this rank owns it (moves its faces,
+  // evaluates the segments that touch it, loads the grid with its force) and where it knows it
+  // (owned, or a ghost near its block whose faces and stiffness the owner sends every step);
+  // `work` is then the work on the segments starting at owned nodes. Empty on one process.
+  std::vector<unsigned char> rank_owned, rank_known;
+  bool owns(std::size_t k) const { return rank_owned.empty() || rank_owned[k]; }
+  bool knows(std::size_t k) const { return rank_known.empty() || rank_known[k]; }
 
   std::size_t num_nodes() const { return x0.size(); }
   std::size_t num_segments() const { return closed ? x0.size() : x0.size() - 1; }

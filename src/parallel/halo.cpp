@@ -14,9 +14,9 @@
 namespace rupture {
 namespace {
 
-NodeBox reach_of(const CellBlock& b, const Grid& g) {
-  return NodeBox{std::max(0, b.c0 - kHaloNodes), std::min(g.nodes_x() - 1, b.c1 + kHaloNodes),
-                 std::max(0, b.r0 - kHaloNodes), std::min(g.nodes_y() - 1, b.r1 + kHaloNodes)};
+NodeBox reach_of(const CellBlock& b, const Grid& g, int w) {
+  return NodeBox{std::max(0, b.c0 - w), std::min(g.nodes_x() - 1, b.c1 + w),
+                 std::max(0, b.r0 - w), std::min(g.nodes_y() - 1, b.r1 + w)};
 }
 
 NodeBox intersect(const NodeBox& a, const NodeBox& b) {
@@ -31,10 +31,10 @@ long place_in(const NodeBox& b, int i, int j) {
 // rank order.
 void build_peers(Halo& h, const Grid& g) {
   const int me = h.comm.rank();
-  h.reach = reach_of(h.block(), g);
+  h.reach = reach_of(h.block(), g, h.halo_nodes);
   for (int q = 0; q < int(h.blocks.size()); ++q) {
     if (q == me) continue;
-    const NodeBox box = intersect(h.reach, reach_of(h.blocks[std::size_t(q)], g));
+    const NodeBox box = intersect(h.reach, reach_of(h.blocks[std::size_t(q)], g, h.halo_nodes));
     if (!box.empty()) h.peers.push_back(Halo::Peer{q, box});
   }
   // Which peers hold each node of the reach (dense over the reach: its rim only is non-empty).
@@ -62,6 +62,17 @@ void build_peers(Halo& h, const Grid& g) {
     }
   h.buffers.resize(h.peers.size());
   for (std::size_t k = 0; k < h.peers.size(); ++k) h.buffers[k].rank = h.peers[k].rank;
+  // Each peer box's nodes as halo nodes (halo_sum_added packs per box from per-node values).
+  std::vector<long> index(std::size_t(h.reach.count()), -1);
+  for (std::size_t n = 0; n < h.node_i.size(); ++n)
+    index[std::size_t(long(h.node_j[n] - h.reach.j0) * w + long(h.node_i[n] - h.reach.i0))] = long(n);
+  h.box_node.resize(h.peers.size());
+  for (std::size_t k = 0; k < h.peers.size(); ++k) {
+    const NodeBox& b = h.peers[k].box;
+    for (int j = b.j0; j <= b.j1; ++j)
+      for (int i = b.i0; i <= b.i1; ++i)
+        h.box_node[k].push_back(index[std::size_t(long(j - h.reach.j0) * w + long(i - h.reach.i0))]);
+  }
 }
 
 double read_double(const std::vector<unsigned char>& buf, std::size_t k) {
@@ -81,10 +92,9 @@ void check_distributable(const State& s, int ranks) {
   };
   if (s.nested) refuse("grid.refinement = \"nested\"");
   if (s.grid.graded()) refuse("a graded grid (grid.refine)");
-  if (!s.interfaces.empty()) refuse("[interfaces] (cohesive interfaces and faults)");
-  if (!s.loads.spec.tractions.empty() || !s.loads.spec.body_forces.empty() ||
-      !s.loads.spec.velocity_regions.empty())
-    refuse("[loads]");
+  // A region's velocity acts on the nodes its particles touch: every copy of such a node
+  // would need the other ranks' lists.
+  if (!s.loads.spec.velocity_regions.empty()) refuse("[loads] velocity regions");
 }
 
 void distribute(State& s, const Comm& comm) {
@@ -93,6 +103,7 @@ void distribute(State& s, const Comm& comm) {
   h->comm = comm;
   h->blocks = plan_ranks(s, comm.size()).levels.at(0).split.block;
   h->cell = std::min(s.grid.x.h, s.grid.y.h);
+  if (!s.interfaces.empty()) h->halo_nodes = kInterfaceHaloNodes;
   build_peers(*h, s.grid);
   // Keep this rank's particles (every rank made the same State: the same particles, the same
   // split).
@@ -109,6 +120,7 @@ void distribute(State& s, const Comm& comm) {
   // energy stays the whole run's (the history sums the parts).
   s.strain_work = strain_energy(P, s.stiffness);
   s.halo = std::move(h);
+  distribute_interfaces(s);
   s.plan.valid = false;            // re-sort, and
   s.windows_checked_step = -2;     // re-fit the windows to this rank's particles
 }
@@ -157,6 +169,65 @@ void halo_sum(State& s, std::initializer_list<NodalArray> arrays) {
         }
         (G.*a)[e] = sum;
         ++a_index;
+      }
+    }
+}
+
+void halo_save(State& s, std::initializer_list<NodalArray> arrays) {
+  if (!s.halo) return;
+  Halo& h = *s.halo;
+  const GridFields& G = s.fields;
+  const std::size_t A = arrays.size(), N = h.node_i.size();
+  h.saved.assign(std::size_t(G.num_fields) * N * A, 0.0);
+  for (std::size_t f = 0; f < std::size_t(G.num_fields); ++f)
+    for (std::size_t n = 0; n < N; ++n) {
+      if (!G.holds(int(f), h.node_i[n], h.node_j[n])) continue;
+      const std::size_t e = G.index(int(f), h.node_i[n], h.node_j[n]);
+      std::size_t a = 0;
+      for (const NodalArray arr : arrays) h.saved[(f * N + n) * A + a++] = (G.*arr)[e];
+    }
+}
+
+void halo_sum_added(State& s, std::initializer_list<NodalArray> arrays) {
+  if (!s.halo) return;
+  Halo& h = *s.halo;
+  GridFields& G = s.fields;
+  const std::size_t A = arrays.size(), F = std::size_t(G.num_fields), N = h.node_i.size();
+  auto added = [&](std::size_t f, std::size_t n, std::size_t a, const NodalArray arr) {
+    if (!G.holds(int(f), h.node_i[n], h.node_j[n])) return 0.0;
+    return (G.*arr)[G.index(int(f), h.node_i[n], h.node_j[n])] - h.saved[(f * N + n) * A + a];
+  };
+  for (std::size_t k = 0; k < h.peers.size(); ++k) {
+    const std::vector<long>& nodes = h.box_node[k];
+    PeerBuffers& buf = h.buffers[k];
+    buf.send.resize(nodes.size() * F * A * sizeof(double));
+    buf.recv.resize(buf.send.size());
+    double* out = reinterpret_cast<double*>(buf.send.data());
+    for (std::size_t f = 0; f < F; ++f)
+      for (const long n : nodes) {
+        std::size_t a = 0;
+        for (const NodalArray arr : arrays) *out++ = added(f, std::size_t(n), a++, arr);
+      }
+  }
+  h.comm.exchange_sized(h.buffers);
+  for (std::size_t f = 0; f < F; ++f)
+    for (std::size_t n = 0; n < N; ++n) {
+      if (!G.holds(int(f), h.node_i[n], h.node_j[n])) continue;
+      const std::size_t e = G.index(int(f), h.node_i[n], h.node_j[n]);
+      std::size_t a = 0;
+      for (const NodalArray arr : arrays) {
+        double sum = 0.0;  // the ranks' additions in rank order, onto the saved sum
+        for (std::size_t t = h.first[n]; t < h.first[n + 1]; ++t) {
+          const Halo::Term& term = h.terms[t];
+          if (term.peer < 0) {
+            sum += added(f, n, a, arr);
+            continue;
+          }
+          const std::size_t cnt = h.box_node[std::size_t(term.peer)].size();
+          sum += read_double(h.buffers[std::size_t(term.peer)].recv, (f * cnt + std::size_t(term.place)) * A + a);
+        }
+        (G.*arr)[e] = h.saved[(f * N + n) * A + a] + sum;
+        ++a;
       }
     }
 }

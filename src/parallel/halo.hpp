@@ -20,6 +20,7 @@
 // Units: m for lengths, the nodal arrays' own units.
 #pragma once
 #include <cstddef>
+#include <cstdint>
 #include <initializer_list>
 #include <memory>
 #include <string>
@@ -32,7 +33,8 @@
 
 namespace rupture {
 
-inline constexpr int kHaloNodes = 2;         // reach beyond the block's nodes, nodes
+inline constexpr int kHaloNodes = 2;          // reach beyond the block's nodes, nodes
+inline constexpr int kInterfaceHaloNodes = 3;  // the same with interfaces (their ghost faces)
 inline constexpr double kMigrateCells = 1.0;  // particles migrate once any may have moved this far, cells
 
 // Nodes [i0, i1] x [j0, j1], inclusive (empty when i0 > i1 or j0 > j1).
@@ -62,6 +64,16 @@ struct Halo {
   std::vector<std::size_t> first;  // size nodes + 1
   std::vector<Term> terms;
   std::vector<PeerBuffers> buffers;  // per peer, reused
+  // Per peer: for each node of its box (row by row), the halo node it is (index into node_i).
+  std::vector<std::vector<long>> box_node;
+  std::vector<double> saved;  // halo_save: values at the halo nodes (field, node, array)
+  int halo_nodes = kHaloNodes;  // the reach's width beyond the block, nodes
+  // Per interface, per peer: the owned nodes whose state it needs (it knows them), and its
+  // owned nodes this rank knows (parallel/halo_interface.cpp).
+  struct InterfaceLinks {
+    std::vector<std::vector<std::uint32_t>> send, recv;
+  };
+  std::vector<InterfaceLinks> links;
   double cell = 0.0;                 // the cell size, m
   double drift = 0.0;                // bound on any particle's move since the last migration, m
   long migrations = 0;               // migrations so far
@@ -86,6 +98,32 @@ void check_distributable(const State& s, int ranks);
 // Sums the given nodal arrays over the ranks that reach each shared node (collective among
 // neighbours; nothing when s is not distributed).
 void halo_sum(State& s, std::initializer_list<NodalArray> arrays);
+
+// The same for what a phase adds to arrays that were summed already (the owners' cohesive
+// forces): halo_save keeps their values at the halo nodes, halo_sum_added sums what each rank
+// added since, in rank order, onto the kept values.
+void halo_save(State& s, std::initializer_list<NodalArray> arrays);
+void halo_sum_added(State& s, std::initializer_list<NodalArray> arrays);
+
+// Interfaces (parallel/halo_interface.cpp). A node is owned by the rank whose block holds the
+// cell of its reference point; a rank knows the nodes whose reference cell lies within 2 cells
+// of its block (the faces touching its owned grid nodes and the neighbours of its owned nodes,
+// for faces that moved less than a cell), so their faces' stencils lie in its reach
+// (kInterfaceHaloNodes). Throws InputError when an owned node's neighbour is not known (segments
+// longer than a cell).
+void distribute_interfaces(State& s);
+// Owners send the listed per-node arrays to the ranks that know the nodes.
+using InterfaceArray = std::vector<double> CohesiveInterface::*;
+void sync_interface_nodes(State& s, CohesiveInterface& c, std::initializer_list<InterfaceArray> arrays);
+// Every known face's stencil lies in the reach (else a diagnosis for the end of the step).
+void check_faces_in_reach(State& s);
+// Every rank gets every node's and Gauss point's state from its owner (outputs: the interface
+// profiles, crack summaries, stored energy); gather_crack_times: the nodes' crack and rupture
+// times, peak slip rates and faces only (the crack tip samples and crack files).
+void gather_interface_state(State& s);
+void gather_crack_times(State& s);
+// The run's work on interface k (the ranks' parts summed), J/m.
+double interface_work(const State& s, std::size_t k);
 
 // Whether a node-counted sum (external work) counts grid node `node` on this rank.
 bool counts_node(const State& s, std::size_t node);

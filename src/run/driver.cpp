@@ -33,15 +33,17 @@
 namespace rupture {
 namespace {
 
-EnergySample sample(const State& s) {
-  // Distributed: the sums over particles and owned nodes, added over the ranks.
+EnergySample sample(State& s) {
+  // Distributed: the sums over particles and owned nodes, added over the ranks; every
+  // interface node's state from its owner.
   double part[3] = {kinetic_energy(s.particles), s.strain_work, s.external_work};
   if (s.halo) s.halo->comm.sum(part, 3);
+  gather_interface_state(s);
   EnergySample e{s.time, part[0], part[1], part[2], s.initial_energy};
-  for (const CohesiveInterface& c : s.interfaces) {
-    const double stored = c.stored_energy();
+  for (std::size_t k = 0; k < s.interfaces.size(); ++k) {
+    const double stored = s.interfaces[k].stored_energy();
     e.cohesive_stored += stored;
-    e.cohesive_dissipated += c.work - stored;  // work on the interface not stored in it (E14)
+    e.cohesive_dissipated += interface_work(s, k) - stored;  // work not stored in it (E14)
   }
   return e;
 }
@@ -52,7 +54,7 @@ void check_energy(const State& s, const EnergySample& e) {
   // A prestressed fault (traction-offset form) releases energy into the bulk: its work on the
   // bodies, -work > 0, is supplied too.
   double released = 0.0;
-  for (const CohesiveInterface& c : s.interfaces) released += std::max(0.0, -c.work);
+  for (std::size_t k = 0; k < s.interfaces.size(); ++k) released += std::max(0.0, -interface_work(s, k));
   const double supplied = e.initial + std::fabs(e.external_work) + released;
   const double mechanical = e.kinetic + e.strain;
   if (mechanical <= 2.0 * supplied || mechanical <= 0.0) return;
@@ -130,6 +132,8 @@ void check_distributed_outputs(const Case& c, const RunOptions& o) {
   if (c.output.snapshot_interval > 0)
     refuse(fmt::format("output.snapshot_interval = {:g} (snapshots; set it to 0)", c.output.snapshot_interval));
   if (!c.stations.empty()) refuse("[stations]");
+  if (c.output.mach_interval > 0)
+    refuse(fmt::format("output.mach_interval = {:g} (Mach-angle readings; set it to 0)", c.output.mach_interval));
   if (o.checkpoint_interval > 0) refuse(fmt::format("--checkpoint-interval {:g}", o.checkpoint_interval));
   if (o.resume) refuse("rupture resume");
 }
@@ -209,6 +213,8 @@ RunResult run_case(const Case& c, const RunOptions& options) {
   int& interface_files = ctx.interface_files;
   auto write_interfaces = [&]() {
     if (s.interfaces.empty()) return;
+    gather_interface_state(s);  // distributed: every node from its owner
+    if (!writer) return;
     fs::create_directories(dir + "/interface");
     for (std::size_t k = 0; k < s.interfaces.size(); ++k) {
       const std::string named =
@@ -328,6 +334,8 @@ RunResult run_case(const Case& c, const RunOptions& options) {
       // are behind the run's time: what reads particles waits for the levels to end together.
       const bool synced = synchronized(s);
       // Crack samples at exact multiples of the interval (E10, E11), however long the step.
+      // Distributed: crack and rupture times, faces from their owners (the crack files too).
+      if (crack.due(s.time, eps) || last || c.time.stop_at_interface_end) gather_crack_times(s);
       while (crack.due(s.time, eps)) {
         for (std::size_t k = 0; k < cracks.size(); ++k) cracks[k].sample(s.interfaces[k], crack.next);
         crack.advance(crack.next, eps);
@@ -461,6 +469,7 @@ RunResult run_case(const Case& c, const RunOptions& options) {
   result.energy_balance_error_final = record.energy_balance_error_final;
   result.cohesive_seconds = s.cohesive_seconds;
   if (s.halo) result.migrations = s.halo->migrations;
+  gather_interface_state(s);  // distributed: every node from its owner
   for (std::size_t k = 0; k < cracks.size(); ++k) {
     CrackSummary cs = cracks[k].summarize(s.interfaces[k], crack_speeds[k]);
     const MachSummary m = summarize_mach(ctx.mach, int(k), cs.steady_begin, cs.steady_end);

@@ -9,6 +9,7 @@
 #include <variant>
 
 #include "core/errors.hpp"
+#include "parallel/halo.hpp"
 
 namespace rupture {
 namespace {
@@ -86,6 +87,10 @@ void evaluate_with(CohesiveInterface& c, const Law& law, double t, double t_befo
 #pragma omp parallel for schedule(static) reduction(+ : work)
   for (long sl = 0; sl < nseg; ++sl) {
     const std::size_t s = std::size_t(sl), e = c.segment_end(s);
+    // Distributed: the segments touching an owned node (their Gauss histories are kept alike
+    // by both ends' owners); the work counted by the owner of the first.
+    if (!c.owns(s) && !c.owns(e)) continue;
+    const double count_work = c.owns(s) ? 1.0 : 0.0;
     const double half = 0.5 * c.seg_length[s];
     // The segment's frame: normal n, tangent t = (n_y, -n_x) (exactly +y, +x on a line drawn in
     // +x).
@@ -118,8 +123,8 @@ void evaluate_with(CohesiveInterface& c, const Law& law, double t, double t_befo
       const double tn = r.tn, tt = r.tt, k = r.stiffness;
       // Work of the tractions over the step, trapezoidal in time (E14).
       const double jw = kW[g] * half;
-      work += jw * (0.5 * (c.gp_tn[i] + tn) * (dn - c.gp_dn[i]) +
-                    0.5 * (c.gp_tt[i] + tt) * (dt - c.gp_dt[i]));
+      work += count_work * jw * (0.5 * (c.gp_tn[i] + tn) * (dn - c.gp_dn[i]) +
+                                 0.5 * (c.gp_tt[i] + tt) * (dt - c.gp_dt[i]));
       c.gp_dn[i] = dn, c.gp_dt[i] = dt, c.gp_tn[i] = tn, c.gp_tt[i] = tt;
       fa_n += jw * Na * tn, fa_t += jw * Na * tt;
       fb_n += jw * Nb * tn, fb_t += jw * Nb * tt;
@@ -136,6 +141,7 @@ void evaluate_with(CohesiveInterface& c, const Law& law, double t, double t_befo
 #pragma omp parallel for schedule(static)
   for (long kl = 0; kl < nn; ++kl) {
     const std::size_t k = std::size_t(kl);
+    if (!c.owns(k)) continue;  // distributed: its owner's (synced where this rank needs it)
     double fx = 0, fy = 0, stiff = 0;
     // The segment ending on node k (on a closed line, node 0 ends the last one), then the one
     // starting there.
@@ -206,6 +212,7 @@ void update_face_stencils(State& s) {
 #pragma omp parallel for schedule(static) reduction(min : bad)
     for (long kl = 0; kl < n; ++kl) {
       const std::size_t k = std::size_t(kl);
+      if (!c.knows(k)) continue;  // distributed: far from this rank's block
       const double xa = c.x0[k] + c.ux_up[k], ya = c.y0[k] + c.uy_up[k];
       const double xb = c.x0[k] + c.ux_lo[k], yb = c.y0[k] + c.uy_lo[k];
       if (!face_inside(s.grid, xa, ya) || !face_inside(s.grid, xb, yb)) {
@@ -234,7 +241,7 @@ void add_cohesive_forces(State& s) {
     // next to the particle loops, and its fixed order keeps results thread-count independent.
     for (std::size_t k = 0; k < c.num_nodes(); ++k) {
       const double fx = c.fx_node[k], fy = c.fy_node[k];
-      if (fx == 0.0 && fy == 0.0) continue;
+      if ((fx == 0.0 && fy == 0.0) || !c.owns(k)) continue;  // distributed: owners load the grid
       const FaceStencil& a = c.face_up[k];
       const FaceStencil& b = c.face_lo[k];
       for (int q = 0; q < 4; ++q) {
@@ -352,6 +359,7 @@ void advance_interfaces(State& s, const double* vel_x, const double* vel_y) {
 #pragma omp parallel for schedule(static) reduction(min : unstable)
     for (long kl = 0; kl < n; ++kl) {
       const std::size_t k = std::size_t(kl);
+      if (!c.owns(k)) continue;  // distributed: the owner moves it, and sends it (below)
       // Each face moves with its own field's t^{n+1} grid velocity (the one its body's strain is
       // updated with), through the stencil its force was spread with (update_face_stencils).
       const FaceStencil& a = c.face_up[k];
@@ -383,7 +391,12 @@ void advance_interfaces(State& s, const double* vel_x, const double* vel_y) {
         unstable = std::min(unstable, kl);
     }
     if (unstable < n) throw_cohesive_oscillation(s, c, std::size_t(unstable));
+    // Distributed: the ghosts' faces from their owners, before the segments that reach them
+    // are evaluated; after it, the ghosts' stiffness (the next step's bound, E6).
+    sync_interface_nodes(s, c, {&CohesiveInterface::ux_up, &CohesiveInterface::uy_up,
+                                &CohesiveInterface::ux_lo, &CohesiveInterface::uy_lo});
     evaluate_interface(c, s.time, s.time - dt);
+    sync_interface_nodes(s, c, {&CohesiveInterface::stiffness_node});
   }
 }
 

@@ -40,6 +40,7 @@ void add_faces_and_ties(const State& s, Need& need) {
     const CohesiveInterface& ci = s.interfaces[c];
     const int up = ci.spec.upper_field, lo = ci.spec.lower_field;
     for (std::size_t k = 0; k < ci.num_nodes(); ++k) {
+      if (!ci.knows(k)) continue;  // distributed: far from this rank's block
       const int cu = cell(s.grid.x, ci.x0[k] + ci.ux_up[k]), ru = cell(s.grid.y, ci.y0[k] + ci.uy_up[k]);
       const int cl = cell(s.grid.x, ci.x0[k] + ci.ux_lo[k]), rl = cell(s.grid.y, ci.y0[k] + ci.uy_lo[k]);
       need.add(up, cu, cu + 1, ru, ru + 1);

@@ -69,12 +69,18 @@ void prepare_loads(State& s) {
   const Particles& P = s.particles;
   if (L.indexed_sort != s.plan.sorted_step) {
     for (std::size_t p = 0; p < P.size(); ++p) L.slot_of_id[P.id[p]] = std::uint32_t(p);
+    // A distributed run holds some of the ids: an entry left from an earlier sort points at
+    // another particle (or past the end) and marks the id absent.
+    auto slot = [&](std::uint32_t id) {
+      const std::uint32_t p = L.slot_of_id[id];
+      return p < P.size() && P.id[p] == id ? p : LoadState::kAbsent;
+    };
     for (std::size_t k = 0; k < L.patches.size(); ++k)
       for (std::size_t j = 0; j < L.patches[k].ids.size(); ++j)
-        L.patch_index[k][j] = L.slot_of_id[L.patches[k].ids[j]];
+        L.patch_index[k][j] = slot(L.patches[k].ids[j]);
     for (std::size_t k = 0; k < L.region_ids.size(); ++k)
       for (std::size_t j = 0; j < L.region_ids[k].size(); ++j)
-        L.region_index[k][j] = L.slot_of_id[L.region_ids[k][j]];
+        L.region_index[k][j] = slot(L.region_ids[k][j]);
     L.indexed_sort = s.plan.sorted_step;
   }
   // Stamps per field node: re-made when the windows were re-fitted (solver/field_windows.hpp).
@@ -141,6 +147,7 @@ void add_external_forces(State& s) {
     tx *= f, ty *= f;
     for (std::size_t j = 0; j < patch.ids.size(); ++j) {
       const double len = patch.length[j];
+      if (L.patch_index[k][j] == LoadState::kAbsent) continue;  // another rank's particle
       for_each_weight(s, L.patch_index[k][j], [&](std::size_t i, double w) {
         L.ext_fx[i] += w * tx * len;
         L.ext_fy[i] += w * ty * len;

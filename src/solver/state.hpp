@@ -87,6 +87,8 @@ struct LoadState {
   // Rebuilt after each sort (ScatterPlan::sorted_step): particle indices of the ids above.
   long indexed_sort = -2;
   std::vector<std::uint32_t> slot_of_id;                 // id -> index
+  // kAbsent: the particle is another rank's (distributed runs, parallel/halo.hpp).
+  static constexpr std::uint32_t kAbsent = 0xffffffffu;
   std::vector<std::vector<std::uint32_t>> patch_index, region_index;
   // Per-step scratch.
   std::vector<double> accel_x, accel_y;  // per field: summed body-force acceleration, m/s^2

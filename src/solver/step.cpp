@@ -40,6 +40,7 @@ void tie_stencils_and_time_step(State& s) {
     CohesiveTimer timer(s);
     tie_bonded_nodes(s, TieWhat::mass_momentum);
     update_face_stencils(s);
+    check_faces_in_reach(s);  // distributed: faces within this rank's halo
   }
   choose_time_step(s);
   if (s.halo) s.dt = s.halo->comm.min(s.dt);  // distributed: one step for all ranks
@@ -66,10 +67,21 @@ void sum_mass_momentum_force(State& s) {
                &GridFields::force_y});
 }
 
+// Tractions and body forces ([loads]) after the internal force; distributed: each rank's
+// particles' share, summed over the ranks like the scatter.
+void external_forces(State& s) {
+  if (!s.loads.has_forces()) return;
+  halo_save(s, {&GridFields::force_x, &GridFields::force_y});
+  add_external_forces(s);
+  halo_sum_added(s, {&GridFields::force_x, &GridFields::force_y});
+}
+
 void cohesive_forces_and_ties(State& s) {
   if (s.interfaces.empty()) return;
   CohesiveTimer timer(s);
-  add_cohesive_forces(s);  // E7-E9
+  halo_save(s, {&GridFields::force_x, &GridFields::force_y});
+  add_cohesive_forces(s);  // E7-E9 (distributed: each rank its owned faces',
+  halo_sum_added(s, {&GridFields::force_x, &GridFields::force_y});  // summed over the ranks)
   tie_bonded_nodes(s, TieWhat::force);
 }
 
@@ -80,7 +92,7 @@ void step_musl(State& s) {
   particles_to_grid(s, true);             // E4: mass, momentum, internal force per field
   sum_mass_momentum_force(s);             // distributed: shared nodes summed over ranks
   tie_stencils_and_time_step(s);          // bonded stretch, face stencils, dt (E6)
-  add_external_forces(s);                 // E4 tractions, body forces ([loads])
+  external_forces(s);                     // E4 tractions, body forces ([loads])
   cohesive_forces_and_ties(s);            // E7-E9, bonded stretch
   integrate_grid(s);                      // E4 momentum update + E2 velocity BCs
   apply_velocity_regions(s);              // [loads] velocity regions, along d
@@ -101,7 +113,7 @@ void step_usl(State& s) {
   particles_to_grid(s, true);
   sum_mass_momentum_force(s);
   tie_stencils_and_time_step(s);
-  add_external_forces(s);
+  external_forces(s);
   cohesive_forces_and_ties(s);
   integrate_grid(s);
   apply_velocity_regions(s);
@@ -121,7 +133,7 @@ void step_usf(State& s) {
   gather(s, &GridFields::remap_x, &GridFields::remap_y, G2PMode::stress_only);  // E5
   particles_to_grid_force(s);
   sum_force(s);
-  add_external_forces(s);
+  external_forces(s);
   cohesive_forces_and_ties(s);
   integrate_grid(s);
   apply_velocity_regions(s);

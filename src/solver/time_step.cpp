@@ -77,8 +77,12 @@ double cohesive_eigen_bound(const State& s) {
       thread_local std::vector<double> row;  // scratch, kept between steps (no allocation)
       const int last = shared ? 1 : first;
       std::size_t lo = SIZE_MAX, hi = 0;
+      // Distributed: the faces this rank knows; a grid node's sum is complete on its owner
+      // (every face touching an owned node is known), partial (smaller) elsewhere, and the
+      // step is the minimum over the ranks.
       for (std::size_t k = 0; k < n; ++k)
         for (int side = first; side <= last; ++side) {
+          if (!c.knows(k)) continue;
           const FaceStencil& f = (*faces[side])[k];
           for (int q = 0; q < 4; ++q)
             if (f.c[q] > 0.0) lo = std::min(lo, f.node[q]), hi = std::max(hi, f.node[q]);
@@ -87,6 +91,7 @@ double cohesive_eigen_bound(const State& s) {
       row.assign(hi - lo + 1, 0.0);
       for (std::size_t k = 0; k < n; ++k)
         for (int side = first; side <= last; ++side) {
+          if (!c.knows(k)) continue;
           const FaceStencil& f = (*faces[side])[k];
           for (int q = 0; q < 4; ++q)
             if (f.c[q] > 0.0) row[f.node[q] - lo] += 2.0 * c.stiffness_node[k] * f.c[q] / s.fields.mass[f.node[q]];

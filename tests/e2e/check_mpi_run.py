@@ -31,8 +31,31 @@ for col in ("time", "kinetic_energy", "strain_energy", "external_work"):
     scale = max(abs(float(r[col])) for r in a) or 1.0
     diff = max(abs(float(x[col]) - float(y[col])) for x, y in zip(a, b))
     check(diff <= bound * scale, f"{col}: largest difference {diff / scale:.2e} of its largest value (bound {bound:g})")
+# Interfaces: the crack tip's history and the last interface profile, value by value.
+for name in ("crack_tip.csv", "interface/interface_000004.csv"):
+    try:
+        ta, tb = open(f"{a_dir}/{name}").read(), open(f"{b_dir}/{name}").read()
+    except FileNotFoundError:
+        continue
+    ra_, rb_ = list(csv.reader(ta.splitlines())), list(csv.reader(tb.splitlines()))
+    same_shape = len(ra_) == len(rb_) and all(len(x) == len(y) for x, y in zip(ra_, rb_))
+    worst = 0.0
+    if same_shape:
+        for x, y in zip(ra_[1:], rb_[1:]):
+            for u, v in zip(x, y):
+                try:
+                    fu, fv = float(u), float(v)
+                except ValueError:
+                    worst = max(worst, 0.0 if u == v else 1.0)
+                    continue
+                worst = max(worst, abs(fu - fv) / max(abs(fu), abs(fv), 1e-300))
+    check(same_shape and worst <= bound, f"{name}: {len(ra_)} rows, largest relative difference {worst:.2e}")
 ra, rb = json.load(open(f"{a_dir}/run.json")), json.load(open(f"{b_dir}/run.json"))
 check(rb["status"] == "completed", f"status {rb['status']}")
 check(rb.get("ranks") == ranks and ra.get("ranks") == 1, f"ranks {ra.get('ranks')} and {rb.get('ranks')}")
 check(ra["steps"] == rb["steps"], f"steps {ra['steps']} and {rb['steps']}")
+if "crack" in ra:
+    for key in ("initiation_time", "sustained_speed", "final_tip"):
+        x, y = ra["crack"][key], rb["crack"][key]
+        check(abs(x - y) <= bound * max(abs(x), 1e-300), f"crack.{key}: {x} and {y}")
 sys.exit(0 if ok else 1)

@@ -6,12 +6,17 @@
 //   position difference / cell size, velocity difference / largest speed, stress difference /
 //   largest stress component: each at most BOUND;
 //   every particle exactly once (migration loses or duplicates none) and the total mass equal;
-//   with --min-migrations M, at least M migrations took place (the test exercised them).
+//   with --min-migrations M, at least M migrations took place (the test exercised them);
+//   interfaces: face displacement difference / largest jump at most BOUND, the same nodes
+//   cracked, their crack times equal to BOUND x the time run; with --split-interface yes, the
+//   interface nodes are owned by two ranks or more (N > 1).
 // Prints the measured differences as key=value lines; exit 0 when all hold.
-// Usage: mpi_agreement CASE STEPS BOUND [--min-migrations M] [--set key=value ...]
+// Usage: mpi_agreement CASE STEPS BOUND [--min-migrations M] [--split-interface yes]
+//                      [--set key=value ...]
 #include <mpi.h>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cmath>
@@ -65,11 +70,13 @@ int main(int argc, char** argv) {
   const long steps = std::atol(argv[2]);
   const double bound = std::atof(argv[3]);
   long min_migrations = 0;
+  bool split_interface = false;
   std::vector<std::string> sets;
   for (int a = 4; a + 1 < argc; a += 2) {
     const std::string key = argv[a];
     if (key == "--set") sets.push_back(argv[a + 1]);
     if (key == "--min-migrations") min_migrations = std::atol(argv[a + 1]);
+    if (key == "--split-interface") split_interface = std::string(argv[a + 1]) == "yes";
   }
   const Case c = load_case(path, sets);
 
@@ -77,6 +84,14 @@ int main(int argc, char** argv) {
   distribute(d, world);
   advance(d, steps);
   const long migrations = d.halo->migrations;
+  gather_interface_state(d);  // every interface node from its owner (collective)
+  // Interface nodes per rank: the test must split an interface between ranks.
+  std::vector<double> owned(std::size_t(world.size()), 0.0);
+  for (const CohesiveInterface& ci : d.interfaces)
+    for (std::size_t q = 0; q < ci.num_nodes(); ++q) owned[std::size_t(world.rank())] += ci.owns(q);
+  world.sum(owned.data(), int(owned.size()));
+  int ranks_on_interfaces = 0;
+  for (const double o : owned) ranks_on_interfaces += o > 0;
   const std::vector<double> all = gather_packed(d.particles, world.size());
   int ok = 1;
   if (world.rank() == 0) {
@@ -108,6 +123,27 @@ int main(int argc, char** argv) {
       dv = std::max({dv, std::fabs(r[2] - P.vx[p]), std::fabs(r[3] - P.vy[p])});
       ds = std::max({ds, std::fabs(r[8] - P.sxx[p]), std::fabs(r[9] - P.syy[p]), std::fabs(r[10] - P.sxy[p])});
     }
+    // Interfaces: face displacements (relative to the largest jump) and node crack times.
+    double du = 0.0, umax = 0.0, dcrack = 0.0;
+    long cracked = 0, cracked_d = 0;
+    for (std::size_t k = 0; k < s.interfaces.size(); ++k) {
+      const CohesiveInterface &a = s.interfaces[k], &b = d.interfaces[k];
+      for (std::size_t q = 0; q < a.num_nodes(); ++q) {
+        umax = std::max({umax, std::fabs(a.jump_x(q)), std::fabs(a.jump_y(q))});
+        du = std::max({du, std::fabs(a.ux_up[q] - b.ux_up[q]), std::fabs(a.uy_up[q] - b.uy_up[q]),
+                       std::fabs(a.ux_lo[q] - b.ux_lo[q]), std::fabs(a.uy_lo[q] - b.uy_lo[q])});
+        cracked += a.node_crack_time[q] >= 0.0, cracked_d += b.node_crack_time[q] >= 0.0;
+        if (a.node_crack_time[q] >= 0.0 && b.node_crack_time[q] >= 0.0)
+          dcrack = std::max(dcrack, std::fabs(a.node_crack_time[q] - b.node_crack_time[q]));
+      }
+    }
+    const double rel_u = umax > 0 ? du / umax : du;
+    if (!s.interfaces.empty())
+      fmt::print("interface_nodes_per_rank={}\n", fmt::join(owned, ","));
+    if (!s.interfaces.empty())
+      fmt::print("interface_nodes_cracked={}\ninterface_nodes_cracked_distributed={}\n"
+                 "face_displacement_difference_relative={:.3e}\ncrack_time_difference={:.3e}\n",
+                 cracked, cracked_d, rel_u, dcrack);
     const long missing = std::count(seen.begin(), seen.end(), 0);
     const long repeated = long(std::count_if(seen.begin(), seen.end(), [](int k) { return k > 1; }));
     const double h = std::min(s.grid.x.h, s.grid.y.h);
@@ -121,7 +157,8 @@ int main(int argc, char** argv) {
     // Mass: the same doubles summed in another order (round-off of the sum only).
     ok = ok && n == P.size() && missing == 0 && repeated == 0 &&
          std::fabs(mass_d - mass) <= 1e-14 * mass && rel_x <= bound && rel_v <= bound &&
-         rel_s <= bound && migrations >= min_migrations;
+         rel_s <= bound && migrations >= min_migrations && cracked == cracked_d && rel_u <= bound &&
+         dcrack <= bound * s.time && (!split_interface || world.size() == 1 || ranks_on_interfaces > 1);
     fmt::print("agreement={}\n", ok ? "pass" : "FAIL");
   }
   MPI_Bcast(&ok, 1, MPI_INT, 0, MPI_COMM_WORLD);

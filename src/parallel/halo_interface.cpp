@@ -1,0 +1,176 @@
+// rupture/parallel/halo_interface.cpp
+// Cohesive interfaces and faults on a distributed run (parallel/halo.hpp). Every rank keeps the
+// interface's arrays whole (a line: O(sqrt) of the grid's size), but updates only its owned
+// nodes and the segments touching them; owners send ghosts' faces and stiffness to the ranks
+// that know them each step, and every node's state on output.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cstring>
+
+#include "core/errors.hpp"
+#include "parallel/halo.hpp"
+
+namespace rupture {
+namespace {
+
+int cell_x(const Grid& g, double x) { return std::clamp(g.x.cell_of(x), 0, g.x.cells - 1); }
+int cell_y(const Grid& g, double y) { return std::clamp(g.y.cell_of(y), 0, g.y.cells - 1); }
+
+bool near_block(const CellBlock& b, int c, int r, int cells) {
+  return c >= b.c0 - cells && c < b.c1 + cells && r >= b.r0 - cells && r < b.r1 + cells;
+}
+
+constexpr int kKnownCells = 2;  // a rank knows the nodes whose reference cell is this near its block
+
+// An owner-masked array made whole on every rank: each node's value from its owner (sum of
+// the owner's value and zeros, exact).
+template <class T>
+void whole(const Comm& comm, const std::vector<unsigned char>& owned, std::vector<T>& v, std::size_t per_node) {
+  std::vector<double> buf(v.size(), 0.0);
+  for (std::size_t i = 0; i < v.size(); ++i)
+    if (owned[i / per_node]) buf[i] = double(v[i]);
+  comm.sum(buf.data(), int(buf.size()));
+  for (std::size_t i = 0; i < v.size(); ++i) v[i] = T(buf[i]);
+}
+
+}  // namespace
+
+void distribute_interfaces(State& s) {
+  Halo& h = *s.halo;
+  const int me = h.comm.rank();
+  const std::size_t ranks = h.blocks.size();
+  h.links.assign(s.interfaces.size(), {});
+  for (std::size_t ic = 0; ic < s.interfaces.size(); ++ic) {
+    CohesiveInterface& c = s.interfaces[ic];
+    const std::size_t n = c.num_nodes();
+    std::vector<int> owner(n);
+    for (std::size_t k = 0; k < n; ++k) {
+      const int cx = cell_x(s.grid, c.x0[k]), cy = cell_y(s.grid, c.y0[k]);
+      for (std::size_t q = 0; q < ranks; ++q) {
+        const CellBlock& b = h.blocks[q];
+        if (cx >= b.c0 && cx < b.c1 && cy >= b.r0 && cy < b.r1) owner[k] = int(q);
+      }
+    }
+    auto knows = [&](int q, std::size_t k) {
+      return owner[k] == q || near_block(h.blocks[std::size_t(q)], cell_x(s.grid, c.x0[k]),
+                                         cell_y(s.grid, c.y0[k]), kKnownCells);
+    };
+    c.rank_owned.assign(n, 0);
+    c.rank_known.assign(n, 0);
+    for (std::size_t k = 0; k < n; ++k) {
+      c.rank_owned[k] = owner[k] == me;
+      c.rank_known[k] = knows(me, k);
+    }
+    // Segments reach one node on: an owned node's neighbours must be known.
+    for (std::size_t k = 0; k < n; ++k) {
+      if (!c.rank_owned[k]) continue;
+      const std::size_t next = c.closed ? (k + 1) % n : std::min(k + 1, n - 1);
+      const std::size_t prev = c.closed ? (k + n - 1) % n : (k > 0 ? k - 1 : 0);
+      for (const std::size_t j : {prev, next})
+        if (!c.rank_known[j])
+          throw InputError(fmt::format(
+              "interface {} (input order): segment from ({:.6g}, {:.6g}) to ({:.6g}, {:.6g}) m is longer than "
+              "a distributed run allows ({} cells of {:.6g} m between a node and its neighbour); "
+              "refine the interface's segments or run on one process",
+              ic, c.x0[k], c.y0[k], c.x0[j], c.y0[j], kKnownCells, h.cell));
+    }
+    Halo::InterfaceLinks& L = h.links[ic];
+    L.send.assign(h.peers.size(), {});
+    L.recv.assign(h.peers.size(), {});
+    for (std::size_t p = 0; p < h.peers.size(); ++p) {
+      const int q = h.peers[p].rank;
+      for (std::size_t k = 0; k < n; ++k) {
+        if (owner[k] == me && knows(q, k)) L.send[p].push_back(std::uint32_t(k));
+        if (owner[k] == q && c.rank_known[k]) L.recv[p].push_back(std::uint32_t(k));
+      }
+    }
+  }
+  // Bonded ties act on each copy of a node alike (after the halo sums): a rank ties the nodes
+  // of its reach.
+  const std::size_t nx = std::size_t(s.grid.nodes_x());
+  for (BondedTie& b : s.bonded)
+    std::erase_if(b.nodes, [&](std::size_t node) {
+      return !h.reach.contains(int(node % nx), int(node / nx));
+    });
+}
+
+void sync_interface_nodes(State& s, CohesiveInterface& c, std::initializer_list<InterfaceArray> arrays) {
+  if (!s.halo) return;
+  Halo& h = *s.halo;
+  const std::size_t ic = std::size_t(&c - s.interfaces.data());
+  const Halo::InterfaceLinks& L = h.links[ic];
+  const std::size_t A = arrays.size();
+  for (std::size_t p = 0; p < h.peers.size(); ++p) {
+    PeerBuffers& b = h.buffers[p];
+    b.send.resize(L.send[p].size() * A * sizeof(double));
+    b.recv.resize(L.recv[p].size() * A * sizeof(double));
+    double* out = reinterpret_cast<double*>(b.send.data());
+    for (const std::uint32_t k : L.send[p])
+      for (const InterfaceArray a : arrays) *out++ = (c.*a)[k];
+  }
+  h.comm.exchange_sized(h.buffers);
+  for (std::size_t p = 0; p < h.peers.size(); ++p) {
+    const unsigned char* in = h.buffers[p].recv.data();
+    for (const std::uint32_t k : L.recv[p])
+      for (const InterfaceArray a : arrays) {
+        std::memcpy(&(c.*a)[k], in, sizeof(double));
+        in += sizeof(double);
+      }
+  }
+}
+
+void gather_interface_state(State& s) {
+  if (!s.halo) return;
+  const Comm& comm = s.halo->comm;
+  for (CohesiveInterface& c : s.interfaces) {
+    const std::vector<unsigned char>& o = c.rank_owned;
+    for (auto* v : {&c.ux_up, &c.uy_up, &c.ux_lo, &c.uy_lo, &c.fx_node, &c.fy_node,
+                    &c.node_crack_time, &c.node_rupture_time, &c.node_peak_slip_rate,
+                    &c.node_slip_path, &c.stiffness_node, &c.jump_before})
+      if (v->size() == c.num_nodes()) whole(comm, o, *v, 1);
+    // Gauss points by segment, each from the owner of its first node.
+    const std::size_t G = std::size_t(CohesiveInterface::kGauss);
+    for (auto* v : {&c.gp_dn, &c.gp_dt, &c.gp_tn, &c.gp_tt, &c.gp_damage, &c.gp_slip})
+      whole(comm, o, *v, G);
+    whole(comm, o, c.gp_separated, G);
+  }
+}
+
+void check_faces_in_reach(State& s) {
+  if (!s.halo) return;
+  Halo& h = *s.halo;
+  for (std::size_t ic = 0; ic < s.interfaces.size(); ++ic) {
+    const CohesiveInterface& c = s.interfaces[ic];
+    for (std::size_t k = 0; k < c.num_nodes(); ++k) {
+      if (!c.knows(k)) continue;
+      for (const int side : {0, 1}) {
+        const double x = c.x0[k] + (side ? c.ux_lo[k] : c.ux_up[k]);
+        const double y = c.y0[k] + (side ? c.uy_lo[k] : c.uy_up[k]);
+        const int i = cell_x(s.grid, x), j = cell_y(s.grid, y);
+        if (h.reach.contains(i, j) && h.reach.contains(i + 1, j + 1)) continue;
+        if (h.failure.empty())
+          h.failure = fmt::format(
+              "interface {} (input order) node {} at (x, y) = ({:.6g}, {:.6g}) m: its {} face moved to ({:.6g}, "
+              "{:.6g}) m, past rank {}'s halo (a face may move up to a cell on a distributed run), "
+              "step {}, t = {:.6g} s",
+              ic, k, c.x0[k], c.y0[k], side ? "lower" : "upper", x, y, h.comm.rank(), s.step, s.time);
+        return;
+      }
+    }
+  }
+}
+
+void gather_crack_times(State& s) {
+  if (!s.halo) return;
+  for (CohesiveInterface& c : s.interfaces)
+    for (auto* v : {&c.node_crack_time, &c.node_rupture_time, &c.node_peak_slip_rate, &c.ux_up,
+                    &c.uy_up, &c.ux_lo, &c.uy_lo})
+      whole(s.halo->comm, c.rank_owned, *v, 1);
+}
+
+double interface_work(const State& s, std::size_t k) {
+  return sum_over_ranks(s, s.interfaces[k].work);
+}
+
+}  // namespace rupture
