@@ -401,9 +401,12 @@ void fields(A& a, State& s) {
   a.same("grid.nodes_x", s.grid.nodes_x());
   a.same("grid.nodes_y", s.grid.nodes_y());
   a.same("fields", s.fields.num_fields);
-  if (!s.nested_level) a.same("particles.count", s.particles.size());
+  // A distributed run's particles are in part files (run/checkpoint_ranks.hpp).
+  a("particle_parts", s.particle_parts);
+  if (!s.nested_level && s.particle_parts == 0) a.same("particles.count", s.particles.size());
   a.same("interfaces.count", s.interfaces.size());
-  if (!s.nested) a("particles", s.particles);  // nested: the levels hold them (merged on demand)
+  // nested: the levels hold them (merged on demand)
+  if (!s.nested && s.particle_parts == 0) a("particles", s.particles);
   a("bc_nodes", s.bc_nodes);
   a("bc_lines", s.bc_lines);
   a("plan", s.plan);
@@ -514,6 +517,21 @@ void fields(A& a, CaseSource& c) {
   a("overrides", c.overrides);
 }
 
+// One rank's particles at a checkpoint of a distributed run.
+struct ParticlePart {
+  long step = 0;
+  int rank = 0, ranks = 1;
+  Particles particles;
+};
+
+template <class A>
+void fields(A& a, ParticlePart& p) {
+  a("step", p.step);
+  a("rank", p.rank);
+  a("ranks", p.ranks);
+  a("particles", p.particles);
+}
+
 std::string read_all(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) {
@@ -573,6 +591,40 @@ CaseSource read_checkpoint_source(const std::string& path) {
 
 void read_checkpoint(const std::string& path, RunContext& ctx) {
   restore_checkpoint_bytes(read_all(path), path, ctx);
+}
+
+}  // namespace rupture
+
+namespace rupture {
+
+std::string checkpoint_part_path(const std::string& dir, long step, int rank) {
+  return fmt::format("{}/checkpoint/particles_{}_{}.bin", dir, step, rank);
+}
+
+void write_checkpoint_part(const std::string& dir, long step, int rank, int ranks,
+                           const Particles& particles) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir + "/checkpoint", ec);
+  if (ec) throw IoError(fmt::format("cannot create '{}/checkpoint': {}", dir, ec.message()));
+  ParticlePart part{step, rank, ranks, particles};
+  Writer w;
+  w("part", part);
+  write_file_atomic(checkpoint_part_path(dir, step, rank), w.finish());
+}
+
+void read_checkpoint_parts(const std::string& dir, long step, int ranks, Particles& out) {
+  for (int r = 0; r < ranks; ++r) {
+    const std::string path = checkpoint_part_path(dir, step, r);
+    const std::string bytes = read_all(path);
+    Reader in(bytes, path);
+    ParticlePart part;
+    in("part", part);
+    if (part.step != step || part.rank != r || part.ranks != ranks)
+      throw InputError(fmt::format("checkpoint part '{}' is of step {}, rank {} of {}; expected "
+                                   "step {}, rank {} of {}",
+                                   path, part.step, part.rank, part.ranks, step, r, ranks));
+    out.append_copy(part.particles);
+  }
 }
 
 }  // namespace rupture

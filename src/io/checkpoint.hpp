@@ -16,11 +16,12 @@
 
 namespace rupture {
 
-inline constexpr int kCheckpointVersion = 7;  // 2: State::strain_work; 3: Mach readings;
+inline constexpr int kCheckpointVersion = 8;  // 2: State::strain_work; 3: Mach readings;
                                               // 4: interface rupture times, peak slip rates;
                                               // 5: nested levels; 6: particles store the
                                               // stress only (no strain, szz, volume);
-                                              // 7: the scatter plan's drift since its sort
+                                              // 7: the scatter plan's drift since its sort;
+                                              // 8: particle part files (distributed runs)
 
 std::string checkpoint_path(const std::string& dir);  // DIR/checkpoint/checkpoint.bin
 
@@ -33,6 +34,16 @@ CaseSource read_checkpoint_source(const std::string& path);
 // Overwrites the evolving parts of `ctx` with the checkpoint's. `ctx` must have been set up
 // from the same case (make_state, trackers, snapshot writer); sizes are checked against it.
 void read_checkpoint(const std::string& path, RunContext& ctx);
+
+// A distributed run's checkpoint: checkpoint.bin (rank 0: everything but the particles,
+// State::particle_parts = N) and one part file per rank with its particles, named by the step
+// so a new checkpoint never overwrites the parts the previous checkpoint.bin refers to
+// (run/checkpoint_ranks.hpp writes and reads them together).
+std::string checkpoint_part_path(const std::string& dir, long step, int rank);
+void write_checkpoint_part(const std::string& dir, long step, int rank, int ranks,
+                           const Particles& particles);
+// Appends the particles of every part (0 .. ranks - 1) of the checkpoint at `step` to `out`.
+void read_checkpoint_parts(const std::string& dir, long step, int ranks, Particles& out);
 
 // The same as bytes (tests, and the file functions above).
 std::string checkpoint_bytes(const CaseSource& source, const RunContext& ctx);

@@ -97,7 +97,7 @@ void check_distributable(const State& s, int ranks) {
   if (!s.loads.spec.velocity_regions.empty()) refuse("[loads] velocity regions");
 }
 
-void distribute(State& s, const Comm& comm) {
+void distribute(State& s, const Comm& comm, bool fresh) {
   check_distributable(s, comm.size());
   auto h = std::make_shared<Halo>();
   h->comm = comm;
@@ -118,7 +118,12 @@ void distribute(State& s, const Comm& comm) {
   P.move_marked(away, others);
   // E14: the strain work starts from this rank's part of the elastic energy; the initial
   // energy stays the whole run's (the history sums the parts).
-  s.strain_work = strain_energy(P, s.stiffness);
+  if (fresh) {
+    s.strain_work = strain_energy(P, s.stiffness);
+  } else if (comm.rank() > 0) {
+    s.strain_work = s.external_work = 0.0;
+    for (CohesiveInterface& c : s.interfaces) c.work = 0.0;
+  }
   s.halo = std::move(h);
   distribute_interfaces(s);
   s.plan.valid = false;            // re-sort, and

@@ -86,11 +86,13 @@ struct Halo {
   }
 };
 
-// Splits s (a State made by make_state on every rank alike: uniform grid, one lattice) among
-// comm's ranks and keeps this rank's particles; the energies that are sums over particles
-// become this rank's parts. Throws InputError for what distributed runs do not support yet
-// (the message names the key).
-void distribute(State& s, const Comm& comm);
+// Splits s (the same State on every rank: made by make_state, or restored from a checkpoint;
+// uniform grid, one lattice) among comm's ranks by its particles now, and keeps this rank's
+// particles. The run's sums become this rank's parts: fresh (t = 0), the strain work starts
+// from the rank's elastic energy; restored, rank 0 keeps the run's sums (strain and external
+// work, interface work) and the others start from 0. Throws InputError for what distributed
+// runs do not support yet (the message names the key).
+void distribute(State& s, const Comm& comm, bool fresh = true);
 
 // The distributed run's checks of a case, before any work starts (InputError naming the key).
 void check_distributable(const State& s, int ranks);

@@ -15,6 +15,7 @@
 #include "core/errors.hpp"
 #include "io/atomic_file.hpp"
 #include "io/checkpoint.hpp"
+#include "run/checkpoint_ranks.hpp"
 #include "io/csv_units.hpp"
 #include "io/history.hpp"
 #include "io/interface_csv.hpp"
@@ -91,9 +92,10 @@ void stamp_heartbeat(RunRecord& r) {
 // the snapshot writer and the output schedules. A fresh run starts from it; a resumed one
 // overwrites it with the checkpoint.
 void set_up(RunContext& r, const Case& c, const std::string& dir, double checkpoint_interval,
-            const Comm& comm) {
+            const Comm& comm, bool resume) {
   r.s = make_state(c);
-  if (comm.distributed()) distribute(r.s, comm);  // this rank's block and particles
+  // This rank's block and particles (a resumed run splits once the checkpoint is read).
+  if (comm.distributed() && !resume) distribute(r.s, comm);
   const State& s = r.s;
   if (c.output.snapshot_interval > 0)
     r.snapshots = std::make_unique<SnapshotWriter>(
@@ -134,8 +136,6 @@ void check_distributed_outputs(const Case& c, const RunOptions& o) {
   if (!c.stations.empty()) refuse("[stations]");
   if (c.output.mach_interval > 0)
     refuse(fmt::format("output.mach_interval = {:g} (Mach-angle readings; set it to 0)", c.output.mach_interval));
-  if (o.checkpoint_interval > 0) refuse(fmt::format("--checkpoint-interval {:g}", o.checkpoint_interval));
-  if (o.resume) refuse("rupture resume");
 }
 
 // Rank 0 prepares the directory; every rank learns whether it could (InputError on all).
@@ -169,12 +169,15 @@ RunResult run_case(const Case& c, const RunOptions& options) {
 
   const CaseSummary summary = summarize(c);
   RunContext ctx;
-  set_up(ctx, c, dir, options.checkpoint_interval, comm);
+  set_up(ctx, c, dir, options.checkpoint_interval, comm, options.resume);
   // Where the stations read, from the state at t = 0 (a body station follows the particle
   // nearest its point then), before a checkpoint replaces the state.
   std::vector<StationProbe> probes = make_probes(c.stations, ctx.s);
   if (options.resume) {
     read_checkpoint(checkpoint_path(dir), ctx);
+    read_checkpoint_particles(dir, ctx);  // a distributed run's particle parts
+    // Split by where the particles are now (any number of ranks, whatever wrote it).
+    if (comm.distributed()) distribute(ctx.s, comm, false);
     ++ctx.segments;
     Schedule& ck = ctx.checkpoint;
     if (options.checkpoint_interval > 0 && options.checkpoint_interval != ck.interval) {
@@ -311,7 +314,10 @@ RunResult run_case(const Case& c, const RunOptions& options) {
   auto checkpoint = [&]() {
     const double wall_before = ctx.wall_before;
     ctx.wall_before += progress.elapsed();  // the checkpoint holds the wall time up to here
-    write_checkpoint(dir, options.source, ctx);
+    if (comm.distributed())
+      write_checkpoint_ranks(dir, options.source, ctx, comm);  // particle parts per rank
+    else
+      write_checkpoint(dir, options.source, ctx);
     ctx.wall_before = wall_before;
     record.checkpoint_time = s.time;
     record.checkpoint_step = s.step;
@@ -397,7 +403,7 @@ RunResult run_case(const Case& c, const RunOptions& options) {
       // A checkpoint holds the particles at one time: a stop waits for the levels' steps to
       // end where they would anyway, so the resumed run is bitwise the uninterrupted one.
       if (!synced) continue;
-      if ((ctx.checkpoint.due(s.time, eps) || stop) && !comm.distributed()) {
+      if (ctx.checkpoint.due(s.time, eps) || stop) {
         ctx.checkpoint.advance(s.time, eps);
         checkpoint();
       }
@@ -410,17 +416,11 @@ RunResult run_case(const Case& c, const RunOptions& options) {
     if (result.stop_reason == "interrupted") {
       result.outcome = Outcome::interrupted;
       record.status = "interrupted";
-      record.message = result.message =
-          comm.distributed()
-              ? fmt::format("interrupted{} at step {}, t = {:.6e} s; no checkpoint (not yet "
-                            "written by distributed runs)",
-                            caught_signal ? fmt::format(" by signal {}", caught_signal) : std::string(),
-                            s.step, s.time)
-              : fmt::format(
-                    "interrupted{} at step {}, t = {:.6e} s; checkpoint written; resume with: "
-                    "rupture resume {}",
-                    caught_signal ? fmt::format(" by signal {}", caught_signal) : std::string(),
-                    s.step, s.time, dir);
+      record.message = result.message = fmt::format(
+          "interrupted{} at step {}, t = {:.6e} s; checkpoint written; resume with: rupture "
+          "resume {}",
+          caught_signal ? fmt::format(" by signal {}", caught_signal) : std::string(), s.step,
+          s.time, dir);
     } else {
       result.ok = true;
       result.outcome = Outcome::completed;

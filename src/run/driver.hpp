@@ -14,9 +14,9 @@
 // "interrupted"); run_case with RunOptions::resume continues from the checkpoint, bit for bit.
 // Distributed (RunOptions::comm of N > 1 ranks): each rank steps its block's particles, the
 // energies in history.csv and run.json are sums over the ranks, rank 0 writes every file; a
-// failure on one rank stops all of them with its diagnosis. Not yet distributed (refused
-// before any work, naming the key): snapshots, stations, Mach-angle readings, interfaces,
-// checkpoints and resume.
+// failure on one rank stops all of them with its diagnosis; checkpoints hold a part file per
+// rank and resume on any number of ranks (run/checkpoint_ranks.hpp). Not yet distributed
+// (refused before any work, naming the key): snapshots, stations, Mach-angle readings.
 #pragma once
 #include <string>
 

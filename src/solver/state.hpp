@@ -156,6 +156,9 @@ struct State {
   // exchanges; null on one process. `particles` are then this rank's, and strain_work and
   // external_work this rank's parts of the run's sums.
   std::shared_ptr<Halo> halo;
+  // Checkpoints (io/checkpoint.hpp): 0 when the particles are in the file, N when a
+  // distributed run wrote them in N part files beside it (run/checkpoint_ranks.hpp).
+  int particle_parts = 0;
 
   double cohesive_seconds = 0.0;  // wall time spent in the cohesive phases so far, s
   double external_work = 0.0;  // work of the prescribed velocities and loads so far, J (per unit thickness)
