@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fmt/format.h>
 #include <hdf5.h>
+#include <mpi.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -69,9 +70,10 @@ void write_scalar_attribute(hid_t file, const char* name, hid_t type, const void
 
 }  // namespace
 
-SnapshotWriter::SnapshotWriter(std::string dir, const Particles& p, const double* region)
-    : dir_(std::move(dir)) {
-  std::filesystem::create_directories(std::filesystem::path(dir_) / "snapshots");
+SnapshotWriter::SnapshotWriter(std::string dir, const Particles& p, const double* region,
+                               const Comm& comm)
+    : dir_(std::move(dir)), comm_(comm) {
+  if (comm_.rank() == 0) std::filesystem::create_directories(std::filesystem::path(dir_) / "snapshots");
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // failures are reported by IoError (with errno)
   // Select by particle id (the solver re-sorts particles); slot_of_id_ gives each selected
   // particle its row in every snapshot, in id order, so rows are comparable across files.
@@ -88,6 +90,24 @@ SnapshotWriter::SnapshotWriter(std::string dir, const Particles& p, const double
 
 void SnapshotWriter::write(const Particles& p, const std::vector<ElasticStiffness>& stiffness,
                            double time, long step) {
+  if (comm_.distributed()) {
+    const std::string rel = fmt::format("snapshots/particles_{:06d}.h5", files_.size());
+    const std::string path = dir_ + "/" + rel;
+    std::string failure;
+    try {
+      write_collective(p, stiffness, time, step, path + ".tmp");
+      if (comm_.rank() == 0) commit_file(path + ".tmp", path);
+    } catch (const IoError& e) {
+      failure = e.what();
+    }
+    const int failed = comm_.first_with(!failure.empty());  // every rank stops on a failure
+    if (failed >= 0) throw IoError(comm_.broadcast(failure, failed));
+    files_.push_back(rel);
+    times_.push_back(time);
+    counts_.push_back(selected_);
+    if (comm_.rank() == 0) write_xdmf();
+    return;
+  }
   const std::size_t n = selected_;
   std::vector<double> pos(3 * n), vel(3 * n), tau(n), sxx(n), syy(n), sxy(n), szz(n);
   std::vector<int> body(n), id(n), vertex(n);
@@ -139,6 +159,81 @@ void SnapshotWriter::write(const Particles& p, const std::vector<ElasticStiffnes
   times_.push_back(time);
   counts_.push_back(n);
   write_xdmf();
+}
+
+// Each rank's selected particles in its own order, written to their rows (the id order of the
+// one-process file) through point selections, collectively.
+void SnapshotWriter::write_collective(const Particles& p, const std::vector<ElasticStiffness>& stiffness,
+                                      double time, long step, const std::string& tmp) {
+  std::vector<hsize_t> rows;
+  std::vector<double> pos, vel, tau, sxx, syy, sxy, szz;
+  std::vector<int> body, id, vertex;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const std::int64_t slot = slot_of_id_[p.id[i]];
+    if (slot < 0) continue;
+    rows.push_back(hsize_t(slot));
+    id.push_back(int(p.id[i]));
+    pos.insert(pos.end(), {p.x[i], p.y[i], 0.0});
+    vel.insert(vel.end(), {p.vx[i], p.vy[i], 0.0});
+    sxx.push_back(p.sxx[i]), syy.push_back(p.syy[i]), sxy.push_back(p.sxy[i]);
+    szz.push_back(stress_zz(stiffness[p.material[i]], p.sxx[i], p.syy[i]));
+    const double a = 0.5 * (p.sxx[i] - p.syy[i]);
+    tau.push_back(std::sqrt(a * a + p.sxy[i] * p.sxy[i]));  // SPEC E13
+    body.push_back(p.field[i]);
+    vertex.push_back(int(slot));
+  }
+  const hsize_t m = rows.size(), n = selected_;
+  hid_t fapl = H5Pcreate(H5P_FILE_ACCESS);
+  H5Pset_fapl_mpio(fapl, MPI_COMM_WORLD, MPI_INFO_NULL);
+  errno = 0;
+  hid_t file = H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl);
+  H5Pclose(fapl);
+  if (file < 0) hdf5_failed("H5Fcreate (MPI-IO)", tmp);
+  hid_t xfer = H5Pcreate(H5P_DATASET_XFER);
+  H5Pset_dxpl_mpio(xfer, H5FD_MPIO_COLLECTIVE);
+  std::string failure;
+  auto put = [&](const char* name, hid_t type, const void* data, hsize_t cols) {
+    const hsize_t dims[2] = {n, cols};
+    hid_t space = H5Screate_simple(cols == 1 ? 1 : 2, dims, nullptr);
+    hid_t set = H5Dcreate2(file, name, type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    std::vector<hsize_t> coord;  // (row[, col]) of every element this rank writes
+    coord.reserve(std::size_t(m * cols * (cols == 1 ? 1 : 2)));
+    for (const hsize_t r : rows)
+      for (hsize_t c = 0; c < cols; ++c) {
+        coord.push_back(r);
+        if (cols > 1) coord.push_back(c);
+      }
+    if (m > 0)
+      H5Sselect_elements(space, H5S_SELECT_SET, std::size_t(m * cols), coord.data());
+    else
+      H5Sselect_none(space);
+    const hsize_t count = m * cols;
+    hid_t mem = H5Screate_simple(1, &count, nullptr);
+    if (m == 0) H5Sselect_none(mem);
+    const herr_t status = set < 0 ? -1 : H5Dwrite(set, type, mem, space, xfer, data);
+    if (set >= 0) H5Dclose(set);
+    H5Sclose(mem);
+    H5Sclose(space);
+    if (status < 0 && failure.empty()) failure = fmt::format("cannot write dataset {}", name);
+  };
+  put("position", H5T_NATIVE_DOUBLE, pos.data(), 3);
+  put("velocity", H5T_NATIVE_DOUBLE, vel.data(), 3);
+  put("sxx", H5T_NATIVE_DOUBLE, sxx.data(), 1);
+  put("syy", H5T_NATIVE_DOUBLE, syy.data(), 1);
+  put("sxy", H5T_NATIVE_DOUBLE, sxy.data(), 1);
+  put("szz", H5T_NATIVE_DOUBLE, szz.data(), 1);
+  put("tau_max", H5T_NATIVE_DOUBLE, tau.data(), 1);
+  put("body", H5T_NATIVE_INT, body.data(), 1);
+  put("id", H5T_NATIVE_INT, id.data(), 1);
+  put("connectivity", H5T_NATIVE_INT, vertex.data(), 1);
+  write_scalar_attribute(file, "time", H5T_NATIVE_DOUBLE, &time);  // collective, same value
+  write_scalar_attribute(file, "step", H5T_NATIVE_LONG, &step);
+  H5Pclose(xfer);
+  if (H5Fclose(file) < 0 && failure.empty()) failure = "H5Fclose";
+  if (!failure.empty()) {
+    if (comm_.rank() == 0) ::unlink(tmp.c_str());
+    hdf5_failed(failure, tmp);
+  }
 }
 
 void SnapshotWriter::write_xdmf() const {

@@ -9,12 +9,16 @@
 // tau_max = (sigma_1 - sigma_2)/2, the in-plane maximum shear stress (SPEC E13).
 // Optionally only a region of interest is written. Every file is written to a temporary name
 // and renamed when complete.
+// Distributed runs (a Comm of N > 1 ranks): every rank calls write() with its own particles;
+// the file is written collectively (parallel HDF5, MPI-IO), each rank its particles' rows (the
+// same rows as one process would write), and rank 0 renames it and writes the XDMF index.
 #pragma once
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include "material/elastic.hpp"
+#include "parallel/comm.hpp"
 #include "particles/particles.hpp"
 
 namespace rupture {
@@ -23,7 +27,9 @@ class SnapshotWriter {
  public:
   // Writes every particle, or only those that start inside `region` (xmin, ymin, xmax, ymax)
   // when given: the same particles at every output time, so ParaView sees one point set.
-  SnapshotWriter(std::string dir, const Particles& p, const double* region = nullptr);
+  // `p`: every particle at t = 0 (a distributed run makes the writer before its split).
+  SnapshotWriter(std::string dir, const Particles& p, const double* region = nullptr,
+                 const Comm& comm = Comm::single());
   // stiffness: the run's table indexed by p.material (sigma_zz follows from the in-plane stress).
   void write(const Particles& p, const std::vector<ElasticStiffness>& stiffness, double time,
              long step);
@@ -32,7 +38,10 @@ class SnapshotWriter {
  private:
   friend struct CheckpointAccess;  // every member below must also be written in io/checkpoint.cpp
   void write_xdmf() const;
+  void write_collective(const Particles& p, const std::vector<ElasticStiffness>& stiffness,
+                        double time, long step, const std::string& tmp);
   std::string dir_;
+  Comm comm_ = Comm::single();
   std::vector<std::int64_t> slot_of_id_;  // row of particle id in every file, -1: not written
   std::size_t selected_ = 0;
   std::vector<std::string> files_;  // relative to dir_
