@@ -274,8 +274,8 @@ void print_rank_plan(const Case& c, int ranks) {
   fmt::print("particles_per_rank={}\n", join(particles, "{}"));
   fmt::print("work_per_rank={} (particle-updates per finest step)\n", join(plan.work, "{:.0f}"));
   fmt::print("shared_nodes_per_rank={}\n", join(shared, "{}"));
-  fmt::print("exchange_bytes_per_rank={} (sent + received per finest step, {} values per shared "
-             "node and field)\n",
+  fmt::print("exchange_bytes_per_rank={} (sent to the neighbours per finest step: {} values or "
+             "more per halo node and field)\n",
              join(plan.exchange_bytes, "{:.0f}"), kExchangedValues);
   fmt::print("predicted_imbalance={:.4f} (largest work / mean - 1)\n", plan.imbalance());
 }
@@ -443,6 +443,8 @@ int main(int argc, char** argv) {
       fmt::print("ranks={}\n", r.ranks);
       fmt::print("particles_per_rank={}\n", fmt::join(r.particles_per_rank, ","));
       fmt::print("migrations={}\n", r.migrations);
+      fmt::print("exchange_bytes_per_rank_per_step={:.0f}\n", r.exchange_bytes_per_step);
+      fmt::print("exchange_seconds={:.3f}\n", r.exchange_seconds);
     }
     fmt::print("energy_balance_error={:.4e}\n", r.energy_balance_error);
     fmt::print("energy_balance_error_final={:.4e}\n", r.energy_balance_error_final);

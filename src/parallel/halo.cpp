@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 
@@ -12,16 +13,18 @@
 #include "solver/energy.hpp"
 
 namespace rupture {
-namespace {
 
-NodeBox reach_of(const CellBlock& b, const Grid& g, int w) {
+NodeBox reach_box(const CellBlock& b, const Grid& g, int w) {
   return NodeBox{std::max(0, b.c0 - w), std::min(g.nodes_x() - 1, b.c1 + w),
                  std::max(0, b.r0 - w), std::min(g.nodes_y() - 1, b.r1 + w)};
 }
 
-NodeBox intersect(const NodeBox& a, const NodeBox& b) {
+NodeBox overlap(const NodeBox& a, const NodeBox& b) {
   return NodeBox{std::max(a.i0, b.i0), std::min(a.i1, b.i1), std::max(a.j0, b.j0), std::min(a.j1, b.j1)};
 }
+
+namespace {
+
 
 long place_in(const NodeBox& b, int i, int j) {
   return long(j - b.j0) * long(b.i1 - b.i0 + 1) + long(i - b.i0);
@@ -31,10 +34,10 @@ long place_in(const NodeBox& b, int i, int j) {
 // rank order.
 void build_peers(Halo& h, const Grid& g) {
   const int me = h.comm.rank();
-  h.reach = reach_of(h.block(), g, h.halo_nodes);
+  h.reach = reach_box(h.block(), g, h.halo_nodes);
   for (int q = 0; q < int(h.blocks.size()); ++q) {
     if (q == me) continue;
-    const NodeBox box = intersect(h.reach, reach_of(h.blocks[std::size_t(q)], g, h.halo_nodes));
+    const NodeBox box = overlap(h.reach, reach_box(h.blocks[std::size_t(q)], g, h.halo_nodes));
     if (!box.empty()) h.peers.push_back(Halo::Peer{q, box});
   }
   // Which peers hold each node of the reach (dense over the reach: its rim only is non-empty).
@@ -82,6 +85,16 @@ double read_double(const std::vector<unsigned char>& buf, std::size_t k) {
 }
 
 }  // namespace
+
+void Halo::exchange(bool sized) {
+  const auto t0 = std::chrono::steady_clock::now();
+  if (sized)
+    comm.exchange_sized(buffers);
+  else
+    comm.exchange(buffers);
+  for (const PeerBuffers& b : buffers) bytes_sent += double(b.send.size());
+  exchange_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
 
 void check_distributable(const State& s, int ranks) {
   if (ranks <= 1) return;
@@ -152,7 +165,7 @@ void halo_sum(State& s, std::initializer_list<NodalArray> arrays) {
           for (const NodalArray a : arrays) *out++ = held ? (G.*a)[e] : 0.0;
         }
   }
-  h.comm.exchange_sized(h.buffers);
+  h.exchange(true);
   // Every halo node: the holders' values in rank order (this rank's own in its place).
   for (std::size_t f = 0; f < F; ++f)
     for (std::size_t n = 0; n + 1 < h.first.size(); ++n) {
@@ -214,7 +227,7 @@ void halo_sum_added(State& s, std::initializer_list<NodalArray> arrays) {
         for (const NodalArray arr : arrays) *out++ = added(f, std::size_t(n), a++, arr);
       }
   }
-  h.comm.exchange_sized(h.buffers);
+  h.exchange(true);
   for (std::size_t f = 0; f < F; ++f)
     for (std::size_t n = 0; n < N; ++n) {
       if (!G.holds(int(f), h.node_i[n], h.node_j[n])) continue;
@@ -288,7 +301,7 @@ void migrate_if_due(State& s) {
   }
   Particles gone;
   P.move_marked(leaving, gone);
-  h.comm.exchange(h.buffers);
+  h.exchange(false);
   for (const PeerBuffers& b : h.buffers) {  // in rank order: the same order on every run
     const std::size_t n = b.recv.size() / (Particles::kPacked * sizeof(double));
     for (std::size_t q = 0; q < n; ++q) {

@@ -45,6 +45,11 @@ struct NodeBox {
   bool contains(int i, int j) const { return i >= i0 && i <= i1 && j >= j0 && j <= j1; }
 };
 
+// The nodes a block's particles may touch (its nodes and `width` more on every side, in the
+// grid), and two boxes' common nodes.
+NodeBox reach_box(const CellBlock& b, const Grid& g, int width);
+NodeBox overlap(const NodeBox& a, const NodeBox& b);
+
 struct Halo {
   Comm comm = Comm::single();
   std::vector<CellBlock> blocks;  // every rank's block, cells (ghost cells included)
@@ -78,6 +83,12 @@ struct Halo {
   double drift = 0.0;                // bound on any particle's move since the last migration, m
   long migrations = 0;               // migrations so far
   std::string failure;               // a SimulationError caught on this rank this step
+  // What the exchanges cost so far: bytes this rank sent to its peers, and the wall time
+  // inside them (the transfer and the wait for the slowest peer), s.
+  double bytes_sent = 0.0, exchange_seconds = 0.0;
+  // The neighbour exchange of `buffers` (sized: every recv already has the size that arrives),
+  // timed and counted.
+  void exchange(bool sized);
 
   const CellBlock& block() const { return blocks[std::size_t(comm.rank())]; }
   bool owns_cell(int c, int r) const {
@@ -114,6 +125,9 @@ void halo_sum_added(State& s, std::initializer_list<NodalArray> arrays);
 // (kInterfaceHaloNodes). Throws InputError when an owned node's neighbour is not known (segments
 // longer than a cell).
 void distribute_interfaces(State& s);
+// How many (node, rank) pairs `rank` sends in each sync of the interfaces' nodes, with the
+// split `blocks` (the exchange volume rupture check --ranks predicts).
+long interface_nodes_sent(const State& s, const std::vector<CellBlock>& blocks, int rank);
 // Owners send the listed per-node arrays to the ranks that know the nodes.
 using InterfaceArray = std::vector<double> CohesiveInterface::*;
 void sync_interface_nodes(State& s, CohesiveInterface& c, std::initializer_list<InterfaceArray> arrays);

@@ -34,28 +34,48 @@ void whole(const Comm& comm, const std::vector<unsigned char>& owned, std::vecto
   for (std::size_t i = 0; i < v.size(); ++i) v[i] = T(buf[i]);
 }
 
+// The rank owning each node of c: the block holding its reference point's cell.
+std::vector<int> node_owners(const Grid& g, const CohesiveInterface& c, const std::vector<CellBlock>& blocks) {
+  std::vector<int> owner(c.num_nodes(), 0);
+  for (std::size_t k = 0; k < c.num_nodes(); ++k) {
+    const int cx = cell_x(g, c.x0[k]), cy = cell_y(g, c.y0[k]);
+    for (std::size_t q = 0; q < blocks.size(); ++q) {
+      const CellBlock& b = blocks[q];
+      if (cx >= b.c0 && cx < b.c1 && cy >= b.r0 && cy < b.r1) owner[k] = int(q);
+    }
+  }
+  return owner;
+}
+
+bool knows_node(const Grid& g, const CohesiveInterface& c, const std::vector<int>& owner,
+                const std::vector<CellBlock>& blocks, int q, std::size_t k) {
+  return owner[k] == q ||
+         near_block(blocks[std::size_t(q)], cell_x(g, c.x0[k]), cell_y(g, c.y0[k]), kKnownCells);
+}
+
 }  // namespace
+
+long interface_nodes_sent(const State& s, const std::vector<CellBlock>& blocks, int rank) {
+  long sent = 0;
+  for (const CohesiveInterface& c : s.interfaces) {
+    const std::vector<int> owner = node_owners(s.grid, c, blocks);
+    for (std::size_t k = 0; k < c.num_nodes(); ++k)
+      if (owner[k] == rank)
+        for (int q = 0; q < int(blocks.size()); ++q)
+          sent += q != rank && knows_node(s.grid, c, owner, blocks, q, k);
+  }
+  return sent;
+}
 
 void distribute_interfaces(State& s) {
   Halo& h = *s.halo;
   const int me = h.comm.rank();
-  const std::size_t ranks = h.blocks.size();
   h.links.assign(s.interfaces.size(), {});
   for (std::size_t ic = 0; ic < s.interfaces.size(); ++ic) {
     CohesiveInterface& c = s.interfaces[ic];
     const std::size_t n = c.num_nodes();
-    std::vector<int> owner(n);
-    for (std::size_t k = 0; k < n; ++k) {
-      const int cx = cell_x(s.grid, c.x0[k]), cy = cell_y(s.grid, c.y0[k]);
-      for (std::size_t q = 0; q < ranks; ++q) {
-        const CellBlock& b = h.blocks[q];
-        if (cx >= b.c0 && cx < b.c1 && cy >= b.r0 && cy < b.r1) owner[k] = int(q);
-      }
-    }
-    auto knows = [&](int q, std::size_t k) {
-      return owner[k] == q || near_block(h.blocks[std::size_t(q)], cell_x(s.grid, c.x0[k]),
-                                         cell_y(s.grid, c.y0[k]), kKnownCells);
-    };
+    const std::vector<int> owner = node_owners(s.grid, c, h.blocks);
+    auto knows = [&](int q, std::size_t k) { return knows_node(s.grid, c, owner, h.blocks, q, k); };
     c.rank_owned.assign(n, 0);
     c.rank_known.assign(n, 0);
     for (std::size_t k = 0; k < n; ++k) {
@@ -109,7 +129,7 @@ void sync_interface_nodes(State& s, CohesiveInterface& c, std::initializer_list<
     for (const std::uint32_t k : L.send[p])
       for (const InterfaceArray a : arrays) *out++ = (c.*a)[k];
   }
-  h.comm.exchange_sized(h.buffers);
+  h.exchange(true);
   for (std::size_t p = 0; p < h.peers.size(); ++p) {
     const unsigned char* in = h.buffers[p].recv.data();
     for (const std::uint32_t k : L.recv[p])

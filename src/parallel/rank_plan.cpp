@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "core/errors.hpp"
+#include "parallel/halo.hpp"
 #include "solver/nested_state.hpp"
 
 namespace rupture {
@@ -62,12 +63,25 @@ RankPlan plan_ranks(const State& s, int ranks) {
   }
   plan.work.assign(std::size_t(ranks), 0.0);
   plan.exchange_bytes.assign(std::size_t(ranks), 0.0);
-  for (const LevelSplit& l : plan.levels)
+  const bool cohesive = !s.interfaces.empty();
+  const int values = kExchangedValues + (cohesive ? 2 : 0) + (s.loads.has_forces() ? 2 : 0);
+  const int width = cohesive ? kInterfaceHaloNodes : kHaloNodes;
+  for (std::size_t l = 0; l < plan.levels.size(); ++l) {
+    const LevelSplit& L = plan.levels[l];
+    const Grid& g = s.nested ? s.nested->levels[l].grid : s.grid;
     for (std::size_t r = 0; r < std::size_t(ranks); ++r) {
-      plan.work[r] += double(l.split.particles[r]) / double(l.period);
-      plan.exchange_bytes[r] += 8.0 * kExchangedValues * double(l.split.shared_nodes[r]) *
-                                double(l.fields) / double(l.period);
+      plan.work[r] += double(L.split.particles[r]) / double(L.period);
+      const NodeBox mine = reach_box(L.split.block[r], g, width);
+      long halo = 0;  // nodes of this rank's reach in each neighbour's, summed over neighbours
+      for (std::size_t q = 0; q < std::size_t(ranks); ++q)
+        if (q != r) halo += overlap(mine, reach_box(L.split.block[q], g, width)).count();
+      plan.exchange_bytes[r] += 8.0 * values * double(halo) * double(L.fields) / double(L.period);
+      // Interface nodes (finest level): each step the owners send the faces (4 values) and the
+      // stiffness (1) of the nodes their neighbours know.
+      if (cohesive && l + 1 == plan.levels.size())
+        plan.exchange_bytes[r] += 8.0 * 5.0 * double(interface_nodes_sent(s, L.split.block, int(r)));
     }
+  }
   return plan;
 }
 

@@ -19,17 +19,19 @@ struct LevelSplit {
   Decomposition split;
 };
 
-// Values a MUSL step exchanges per shared node and velocity field: mass, momentum and force
-// summed into the owner after P2G (5), velocity and its increment copied to the others after
-// the grid update (4), re-mapped momentum summed (2) and re-mapped velocity copied (2).
-inline constexpr int kExchangedValues = 13;
+// Values a MUSL step sums over the ranks per halo node and velocity field (parallel/halo.hpp):
+// mass, momentum and force after P2G (5), re-mapped momentum (2); a run with cohesive
+// interfaces or [loads] forces also sums the forces they add (2 each). The velocities need no
+// exchange: every copy of a node holds the same sums and updates them alike.
+inline constexpr int kExchangedValues = 7;
 
 struct RankPlan {
   int ranks = 1;
   std::vector<LevelSplit> levels;  // one for a graded or uniform grid
   std::vector<double> work;        // per rank: particle-updates per finest step
-  // Per rank: bytes it sends and receives per finest step, 8 x kExchangedValues per shared
-  // node and field (every field counted at every shared node: an upper bound).
+  // Per rank: bytes it sends per finest step: 8 x the values above per field and node of its
+  // reach shared with each neighbour's (every field counted at every node, as the exchange
+  // sends them), and 5 values per interface node a neighbour knows (faces, stiffness).
   std::vector<double> exchange_bytes;
   double imbalance() const;        // largest work / mean - 1
 };

@@ -189,6 +189,7 @@ RunResult run_case(const Case& c, const RunOptions& options) {
   }
   State& s = ctx.s;
   const long total_particles = sum_over_ranks(s, long(s.particles.size()));
+  const long first_step = s.step;  // 0, or the checkpoint's
   RunResult result;
   result.ranks = comm.size();
   {  // every rank's count in its slot, summed: the split, known to every rank
@@ -470,7 +471,12 @@ RunResult run_case(const Case& c, const RunOptions& options) {
   result.energy_balance_error = record.energy_balance_error;
   result.energy_balance_error_final = record.energy_balance_error_final;
   result.cohesive_seconds = s.cohesive_seconds;
-  if (s.halo) result.migrations = s.halo->migrations;
+  if (s.halo) {
+    result.migrations = s.halo->migrations;
+    const long steps = std::max(1L, s.step - first_step);  // this process's steps
+    result.exchange_bytes_per_step = comm.sum(s.halo->bytes_sent) / double(comm.size()) / double(steps);
+    result.exchange_seconds = comm.max(s.halo->exchange_seconds);
+  }
   gather_interface_state(s);  // distributed: every node from its owner
   for (std::size_t k = 0; k < cracks.size(); ++k) {
     CrackSummary cs = cracks[k].summarize(s.interfaces[k], crack_speeds[k]);
