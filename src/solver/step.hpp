@@ -12,7 +12,11 @@
 // (cohesive phases: solver/cohesive_step.hpp; [loads] phases: solver/load_step.hpp, external
 // forces after the internal force, velocity regions after the velocity BCs)
 // The phases: solver/transfer.hpp, solver/grid_update.hpp (both included here for callers).
-// Throws SimulationError (what, where, when) on a non-finite particle or one leaving the grid.
+// Distributed runs (State::halo, parallel/halo.hpp): particles migrate at the start when due,
+// and every scatter (and the forces added after it) is summed over the ranks sharing a node
+// right after it; the rest of the step is unchanged.
+// Throws SimulationError (what, where, when) on a non-finite particle or one leaving the grid
+// (distributed: at the end of the step, on every rank, with the failing rank's diagnosis).
 #pragma once
 #include "solver/grid_update.hpp"
 #include "solver/state.hpp"
