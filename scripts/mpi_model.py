@@ -1,0 +1,49 @@
+#!/usr/bin/env python3
+"""Parallel efficiency model of a distributed run (docs/parallel.md, "Efficiency model").
+
+Usage: mpi_model.py RUPTURE T_P ALPHA BETA N1,N2,... [--scale K] -- CASE [--set k=v ...]
+  T_P    measured compute time per particle-update on one thread, s (rupture run's
+         1 / particle_updates_per_second)
+  ALPHA  latency of one neighbour exchange or one scalar reduction step, s
+  BETA   bandwidth per rank, B/s
+  --scale K   a K times larger problem of the same shape: work x K, halo bytes x sqrt(K)
+              (the blocks' perimeters), interface syncs x sqrt(K)
+
+For each N, `rupture check CASE --ranks N` gives per rank the particle-updates per finest step
+(work_r, nested levels weighted by how often they step) and the bytes sent per finest step
+(bytes_r); the levels' periods give the exchanges per finest step. Per finest step:
+  T(N) = max_r work_r * T_P + n_ex * ALPHA + max_r bytes_r / BETA + n_red * ALPHA * ceil(log2 N)
+with n_ex = (2 halo sums, +1 with interfaces (cohesive forces), +2 interface syncs) on the
+interface's level, 2 per step of every other level, and n_red = 3 reductions per finest step
+(time step, migration check, failure flag). Efficiency E(N) = sum_r work_r * T_P / (N T(N)).
+"""
+import math
+import re
+import subprocess
+import sys
+
+rupture, t_p, alpha, beta, ns = sys.argv[1], float(sys.argv[2]), float(sys.argv[3]), float(sys.argv[4]), sys.argv[5]
+rest = sys.argv[6:]
+scale = 1.0
+if rest[0] == "--scale":
+    scale, rest = float(rest[1]), rest[2:]
+assert rest[0] == "--"
+case = rest[1:]
+print(f"T_P = {t_p * 1e9:.1f} ns, alpha = {alpha * 1e6:.1f} us, beta = {beta / 1e9:.1f} GB/s, problem x {scale:g}")
+print("N | work per rank (max, mean) | bytes per rank (max) | exchanges / finest step | compute | communication | efficiency")
+for n in [int(x) for x in ns.split(",")]:
+    out = subprocess.run([rupture, "check", *case, "--ranks", str(n), "--no-timing"],
+                         capture_output=True, text=True, check=True).stdout
+    work = [float(x) * scale for x in re.search(r"work_per_rank=([0-9.,]+)", out).group(1).split(",")]
+    sent = [float(x) * math.sqrt(scale) for x in re.search(r"exchange_bytes_per_rank=([0-9.,]+)", out).group(1).split(",")]
+    periods = [int(p) for p in re.findall(r"one step every ([0-9]+) finest", out)]
+    levels = len(re.findall(r"^level [0-9]+:", out, re.M)) or 1
+    periods = [1] * (levels - len(periods)) + periods  # levels that step every finest step
+    cohesive = "dt_cohesive_limit=" in out  # rupture check prints it for cases with interfaces
+    n_ex = sum(2.0 / p for p in periods) + (3.0 if cohesive else 0.0)
+    compute = max(work) * t_p
+    comm = n_ex * alpha + max(sent) / beta + 3 * alpha * math.ceil(math.log2(n)) if n > 1 else 0.0
+    serial = sum(work) * t_p
+    eff = serial / (n * (compute + comm))
+    print(f"{n} | {max(work):.0f}, {sum(work) / n:.0f} | {max(sent):.0f} | {n_ex:.2f} | "
+          f"{compute * 1e6:.1f} us | {comm * 1e6:.1f} us | {eff:.3f}")
