@@ -49,19 +49,20 @@ Comm Comm::world() {
   return c;
 }
 
-double Comm::min(double v) const {
-  if (size_ == 1) return v;
-  double r = v;
-  check(MPI_Allreduce(&v, &r, 1, MPI_DOUBLE, MPI_MIN, MPI_COMM_WORLD), "MPI_Allreduce");
+namespace {
+// One value reduced over every rank with `op` (the value itself on one process).
+template <class T>
+T all_reduce(int size, T v, MPI_Datatype type, MPI_Op op) {
+  if (size == 1) return v;
+  T r = v;
+  check(MPI_Allreduce(&v, &r, 1, type, op, MPI_COMM_WORLD), "MPI_Allreduce");
   return r;
 }
+}  // namespace
 
-double Comm::max(double v) const {
-  if (size_ == 1) return v;
-  double r = v;
-  check(MPI_Allreduce(&v, &r, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD), "MPI_Allreduce");
-  return r;
-}
+double Comm::min(double v) const { return all_reduce(size_, v, MPI_DOUBLE, MPI_MIN); }
+double Comm::max(double v) const { return all_reduce(size_, v, MPI_DOUBLE, MPI_MAX); }
+long Comm::sum(long v) const { return all_reduce(size_, v, MPI_LONG, MPI_SUM); }
 
 double Comm::sum(double v) const {
   sum(&v, 1);
@@ -75,17 +76,8 @@ void Comm::sum(double* v, int n) const {
   check(MPI_Allreduce(MPI_IN_PLACE, v, n, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD), "MPI_Allreduce");
 }
 
-long Comm::sum(long v) const {
-  if (size_ == 1) return v;
-  long r = v;
-  check(MPI_Allreduce(&v, &r, 1, MPI_LONG, MPI_SUM, MPI_COMM_WORLD), "MPI_Allreduce");
-  return r;
-}
-
 int Comm::first_with(bool flag) const {
-  const int mine = flag ? rank_ : INT_MAX;
-  int r = mine;
-  if (size_ > 1) check(MPI_Allreduce(&mine, &r, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD), "MPI_Allreduce");
+  const int r = all_reduce(size_, flag ? rank_ : INT_MAX, MPI_INT, MPI_MIN);
   return r == INT_MAX ? -1 : r;
 }
 
