@@ -443,6 +443,7 @@ int main(int argc, char** argv) {
       fmt::print("ranks={}\n", r.ranks);
       fmt::print("particles_per_rank={}\n", fmt::join(r.particles_per_rank, ","));
       fmt::print("migrations={}\n", r.migrations);
+      fmt::print("rebalances={}\n", r.rebalances);
       fmt::print("exchange_bytes_per_rank_per_step={:.0f}\n", r.exchange_bytes_per_step);
       fmt::print("exchange_seconds={:.3f}\n", r.exchange_seconds);
     }

@@ -125,6 +125,32 @@ void Comm::exchange_sized(std::vector<PeerBuffers>& peers) const {
   check(MPI_Waitall(int(req.size()), req.data(), MPI_STATUSES_IGNORE), "MPI_Waitall");
 }
 
+void Comm::all_to_all(const std::vector<std::vector<unsigned char>>& send,
+                      std::vector<std::vector<unsigned char>>& recv) const {
+  recv.assign(std::size_t(size_), {});
+  if (size_ == 1) {
+    recv[0] = send[0];
+    return;
+  }
+  const std::size_t n = std::size_t(size_);
+  std::vector<int> out(n), in(n), out_at(n, 0), in_at(n, 0);
+  for (std::size_t q = 0; q < n; ++q) out[q] = int(send[q].size());
+  check(MPI_Alltoall(out.data(), 1, MPI_INT, in.data(), 1, MPI_INT, MPI_COMM_WORLD), "MPI_Alltoall");
+  std::vector<unsigned char> flat_out, flat_in;
+  for (std::size_t q = 0; q < n; ++q) {
+    out_at[q] = int(flat_out.size());
+    flat_out.insert(flat_out.end(), send[q].begin(), send[q].end());
+  }
+  long total = 0;
+  for (std::size_t q = 0; q < n; ++q) in_at[q] = int(total), total += in[q];
+  flat_in.resize(std::size_t(total));
+  check(MPI_Alltoallv(flat_out.data(), out.data(), out_at.data(), MPI_BYTE, flat_in.data(), in.data(),
+                      in_at.data(), MPI_BYTE, MPI_COMM_WORLD),
+        "MPI_Alltoallv");
+  for (std::size_t q = 0; q < n; ++q)
+    recv[q].assign(flat_in.begin() + in_at[q], flat_in.begin() + in_at[q] + in[q]);
+}
+
 void Comm::barrier() const {
   if (size_ > 1) MPI_Barrier(MPI_COMM_WORLD);
 }

@@ -61,6 +61,10 @@ class Comm {
   // The same when every recv buffer already has the size the peer sends (halo sums: both
   // sides know the shared box): one message per peer and direction.
   void exchange_sized(std::vector<PeerBuffers>& peers) const;
+  // Every rank sends send[q] to rank q and receives recv[q] from it (all ranks; rare: a
+  // rebalance). Each buffer under 2 GiB.
+  void all_to_all(const std::vector<std::vector<unsigned char>>& send,
+                  std::vector<std::vector<unsigned char>>& recv) const;
   void barrier() const;
   // Stops every rank (after a failure that cannot be agreed on in step, e.g. an I/O error on
   // one rank), exit code `code`.

@@ -110,14 +110,26 @@ void check_distributable(const State& s, int ranks) {
   if (!s.loads.spec.velocity_regions.empty()) refuse("[loads] velocity regions");
 }
 
+void set_blocks(State& s, std::vector<CellBlock> blocks) {
+  Halo& h = *s.halo;
+  h.blocks = std::move(blocks);
+  h.peers.clear(), h.node_i.clear(), h.node_j.clear(), h.terms.clear(), h.box_node.clear();
+  build_peers(h, s.grid);
+  s.bonded = h.all_bonded;  // distribute_interfaces keeps the ties of the new reach
+  distribute_interfaces(s);
+  s.plan.valid = false;         // re-sort, and
+  s.windows_checked_step = -2;  // re-fit the windows to this rank's particles
+}
+
 void distribute(State& s, const Comm& comm, bool fresh) {
   check_distributable(s, comm.size());
   auto h = std::make_shared<Halo>();
   h->comm = comm;
-  h->blocks = plan_ranks(s, comm.size()).levels.at(0).split.block;
   h->cell = std::min(s.grid.x.h, s.grid.y.h);
   if (!s.interfaces.empty()) h->halo_nodes = kInterfaceHaloNodes;
-  build_peers(*h, s.grid);
+  h->all_bonded = s.bonded;
+  s.halo = h;
+  set_blocks(s, plan_ranks(s, comm.size()).levels.at(0).split.block);
   // Keep this rank's particles (every rank made the same State: the same particles, the same
   // split).
   Particles& P = s.particles;
@@ -137,10 +149,6 @@ void distribute(State& s, const Comm& comm, bool fresh) {
     s.strain_work = s.external_work = 0.0;
     for (CohesiveInterface& c : s.interfaces) c.work = 0.0;
   }
-  s.halo = std::move(h);
-  distribute_interfaces(s);
-  s.plan.valid = false;            // re-sort, and
-  s.windows_checked_step = -2;     // re-fit the windows to this rank's particles
 }
 
 void halo_sum(State& s, std::initializer_list<NodalArray> arrays) {
@@ -313,6 +321,7 @@ void migrate_if_due(State& s) {
   h.drift = 0.0;
   ++h.migrations;
   s.plan.valid = false;  // re-sort (and re-measure the windows) before the scatter
+  rebalance_if_needed(s);
 }
 
 void finish_distributed_step(State& s, double drift_at_start) {

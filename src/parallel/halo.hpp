@@ -82,6 +82,9 @@ struct Halo {
   double cell = 0.0;                 // the cell size, m
   double drift = 0.0;                // bound on any particle's move since the last migration, m
   long migrations = 0;               // migrations so far
+  std::vector<BondedTie> all_bonded;  // every tie (s.bonded keeps those of the reach)
+  long rebalances = 0;                // new splits since the start
+  std::string last_rebalance;         // what the last one did (the driver prints it)
   std::string failure;               // a SimulationError caught on this rank this step
   // What the exchanges cost so far: bytes this rank sent to its peers, and the wall time
   // inside them (the transfer and the wait for the slowest peer), s.
@@ -104,6 +107,16 @@ struct Halo {
 // work, interface work) and the others start from 0. Throws InputError for what distributed
 // runs do not support yet (the message names the key).
 void distribute(State& s, const Comm& comm, bool fresh = true);
+
+// (Re)builds this rank's halo for a new split: peers, halo nodes, interface nodes, ties; the
+// particles must follow (distribute, rebalance).
+void set_blocks(State& s, std::vector<CellBlock> blocks);
+
+// Load drift (parallel/rebalance.cpp): after a migration, when the largest particle count
+// over the ranks exceeds the mean by more than kRebalanceImbalance, the ranks bisect the
+// particles as they are now and move each particle to its new block's rank (collective).
+inline constexpr double kRebalanceImbalance = 0.05;
+void rebalance_if_needed(State& s);
 
 // The distributed run's checks of a case, before any work starts (InputError naming the key).
 void check_distributable(const State& s, int ranks);

@@ -338,6 +338,10 @@ RunResult run_case(const Case& c, const RunOptions& options) {
         if (due->interval > 0) s.sync_by = std::min(s.sync_by, due->next - eps);
       if (!c.stations.empty() && ctx.station_schedule.interval <= 0) s.sync_by = -INFINITY;  // every step
       step(s);
+      if (s.halo && s.halo->rebalances != result.rebalances) {  // the split followed the load
+        result.rebalances = s.halo->rebalances;
+        if (writer) fmt::print("{}\n", s.halo->last_rebalance);
+      }
       const bool last = s.time >= c.time.end - eps;
       // Between the finest steps of a coarser level's step (per-level time steps) some particles
       // are behind the run's time: what reads particles waits for the levels to end together.

@@ -64,6 +64,7 @@ struct RunResult {
   int ranks = 1;                       // processes (distributed runs)
   std::vector<long> particles_per_rank;  // at t = 0, after the split
   long migrations = 0;                 // particle migrations between ranks
+  long rebalances = 0;                 // new splits when the load drifted (parallel/halo.hpp)
   double exchange_bytes_per_step = 0.0;  // bytes a rank sends its neighbours per step (mean over ranks)
   double exchange_seconds = 0.0;       // wall time in the exchanges, the largest over the ranks, s
 };
