@@ -104,7 +104,6 @@ void check_distributable(const State& s, int ranks) {
                                  what, ranks));
   };
   if (s.nested) refuse("grid.refinement = \"nested\"");
-  if (s.grid.graded()) refuse("a graded grid (grid.refine)");
   // A region's velocity acts on the nodes its particles touch: every copy of such a node
   // would need the other ranks' lists.
   if (!s.loads.spec.velocity_regions.empty()) refuse("[loads] velocity regions");

@@ -10,6 +10,8 @@
 //     (uGIMP stencil, lp <= h/2: nodes within 1 cell + lp of the centre), and particles migrate
 //     to their block's rank once any may have moved kMigrateCells since the last migration
 //     (the move's drift bound, summed as for the scatter plan), so they are never further out.
+//     Graded grids alike: a stencil spans cells c - 1 .. c + 2 whatever their widths, and the
+//     migration counts cells of the finest size.
 //   - Halo sum (after each scatter): every node in the reach of several ranks gets the sum of
 //     all their contributions, added in rank order on every rank, so each copy of a node holds
 //     the same bits and the grid update that follows (velocity BCs included) gives the same
@@ -101,7 +103,7 @@ struct Halo {
 };
 
 // Splits s (the same State on every rank: made by make_state, or restored from a checkpoint;
-// uniform grid, one lattice) among comm's ranks by its particles now, and keeps this rank's
+// uniform or graded grid, one lattice) among comm's ranks by its particles now, and keeps this rank's
 // particles. The run's sums become this rank's parts: fresh (t = 0), the strain work starts
 // from the rank's elastic energy; restored, rank 0 keeps the run's sums (strain and external
 // work, interface work) and the others start from 0. Throws InputError for what distributed
