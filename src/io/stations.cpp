@@ -9,6 +9,7 @@
 
 #include "io/atomic_file.hpp"
 #include "io/interface_csv.hpp"
+#include "parallel/halo.hpp"
 #include "solver/state.hpp"
 
 namespace rupture {
@@ -43,8 +44,60 @@ std::vector<StationProbe> make_probes(const std::vector<StationSpec>& specs, con
   return out;
 }
 
+namespace {
+
+// A distributed run (parallel/halo.hpp): each node's values from the rank owning it, each body
+// station's particle from the rank holding it, added over the ranks (zeros elsewhere), so every
+// rank records the one-process rows.
+void sample_distributed(const State& s, std::vector<StationProbe>& probes,
+                        std::vector<StationSeries>& series) {
+  constexpr std::size_t kV = 5;  // per node: slip, slip rate, opening, shear, normal traction
+  std::vector<double> v(probes.size() * 2 * kV, 0.0);
+  for (std::size_t i = 0; i < probes.size(); ++i) {
+    StationProbe& p = probes[i];
+    double* out = v.data() + i * 2 * kV;
+    if (p.interface >= 0) {
+      const CohesiveInterface& c = s.interfaces[std::size_t(p.interface)];
+      const std::size_t nodes[2] = {p.a, p.b};
+      for (int e = 0; e < 2; ++e) {
+        const std::size_t k = nodes[e];
+        if (!c.owns(k)) continue;
+        const CohesiveTraction t = node_traction(c, k);
+        const double row[kV] = {c.jump_tangential(k), s.dt > 0 ? c.last_increment_t[k] / s.dt : 0.0,
+                                c.jump_normal(k), t.tangential, t.normal};
+        std::copy(row, row + kV, out + e * kV);
+      }
+      continue;
+    }
+    const Particles& P = s.particles;
+    if (p.slot >= P.size() || P.id[p.slot] != p.particle_id)  // moved by a sort, or away
+      p.slot = std::size_t(std::find(P.id.begin(), P.id.end(), p.particle_id) - P.id.begin());
+    if (p.slot >= P.size()) continue;  // another rank's
+    const std::size_t q = p.slot;
+    const double row[4] = {P.x[q], P.y[q], P.vx[q], P.vy[q]};
+    std::copy(row, row + 4, out);
+  }
+  const Comm& comm = s.halo->comm;
+  comm.sum(v.data(), int(v.size()));
+  series.resize(probes.size());
+  for (std::size_t i = 0; i < probes.size(); ++i) {
+    const double* in = v.data() + i * 2 * kV;
+    std::vector<double>& r = series[i].rows;
+    if (probes[i].interface >= 0) {
+      const double f = probes[i].f;
+      r.push_back(s.time);
+      for (const std::size_t j : {0, 1, 2, 3, 4}) r.push_back((1.0 - f) * in[j] + f * in[kV + j]);
+    } else {
+      r.insert(r.end(), {s.time, in[0], in[1], in[2], in[3]});
+    }
+  }
+}
+
+}  // namespace
+
 void sample_stations(const State& s, std::vector<StationProbe>& probes,
                      std::vector<StationSeries>& series) {
+  if (s.halo && s.halo->comm.distributed()) return sample_distributed(s, probes, series);
   series.resize(probes.size());
   for (std::size_t i = 0; i < probes.size(); ++i) {
     StationProbe& p = probes[i];

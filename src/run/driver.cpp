@@ -92,14 +92,12 @@ void stamp_heartbeat(RunRecord& r) {
 // the snapshot writer and the output schedules. A fresh run starts from it; a resumed one
 // overwrites it with the checkpoint.
 void set_up(RunContext& r, const Case& c, const std::string& dir, double checkpoint_interval,
-            const Comm& comm, bool resume) {
+            const Comm& comm) {
   r.s = make_state(c);
   // Which particles the snapshots hold (every particle at t = 0: before a split).
   if (c.output.snapshot_interval > 0)
     r.snapshots = std::make_unique<SnapshotWriter>(
         dir, r.s.particles, c.output.has_snapshot_region ? c.output.snapshot_region : nullptr, comm);
-  // This rank's block and particles (a resumed run splits once the checkpoint is read).
-  if (comm.distributed() && !resume) distribute(r.s, comm);
   const State& s = r.s;
   for (const CohesiveInterface& ci : s.interfaces) {
     // The cell width along the line at node k (the width in the line's direction).
@@ -132,7 +130,6 @@ void check_distributed_outputs(const Case& c, const RunOptions& o) {
                                  "run it on one process",
                                  what, n));
   };
-  if (!c.stations.empty()) refuse("[stations]");
   // Mach readings look at the particles around a crack tip (no interface: nothing to read).
   if (c.output.mach_interval > 0 && !c.interfaces.empty())
     refuse(fmt::format("output.mach_interval = {:g} (Mach-angle readings, by default every "
@@ -171,10 +168,13 @@ RunResult run_case(const Case& c, const RunOptions& options) {
 
   const CaseSummary summary = summarize(c);
   RunContext ctx;
-  set_up(ctx, c, dir, options.checkpoint_interval, comm, options.resume);
+  set_up(ctx, c, dir, options.checkpoint_interval, comm);
   // Where the stations read, from the state at t = 0 (a body station follows the particle
   // nearest its point then), before a checkpoint replaces the state.
   std::vector<StationProbe> probes = make_probes(c.stations, ctx.s);
+  // Distributed: this rank's block and particles (every rank built the whole state at t = 0;
+  // a resumed run splits once the checkpoint is read).
+  if (comm.distributed() && !options.resume) distribute(ctx.s, comm);
   if (options.resume) {
     read_checkpoint(checkpoint_path(dir), ctx);
     read_checkpoint_particles(dir, ctx);  // a distributed run's particle parts

@@ -16,7 +16,7 @@
 // energies in history.csv and run.json are sums over the ranks, rank 0 writes every file; a
 // failure on one rank stops all of them with its diagnosis; checkpoints hold a part file per
 // rank and resume on any number of ranks (run/checkpoint_ranks.hpp). Not yet distributed
-// (refused before any work, naming the key): snapshots, stations, Mach-angle readings.
+// (refused before any work, naming the key): Mach-angle readings on runs with interfaces.
 #pragma once
 #include <string>
 

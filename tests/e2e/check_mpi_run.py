@@ -50,6 +50,18 @@ for name in ("crack_tip.csv", "interface/interface_000004.csv"):
                     continue
                 worst = max(worst, abs(fu - fv) / max(abs(fu), abs(fv), 1e-300))
     check(same_shape and worst <= bound, f"{name}: {len(ra_)} rows, largest relative difference {worst:.2e}")
+# Stations: each column to BOUND of its largest magnitude.
+import glob
+import os
+for path in sorted(glob.glob(f"{a_dir}/stations/*.csv")):
+    name = os.path.basename(path)
+    sa = list(csv.DictReader(open(path)))
+    sb = list(csv.DictReader(open(f"{b_dir}/stations/{name}")))
+    worst = 0.0
+    for col in sa[0].keys():
+        scale = max(abs(float(r[col])) for r in sa) or 1.0
+        worst = max(worst, max(abs(float(x[col]) - float(y[col])) for x, y in zip(sa, sb)) / scale)
+    check(len(sa) == len(sb) and worst <= bound, f"stations/{name}: {len(sa)} rows, largest difference {worst:.2e} of a column's largest value")
 ra, rb = json.load(open(f"{a_dir}/run.json")), json.load(open(f"{b_dir}/run.json"))
 check(rb["status"] == "completed", f"status {rb['status']}")
 check(rb.get("ranks") == ranks and ra.get("ranks") == 1, f"ranks {ra.get('ranks')} and {rb.get('ranks')}")
