@@ -71,7 +71,7 @@ TEST(Halo, one_rank_keeps_everything_and_steps_as_the_plain_solver) {
   EXPECT_TRUE(one.halo->peers.empty());
   EXPECT_EQ(one.particles.size(), plain.particles.size());
   EXPECT_EQ(one.strain_work, strain_energy(one.particles, one.stiffness));
-  for (std::size_t n = 0; n < one.grid.num_nodes(); ++n) ASSERT_TRUE(counts_node(one, n));
+  for (std::size_t n = 0; n < one.grid.num_nodes(); ++n) ASSERT_TRUE(counts_node(one, 0, n));
   plain.dt_cap = one.dt_cap = INFINITY;
   for (int k = 0; k < 20; ++k) {
     step(plain);

@@ -4,7 +4,7 @@
 //   rupture check --explain [KEY]   the description of an input key or table (no case file)
 //   rupture docs --input            the input reference as Markdown (docs/input.md)
 //   rupture run   CASE.toml -o DIR [--set key=value ...] [--quiet] [--checkpoint-interval T]
-//                 [--overwrite]
+//                 [--overwrite] [--no-rebalance]
 //   rupture resume DIR [--quiet] [--checkpoint-interval T]   continue from DIR's last checkpoint
 //   rupture sweep CASE.toml -o DIR --vary KEY=V1,V2,... [--vary ...] [--set ...] [-j K]
 //                 [--threads N] [--checkpoint-interval T] [--quiet]   parameter study
@@ -333,6 +333,9 @@ int main(int argc, char** argv) {
                   "write a checkpoint every T seconds of simulated time (rupture resume DIR)")
       ->check(CLI::NonNegativeNumber);
   run->add_flag("--overwrite", overwrite, "delete another run's files in the output directory");
+  bool no_rebalance = false;
+  run->add_flag("--no-rebalance", no_rebalance,
+                "under mpirun: keep the split of t = 0 (no re-split when the measured load drifts)");
   // Tests: stop after N steps as if interrupted (checkpoint written, exit code 4).
   run->add_option("--stop-after-steps", stop_after_steps)->group("");
 
@@ -344,6 +347,7 @@ int main(int argc, char** argv) {
                      "change the checkpoint interval (default: the run's)")
       ->check(CLI::NonNegativeNumber);
   resume->add_option("--stop-after-steps", stop_after_steps)->group("");
+  resume->add_flag("--no-rebalance", no_rebalance, "under mpirun: keep the split made at the resume");
 
   SweepOptions sweep_opt;
   std::vector<std::string> vary;
@@ -412,6 +416,7 @@ int main(int argc, char** argv) {
     options.progress = !quiet;
     options.checkpoint_interval = checkpoint_interval;
     options.stop_after_steps = stop_after_steps;
+    options.rebalance = !no_rebalance;
     if (resume->parsed()) {
       out_dir = resume_dir;
       options.resume = true;

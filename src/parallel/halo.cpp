@@ -66,7 +66,8 @@ void build_peers(Halo& h, const Grid& g) {
   h.buffers.resize(h.peers.size());
   for (std::size_t k = 0; k < h.peers.size(); ++k) h.buffers[k].rank = h.peers[k].rank;
   // Each peer box's nodes as halo nodes (halo_sum_added packs per box from per-node values).
-  std::vector<long> index(std::size_t(h.reach.count()), -1);
+  std::vector<long>& index = h.halo_index;
+  index.assign(std::size_t(h.reach.count()), -1);
   for (std::size_t n = 0; n < h.node_i.size(); ++n)
     index[std::size_t(long(h.node_j[n] - h.reach.j0) * w + long(h.node_i[n] - h.reach.i0))] = long(n);
   h.box_node.resize(h.peers.size());
@@ -173,7 +174,11 @@ void halo_sum(State& s, std::initializer_list<NodalArray> arrays) {
         }
   }
   h.exchange(true);
-  // Every halo node: the holders' values in rank order (this rank's own in its place).
+  // Every halo node: the holders' values in rank order (this rank's own in its place). With
+  // the mass (the P2G sum), also whether this rank is the lowest that gave the node mass: the
+  // one that counts its node sums (counts_node).
+  const bool with_mass = *arrays.begin() == &GridFields::mass;
+  if (with_mass) h.counts_here.assign(F * h.node_i.size(), 0);
   for (std::size_t f = 0; f < F; ++f)
     for (std::size_t n = 0; n + 1 < h.first.size(); ++n) {
       const int i = h.node_i[n], j = h.node_j[n];
@@ -182,15 +187,19 @@ void halo_sum(State& s, std::initializer_list<NodalArray> arrays) {
       std::size_t a_index = 0;
       for (const NodalArray a : arrays) {
         double sum = 0.0;
+        bool first_giver = with_mass && a_index == 0;  // no lower rank gave mass so far
         for (std::size_t t = h.first[n]; t < h.first[n + 1]; ++t) {
           const Halo::Term& term = h.terms[t];
           if (term.peer < 0) {
+            if (first_giver && (G.*a)[e] != 0.0) h.counts_here[f * h.node_i.size() + n] = 1, first_giver = false;
             sum += (G.*a)[e];
             continue;
           }
           const long cnt = h.peers[std::size_t(term.peer)].box.count();
-          sum += read_double(h.buffers[std::size_t(term.peer)].recv,
-                             (f * std::size_t(cnt) + std::size_t(term.place)) * A + a_index);
+          const double v = read_double(h.buffers[std::size_t(term.peer)].recv,
+                                       (f * std::size_t(cnt) + std::size_t(term.place)) * A + a_index);
+          if (v != 0.0) first_giver = false;
+          sum += v;
         }
         (G.*a)[e] = sum;
         ++a_index;
@@ -257,17 +266,27 @@ void halo_sum_added(State& s, std::initializer_list<NodalArray> arrays) {
     }
 }
 
-bool counts_node(const State& s, std::size_t node) {
+bool counts_node(const State& s, int field, std::size_t node) {
   if (!s.halo) return true;
+  const Halo& h = *s.halo;
   const std::size_t nx = std::size_t(s.grid.nodes_x());
   const int i = int(node % nx), j = int(node / nx);
-  return s.halo->owns_cell(std::min(i, s.grid.x.cells - 1), std::min(j, s.grid.y.cells - 1));
+  if (!h.reach.contains(i, j)) return false;  // no particle of this rank reaches it
+  const long w = long(h.reach.i1 - h.reach.i0 + 1);
+  const long n = h.halo_index[std::size_t(long(j - h.reach.j0) * w + long(i - h.reach.i0))];
+  if (n < 0) return true;  // in no other rank's reach: this rank's alone
+  return h.counts_here.size() == std::size_t(s.fields.num_fields) * h.node_i.size() &&
+         h.counts_here[std::size_t(field) * h.node_i.size() + std::size_t(n)];
 }
 
 void migrate_if_due(State& s) {
   if (!s.halo) return;
   Halo& h = *s.halo;
-  if (h.comm.max(h.drift) < kMigrateCells * h.cell) return;
+  h.step_start = std::chrono::steady_clock::now();
+  if (h.comm.max(h.drift) < kMigrateCells * h.cell) {
+    if (s.step % s.plan.sort_interval == 0) rebalance_if_needed(s);  // a crack's load moves too
+    return;
+  }
   Particles& P = s.particles;
   // Destination of each particle that left the block: the peer whose block holds its cell.
   std::vector<unsigned char> leaving(P.size(), 0);
@@ -327,6 +346,9 @@ void finish_distributed_step(State& s, double drift_at_start) {
   if (!s.halo) return;
   Halo& h = *s.halo;
   h.drift += s.plan.drift - drift_at_start;
+  h.step_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - h.step_start).count();
+  h.particle_steps += double(s.particles.size());
+  h.node_steps += h.owned_nodes;
   const int failed = h.comm.first_with(!h.failure.empty());
   if (failed < 0) return;
   const std::string what = h.comm.broadcast(h.failure, failed);

@@ -18,9 +18,10 @@
 //     velocities on every copy: the gathers need no second exchange. Neighbours only: the
 //     ranks whose reaches overlap; nothing is reduced over all nodes.
 //   - Nodal sums that count a node once (the external work of prescribed and absorbing edges)
-//     count it on its owner: the rank whose block holds the cell above and right of the node.
+//     count it on the lowest rank that gave it mass in the step's scatter (counts_node).
 // Units: m for lengths, the nodal arrays' own units.
 #pragma once
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <initializer_list>
@@ -74,6 +75,9 @@ struct Halo {
   // Per peer: for each node of its box (row by row), the halo node it is (index into node_i).
   std::vector<std::vector<long>> box_node;
   std::vector<double> saved;  // halo_save: values at the halo nodes (field, node, array)
+  std::vector<long> halo_index;  // per node of the reach (row by row): its halo node, or -1
+  // Per field and halo node, this step: 1 where this rank is the lowest that gave it mass.
+  std::vector<unsigned char> counts_here;
   int halo_nodes = kHaloNodes;  // the reach's width beyond the block, nodes
   // Per interface, per peer: the owned nodes whose state it needs (it knows them), and its
   // owned nodes this rank knows (parallel/halo_interface.cpp).
@@ -86,6 +90,12 @@ struct Halo {
   long migrations = 0;               // migrations so far
   std::vector<BondedTie> all_bonded;  // every tie (s.bonded keeps those of the reach)
   long rebalances = 0;                // new splits since the start
+  long rebalance_declined_step = -1;  // last check whose new split would not have gained
+  bool rebalance = true;              // false: keep the split of t = 0 (--no-rebalance)
+  // The load each rank measures (parallel/rebalance.cpp): wall time of its steps, s, and the
+  // particle-updates and owned interface node-updates they did; owned_nodes: now.
+  double step_seconds = 0.0, particle_steps = 0.0, node_steps = 0.0, owned_nodes = 0.0;
+  std::chrono::steady_clock::time_point step_start;
   std::string last_rebalance;         // what the last one did (the driver prints it)
   std::string failure;               // a SimulationError caught on this rank this step
   // What the exchanges cost so far: bytes this rank sent to its peers, and the wall time
@@ -114,9 +124,10 @@ void distribute(State& s, const Comm& comm, bool fresh = true);
 // particles must follow (distribute, rebalance).
 void set_blocks(State& s, std::vector<CellBlock> blocks);
 
-// Load drift (parallel/rebalance.cpp): after a migration, when the largest particle count
-// over the ranks exceeds the mean by more than kRebalanceImbalance, the ranks bisect the
-// particles as they are now and move each particle to its new block's rank (collective).
+// Load drift (parallel/rebalance.cpp): at a migration and every ScatterPlan::sort_interval
+// steps, when the largest load over the ranks (particles, plus owned interface nodes weighted
+// by their measured cost) exceeds the mean by more than kRebalanceImbalance, the ranks bisect
+// the load as it is now and move each particle to its new block's rank (collective).
 inline constexpr double kRebalanceImbalance = 0.05;
 void rebalance_if_needed(State& s);
 
@@ -156,8 +167,11 @@ void gather_crack_times(State& s);
 // The run's work on interface k (the ranks' parts summed), J/m.
 double interface_work(const State& s, std::size_t k);
 
-// Whether a node-counted sum (external work) counts grid node `node` on this rank.
-bool counts_node(const State& s, std::size_t node);
+// Whether a node-counted sum (external work of prescribed and absorbing edges) counts grid
+// node `node` of `field` on this rank: every copy holds the same values, and the lowest rank
+// that gave the node mass in this step's scatter counts it (a fixed owner may hold no particle
+// of that field near it).
+bool counts_node(const State& s, int field, std::size_t node);
 
 // At the start of a step: once a particle anywhere may have moved kMigrateCells since the last
 // migration, every rank sends the particles that left its block to the block's rank, and

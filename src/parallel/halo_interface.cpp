@@ -71,6 +71,7 @@ void distribute_interfaces(State& s) {
   Halo& h = *s.halo;
   const int me = h.comm.rank();
   h.links.assign(s.interfaces.size(), {});
+  h.owned_nodes = 0.0;
   for (std::size_t ic = 0; ic < s.interfaces.size(); ++ic) {
     CohesiveInterface& c = s.interfaces[ic];
     const std::size_t n = c.num_nodes();
@@ -81,6 +82,7 @@ void distribute_interfaces(State& s) {
     for (std::size_t k = 0; k < n; ++k) {
       c.rank_owned[k] = owner[k] == me;
       c.rank_known[k] = knows(me, k);
+      h.owned_nodes += c.rank_owned[k];
     }
     // Segments reach one node on: an owned node's neighbours must be known.
     for (std::size_t k = 0; k < n; ++k) {

@@ -1,50 +1,84 @@
 // rupture/parallel/rebalance.cpp
 // Load drift (parallel/halo.hpp): a crack running into one block, a body flying across the
-// grid. Checked at every migration (when particles may have crossed a block's border): with
-// the largest particle count over the ranks more than kRebalanceImbalance above the mean,
-// every rank adds its particles per cell into one lattice count, the same bisection as at
-// t = 0 (parallel/decomposition.hpp) splits it anew, and each particle goes to its new block's
-// rank. Why 5 %: a rebalance costs about one step (a count over the cells, an all-to-all of
-// the particles that change rank, a re-sort: measured in docs/parallel.md), and the
-// migrations that check it come tens of steps apart (a cell of drift), so an imbalance of 5 %
-// held until the next check already costs more than the rebalance.
+// grid. The load of a rank is its particles plus its owned interface nodes, each node weighted
+// by w = (cost of an interface node-update) / (cost of a particle-update), both measured over
+// the run so far on all ranks (cohesive phases' wall time per owned node-update; the rest of the
+// steps' wall time, exchanges excluded, per particle-update): no tuned weight, and 0 until
+// there is a measurement. Checked at every migration and every ScatterPlan::sort_interval
+// steps. With the largest load more than kRebalanceImbalance above the mean, every rank adds
+// its load per cell into one lattice count, the same bisection as at t = 0
+// (parallel/decomposition.hpp) splits it anew, and each particle goes to its new block's rank.
+// Why 5 %: a rebalance costs about one step (a count over the cells, an all-to-all of the
+// particles that change rank, a re-sort: measured in docs/parallel.md), and the checks come
+// tens of steps apart, so an imbalance of 5 % kept until the next check costs more. The new
+// split is kept only if it is better by 5 % of the mean too (whole cells cannot always divide
+// the load: an interface along one row of cells).
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstring>
 
 #include "parallel/decomposition.hpp"
 #include "parallel/halo.hpp"
 
 namespace rupture {
+namespace {
+
+// Interface node-update cost over particle-update cost, measured on all ranks (0: no data yet).
+double node_weight(const State& s) {
+  const Halo& h = *s.halo;
+  double m[4] = {s.cohesive_seconds, h.step_seconds - h.exchange_seconds, h.particle_steps, h.node_steps};
+  h.comm.sum(m, 4);
+  const double particle_seconds = m[1] - m[0];
+  if (m[3] <= 0.0 || m[2] <= 0.0 || particle_seconds <= 0.0 || m[0] <= 0.0) return 0.0;
+  return (m[0] / m[3]) / (particle_seconds / m[2]);
+}
+
+// Load units per particle in the lattice count (integers: the bisection counts uint32).
+constexpr double kUnits = 16.0;
+
+}  // namespace
 
 void rebalance_if_needed(State& s) {
   Halo& h = *s.halo;
   const Comm& comm = h.comm;
-  if (!comm.distributed()) return;
+  if (!comm.distributed() || !h.rebalance) return;
   Particles& P = s.particles;
-  const double mine = double(P.size());
+  const double w = node_weight(s);
+  const double mine = double(P.size()) + w * h.owned_nodes;  // particle-updates per step
   const double largest = comm.max(mine), mean = comm.sum(mine) / double(comm.size());
   const double before = mean > 0.0 ? largest / mean - 1.0 : 0.0;
   if (before <= kRebalanceImbalance) return;
   const auto t0 = std::chrono::steady_clock::now();
-  // The particles per cell of the whole lattice (the split's input, as at t = 0).
+  // The load per cell of the whole lattice (the split's input, as at t = 0).
   const int cols = s.grid.x.cells, rows = s.grid.y.cells;
-  std::vector<double> count(std::size_t(cols) * std::size_t(rows), 0.0);
+  auto cell_of = [&](double x, double y) {
+    return std::clamp(s.grid.x.cell_of(x), 0, cols - 1) + std::clamp(s.grid.y.cell_of(y), 0, rows - 1) * cols;
+  };
+  std::vector<double> load(std::size_t(cols) * std::size_t(rows), 0.0);
   std::vector<int> cell(P.size());
   for (std::size_t p = 0; p < P.size(); ++p) {
-    const int c = std::clamp(s.grid.x.cell_of(P.x[p]), 0, cols - 1);
-    const int r = std::clamp(s.grid.y.cell_of(P.y[p]), 0, rows - 1);
-    cell[p] = c + r * cols;
-    count[std::size_t(cell[p])] += 1.0;
+    cell[p] = cell_of(P.x[p], P.y[p]);
+    load[std::size_t(cell[p])] += kUnits;
   }
-  comm.sum(count.data(), int(count.size()));
-  std::vector<std::uint32_t> whole(count.size());
-  for (std::size_t k = 0; k < count.size(); ++k) whole[k] = std::uint32_t(count[k]);
+  for (const CohesiveInterface& c : s.interfaces)
+    for (std::size_t k = 0; k < c.num_nodes(); ++k)
+      if (c.owns(k)) load[std::size_t(cell_of(c.x0[k], c.y0[k]))] += kUnits * w;
+  comm.sum(load.data(), int(load.size()));
+  std::vector<std::uint32_t> whole(load.size());
+  for (std::size_t k = 0; k < load.size(); ++k) whole[k] = std::uint32_t(std::lround(load[k]));
   const Decomposition d = bisect_by_particles(whole, cols, rows, comm.size());
+  // Only a split that gains: load concentrated in one row of cells (an interface along a cut
+  // direction) may not be divisible further by whole cells.
+  if (before - d.imbalance() <= kRebalanceImbalance) {
+    h.rebalance_declined_step = s.step;
+    return;
+  }
+  gather_interface_state(s);  // the new owners of interface nodes need their whole state
   // Each particle to the rank of the block holding its cell.
-  std::vector<int> owner(count.size(), 0);
+  std::vector<int> owner(load.size(), 0);
   for (std::size_t q = 0; q < d.block.size(); ++q) {
     const CellBlock& b = d.block[q];
     for (int r = b.r0; r < b.r1; ++r)
@@ -74,14 +108,15 @@ void rebalance_if_needed(State& s) {
       P.push_packed(rec);
     }
   set_blocks(s, d.block);
+  h.drift = 0.0;  // every particle is inside its new block
   ++h.rebalances;
   const double seconds = comm.max(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   const double moved_all = comm.sum(double(moved));
   h.last_rebalance = fmt::format(
-      "rebalanced at step {}, t = {:.6e} s: particles per rank {:.0f} at most against a mean of "
-      "{:.0f} ({:.1f} % over); new split {:.1f} % over, {:.0f} particles moved in {:.3g} s (the "
-      "re-sort follows)",
-      s.step, s.time, largest, mean, 100.0 * before, 100.0 * d.imbalance(), moved_all, seconds);
+      "rebalanced at step {}, t = {:.6e} s: load per rank {:.0f} at most against a mean of {:.0f} "
+      "particle-updates per step ({:.1f} % over; an interface node counts {:.2f}, measured); new "
+      "split {:.1f} % over, {:.0f} particles moved in {:.3g} s (the re-sort follows)",
+      s.step, s.time, largest, mean, 100.0 * before, w, 100.0 * d.imbalance(), moved_all, seconds);
 }
 
 }  // namespace rupture

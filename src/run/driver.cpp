@@ -188,6 +188,7 @@ RunResult run_case(const Case& c, const RunOptions& options) {
     }
   }
   State& s = ctx.s;
+  if (s.halo) s.halo->rebalance = options.rebalance;
   const long total_particles = sum_over_ranks(s, long(s.particles.size()));
   const long first_step = s.step;  // 0, or the checkpoint's
   RunResult result;

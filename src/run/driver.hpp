@@ -16,7 +16,8 @@
 // energies in history.csv and run.json are sums over the ranks, rank 0 writes every file; a
 // failure on one rank stops all of them with its diagnosis; checkpoints hold a part file per
 // rank and resume on any number of ranks (run/checkpoint_ranks.hpp). Not yet distributed
-// (refused before any work, naming the key): Mach-angle readings on runs with interfaces.
+// (refused before any work, naming the key): nested levels and [loads] velocity regions
+// (parallel/halo.hpp), Mach-angle readings on runs with interfaces.
 #pragma once
 #include <string>
 
@@ -42,6 +43,9 @@ struct RunOptions {
   // The processes running the case together (mpirun -n N: parallel/halo.hpp); rank 0 writes
   // the run directory. Every rank calls run_case with the same case and options.
   Comm comm = Comm::single();
+  // Distributed: re-split when the measured load drifts (parallel/rebalance.cpp); false keeps
+  // the split of t = 0 (results then do not depend on timings, even at round-off).
+  bool rebalance = true;
 };
 
 // How a run ended; the CLI maps it to its exit code.

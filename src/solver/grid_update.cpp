@@ -74,7 +74,7 @@ void apply_absorbing_edges(State& s) {
     const double vx1 = vn1 * a.nx + vt1 * tx, vy1 = vn1 * a.ny + vt1 * ty;
     // The dashpot's impulse m (v - v_free) on a node moving at the step's mean velocity: its
     // (negative) work is external work (E14), as for a prescribed velocity.
-    if (counts_node(s, a.node))  // distributed: a shared node's work counted once, by its owner
+    if (counts_node(s, a.field, a.node))  // distributed: a shared node's work counted once
       s.external_work += m * ((vx1 - G.vel_x[i]) * 0.5 * (vx0 + vx1) +
                               (vy1 - G.vel_y[i]) * 0.5 * (vy0 + vy1));
     G.dvel_x[i] += vx1 - G.vel_x[i], G.dvel_y[i] += vy1 - G.vel_y[i];
@@ -97,7 +97,7 @@ void apply_velocity_bcs(State& s, const std::vector<unsigned char>* only) {
     double& dvel = (e.component == 0 ? G.dvel_x : G.dvel_y)[i];
     // The constraint's impulse m (V^{n+1} - v_free) acts on a node moving at the mean
     // prescribed velocity over the step: its work is the external work of SPEC E14.
-    if (counts_node(s, e.node)) s.external_work += m * (v1 - vel) * 0.5 * (v0 + v1);
+    if (counts_node(s, e.field, e.node)) s.external_work += m * (v1 - vel) * 0.5 * (v0 + v1);
     dvel += v1 - vel;
     vel = v1;
   }

@@ -18,19 +18,24 @@
 namespace rupture {
 namespace {
 // Wall time of the cohesive phases (forces, ties, interface advance), for the run record.
+// Distributed runs count the work only: the exchanges inside (halo increments, interface
+// syncs) are the halo's time (Halo::exchange_seconds), not the cohesive phases'.
 class CohesiveTimer {
  public:
-  explicit CohesiveTimer(State& s) : s_(s), t0_(std::chrono::steady_clock::now()) {}
+  explicit CohesiveTimer(State& s)
+      : s_(s), t0_(std::chrono::steady_clock::now()), exchanged_(exchange_seconds()) {}
   ~CohesiveTimer() {
-    s_.cohesive_seconds +=
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
+    s_.cohesive_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count() -
+                           (exchange_seconds() - exchanged_);
   }
   CohesiveTimer(const CohesiveTimer&) = delete;
   CohesiveTimer& operator=(const CohesiveTimer&) = delete;
 
  private:
+  double exchange_seconds() const { return s_.halo ? s_.halo->exchange_seconds : 0.0; }
   State& s_;
   std::chrono::steady_clock::time_point t0_;
+  double exchanged_;
 };
 
 // After the mass scatter: the bonded stretch becomes one body (shared mass and momentum),
