@@ -130,11 +130,27 @@ void check_distributed_outputs(const Case& c, const RunOptions& o) {
                                  "run it on one process",
                                  what, n));
   };
-  // Mach readings look at the particles around a crack tip (no interface: nothing to read).
-  if (c.output.mach_interval > 0 && !c.interfaces.empty())
-    refuse(fmt::format("output.mach_interval = {:g} (Mach-angle readings, by default every "
-                       "snapshot; set it to 0)",
+  // Mach readings look at the particles around a crack tip (no interface: nothing to read);
+  // left at its default (every snapshot) the key is dropped with a warning (for_ranks).
+  if (c.output.mach_interval > 0 && !c.interfaces.empty() && c.output.mach_interval_given)
+    refuse(fmt::format("output.mach_interval = {:g} (Mach-angle readings; set it to 0)",
                        c.output.mach_interval));
+}
+
+// The case as a distributed run makes it: without the Mach-angle readings the input did not
+// ask for (output.mach_interval defaults to the snapshot interval), said once by rank 0.
+Case for_ranks(const Case& c, const RunOptions& o) {
+  Case out = c;
+  if (o.comm.distributed() && !c.interfaces.empty() && c.output.mach_interval > 0 &&
+      !c.output.mach_interval_given) {
+    out.output.mach_interval = 0.0;
+    if (o.comm.rank() == 0)
+      fmt::print(stderr,
+                 "warning: a distributed run makes no Mach-angle readings yet: output.mach_interval "
+                 "(by default the snapshot interval, {:g} s) is taken as 0\n",
+                 c.output.snapshot_interval);
+  }
+  return out;
 }
 
 // Rank 0 prepares the directory; every rank learns whether it could (InputError on all).
@@ -157,8 +173,9 @@ void prepare_dir(const std::string& dir, const RunOptions& o) {
 
 }  // namespace
 
-RunResult run_case(const Case& c, const RunOptions& options) {
+RunResult run_case(const Case& input, const RunOptions& options) {
   namespace fs = std::filesystem;
+  const Case c = for_ranks(input, options);
   const std::string dir = options.output_dir;
   const Comm& comm = options.comm;
   const bool writer = comm.rank() == 0;  // the rank that writes the run directory
