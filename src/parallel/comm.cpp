@@ -151,10 +151,6 @@ void Comm::all_to_all(const std::vector<std::vector<unsigned char>>& send,
     recv[q].assign(flat_in.begin() + in_at[q], flat_in.begin() + in_at[q] + in[q]);
 }
 
-void Comm::barrier() const {
-  if (size_ > 1) MPI_Barrier(MPI_COMM_WORLD);
-}
-
 void Comm::abort(int code) const {
   if (size_ > 1) MPI_Abort(MPI_COMM_WORLD, code);
   std::exit(code);

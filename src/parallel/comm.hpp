@@ -65,7 +65,6 @@ class Comm {
   // rebalance). Each buffer under 2 GiB.
   void all_to_all(const std::vector<std::vector<unsigned char>>& send,
                   std::vector<std::vector<unsigned char>>& recv) const;
-  void barrier() const;
   // Stops every rank (after a failure that cannot be agreed on in step, e.g. an I/O error on
   // one rank), exit code `code`.
   [[noreturn]] void abort(int code) const;

@@ -90,7 +90,6 @@ struct Halo {
   long migrations = 0;               // migrations so far
   std::vector<BondedTie> all_bonded;  // every tie (s.bonded keeps those of the reach)
   long rebalances = 0;                // new splits since the start
-  long rebalance_declined_step = -1;  // last check whose new split would not have gained
   bool rebalance = true;              // false: keep the split of t = 0 (--no-rebalance)
   // The load each rank measures (parallel/rebalance.cpp): wall time of its steps, s, and the
   // particle-updates and owned interface node-updates they did; owned_nodes: now.

@@ -72,10 +72,7 @@ void rebalance_if_needed(State& s) {
   const Decomposition d = bisect_by_particles(whole, cols, rows, comm.size());
   // Only a split that gains: load concentrated in one row of cells (an interface along a cut
   // direction) may not be divisible further by whole cells.
-  if (before - d.imbalance() <= kRebalanceImbalance) {
-    h.rebalance_declined_step = s.step;
-    return;
-  }
+  if (before - d.imbalance() <= kRebalanceImbalance) return;
   gather_interface_state(s);  // the new owners of interface nodes need their whole state
   // Each particle to the rank of the block holding its cell.
   std::vector<int> owner(load.size(), 0);
