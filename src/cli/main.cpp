@@ -244,16 +244,16 @@ void print_rank_plan(const Case& c, int ranks) {
   const State s = make_state(c);
   const RankPlan plan = plan_ranks(s, ranks);
   fmt::print("ranks={} ({} bisected by particle count{})\n", ranks,
-             plan.levels.size() > 1 ? "each level's cells" : "the grid's cells",
-             plan.levels.size() > 1 ? "; rank r takes block r of every level" : "");
+             plan.levels.size() > 1 ? "level 0's cells" : "the grid's cells",
+             plan.levels.size() > 1 ? " of every level; rank r takes the same rectangle on every level" : "");
   std::vector<std::size_t> particles(std::size_t(ranks), 0);
   std::vector<long> shared(std::size_t(ranks), 0);
   for (std::size_t l = 0; l < plan.levels.size(); ++l) {
     const LevelSplit& L = plan.levels[l];
-    fmt::print("{}{} x {} cells{}, imbalance {:.4f}\n",
+    fmt::print("{}{} x {} cells{}, imbalance {:.4f}, halo {} nodes\n",
                plan.levels.size() > 1 ? fmt::format("level {}: ", l) : std::string("grid: "), L.cols,
                L.rows, L.period > 1 ? fmt::format(", one step every {} finest", L.period) : "",
-               L.split.imbalance());
+               L.split.imbalance(), L.width);
     for (int r = 0; r < ranks; ++r) {
       const CellBlock& b = L.split.block[std::size_t(r)];
       fmt::print("  rank {}: cells [{}, {}) x [{}, {}), particles {}, shared nodes {}\n", r, b.c0,

@@ -613,7 +613,11 @@ void write_checkpoint_part(const std::string& dir, long step, int rank, int rank
 }
 
 void read_checkpoint_parts(const std::string& dir, long step, int ranks, Particles& out) {
-  for (int r = 0; r < ranks; ++r) {
+  read_checkpoint_parts(dir, step, 0, ranks, ranks, out);
+}
+
+void read_checkpoint_parts(const std::string& dir, long step, int first, int count, int ranks, Particles& out) {
+  for (int r = first; r < first + count; ++r) {
     const std::string path = checkpoint_part_path(dir, step, r);
     const std::string bytes = read_all(path);
     Reader in(bytes, path);

@@ -44,6 +44,9 @@ void write_checkpoint_part(const std::string& dir, long step, int rank, int rank
                            const Particles& particles);
 // Appends the particles of every part (0 .. ranks - 1) of the checkpoint at `step` to `out`.
 void read_checkpoint_parts(const std::string& dir, long step, int ranks, Particles& out);
+// Parts first .. first + count - 1 of a checkpoint written in `ranks` parts (nested levels:
+// level l's particles of rank r are part l N + r of L N).
+void read_checkpoint_parts(const std::string& dir, long step, int first, int count, int ranks, Particles& out);
 
 // The same as bytes (tests, and the file functions above).
 std::string checkpoint_bytes(const CaseSource& source, const RunContext& ctx);

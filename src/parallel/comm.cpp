@@ -76,6 +76,11 @@ void Comm::sum(double* v, int n) const {
   check(MPI_Allreduce(MPI_IN_PLACE, v, n, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD), "MPI_Allreduce");
 }
 
+void Comm::max(double* v, int n) const {
+  if (size_ == 1 || n == 0) return;
+  check(MPI_Allreduce(MPI_IN_PLACE, v, n, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD), "MPI_Allreduce");
+}
+
 int Comm::first_with(bool flag) const {
   const int r = all_reduce(size_, flag ? rank_ : INT_MAX, MPI_INT, MPI_MIN);
   return r == INT_MAX ? -1 : r;

@@ -49,6 +49,7 @@ class Comm {
   double max(double v) const;
   double sum(double v) const;
   void sum(double* v, int n) const;  // element-wise, in place
+  void max(double* v, int n) const;  // element-wise, in place
   long sum(long v) const;
   // The lowest rank for which `flag` is true, or -1 when none is.
   int first_with(bool flag) const;

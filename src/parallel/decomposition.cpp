@@ -116,6 +116,13 @@ Decomposition bisect_by_particles(const std::vector<std::uint32_t>& count, int c
   Decomposition d;
   d.block.resize(std::size_t(ranks));
   split(Lattice{count, cols, rows}, CellBlock{0, cols, 0, rows}, 0, ranks, d);
+  return decomposition_of(std::move(d.block), count, cols);
+}
+
+Decomposition decomposition_of(std::vector<CellBlock> blocks, const std::vector<std::uint32_t>& count, int cols) {
+  Decomposition d;
+  d.block = std::move(blocks);
+  const std::size_t ranks = d.block.size();
   d.particles.assign(std::size_t(ranks), 0);
   d.shared_nodes.assign(std::size_t(ranks), 0);
   for (std::size_t k = 0; k < d.block.size(); ++k) {
@@ -127,9 +134,10 @@ Decomposition bisect_by_particles(const std::vector<std::uint32_t>& count, int c
   // A node is shared when it lies in another block as well (on a cut or at a cut's corner).
   for (std::size_t k = 0; k < d.block.size(); ++k) {
     const CellBlock& b = d.block[k];
+    if (b.cells() <= 0) continue;  // no cell (a nested level outside the block)
     std::vector<unsigned char> shared(std::size_t(b.c1 - b.c0 + 1) * std::size_t(b.r1 - b.r0 + 1), 0);
     for (std::size_t j = 0; j < d.block.size(); ++j) {
-      if (j == k || common_nodes(b, d.block[j]) == 0) continue;
+      if (j == k || d.block[j].cells() <= 0 || common_nodes(b, d.block[j]) == 0) continue;
       const CellBlock& o = d.block[j];
       for (int y = std::max(b.r0, o.r0); y <= std::min(b.r1, o.r1); ++y)
         for (int x = std::max(b.c0, o.c0); x <= std::min(b.c1, o.c1); ++x)

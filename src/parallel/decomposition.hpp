@@ -7,8 +7,8 @@
 // proportional to the particle count (the grid work is a few percent: docs/performance.md),
 // so the largest count over the mean predicts the step's imbalance. A rank owns the nodes of
 // its cells; the nodes on a cut are shared with the neighbouring block (its halo: summed
-// after a scatter, copied after a gather). Nested levels split each level's lattice on its own
-// (each level steps at its own rate), rank r taking block r of every level.
+// after a scatter, copied after a gather). Nested levels share one split of level 0's cells
+// (parallel/halo_nested.hpp).
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -36,5 +36,7 @@ struct Decomposition {
 // ranks.
 Decomposition bisect_by_particles(const std::vector<std::uint32_t>& count, int cols, int rows,
                                   int ranks);
+// The particles and shared nodes of given blocks (a nested level's share of a common split).
+Decomposition decomposition_of(std::vector<CellBlock> blocks, const std::vector<std::uint32_t>& count, int cols);
 
 }  // namespace rupture

@@ -9,6 +9,7 @@
 #include <cstring>
 
 #include "core/errors.hpp"
+#include "parallel/halo_nested.hpp"
 #include "parallel/rank_plan.hpp"
 #include "solver/energy.hpp"
 
@@ -104,7 +105,7 @@ void check_distributable(const State& s, int ranks) {
                                  "run it on one process",
                                  what, ranks));
   };
-  if (s.nested) refuse("grid.refinement = \"nested\"");
+  if (s.nested && s.nested->subcycled()) refuse("time.subcycling = \"levels\" (nested levels at their own time steps)");
   // A region's velocity acts on the nodes its particles touch: every copy of such a node
   // would need the other ranks' lists.
   if (!s.loads.spec.velocity_regions.empty()) refuse("[loads] velocity regions");
@@ -123,6 +124,7 @@ void set_blocks(State& s, std::vector<CellBlock> blocks) {
 
 void distribute(State& s, const Comm& comm, bool fresh) {
   check_distributable(s, comm.size());
+  if (s.nested) return distribute_nested(s, comm, fresh);  // parallel/halo_nested.hpp
   auto h = std::make_shared<Halo>();
   h->comm = comm;
   h->cell = std::min(s.grid.x.h, s.grid.y.h);
@@ -271,6 +273,12 @@ bool counts_node(const State& s, int field, std::size_t node) {
   const Halo& h = *s.halo;
   const std::size_t nx = std::size_t(s.grid.nodes_x());
   const int i = int(node % nx), j = int(node / nx);
+  if (h.count_by_block) {  // the rank whose block holds the node (the last cell's far nodes too)
+    const CellBlock& b = h.block();
+    if (b.c0 >= b.c1 || b.r0 >= b.r1) return false;  // no cell of this level in the block
+    const auto in = [](int k, int lo, int hi, int last) { return k >= lo && (k < hi || (hi == last && k == last)); };
+    return in(i, b.c0, b.c1, s.grid.x.cells) && in(j, b.r0, b.r1, s.grid.y.cells);
+  }
   if (!h.reach.contains(i, j)) return false;  // no particle of this rank reaches it
   const long w = long(h.reach.i1 - h.reach.i0 + 1);
   const long n = h.halo_index[std::size_t(long(j - h.reach.j0) * w + long(i - h.reach.i0))];
@@ -287,6 +295,12 @@ void migrate_if_due(State& s) {
     if (s.step % s.plan.sort_interval == 0) rebalance_if_needed(s);  // a crack's load moves too
     return;
   }
+  migrate_particles(s);
+  rebalance_if_needed(s);
+}
+
+void migrate_particles(State& s) {
+  Halo& h = *s.halo;
   Particles& P = s.particles;
   // Destination of each particle that left the block: the peer whose block holds its cell.
   std::vector<unsigned char> leaving(P.size(), 0);
@@ -339,7 +353,6 @@ void migrate_if_due(State& s) {
   h.drift = 0.0;
   ++h.migrations;
   s.plan.valid = false;  // re-sort (and re-measure the windows) before the scatter
-  rebalance_if_needed(s);
 }
 
 void finish_distributed_step(State& s, double drift_at_start) {

@@ -78,6 +78,9 @@ struct Halo {
   std::vector<long> halo_index;  // per node of the reach (row by row): its halo node, or -1
   // Per field and halo node, this step: 1 where this rank is the lowest that gave it mass.
   std::vector<unsigned char> counts_here;
+  // Nested levels (parallel/halo_nested.hpp): a node is counted by the rank whose block holds
+  // it (its fields span the whole lattice, and a DOF may get its mass through the transitions).
+  bool count_by_block = false;
   int halo_nodes = kHaloNodes;  // the reach's width beyond the block, nodes
   // Per interface, per peer: the owned nodes whose state it needs (it knows them), and its
   // owned nodes this rank knows (parallel/halo_interface.cpp).
@@ -176,6 +179,9 @@ bool counts_node(const State& s, int field, std::size_t node);
 // migration, every rank sends the particles that left its block to the block's rank, and
 // marks its particles for a re-sort (collective).
 void migrate_if_due(State& s);
+// The move itself (collective among neighbours): particles that left the block go to their
+// block's rank; the drift bound restarts.
+void migrate_particles(State& s);
 
 // At the end of a step: adds the step's particle drift to the migration bound, and stops every
 // rank together when one failed (its diagnosis, thrown as SimulationError on all ranks).

@@ -9,6 +9,7 @@
 
 #include "core/errors.hpp"
 #include "parallel/halo.hpp"
+#include "parallel/halo_nested.hpp"
 #include "solver/nested_state.hpp"
 
 namespace rupture {
@@ -54,32 +55,44 @@ RankPlan plan_ranks(const State& s, int ranks) {
   if (ranks < 1) throw InputError(fmt::format("--ranks {}: at least 1", ranks));
   RankPlan plan;
   plan.ranks = ranks;
+  const bool cohesive = !s.interfaces.empty();
+  int interface_level = 0;  // the lattice holding the interfaces
   if (s.nested) {
+    // One split of level 0's cells for every level (parallel/halo_nested.hpp).
     const NestedState& n = *s.nested;
-    for (std::size_t l = 0; l < n.levels.size(); ++l)
-      plan.levels.push_back(split_level(n.levels[l], n.period.empty() ? 1 : n.period[l], ranks));
+    const NestedSplit sp = split_nested(n, nested_coarse_count(n), ranks);
+    for (std::size_t l = 0; l < n.levels.size(); ++l) {
+      const State& ls = n.levels[l];
+      LevelSplit L;
+      L.cols = ls.grid.x.cells, L.rows = ls.grid.y.cells;
+      L.period = n.period.empty() ? 1 : n.period[l];
+      L.fields = ls.fields.num_fields;
+      L.width = sp.width[l];
+      L.split = decomposition_of(sp.blocks[l], particles_per_cell(ls), L.cols);
+      plan.levels.push_back(std::move(L));
+    }
+    interface_level = std::max(0, n.interface_level);
   } else {
     plan.levels.push_back(split_level(s, 1, ranks));
+    plan.levels.back().width = cohesive ? kInterfaceHaloNodes : kHaloNodes;
   }
   plan.work.assign(std::size_t(ranks), 0.0);
   plan.exchange_bytes.assign(std::size_t(ranks), 0.0);
-  const bool cohesive = !s.interfaces.empty();
-  const int values = kExchangedValues + (cohesive ? 2 : 0) + (s.loads.has_forces() ? 2 : 0);
-  const int width = cohesive ? kInterfaceHaloNodes : kHaloNodes;
   for (std::size_t l = 0; l < plan.levels.size(); ++l) {
     const LevelSplit& L = plan.levels[l];
     const Grid& g = s.nested ? s.nested->levels[l].grid : s.grid;
+    const bool here = cohesive && int(l) == interface_level;  // the cohesive forces' sum
+    const int values = kExchangedValues + (here ? 2 : 0) + (s.loads.has_forces() ? 2 : 0);
     for (std::size_t r = 0; r < std::size_t(ranks); ++r) {
       plan.work[r] += double(L.split.particles[r]) / double(L.period);
-      const NodeBox mine = reach_box(L.split.block[r], g, width);
+      const NodeBox mine = reach_box(L.split.block[r], g, L.width);
       long halo = 0;  // nodes of this rank's reach in each neighbour's, summed over neighbours
       for (std::size_t q = 0; q < std::size_t(ranks); ++q)
-        if (q != r) halo += overlap(mine, reach_box(L.split.block[q], g, width)).count();
+        if (q != r) halo += overlap(mine, reach_box(L.split.block[q], g, L.width)).count();
       plan.exchange_bytes[r] += 8.0 * values * double(halo) * double(L.fields) / double(L.period);
-      // Interface nodes (finest level): each step the owners send the faces (4 values) and the
-      // stiffness (1) of the nodes their neighbours know.
-      if (cohesive && l + 1 == plan.levels.size())
-        plan.exchange_bytes[r] += 8.0 * 5.0 * double(interface_nodes_sent(s, L.split.block, int(r)));
+      // Interface nodes: each step the owners send the faces (4 values) and the stiffness (1)
+      // of the nodes their neighbours know.
+      if (here) plan.exchange_bytes[r] += 8.0 * 5.0 * double(interface_nodes_sent(s, L.split.block, int(r)));
     }
   }
   return plan;

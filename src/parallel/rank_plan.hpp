@@ -1,7 +1,7 @@
 // rupture/parallel/rank_plan.hpp
 // A run's split between N processes, from its State at t = 0 (parallel/decomposition.hpp):
-// each lattice's cells (the grid's, or each nested level's) bisected by particle count, and
-// the work each rank would get. With per-level time steps a level steps once every period[l]
+// the grid's cells bisected by particle count (nested levels: level 0's cells by every level's
+// particles, one split for all: parallel/halo_nested.hpp), and the work each rank would get. With per-level time steps a level steps once every period[l]
 // finest steps, so a rank's work is sum over levels of its particles / period. `rupture check
 // --ranks N` prints it.
 #pragma once
@@ -16,6 +16,7 @@ struct LevelSplit {
   int cols = 0, rows = 0;  // the lattice's cells (ghost cells included)
   int period = 1;          // finest steps per step of this level
   int fields = 1;          // velocity fields of the level
+  int width = 0;           // its reach beyond a block, nodes (parallel/halo.hpp)
   Decomposition split;
 };
 

@@ -10,6 +10,7 @@
 #include "core/errors.hpp"
 #include "io/checkpoint.hpp"
 #include "parallel/halo.hpp"
+#include "solver/nested_state.hpp"
 
 namespace rupture {
 namespace {
@@ -22,40 +23,67 @@ void agree(const Comm& comm, const std::string& failure) {
   throw IoError(comm.broadcast(failure, failed));
 }
 
+// The States whose particles and sums a checkpoint stores: the nested levels, or s itself.
+std::vector<State*> parts_of(State& s) {
+  std::vector<State*> out;
+  if (s.nested)
+    for (State& l : s.nested->levels) out.push_back(&l);
+  else
+    out.push_back(&s);
+  return out;
+}
+
 }  // namespace
 
 void write_checkpoint_ranks(const std::string& dir, const CaseSource& source, RunContext& ctx,
                             const Comm& comm) {
   State& s = ctx.s;
   gather_interface_state(s);  // every node from its owner
+  const std::vector<State*> held = parts_of(s);
+  const int n = comm.size(), parts = int(held.size()) * n;
   std::vector<double> sums{s.strain_work, s.external_work};
+  for (const State* l : held) sums.push_back(l->strain_work), sums.push_back(l->external_work);
   for (const CohesiveInterface& c : s.interfaces) sums.push_back(c.work);
   comm.sum(sums.data(), int(sums.size()));
   std::string failure;
-  try {
-    write_checkpoint_part(dir, s.step, comm.rank(), comm.size(), s.particles);
+  try {  // part l N + r: level l's particles of rank r (one level but for nested runs)
+    for (std::size_t l = 0; l < held.size(); ++l)
+      write_checkpoint_part(dir, s.step, int(l) * n + comm.rank(), parts, held[l]->particles);
   } catch (const std::exception& e) {
     failure = e.what();
   }
   agree(comm, failure);  // every part is in place before checkpoint.bin names them
   if (comm.rank() == 0) {
     // The run's sums and no particles (they are in the parts), then this rank's own back.
-    Particles mine;
-    std::swap(mine, s.particles);
-    const double strain = s.strain_work, external = s.external_work;
+    const std::size_t L = held.size();
+    std::vector<Particles> mine(L);
+    std::vector<double> own(2 * L + 2);
+    own[0] = s.strain_work, own[1] = s.external_work;
+    for (std::size_t l = 0; l < L; ++l) {
+      std::swap(mine[l], held[l]->particles);
+      own[2 + 2 * l] = held[l]->strain_work, own[3 + 2 * l] = held[l]->external_work;
+      held[l]->particle_parts = n;
+    }
     std::vector<double> work;
     for (CohesiveInterface& c : s.interfaces) work.push_back(c.work);
-    s.strain_work = sums[0], s.external_work = sums[1];
-    for (std::size_t k = 0; k < s.interfaces.size(); ++k) s.interfaces[k].work = sums[2 + k];
-    s.particle_parts = comm.size();
+    const auto set = [&](const std::vector<double>& v) {  // run's and each part's sums
+      s.strain_work = v[0], s.external_work = v[1];
+      for (std::size_t l = 0; l < L; ++l) held[l]->strain_work = v[2 + 2 * l], held[l]->external_work = v[3 + 2 * l];
+    };
+    set(sums);
+    for (std::size_t k = 0; k < s.interfaces.size(); ++k) s.interfaces[k].work = sums[2 + 2 * L + k];
+    if (s.nested) s.particle_parts = n;
     try {
       write_checkpoint(dir, source, ctx);
     } catch (const std::exception& e) {
       failure = e.what();
     }
     s.particle_parts = 0;
-    std::swap(mine, s.particles);
-    s.strain_work = strain, s.external_work = external;
+    for (std::size_t l = 0; l < L; ++l) {
+      held[l]->particle_parts = 0;
+      std::swap(mine[l], held[l]->particles);
+    }
+    set(own);
     for (std::size_t k = 0; k < s.interfaces.size(); ++k) s.interfaces[k].work = work[k];
     if (failure.empty()) {  // the parts of earlier checkpoints are no longer referred to
       const std::string keep = fmt::format("particles_{}_", s.step);
@@ -72,12 +100,20 @@ void write_checkpoint_ranks(const std::string& dir, const CaseSource& source, Ru
 void read_checkpoint_particles(const std::string& dir, RunContext& ctx) {
   State& s = ctx.s;
   if (s.particle_parts == 0) return;
-  Particles all;
-  read_checkpoint_parts(dir, s.step, s.particle_parts, all);
-  s.particles = std::move(all);
+  const std::vector<State*> held = parts_of(s);
+  const int n = s.particle_parts, parts = int(held.size()) * n;
+  for (std::size_t l = 0; l < held.size(); ++l) {
+    State& p = *held[l];
+    Particles all;
+    read_checkpoint_parts(dir, s.step, int(l) * n, n, parts, all);
+    p.particles = std::move(all);
+    p.particle_parts = 0;
+    p.plan.valid = false;  // re-sort: the stored plan was rank 0's
+    p.windows_checked_step = -2;
+  }
   s.particle_parts = 0;
-  s.plan.valid = false;  // re-sort: the stored plan was rank 0's
-  s.windows_checked_step = -2;
+  s.particles_step = -1;  // nested: the levels' particles merged anew
+  gather_particles(s);
 }
 
 }  // namespace rupture

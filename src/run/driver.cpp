@@ -34,6 +34,16 @@
 namespace rupture {
 namespace {
 
+// The States that step (and hold a halo when distributed): the nested levels, or s itself.
+std::vector<const State*> level_states(const State& s) {
+  std::vector<const State*> out;
+  if (s.nested)
+    for (const State& l : s.nested->levels) out.push_back(&l);
+  else
+    out.push_back(&s);
+  return out;
+}
+
 EnergySample sample(State& s) {
   // Distributed: the sums over particles and owned nodes, added over the ranks; every
   // interface node's state from its owner.
@@ -205,7 +215,7 @@ RunResult run_case(const Case& input, const RunOptions& options) {
     }
   }
   State& s = ctx.s;
-  if (s.halo) s.halo->rebalance = options.rebalance;
+  if (s.halo && !s.nested) s.halo->rebalance = options.rebalance;  // nested: one split (halo_nested)
   const long total_particles = sum_over_ranks(s, long(s.particles.size()));
   const long first_step = s.step;  // 0, or the checkpoint's
   RunResult result;
@@ -496,8 +506,10 @@ RunResult run_case(const Case& input, const RunOptions& options) {
   if (s.halo) {
     result.migrations = s.halo->migrations;
     const long steps = std::max(1L, s.step - first_step);  // this process's steps
-    result.exchange_bytes_per_step = comm.sum(s.halo->bytes_sent) / double(comm.size()) / double(steps);
-    result.exchange_seconds = comm.max(s.halo->exchange_seconds);
+    double bytes = 0.0, seconds = 0.0;  // nested levels: every level's halo
+    for (const State* l : level_states(s)) bytes += l->halo->bytes_sent, seconds += l->halo->exchange_seconds;
+    result.exchange_bytes_per_step = comm.sum(bytes) / double(comm.size()) / double(steps);
+    result.exchange_seconds = comm.max(seconds);
   }
   gather_interface_state(s);  // distributed: every node from its owner
   for (std::size_t k = 0; k < cracks.size(); ++k) {

@@ -410,7 +410,8 @@ void states_to_particles(State* const* states, std::size_t count, NodalArray gx,
     // |dx| + |dy| >= the distance moved (solver/field_windows: a bound on how far any particle
     // has gone since its window was measured).
     if (move) {
-      s.window_drift += s.dt * fastest;
+      s.last_move = s.dt * fastest;
+      s.window_drift += s.last_move;
       s.plan.drift += s.dt * fastest;
     }
     if (bad != kNone) {

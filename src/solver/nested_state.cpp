@@ -9,6 +9,8 @@
 #include <stdexcept>
 
 #include "core/errors.hpp"
+#include "parallel/halo.hpp"
+#include "parallel/halo_nested.hpp"
 #include "solver/cohesive_step.hpp"
 #include "solver/field_windows.hpp"
 #include "solver/grid_update.hpp"
@@ -138,6 +140,16 @@ void migrate(NestedState& n) {
     }
     arriving[d].move_marked(std::vector<unsigned char>(arriving[d].size(), 1), s.particles);
     s.plan.valid = false;
+  }
+}
+
+// migrate, distributed: a broken contract on one rank stops every rank at the end of the step.
+void migrate_levels(NestedState& n) {
+  if (!n.levels[0].halo) return migrate(n);
+  try {
+    migrate(n);
+  } catch (const SimulationError& e) {
+    if (n.levels[0].halo->failure.empty()) n.levels[0].halo->failure = e.what();
   }
 }
 
@@ -433,9 +445,10 @@ void step(NestedState& n) {
   for (const State& s : n.levels) drift = std::max(drift, s.window_drift);
   const double due = (subcycled ? kSubcycleDrift : 1.0) * kMigrateDrift * n.levels.back().grid.x.h;
   if (all_begin && (n.step == 0 || drift >= due)) {
-    migrate(n);
+    migrate_levels(n);
     for (State& s : n.levels) s.window_drift = 0.0;
   }
+  nested_migrate_ranks_if_due(n);  // distributed: particles that left the rank's block
   for (std::size_t l = 0; l < n.levels.size(); ++l) {
     State& s = n.levels[l];
     if (!subcycled || n.substep % n.period[l] == 0) {  // the particles have moved since
@@ -444,6 +457,7 @@ void step(NestedState& n) {
     }
     follow_edges(s, n.base_lines[l]);
   }
+  const NestedDrift before = nested_drift_before(n);
   if (subcycled)
     step_subcycled(n);
   else
@@ -469,6 +483,7 @@ void step(NestedState& n) {
   }
   n.time += n.dt;
   ++n.step;
+  nested_finish_step(n, before);  // distributed: drift bounds over the ranks; a failure stops all
 }
 
 }  // namespace rupture

@@ -7,6 +7,8 @@
 #include <initializer_list>
 #include <stdexcept>
 
+#include "core/errors.hpp"
+#include "parallel/halo.hpp"
 #include "solver/cohesive_step.hpp"
 #include "solver/grid_update.hpp"
 #include "solver/nested_phases.hpp"
@@ -102,15 +104,34 @@ void each_level(NestedState& n, Phase&& phase) {
   for (State& s : n.levels) phase(s);
 }
 
-// One dt for every level: the smallest of their limits (SPEC E6).
+// One dt for every level: the smallest of their limits (SPEC E6), over every rank.
 void common_time_step(NestedState& n) {
   double dt = INFINITY;
   each_level(n, [&](State& s) {
     choose_time_step(s);
     dt = std::min(dt, s.dt);
   });
+  if (n.levels[0].halo) dt = n.levels[0].halo->comm.min(dt);
   each_level(n, [&](State& s) { s.dt = dt; });
   n.dt = dt;
+}
+
+// Distributed runs (parallel/halo_nested.hpp): each level's shared nodes summed over the ranks
+// that reach them, before the transitions combine the levels.
+void sum_levels(NestedState& n, std::initializer_list<NodalArray> arrays) {
+  each_level(n, [&](State& s) { halo_sum(s, arrays); });
+}
+
+// A gather that may find a bad particle; distributed, the diagnosis waits for the end of the
+// step (parallel/halo_nested.hpp: nested_finish_step).
+template <class Gather>
+void gather_levels(NestedState& n, Gather&& g) {
+  if (!n.levels[0].halo) return g();
+  try {
+    g();
+  } catch (const SimulationError& e) {
+    if (n.levels[0].halo->failure.empty()) n.levels[0].halo->failure = e.what();
+  }
 }
 
 }  // namespace
@@ -118,13 +139,19 @@ void common_time_step(NestedState& n) {
 void tie_and_face_stencils(NestedState& n) {
   each_level(n, [](State& s) {
     tie_bonded_nodes(s, TieWhat::mass_momentum);
-    if (!s.interfaces.empty()) update_face_stencils(s);
+    if (s.interfaces.empty()) return;
+    update_face_stencils(s);
+    check_faces_in_reach(s);  // distributed: faces within this rank's halo
   });
 }
 
 void cohesive_forces_and_ties(NestedState& n) {
   each_level(n, [](State& s) {
-    if (!s.interfaces.empty()) add_cohesive_forces(s);  // E7-E9
+    if (!s.interfaces.empty()) {
+      halo_save(s, {&GridFields::force_x, &GridFields::force_y});
+      add_cohesive_forces(s);  // E7-E9 (distributed: the owned faces', summed over the ranks)
+      halo_sum_added(s, {&GridFields::force_x, &GridFields::force_y});
+    }
     tie_bonded_nodes(s, TieWhat::force);
   });
 }
@@ -140,6 +167,8 @@ std::vector<State*>& level_pointers(NestedState& n) {
 void step_musl(NestedState& n) {
   std::vector<State*>& all = level_pointers(n);
   particles_to_grid(all.data(), all.size(), true);  // E4
+  sum_levels(n, {&GridFields::mass, &GridFields::mom_x, &GridFields::mom_y, &GridFields::force_x,
+                 &GridFields::force_y});
   condense_fields(n, {&GridFields::mass, &GridFields::mom_x, &GridFields::mom_y,
                       &GridFields::force_x, &GridFields::force_y});
   tie_and_face_stencils(n);                                      // bonded, faces
@@ -148,17 +177,22 @@ void step_musl(NestedState& n) {
   each_level(n, [](State& s) { integrate_grid(s); });            // E4 + E2 velocity BCs
   distribute_fields(n, {&GridFields::vel_x, &GridFields::vel_y, &GridFields::dvel_x, &GridFields::dvel_y});
   update_particle_velocity_and_remap(all.data(), all.size());
+  sum_levels(n, {&GridFields::remap_x, &GridFields::remap_y});
   condense_fields(n, {&GridFields::remap_x, &GridFields::remap_y});
   each_level(n, [](State& s) { tie_bonded_nodes(s, TieWhat::remapped_momentum); });
   each_level(n, [](State& s) { remapped_grid_velocity(s); });    // + E2 at t^{n+1}
   distribute_fields(n, {&GridFields::remap_x, &GridFields::remap_y});
-  grid_to_particles(all.data(), all.size(), &GridFields::remap_x, &GridFields::remap_y,
-                    G2PMode::stress_and_move);  // E5
+  gather_levels(n, [&] {
+    grid_to_particles(all.data(), all.size(), &GridFields::remap_x, &GridFields::remap_y,
+                      G2PMode::stress_and_move);  // E5
+  });
 }
 
 void step_usl(NestedState& n) {
   std::vector<State*>& all = level_pointers(n);
   particles_to_grid(all.data(), all.size(), true);
+  sum_levels(n, {&GridFields::mass, &GridFields::mom_x, &GridFields::mom_y, &GridFields::force_x,
+                 &GridFields::force_y});
   condense_fields(n, {&GridFields::mass, &GridFields::mom_x, &GridFields::mom_y,
                       &GridFields::force_x, &GridFields::force_y});
   tie_and_face_stencils(n);
@@ -166,25 +200,29 @@ void step_usl(NestedState& n) {
   cohesive_forces_and_ties(n);
   each_level(n, [](State& s) { integrate_grid(s); });
   distribute_fields(n, {&GridFields::vel_x, &GridFields::vel_y, &GridFields::dvel_x, &GridFields::dvel_y});
-  grid_to_particles(all.data(), all.size(), &GridFields::vel_x, &GridFields::vel_y,
-                    G2PMode::stress_velocity_and_move);
+  gather_levels(n, [&] {
+    grid_to_particles(all.data(), all.size(), &GridFields::vel_x, &GridFields::vel_y,
+                      G2PMode::stress_velocity_and_move);
+  });
 }
 
 void step_usf(NestedState& n) {
   each_level(n, [](State& s) { particles_to_grid(s, false); });
+  sum_levels(n, {&GridFields::mass, &GridFields::mom_x, &GridFields::mom_y});
   condense_fields(n, {&GridFields::mass, &GridFields::mom_x, &GridFields::mom_y});
   common_time_step(n);
   each_level(n, [](State& s) { grid_velocity_from_momentum(s, s.time); });
   distribute_fields(n, {&GridFields::remap_x, &GridFields::remap_y});
-  each_level(n, [](State& s) {
-    grid_to_particles(s, &GridFields::remap_x, &GridFields::remap_y, G2PMode::stress_only);
-    particles_to_grid_force(s);
+  gather_levels(n, [&] {
+    each_level(n, [](State& s) { grid_to_particles(s, &GridFields::remap_x, &GridFields::remap_y, G2PMode::stress_only); });
   });
+  each_level(n, [](State& s) { particles_to_grid_force(s); });
+  sum_levels(n, {&GridFields::force_x, &GridFields::force_y});
   condense_fields(n, {&GridFields::force_x, &GridFields::force_y});
   each_level(n, [](State& s) { integrate_grid(s); });
   distribute_fields(n, {&GridFields::vel_x, &GridFields::vel_y, &GridFields::dvel_x, &GridFields::dvel_y});
-  each_level(n, [](State& s) {
-    grid_to_particles(s, &GridFields::vel_x, &GridFields::vel_y, G2PMode::velocity_and_move);
+  gather_levels(n, [&] {
+    each_level(n, [](State& s) { grid_to_particles(s, &GridFields::vel_x, &GridFields::vel_y, G2PMode::velocity_and_move); });
   });
 }
 

@@ -141,6 +141,8 @@ struct State {
   long windows_checked_step = -2;  // step of the last fit_field_windows
   long window_fits = 0;            // re-fits (re-allocations) so far
   double window_drift = 0.0;       // bound on any particle's move since the last measure, m
+  double last_move = 0.0;          // the last particle move's bound, dt max |v|, m (distributed
+                                   // nested levels reduce it over the ranks)
   bool whole_grid_fields = false;  // tests: every field over the whole grid (same results)
 
   // grid.refinement = "nested" (solver/nested_state.hpp): the levels do the stepping; this

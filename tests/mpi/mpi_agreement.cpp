@@ -31,6 +31,7 @@
 #include "io/case_toml.hpp"
 #include "parallel/comm.hpp"
 #include "parallel/halo.hpp"
+#include "solver/nested_state.hpp"
 #include "solver/state.hpp"
 #include "solver/step.hpp"
 
@@ -41,6 +42,7 @@ namespace {
 void advance(State& s, long steps) {
   s.dt_cap = INFINITY;
   for (long k = 0; k < steps; ++k) step(s);
+  gather_particles(s);  // nested levels: every level's particles, merged
 }
 
 // Every rank's particles, packed, on rank 0 (empty elsewhere). A test helper: a run never

@@ -1,0 +1,196 @@
+// rupture/parallel/halo_nested.cpp
+#include "parallel/halo_nested.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "core/errors.hpp"
+#include "parallel/halo.hpp"
+#include "solver/energy.hpp"
+
+namespace rupture {
+
+std::vector<std::uint32_t> nested_coarse_count(const NestedState& n) {
+  const Grid& g = n.levels[0].grid;
+  const int cols = g.x.cells, rows = g.y.cells;
+  std::vector<std::uint32_t> count(std::size_t(cols) * std::size_t(rows), 0);
+  for (const State& s : n.levels) {
+    const Particles& P = s.particles;
+    for (std::size_t p = 0; p < P.size(); ++p) {
+      const int c = std::clamp(g.x.cell_of(P.x[p]), 0, cols - 1);
+      const int r = std::clamp(g.y.cell_of(P.y[p]), 0, rows - 1);
+      ++count[std::size_t(c) + std::size_t(r) * std::size_t(cols)];
+    }
+  }
+  return count;
+}
+
+CellBlock level_block(const NestedGrid& g, int l, const CellBlock& coarse) {
+  const Level& C = g.levels[0];
+  const Level& L = g.levels[std::size_t(l)];
+  // Coarse line k lies at C.node0 + k C.unit finest units, a whole number of level l's cells
+  // from its first line.
+  const auto map = [&](int k, int d, int cells) {
+    const long u = C.node0[d] + long(k) * C.unit - L.node0[d];
+    const long q = u >= 0 ? u / L.unit : -((-u) / L.unit);
+    return int(std::clamp(q, 0L, long(cells)));
+  };
+  return CellBlock{map(coarse.c0, 0, L.x.cells), map(coarse.c1, 0, L.x.cells), map(coarse.r0, 1, L.y.cells),
+                   map(coarse.r1, 1, L.y.cells)};
+}
+
+std::vector<int> nested_reach_widths(const NestedState& n, const std::vector<std::vector<CellBlock>>& blocks,
+                                     const std::vector<int>& base) {
+  const std::size_t levels = n.levels.size();
+  std::vector<int> width = base;
+  // The DOF index (into NestedState::dof_level) of each (level, node) with condensed terms.
+  std::vector<std::vector<int>> dof_of(levels);
+  for (std::size_t l = 0; l < levels; ++l) dof_of[l].assign(n.levels[l].grid.num_nodes(), -1);
+  for (std::size_t d = 0; d < n.dof_level.size(); ++d) dof_of[n.dof_level[d]][n.dof_node[d]] = int(d);
+  const std::size_t ranks = blocks[0].size();
+  for (std::size_t r = 0; r < ranks; ++r) {
+    std::vector<NodeBox> touched(levels), need(levels);
+    for (std::size_t l = 0; l < levels; ++l)
+      touched[l] = need[l] = reach_box(blocks[l][r], n.levels[l].grid, base[l]);
+    const auto add = [&](std::size_t l, std::uint32_t node) {
+      const int nx = n.levels[l].grid.nodes_x(), i = int(node % std::uint32_t(nx)), j = int(node / std::uint32_t(nx));
+      NodeBox& b = need[l];
+      if (b.empty()) {
+        b = NodeBox{i, i, j, j};
+        return;
+      }
+      b.i0 = std::min(b.i0, i), b.i1 = std::max(b.i1, i), b.j0 = std::min(b.j0, j), b.j1 = std::max(b.j1, j);
+    };
+    const auto add_slaves_of = [&](std::size_t l, std::uint32_t node) {
+      const int d = dof_of[l][node];
+      if (d < 0) return;
+      for (std::uint32_t j = n.dof_start[std::size_t(d)]; j < n.dof_start[std::size_t(d) + 1]; ++j)
+        add(n.slave_level[n.dof_slave[j]], n.slave_node[n.dof_slave[j]]);
+    };
+    const auto touches = [&](std::size_t l, std::uint32_t node) {
+      const int nx = n.levels[l].grid.nodes_x();
+      return touched[l].contains(int(node % std::uint32_t(nx)), int(node / std::uint32_t(nx)));
+    };
+    for (const std::uint32_t k : n.active_slaves) {
+      if (!touches(n.slave_level[k], n.slave_node[k])) continue;
+      for (std::uint32_t t = n.grid.term_start[k]; t < n.grid.term_start[k + 1]; ++t) {
+        add(n.term_level[t], n.term_node[t]);
+        add_slaves_of(n.term_level[t], n.term_node[t]);
+      }
+    }
+    for (std::size_t d = 0; d < n.dof_level.size(); ++d)
+      if (touches(n.dof_level[d], n.dof_node[d])) add_slaves_of(n.dof_level[d], n.dof_node[d]);
+    for (std::size_t l = 0; l < levels; ++l) {
+      const CellBlock& b = blocks[l][r];
+      const NodeBox& e = need[l];
+      if (e.empty()) continue;
+      width[l] = std::max({width[l], b.c0 - e.i0, e.i1 - b.c1, b.r0 - e.j0, e.j1 - b.r1});
+    }
+  }
+  return width;
+}
+
+NestedSplit split_nested(const NestedState& n, const std::vector<std::uint32_t>& count, int ranks) {
+  NestedSplit sp;
+  const Grid& g0 = n.levels[0].grid;
+  try {
+    sp.coarse = bisect_by_particles(count, g0.x.cells, g0.y.cells, ranks);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(fmt::format("--ranks {}: nested level 0 (the coarse cells): {}", ranks, e.what()));
+  }
+  const std::size_t levels = n.levels.size();
+  sp.blocks.assign(levels, {});
+  std::vector<int> base(levels, kHaloNodes);
+  for (std::size_t l = 0; l < levels; ++l) {
+    for (const CellBlock& b : sp.coarse.block) sp.blocks[l].push_back(level_block(n.grid, int(l), b));
+    if (int(l) == n.interface_level) base[l] = kInterfaceHaloNodes;
+  }
+  sp.width = nested_reach_widths(n, sp.blocks, base);
+  return sp;
+}
+
+void distribute_nested(State& s, const Comm& comm, bool fresh) {
+  NestedState& n = *s.nested;
+  const NestedSplit sp = split_nested(n, nested_coarse_count(n), comm.size());
+  const int il = n.interface_level;
+  const double finest = n.levels.back().grid.x.h;
+  for (std::size_t l = 0; l < n.levels.size(); ++l) {
+    State& L = n.levels[l];
+    auto h = std::make_shared<Halo>();
+    h->comm = comm;
+    h->cell = finest;  // particles change level on the spot: one drift bound for all levels
+    h->halo_nodes = sp.width[l];
+    h->all_bonded = L.bonded;
+    h->count_by_block = true;
+    h->rebalance = false;  // the levels share one split (a rebalance would move all of them)
+    L.halo = h;
+    if (int(l) == il) L.interfaces.swap(s.interfaces);  // the level's, lent for the split
+    set_blocks(L, sp.blocks[l]);
+    if (int(l) == il) L.interfaces.swap(s.interfaces);
+    // Keep this rank's particles (every rank made or read the same state).
+    Particles& P = L.particles;
+    std::vector<unsigned char> away(P.size(), 0);
+    for (std::size_t p = 0; p < P.size(); ++p) {
+      const int c = std::clamp(L.grid.x.cell_of(P.x[p]), 0, L.grid.x.cells - 1);
+      const int r = std::clamp(L.grid.y.cell_of(P.y[p]), 0, L.grid.y.cells - 1);
+      away[p] = !h->owns_cell(c, r);
+    }
+    Particles others;
+    P.move_marked(away, others);
+    // E14 as in distribute: this rank's parts of the run's sums.
+    if (fresh)
+      L.strain_work = strain_energy(P, L.stiffness);
+    else if (comm.rank() > 0)
+      L.strain_work = L.external_work = 0.0;
+  }
+  if (!fresh && comm.rank() > 0)
+    for (CohesiveInterface& c : s.interfaces) c.work = 0.0;
+  s.halo = n.levels[std::size_t(il >= 0 ? il : int(n.levels.size()) - 1)].halo;
+  s.strain_work = s.external_work = 0.0;
+  for (const State& L : n.levels) s.strain_work += L.strain_work, s.external_work += L.external_work;
+  s.particles_step = -1;  // re-merge this rank's particles
+  gather_particles(s);
+}
+
+void nested_migrate_ranks_if_due(NestedState& n) {
+  if (!n.levels[0].halo) return;
+  const Halo& h = *n.levels[0].halo;
+  if (h.drift < kMigrateCells * h.cell) return;  // the same bound on every rank and level
+  for (State& s : n.levels) migrate_particles(s);
+}
+
+NestedDrift nested_drift_before(const NestedState& n) {
+  NestedDrift d;
+  for (const State& s : n.levels) d.window_drift.push_back(s.window_drift);
+  return d;
+}
+
+void nested_finish_step(NestedState& n, const NestedDrift& before) {
+  if (!n.levels[0].halo) return;
+  const Comm& comm = n.levels[0].halo->comm;
+  std::vector<double> move;
+  for (const State& s : n.levels) move.push_back(s.last_move);
+  comm.max(move.data(), int(move.size()));
+  double largest = 0.0;
+  for (std::size_t l = 0; l < n.levels.size(); ++l) {
+    n.levels[l].window_drift = before.window_drift[l] + move[l];
+    largest = std::max(largest, move[l]);
+  }
+  std::string failure;
+  for (State& s : n.levels) {
+    s.halo->drift += largest;
+    if (failure.empty()) failure = s.halo->failure;
+    s.halo->failure.clear();
+  }
+  const int failed = comm.first_with(!failure.empty());
+  if (failed < 0) return;
+  const std::string what = comm.broadcast(failure, failed);
+  throw SimulationError(comm.size() > 1 ? fmt::format("{} (rank {})", what, failed) : what);
+}
+
+}  // namespace rupture
