@@ -1,0 +1,122 @@
+// Tests for parallel/halo_nested.hpp on one process (the multi-process runs: tests/mpi/, label
+// mpi): the common split's blocks tile every level's lattice and are the same rectangle of the
+// plate on every level, and the widened reaches close the transitions: a rank holding only its
+// reaches' values (random, every node) condenses and distributes to the one-process values at
+// every node its particles may touch, which the unwidened reaches do not.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "io/case_toml.hpp"
+#include "parallel/halo.hpp"
+#include "parallel/halo_nested.hpp"
+#include "solver/step.hpp"
+
+using namespace rupture;
+
+namespace {
+
+// The reference problem on nested levels 0-2 (finest 0.5 mm), the plate cropped as the mpi
+// agreement test's.
+State nested_reference() {
+  return make_state(load_case(std::string(RUPTURE_SOURCE_DIR) + "/examples/rosakis1999.toml",
+                              {"grid.refinement=\"nested\"", "grid.min=[0.0,-0.06]", "grid.max=[0.125,0.04]",
+                               "bodies.upper.max=[0.125,0.04]", "bodies.lower.min=[0.0,-0.06]"}));
+}
+
+// Node (i, j) of level l as a global node id of the nested grid.
+std::size_t global_id(const NestedState& n, std::size_t l, int i, int j) {
+  return n.grid.level_start[l] + n.grid.levels[l].node_index(i, j);
+}
+
+// Every (level, rank): nodes of the touched box (block and `base`) where the one-process
+// condense + distribute and the rank's (its reaches of `width` only) differ.
+long mismatches(const NestedState& n, const NestedSplit& sp, const std::vector<int>& base,
+                const std::vector<int>& width) {
+  const std::size_t levels = n.levels.size(), N = n.grid.num_nodes();
+  std::vector<unsigned char> inactive(N, 0);  // covered slaves no particle reaches: zero
+  for (const std::uint32_t s : n.grid.slaves) inactive[s] = 1;
+  for (const std::uint32_t k : n.active_slaves) inactive[n.grid.slaves[k]] = 0;
+  std::mt19937_64 rng(12345);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<double> v(N);
+  for (std::size_t g = 0; g < N; ++g) v[g] = inactive[g] ? 0.0 : u(rng);
+  std::vector<double> ref = v;
+  condense(n.grid, ref.data());
+  distribute(n.grid, ref.data());
+  long bad = 0;
+  for (std::size_t r = 0; r < sp.coarse.block.size(); ++r) {
+    std::vector<double> mine(N, 0.0);
+    for (std::size_t l = 0; l < levels; ++l) {
+      const NodeBox b = reach_box(sp.blocks[l][r], n.levels[l].grid, width[l]);
+      for (int j = b.j0; j <= b.j1; ++j)
+        for (int i = b.i0; i <= b.i1; ++i) mine[global_id(n, l, i, j)] = v[global_id(n, l, i, j)];
+    }
+    condense(n.grid, mine.data());
+    distribute(n.grid, mine.data());
+    for (std::size_t l = 0; l < levels; ++l) {
+      const NodeBox t = reach_box(sp.blocks[l][r], n.levels[l].grid, base[l]);
+      for (int j = t.j0; j <= t.j1; ++j)
+        for (int i = t.i0; i <= t.i1; ++i) {
+          const std::size_t g = global_id(n, l, i, j);
+          bad += !inactive[g] && mine[g] != ref[g];
+        }
+    }
+  }
+  return bad;
+}
+
+}  // namespace
+
+TEST(HaloNested, every_level_is_tiled_by_the_same_rectangles_of_the_plate) {
+  const State s = nested_reference();
+  const NestedState& n = *s.nested;
+  ASSERT_EQ(n.levels.size(), 3u);
+  for (int ranks : {1, 2, 3, 4, 7}) {
+    const NestedSplit sp = split_nested(n, nested_coarse_count(n), ranks);
+    const Grid& g0 = n.levels[0].grid;
+    for (std::size_t l = 0; l < n.levels.size(); ++l) {
+      const Grid& g = n.levels[l].grid;
+      std::vector<int> owners(std::size_t(g.x.cells) * std::size_t(g.y.cells), 0);
+      for (int r = 0; r < ranks; ++r) {
+        const CellBlock& b = sp.blocks[l][std::size_t(r)];
+        const CellBlock& c = sp.coarse.block[std::size_t(r)];
+        for (int y = b.r0; y < b.r1; ++y)
+          for (int x = b.c0; x < b.c1; ++x) ++owners[std::size_t(x) + std::size_t(y) * std::size_t(g.x.cells)];
+        if (b.cells() == 0) continue;
+        // The block's sides are the coarse block's, where the level's lattice reaches them.
+        const double tol = 1e-12;
+        if (b.c0 > 0) {
+          EXPECT_NEAR(g.x.node(b.c0), g0.x.node(c.c0), tol);
+        }
+        if (b.c1 < g.x.cells) {
+          EXPECT_NEAR(g.x.node(b.c1), g0.x.node(c.c1), tol);
+        }
+        if (b.r0 > 0) {
+          EXPECT_NEAR(g.y.node(b.r0), g0.y.node(c.r0), tol);
+        }
+        if (b.r1 < g.y.cells) {
+          EXPECT_NEAR(g.y.node(b.r1), g0.y.node(c.r1), tol);
+        }
+      }
+      for (const int o : owners) ASSERT_EQ(o, 1) << "level " << l << ", " << ranks << " ranks";
+    }
+  }
+}
+
+TEST(HaloNested, widened_reaches_give_the_one_process_transitions_at_every_touched_node) {
+  const State s = nested_reference();
+  const NestedState& n = *s.nested;
+  for (int ranks : {2, 3, 4}) {
+    const NestedSplit sp = split_nested(n, nested_coarse_count(n), ranks);
+    std::vector<int> base(n.levels.size(), kHaloNodes);
+    base[std::size_t(n.interface_level)] = kInterfaceHaloNodes;
+    EXPECT_EQ(mismatches(n, sp, base, sp.width), 0) << ranks << " ranks";
+    // The unwidened reaches miss slaves of DOFs the particles read (the test can fail).
+    EXPECT_GT(mismatches(n, sp, base, base), 0) << ranks << " ranks";
+    for (std::size_t l = 0; l < base.size(); ++l) EXPECT_GE(sp.width[l], base[l]);
+  }
+}
