@@ -105,7 +105,6 @@ void check_distributable(const State& s, int ranks) {
                                  "run it on one process",
                                  what, ranks));
   };
-  if (s.nested && s.nested->subcycled()) refuse("time.subcycling = \"levels\" (nested levels at their own time steps)");
   // A region's velocity acts on the nodes its particles touch: every copy of such a node
   // would need the other ranks' lists.
   if (!s.loads.spec.velocity_regions.empty()) refuse("[loads] velocity regions");

@@ -19,12 +19,16 @@ std::vector<std::uint32_t> nested_coarse_count(const NestedState& n) {
   const Grid& g = n.levels[0].grid;
   const int cols = g.x.cells, rows = g.y.cells;
   std::vector<std::uint32_t> count(std::size_t(cols) * std::size_t(rows), 0);
-  for (const State& s : n.levels) {
-    const Particles& P = s.particles;
+  // Per-level time steps: a level's particle costs 1 / period per finest step.
+  int longest = 1;
+  for (const int p : n.period) longest = std::max(longest, p);
+  for (std::size_t l = 0; l < n.levels.size(); ++l) {
+    const Particles& P = n.levels[l].particles;
+    const std::uint32_t weight = std::uint32_t(longest / (n.period.empty() ? 1 : n.period[l]));
     for (std::size_t p = 0; p < P.size(); ++p) {
       const int c = std::clamp(g.x.cell_of(P.x[p]), 0, cols - 1);
       const int r = std::clamp(g.y.cell_of(P.y[p]), 0, rows - 1);
-      ++count[std::size_t(c) + std::size_t(r) * std::size_t(cols)];
+      count[std::size_t(c) + std::size_t(r) * std::size_t(cols)] += weight;
     }
   }
   return count;
@@ -160,13 +164,21 @@ void distribute_nested(State& s, const Comm& comm, bool fresh) {
 void nested_migrate_ranks_if_due(NestedState& n) {
   if (!n.levels[0].halo) return;
   const Halo& h = *n.levels[0].halo;
-  if (h.drift < kMigrateCells * h.cell) return;  // the same bound on every rank and level
+  // Per-level time steps: only when every level begins a step (no scatter held), and at half
+  // the bound: until the next such step the particles move at most the levels' sync drift
+  // (kSubcycleDrift x kMigrateDrift of a finest cell) and one level step more.
+  if (n.subcycled() && n.substep != 0) return;
+  const double bound = (n.subcycled() ? 0.5 : 1.0) * kMigrateCells * h.cell;
+  if (h.drift < bound) return;  // the same bound on every rank and level
   for (State& s : n.levels) migrate_particles(s);
 }
 
-NestedDrift nested_drift_before(const NestedState& n) {
+NestedDrift nested_drift_before(NestedState& n) {
   NestedDrift d;
-  for (const State& s : n.levels) d.window_drift.push_back(s.window_drift);
+  for (State& s : n.levels) {
+    d.window_drift.push_back(s.window_drift);
+    s.last_move = 0.0;  // a level whose step goes on does not move its particles
+  }
   return d;
 }
 
@@ -187,6 +199,16 @@ void nested_finish_step(NestedState& n, const NestedDrift& before) {
     if (failure.empty()) failure = s.halo->failure;
     s.halo->failure.clear();
   }
+  // The reaches hold a particle's stencil while it stays within a cell of its block; with
+  // per-level time steps rank moves wait for the levels to begin a step together (above), so
+  // the bound is checked: past it a scatter would miss the halo. (One dt for every level: the
+  // next step begins with the move, as on one grid.)
+  const Halo& h = *n.levels[0].halo;
+  if (failure.empty() && n.subcycled() && h.drift > kMigrateCells * h.cell)
+    failure = fmt::format("step {}, t = {:.6g} s: particles may have moved {:.3g} finest cells since they last "
+                          "changed rank (the halo holds 1): the per-level time steps kept the levels "
+                          "apart too long; run without time.subcycling",
+                          n.step, n.time, h.drift / h.cell);
   const int failed = comm.first_with(!failure.empty());
   if (failed < 0) return;
   const std::string what = comm.broadcast(failure, failed);

@@ -17,7 +17,9 @@
 //    one process would), and change rank, on every level at once, once any may have moved
 //    kMigrateCells of the finest cell.
 //  - Sums that count a node once count it on the rank whose block holds it.
-// Per-level time steps (time.subcycling = "levels") are not distributed yet.
+// Per-level time steps (time.subcycling = "levels"): a level's held scatter is summed when its
+// step begins, every level's re-mapped momentum every finest step; particles change rank only
+// when every level begins a step.
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -34,7 +36,8 @@ struct NestedSplit {
   std::vector<int> width;                       // per level: the reach beyond a block, nodes
 };
 
-// Particles of every level per cell of level 0 (c + r cols), by their centres.
+// Particles of every level per cell of level 0 (c + r cols), by their centres; with per-level
+// time steps each weighted by its level's steps per longest period (its work).
 std::vector<std::uint32_t> nested_coarse_count(const NestedState& n);
 // The split of `count` (nested_coarse_count, summed over the ranks) among `ranks`, each
 // level's blocks and reach widths. Throws InputError when level 0 has fewer cells than ranks.
@@ -57,8 +60,9 @@ struct NestedDrift {
   std::vector<double> window_drift;  // per level, before the particle move
 };
 void nested_migrate_ranks_if_due(NestedState& n);
-// before the step's particle move, the levels' drift bounds (the move adds to them);
-NestedDrift nested_drift_before(const NestedState& n);
+// before the step's particle move, the levels' drift bounds (the move adds to them; a level
+// whose step goes on adds nothing);
+NestedDrift nested_drift_before(NestedState& n);
 // at the end: each level's drift bound grows by the largest move over the ranks (so the next
 // level change comes on the step one process would take it), the rank-move bound by the
 // largest of them; a failure on any rank (kept in its level 0 halo's `failure`) stops all.

@@ -82,14 +82,17 @@ RankPlan plan_ranks(const State& s, int ranks) {
     const LevelSplit& L = plan.levels[l];
     const Grid& g = s.nested ? s.nested->levels[l].grid : s.grid;
     const bool here = cohesive && int(l) == interface_level;  // the cohesive forces' sum
-    const int values = kExchangedValues + (here ? 2 : 0) + (s.loads.has_forces() ? 2 : 0);
+    // Per finest step: the scatter's sums once per level step (mass, momentum, force; [loads]
+    // forces), the re-mapped momentum every finest step, the cohesive forces on their level.
+    const double values = double(kExchangedValues - 2 + (s.loads.has_forces() ? 2 : 0)) / double(L.period) +
+                          2.0 + (here ? 2.0 : 0.0);
     for (std::size_t r = 0; r < std::size_t(ranks); ++r) {
       plan.work[r] += double(L.split.particles[r]) / double(L.period);
       const NodeBox mine = reach_box(L.split.block[r], g, L.width);
       long halo = 0;  // nodes of this rank's reach in each neighbour's, summed over neighbours
       for (std::size_t q = 0; q < std::size_t(ranks); ++q)
         if (q != r) halo += overlap(mine, reach_box(L.split.block[q], g, L.width)).count();
-      plan.exchange_bytes[r] += 8.0 * values * double(halo) * double(L.fields) / double(L.period);
+      plan.exchange_bytes[r] += 8.0 * values * double(halo) * double(L.fields);
       // Interface nodes: each step the owners send the faces (4 values) and the stiffness (1)
       // of the nodes their neighbours know.
       if (here) plan.exchange_bytes[r] += 8.0 * 5.0 * double(interface_nodes_sent(s, L.split.block, int(r)));

@@ -23,7 +23,9 @@ struct LevelSplit {
 // Values a MUSL step sums over the ranks per halo node and velocity field (parallel/halo.hpp):
 // mass, momentum and force after P2G (5), re-mapped momentum (2); a run with cohesive
 // interfaces or [loads] forces also sums the forces they add (2 each). The velocities need no
-// exchange: every copy of a node holds the same sums and updates them alike.
+// exchange: every copy of a node holds the same sums and updates them alike. Nested levels at
+// their own time steps sum their scatter once per level step, the re-mapped momentum every
+// finest step.
 inline constexpr int kExchangedValues = 7;
 
 struct RankPlan {

@@ -3,6 +3,7 @@
 // step with one dt for every level (solver/nested_step.cpp) and the step with a dt per level
 // (solver/nested_subcycle.cpp). Internal to solver/.
 #pragma once
+#include <functional>
 #include <initializer_list>
 #include <vector>
 
@@ -18,6 +19,13 @@ using rupture::NodalArray;
 void condense_fields(NestedState& n, std::initializer_list<NodalArray> arrays);
 // grid/nested.hpp's distribute: every active slave takes the combination of its DOFs.
 void distribute_fields(NestedState& n, std::initializer_list<NodalArray> arrays);
+
+// Distributed runs (parallel/halo_nested.hpp): each level's shared nodes summed over the ranks
+// that reach them (parallel/halo.hpp's halo_sum), before the transitions combine the levels.
+void sum_levels(NestedState& n, std::initializer_list<NodalArray> arrays);
+// A gather that may find a bad particle; distributed, the diagnosis waits for the end of the
+// step (nested_finish_step), as every rank takes part in the step's exchanges.
+void gather_levels(NestedState& n, const std::function<void()>& gather);
 
 // Every level's State, for the scatters that run over all levels at once.
 std::vector<State*>& level_pointers(NestedState& n);

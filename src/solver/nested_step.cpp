@@ -116,25 +116,20 @@ void common_time_step(NestedState& n) {
   n.dt = dt;
 }
 
-// Distributed runs (parallel/halo_nested.hpp): each level's shared nodes summed over the ranks
-// that reach them, before the transitions combine the levels.
+}  // namespace
+
 void sum_levels(NestedState& n, std::initializer_list<NodalArray> arrays) {
   each_level(n, [&](State& s) { halo_sum(s, arrays); });
 }
 
-// A gather that may find a bad particle; distributed, the diagnosis waits for the end of the
-// step (parallel/halo_nested.hpp: nested_finish_step).
-template <class Gather>
-void gather_levels(NestedState& n, Gather&& g) {
-  if (!n.levels[0].halo) return g();
+void gather_levels(NestedState& n, const std::function<void()>& gather) {
+  if (!n.levels[0].halo) return gather();
   try {
-    g();
+    gather();
   } catch (const SimulationError& e) {
     if (n.levels[0].halo->failure.empty()) n.levels[0].halo->failure = e.what();
   }
 }
-
-}  // namespace
 
 void tie_and_face_stencils(NestedState& n) {
   each_level(n, [](State& s) {

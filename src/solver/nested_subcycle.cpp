@@ -31,6 +31,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "parallel/halo.hpp"
 #include "solver/cohesive_step.hpp"
 #include "solver/grid_update.hpp"
 #include "solver/nested_phases.hpp"
@@ -226,6 +227,7 @@ void subcycled_time_step(NestedState& n) {
     s.dt_cap = cap;
     h = std::min(h, s.dt / double(n.period[l]));
   }
+  if (n.levels[0].halo) h = n.levels[0].halo->comm.min(h);  // distributed: one h for all ranks
   if (forced > 0.0) h = forced;
   h = std::min(h, cap);
   for (State& s : n.levels) s.dt = h;
@@ -245,6 +247,9 @@ void step_subcycled(NestedState& n) {
     if (n.substep % n.period[l] == 0) starts[l] = 1, starting.push_back(&n.levels[l]);
 
   particles_to_grid(starting.data(), starting.size(), true);  // E4: the levels beginning a step
+  for (State* s : starting)  // distributed: summed over the ranks before it is held
+    halo_sum(*s, {&GridFields::mass, &GridFields::mom_x, &GridFields::mom_y, &GridFields::force_x,
+                  &GridFields::force_y});
   for (std::size_t l = 0; l < levels; ++l) {
     if (n.period[l] == 1) continue;
     if (starts[l]) {
@@ -306,6 +311,10 @@ void step_subcycled(NestedState& n) {
   update_particle_velocity_and_remap(ending.data(), ending.size());
   for (std::size_t l = 0; l < levels; ++l)
     if (!ends[l]) band_remap(n.levels[l], n.hold[l], n.coupled[l]);
+  // Distributed: every level's re-mapped momentum summed over the ranks (a level whose step
+  // goes on: its coupled nodes; its other nodes are not read before its step ends, which
+  // clears them).
+  for (State& s : n.levels) halo_sum(s, {&GridFields::remap_x, &GridFields::remap_y});
   condense_fields(n, {&GridFields::remap_x, &GridFields::remap_y});
   for (State& s : n.levels) tie_bonded_nodes(s, TieWhat::remapped_momentum);
   for (std::size_t l = 0; l < levels; ++l) {  // + E2 at t + h
@@ -318,8 +327,10 @@ void step_subcycled(NestedState& n) {
   // The step each ending level's particles take is its span (E5's stress increment and move).
   for (std::size_t l = 0; l < levels; ++l)
     if (ends[l] && n.period[l] > 1) n.levels[l].dt = n.hold[l].span;
-  grid_to_particles(ending.data(), ending.size(), &GridFields::remap_x, &GridFields::remap_y,
-                    G2PMode::stress_and_move);  // E5
+  gather_levels(n, [&] {
+    grid_to_particles(ending.data(), ending.size(), &GridFields::remap_x, &GridFields::remap_y,
+                      G2PMode::stress_and_move);  // E5
+  });
   for (State& s : n.levels) s.dt = h;
   n.substep = all ? 0 : n.substep + 1;
 }
