@@ -13,8 +13,9 @@ For each N, `rupture check CASE --ranks N` gives per rank the particle-updates p
 (work_r, nested levels weighted by how often they step) and the bytes sent per finest step
 (bytes_r); the levels' periods give the exchanges per finest step. Per finest step:
   T(N) = max_r work_r * T_P + n_ex * ALPHA + max_r bytes_r / BETA + n_red * ALPHA * ceil(log2 N)
-with n_ex = (2 halo sums, +1 with interfaces (cohesive forces), +2 interface syncs) on the
-interface's level, 2 per step of every other level, and n_red = 3 reductions per finest step
+with n_ex = per level, the scatter's sum once per level step and the re-mapped momentum's every
+finest step (1 / period + 1), and with interfaces 3 more (cohesive forces, 2 interface syncs),
+and n_red = 3 reductions per finest step
 (time step, migration check, failure flag). Efficiency E(N) = sum_r work_r * T_P / (N T(N)).
 """
 import math
@@ -40,7 +41,7 @@ for n in [int(x) for x in ns.split(",")]:
     levels = len(re.findall(r"^level [0-9]+:", out, re.M)) or 1
     periods = [1] * (levels - len(periods)) + periods  # levels that step every finest step
     cohesive = "dt_cohesive_limit=" in out  # rupture check prints it for cases with interfaces
-    n_ex = sum(2.0 / p for p in periods) + (3.0 if cohesive else 0.0)
+    n_ex = sum(1.0 / p + 1.0 for p in periods) + (3.0 if cohesive else 0.0)
     compute = max(work) * t_p
     comm = n_ex * alpha + max(sent) / beta + 3 * alpha * math.ceil(math.log2(n)) if n > 1 else 0.0
     serial = sum(work) * t_p

@@ -1,8 +1,8 @@
 // Tests for parallel/halo_nested.hpp on one process (the multi-process runs: tests/mpi/, label
 // mpi): the common split's blocks tile every level's lattice and are the same rectangle of the
-// plate on every level, and the widened reaches close the transitions: a rank holding only its
-// reaches' values (random, every node) condenses and distributes to the one-process values at
-// every node its particles may touch, which the unwidened reaches do not.
+// plate on every level, and the reaches close the transitions: a rank holding only its reaches'
+// values (random, every node) condenses and distributes to the one-process values at every node
+// its particles may touch, which the touched nodes alone do not.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -32,10 +32,9 @@ std::size_t global_id(const NestedState& n, std::size_t l, int i, int j) {
   return n.grid.level_start[l] + n.grid.levels[l].node_index(i, j);
 }
 
-// Every (level, rank): nodes of the touched box (block and `base`) where the one-process
-// condense + distribute and the rank's (its reaches of `width` only) differ.
-long mismatches(const NestedState& n, const NestedSplit& sp, const std::vector<int>& base,
-                const std::vector<int>& width) {
+// Every (level, rank): nodes of the touched box (block and nested_touched_width) where the
+// one-process condense + distribute and the rank's (holding `reaches` only) differ.
+long mismatches(const NestedState& n, const NestedSplit& sp, const std::vector<std::vector<NodeBox>>& reaches) {
   const std::size_t levels = n.levels.size(), N = n.grid.num_nodes();
   std::vector<unsigned char> inactive(N, 0);  // covered slaves no particle reaches: zero
   for (const std::uint32_t s : n.grid.slaves) inactive[s] = 1;
@@ -51,14 +50,15 @@ long mismatches(const NestedState& n, const NestedSplit& sp, const std::vector<i
   for (std::size_t r = 0; r < sp.coarse.block.size(); ++r) {
     std::vector<double> mine(N, 0.0);
     for (std::size_t l = 0; l < levels; ++l) {
-      const NodeBox b = reach_box(sp.blocks[l][r], n.levels[l].grid, width[l]);
+      const NodeBox& b = reaches[l][r];
       for (int j = b.j0; j <= b.j1; ++j)
         for (int i = b.i0; i <= b.i1; ++i) mine[global_id(n, l, i, j)] = v[global_id(n, l, i, j)];
     }
     condense(n.grid, mine.data());
     distribute(n.grid, mine.data());
     for (std::size_t l = 0; l < levels; ++l) {
-      const NodeBox t = reach_box(sp.blocks[l][r], n.levels[l].grid, base[l]);
+      if (sp.blocks[l][r].cells() == 0) continue;
+      const NodeBox t = reach_box(sp.blocks[l][r], n.levels[l].grid, nested_touched_width(n, int(l)));
       for (int j = t.j0; j <= t.j1; ++j)
         for (int i = t.i0; i <= t.i1; ++i) {
           const std::size_t g = global_id(n, l, i, j);
@@ -107,16 +107,21 @@ TEST(HaloNested, every_level_is_tiled_by_the_same_rectangles_of_the_plate) {
   }
 }
 
-TEST(HaloNested, widened_reaches_give_the_one_process_transitions_at_every_touched_node) {
+TEST(HaloNested, the_reaches_give_the_one_process_transitions_at_every_touched_node) {
   const State s = nested_reference();
   const NestedState& n = *s.nested;
-  for (int ranks : {2, 3, 4}) {
+  for (int ranks : {2, 3, 4, 16}) {
     const NestedSplit sp = split_nested(n, nested_coarse_count(n), ranks);
-    std::vector<int> base(n.levels.size(), kHaloNodes);
-    base[std::size_t(n.interface_level)] = kInterfaceHaloNodes;
-    EXPECT_EQ(mismatches(n, sp, base, sp.width), 0) << ranks << " ranks";
-    // The unwidened reaches miss slaves of DOFs the particles read (the test can fail).
-    EXPECT_GT(mismatches(n, sp, base, base), 0) << ranks << " ranks";
-    for (std::size_t l = 0; l < base.size(); ++l) EXPECT_GE(sp.width[l], base[l]);
+    EXPECT_EQ(mismatches(n, sp, sp.reaches), 0) << ranks << " ranks";
+    // The touched nodes alone miss slaves of DOFs the particles read (the test can fail).
+    std::vector<std::vector<NodeBox>> touched = sp.reaches;
+    for (std::size_t l = 0; l < touched.size(); ++l)
+      for (std::size_t r = 0; r < touched[l].size(); ++r) {
+        const CellBlock& b = sp.blocks[l][r];
+        touched[l][r] = b.cells() > 0 ? reach_box(b, n.levels[l].grid, nested_touched_width(n, int(l))) : NodeBox{};
+        // Each reach holds the touched nodes.
+        EXPECT_EQ(overlap(touched[l][r], sp.reaches[l][r]).count(), touched[l][r].count());
+      }
+    EXPECT_GT(mismatches(n, sp, touched), 0) << ranks << " ranks";
   }
 }

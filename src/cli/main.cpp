@@ -250,10 +250,10 @@ void print_rank_plan(const Case& c, int ranks) {
   std::vector<long> shared(std::size_t(ranks), 0);
   for (std::size_t l = 0; l < plan.levels.size(); ++l) {
     const LevelSplit& L = plan.levels[l];
-    fmt::print("{}{} x {} cells{}, imbalance {:.4f}, halo {} nodes\n",
+    fmt::print("{}{} x {} cells{}, imbalance {:.4f}, reach up to {} nodes beyond a block\n",
                plan.levels.size() > 1 ? fmt::format("level {}: ", l) : std::string("grid: "), L.cols,
                L.rows, L.period > 1 ? fmt::format(", one step every {} finest", L.period) : "",
-               L.split.imbalance(), L.width);
+               L.split.imbalance(), L.width());
     for (int r = 0; r < ranks; ++r) {
       const CellBlock& b = L.split.block[std::size_t(r)];
       fmt::print("  rank {}: cells [{}, {}) x [{}, {}), particles {}, shared nodes {}\n", r, b.c0,

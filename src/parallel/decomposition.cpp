@@ -61,12 +61,21 @@ void split(const Lattice& L, const CellBlock& b, int first_rank, int ranks, Deco
     }
     return best;
   };
-  // Across the longer side (squarer blocks: fewer shared nodes); a square block across the axis
-  // with the closer cut (x on a tie); the other axis when no cut fits.
+  // Across the longer side (squarer blocks: fewer shared nodes) while its cut misses the ranks'
+  // share by at most kSplitTolerance of a rank's share; else (the particles crowd along that
+  // side: a refined band, nested levels cut on coarse cells) across the axis with the closer cut
+  // (x on a tie); the other axis when no cut fits.
   double miss_x = -1.0, miss_y = -1.0;
-  const int cut_x = width >= height ? best_cut(true, miss_x) : 0;
-  const int cut_y = height >= width ? best_cut(false, miss_y) : 0;
-  bool along_x = width > height || (width == height && miss_x >= 0.0 && (miss_y < 0.0 || miss_x <= miss_y));
+  const int cut_x = best_cut(true, miss_x);
+  const int cut_y = best_cut(false, miss_y);
+  double total = 0.0;
+  for (int r = b.r0; r < b.r1; ++r)
+    for (int c = b.c0; c < b.c1; ++c) total += double(L.count[std::size_t(c) + std::size_t(r) * std::size_t(L.cols)]);
+  const double tolerance = kSplitTolerance * total / double(ranks);
+  const bool fits_x = miss_x >= 0.0, fits_y = miss_y >= 0.0;
+  bool along_x = fits_x && (!fits_y || miss_x <= miss_y);  // the closer cut
+  if (width > height && fits_x && miss_x <= tolerance) along_x = true;
+  if (height > width && fits_y && miss_y <= tolerance) along_x = false;
   int best = along_x ? cut_x : cut_y;
   if ((along_x ? miss_x : miss_y) < 0.0) {  // no cut across the preferred axis fits
     along_x = !along_x;

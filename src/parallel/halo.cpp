@@ -35,10 +35,13 @@ long place_in(const NodeBox& b, int i, int j) {
 // rank order.
 void build_peers(Halo& h, const Grid& g) {
   const int me = h.comm.rank();
-  h.reach = reach_box(h.block(), g, h.halo_nodes);
+  const auto reach_of = [&](int q) {
+    return h.reaches.empty() ? reach_box(h.blocks[std::size_t(q)], g, h.halo_nodes) : h.reaches[std::size_t(q)];
+  };
+  h.reach = reach_of(me);
   for (int q = 0; q < int(h.blocks.size()); ++q) {
-    if (q == me) continue;
-    const NodeBox box = overlap(h.reach, reach_box(h.blocks[std::size_t(q)], g, h.halo_nodes));
+    if (q == me || h.reach.empty()) continue;
+    const NodeBox box = overlap(h.reach, reach_of(q));
     if (!box.empty()) h.peers.push_back(Halo::Peer{q, box});
   }
   // Which peers hold each node of the reach (dense over the reach: its rim only is non-empty).

@@ -82,6 +82,9 @@ struct Halo {
   // it (its fields span the whole lattice, and a DOF may get its mass through the transitions).
   bool count_by_block = false;
   int halo_nodes = kHaloNodes;  // the reach's width beyond the block, nodes
+  // Per rank, when set (nested levels: parallel/halo_nested.hpp): every rank's reach, in place
+  // of its block and halo_nodes.
+  std::vector<NodeBox> reaches;
   // Per interface, per peer: the owned nodes whose state it needs (it knows them), and its
   // owned nodes this rank knows (parallel/halo_interface.cpp).
   struct InterfaceLinks {

@@ -48,19 +48,19 @@ CellBlock level_block(const NestedGrid& g, int l, const CellBlock& coarse) {
                    map(coarse.r1, 1, L.y.cells)};
 }
 
-std::vector<int> nested_reach_widths(const NestedState& n, const std::vector<std::vector<CellBlock>>& blocks,
-                                     const std::vector<int>& base) {
-  const std::size_t levels = n.levels.size();
-  std::vector<int> width = base;
+std::vector<std::vector<NodeBox>> nested_reaches(const NestedState& n,
+                                                 const std::vector<std::vector<CellBlock>>& blocks) {
+  const std::size_t levels = n.levels.size(), ranks = blocks[0].size();
   // The DOF index (into NestedState::dof_level) of each (level, node) with condensed terms.
   std::vector<std::vector<int>> dof_of(levels);
   for (std::size_t l = 0; l < levels; ++l) dof_of[l].assign(n.levels[l].grid.num_nodes(), -1);
   for (std::size_t d = 0; d < n.dof_level.size(); ++d) dof_of[n.dof_level[d]][n.dof_node[d]] = int(d);
-  const std::size_t ranks = blocks[0].size();
+  std::vector<std::vector<NodeBox>> out(levels, std::vector<NodeBox>(ranks));
   for (std::size_t r = 0; r < ranks; ++r) {
     std::vector<NodeBox> touched(levels), need(levels);
     for (std::size_t l = 0; l < levels; ++l)
-      touched[l] = need[l] = reach_box(blocks[l][r], n.levels[l].grid, base[l]);
+      if (blocks[l][r].cells() > 0)  // no particle of this rank on a level outside its block
+        touched[l] = need[l] = reach_box(blocks[l][r], n.levels[l].grid, nested_touched_width(n, int(l)));
     const auto add = [&](std::size_t l, std::uint32_t node) {
       const int nx = n.levels[l].grid.nodes_x(), i = int(node % std::uint32_t(nx)), j = int(node / std::uint32_t(nx));
       NodeBox& b = need[l];
@@ -89,14 +89,17 @@ std::vector<int> nested_reach_widths(const NestedState& n, const std::vector<std
     }
     for (std::size_t d = 0; d < n.dof_level.size(); ++d)
       if (touches(n.dof_level[d], n.dof_node[d])) add_slaves_of(n.dof_level[d], n.dof_node[d]);
-    for (std::size_t l = 0; l < levels; ++l) {
-      const CellBlock& b = blocks[l][r];
-      const NodeBox& e = need[l];
-      if (e.empty()) continue;
-      width[l] = std::max({width[l], b.c0 - e.i0, e.i1 - b.c1, b.r0 - e.j0, e.j1 - b.r1});
-    }
+    for (std::size_t l = 0; l < levels; ++l) out[l][r] = need[l];
   }
-  return width;
+  return out;
+}
+
+int nested_touched_width(const NestedState& n, int l) {
+  if (l == n.interface_level) return kInterfaceHaloNodes;  // the faces' stencils, as on one grid
+  // A particle is less than kMigrateCells finest cells out of its block (rank moves) and
+  // touches nodes closer than h + lp <= 1.5 h: node d of the rim when d < 1.5 + finest / h.
+  const double finest = n.levels.back().grid.x.h, h = n.levels[std::size_t(l)].grid.x.h;
+  return kMigrateCells * finest <= 0.5 * h ? 1 : kHaloNodes;
 }
 
 NestedSplit split_nested(const NestedState& n, const std::vector<std::uint32_t>& count, int ranks) {
@@ -109,12 +112,9 @@ NestedSplit split_nested(const NestedState& n, const std::vector<std::uint32_t>&
   }
   const std::size_t levels = n.levels.size();
   sp.blocks.assign(levels, {});
-  std::vector<int> base(levels, kHaloNodes);
-  for (std::size_t l = 0; l < levels; ++l) {
+  for (std::size_t l = 0; l < levels; ++l)
     for (const CellBlock& b : sp.coarse.block) sp.blocks[l].push_back(level_block(n.grid, int(l), b));
-    if (int(l) == n.interface_level) base[l] = kInterfaceHaloNodes;
-  }
-  sp.width = nested_reach_widths(n, sp.blocks, base);
+  sp.reaches = nested_reaches(n, sp.blocks);
   return sp;
 }
 
@@ -128,7 +128,7 @@ void distribute_nested(State& s, const Comm& comm, bool fresh) {
     auto h = std::make_shared<Halo>();
     h->comm = comm;
     h->cell = finest;  // particles change level on the spot: one drift bound for all levels
-    h->halo_nodes = sp.width[l];
+    h->reaches = sp.reaches[l];
     h->all_bonded = L.bonded;
     h->count_by_block = true;
     h->rebalance = false;  // the levels share one split (a rebalance would move all of them)

@@ -8,11 +8,10 @@
 // the transitions between levels stay local:
 //  - After each scatter every level's halo sum, then the condense. A DOF's condensed value is
 //    the one-process value when every active slave feeding it is fully summed on this rank; a
-//    slave's distributed value when every DOF it reads is condensed so. Each level's reach is
-//    widened until, for every node the rank's particles may touch (its block and kHaloNodes,
-//    kInterfaceHaloNodes on the interfaces' level), it holds the DOFs of the node's slaves and
-//    the slaves of those DOFs and of the node itself (nested_reach_widths). Nodes beyond hold
-//    values no particle of this rank reads.
+//    slave's distributed value when every DOF it reads is condensed so. Each rank's reach on
+//    each level is the box that holds, for every node its particles may touch
+//    (nested_touched_width), the DOFs of the node's slaves and the slaves of those DOFs and of
+//    the node itself (nested_reaches). Nodes beyond hold values no particle of this rank reads.
 //  - Particles change level when the drift bound over all ranks says so (every rank on the step
 //    one process would), and change rank, on every level at once, once any may have moved
 //    kMigrateCells of the finest cell.
@@ -26,6 +25,7 @@
 
 #include "parallel/comm.hpp"
 #include "parallel/decomposition.hpp"
+#include "parallel/halo.hpp"
 #include "solver/nested_state.hpp"
 
 namespace rupture {
@@ -33,7 +33,7 @@ namespace rupture {
 struct NestedSplit {
   Decomposition coarse;                         // level 0's cells, particles of every level
   std::vector<std::vector<CellBlock>> blocks;   // per level, per rank: the block in its cells
-  std::vector<int> width;                       // per level: the reach beyond a block, nodes
+  std::vector<std::vector<NodeBox>> reaches;    // per level, per rank: the nodes it holds summed
 };
 
 // Particles of every level per cell of level 0 (c + r cols), by their centres; with per-level
@@ -44,10 +44,15 @@ std::vector<std::uint32_t> nested_coarse_count(const NestedState& n);
 NestedSplit split_nested(const NestedState& n, const std::vector<std::uint32_t>& count, int ranks);
 // Level l's cells of a block of level 0's cells (empty where the level does not reach).
 CellBlock level_block(const NestedGrid& g, int l, const CellBlock& coarse);
-// The smallest reach widths (nodes, per level) that close the transitions over `blocks`
-// (per level, per rank), at least `base` (per level).
-std::vector<int> nested_reach_widths(const NestedState& n, const std::vector<std::vector<CellBlock>>& blocks,
-                                     const std::vector<int>& base);
+// The nodes beyond its block a rank's particles of level l may touch: kHaloNodes on the finest
+// level, 1 on coarser ones (a particle strays at most one finest cell, half of their cell),
+// kInterfaceHaloNodes on the interfaces' level.
+int nested_touched_width(const NestedState& n, int l);
+// Per level, per rank: the smallest box of nodes that holds what the rank's particles may touch
+// (its block and nested_touched_width; nothing on a level without a cell in the block) and
+// closes the transitions over it (`blocks`: per level, per rank).
+std::vector<std::vector<NodeBox>> nested_reaches(const NestedState& n,
+                                                 const std::vector<std::vector<CellBlock>>& blocks);
 
 // parallel/halo.hpp's distribute for a nested run State (s.nested): every level split as
 // above and this rank's particles kept on each; s.halo is the interfaces' level's halo (the

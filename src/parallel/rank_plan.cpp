@@ -44,6 +44,16 @@ LevelSplit split_level(const State& s, int period, int ranks) {
 
 }  // namespace
 
+int LevelSplit::width() const {
+  int w = 0;
+  for (std::size_t r = 0; r < reach.size(); ++r) {
+    const CellBlock& b = split.block[r];
+    const NodeBox& e = reach[r];
+    if (b.cells() > 0 && !e.empty()) w = std::max({w, b.c0 - e.i0, e.i1 - b.c1, b.r0 - e.j0, e.j1 - b.r1});
+  }
+  return w;
+}
+
 double RankPlan::imbalance() const {
   if (work.empty()) return 0.0;
   const double sum = std::accumulate(work.begin(), work.end(), 0.0);
@@ -67,20 +77,20 @@ RankPlan plan_ranks(const State& s, int ranks) {
       L.cols = ls.grid.x.cells, L.rows = ls.grid.y.cells;
       L.period = n.period.empty() ? 1 : n.period[l];
       L.fields = ls.fields.num_fields;
-      L.width = sp.width[l];
+      L.reach = sp.reaches[l];
       L.split = decomposition_of(sp.blocks[l], particles_per_cell(ls), L.cols);
       plan.levels.push_back(std::move(L));
     }
     interface_level = std::max(0, n.interface_level);
   } else {
     plan.levels.push_back(split_level(s, 1, ranks));
-    plan.levels.back().width = cohesive ? kInterfaceHaloNodes : kHaloNodes;
+    for (const CellBlock& b : plan.levels.back().split.block)
+      plan.levels.back().reach.push_back(reach_box(b, s.grid, cohesive ? kInterfaceHaloNodes : kHaloNodes));
   }
   plan.work.assign(std::size_t(ranks), 0.0);
   plan.exchange_bytes.assign(std::size_t(ranks), 0.0);
   for (std::size_t l = 0; l < plan.levels.size(); ++l) {
     const LevelSplit& L = plan.levels[l];
-    const Grid& g = s.nested ? s.nested->levels[l].grid : s.grid;
     const bool here = cohesive && int(l) == interface_level;  // the cohesive forces' sum
     // Per finest step: the scatter's sums once per level step (mass, momentum, force; [loads]
     // forces), the re-mapped momentum every finest step, the cohesive forces on their level.
@@ -88,10 +98,10 @@ RankPlan plan_ranks(const State& s, int ranks) {
                           2.0 + (here ? 2.0 : 0.0);
     for (std::size_t r = 0; r < std::size_t(ranks); ++r) {
       plan.work[r] += double(L.split.particles[r]) / double(L.period);
-      const NodeBox mine = reach_box(L.split.block[r], g, L.width);
+      const NodeBox& mine = L.reach[r];
       long halo = 0;  // nodes of this rank's reach in each neighbour's, summed over neighbours
       for (std::size_t q = 0; q < std::size_t(ranks); ++q)
-        if (q != r) halo += overlap(mine, reach_box(L.split.block[q], g, L.width)).count();
+        if (q != r) halo += overlap(mine, L.reach[q]).count();
       plan.exchange_bytes[r] += 8.0 * values * double(halo) * double(L.fields);
       // Interface nodes: each step the owners send the faces (4 values) and the stiffness (1)
       // of the nodes their neighbours know.

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "parallel/decomposition.hpp"
+#include "parallel/halo.hpp"
 #include "solver/state.hpp"
 
 namespace rupture {
@@ -16,7 +17,8 @@ struct LevelSplit {
   int cols = 0, rows = 0;  // the lattice's cells (ghost cells included)
   int period = 1;          // finest steps per step of this level
   int fields = 1;          // velocity fields of the level
-  int width = 0;           // its reach beyond a block, nodes (parallel/halo.hpp)
+  std::vector<NodeBox> reach;  // per rank: the nodes it holds summed (parallel/halo.hpp)
+  int width() const;           // the largest reach beyond its block, nodes
   Decomposition split;
 };
 
