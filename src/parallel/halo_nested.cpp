@@ -118,6 +118,79 @@ NestedSplit split_nested(const NestedState& n, const std::vector<std::uint32_t>&
   return sp;
 }
 
+namespace {
+
+// Each level's fields over this rank's reach only, every field the same window (a level it
+// does not reach: one node), so its grid work and memory are its reach's; the transitions'
+// lists keep the elements in the windows, by their place in the window.
+void window_levels(NestedState& n) {
+  const std::size_t levels = n.levels.size();
+  std::vector<std::vector<long>> local(levels);  // per level, lattice node -> its place, or -1
+  std::vector<std::size_t> whole(levels);        // the lattice's nodes (the old layout's field size)
+  for (std::size_t l = 0; l < levels; ++l) {
+    State& s = n.levels[l];
+    const NodeBox b = s.halo->reach.empty() ? NodeBox{0, 0, 0, 0} : s.halo->reach;
+    const int F = s.fields.num_fields, nx = s.grid.nodes_x(), ny = s.grid.nodes_y(), w = b.i1 - b.i0 + 1;
+    whole[l] = s.grid.num_nodes();
+    s.fields.set_windows(std::size_t(nx), std::size_t(ny), std::vector<int>(std::size_t(F), b.i0),
+                         std::vector<int>(std::size_t(F), w), std::vector<int>(std::size_t(F), b.j0),
+                         std::vector<int>(std::size_t(F), b.j1 - b.j0 + 1));
+    local[l].assign(whole[l], -1);
+    for (int j = b.j0; j <= b.j1; ++j)
+      for (int i = b.i0; i <= b.i1; ++i)
+        local[l][std::size_t(j) * std::size_t(nx) + std::size_t(i)] = long(j - b.j0) * w + long(i - b.i0);
+  }
+  const auto in = [&](std::size_t l, std::uint32_t node) { return local[l][node] >= 0; };
+  // Condense: the DOFs in the window, each with its slaves in the window (all of them where the
+  // rank's particles read it: nested_reaches).
+  std::vector<std::uint8_t> dof_level;
+  std::vector<std::uint32_t> dof_node, dof_start{0}, dof_slave;
+  std::vector<double> dof_c;
+  for (std::size_t d = 0; d < n.dof_level.size(); ++d) {
+    if (!in(n.dof_level[d], n.dof_node[d])) continue;
+    for (std::uint32_t j = n.dof_start[d]; j < n.dof_start[d + 1]; ++j) {
+      const std::uint32_t k = n.dof_slave[j];
+      if (!in(n.slave_level[k], n.slave_node[k])) continue;
+      dof_slave.push_back(k), dof_c.push_back(n.dof_c[j]);
+    }
+    dof_level.push_back(n.dof_level[d]);
+    dof_node.push_back(std::uint32_t(local[n.dof_level[d]][n.dof_node[d]]));
+    dof_start.push_back(std::uint32_t(dof_slave.size()));
+  }
+  n.dof_level.swap(dof_level), n.dof_node.swap(dof_node), n.dof_start.swap(dof_start);
+  n.dof_slave.swap(dof_slave), n.dof_c.swap(dof_c);
+  // Distribute (and the condense's clearing): the slaves in the window with every term in it
+  // (the others are not read by this rank's particles).
+  std::vector<std::uint32_t> active;
+  for (const std::uint32_t k : n.active_slaves) {
+    bool all = in(n.slave_level[k], n.slave_node[k]);
+    for (std::uint32_t t = n.grid.term_start[k]; all && t < n.grid.term_start[k + 1]; ++t)
+      all = in(n.term_level[t], n.term_node[t]);
+    if (all) active.push_back(k);
+  }
+  n.active_slaves.swap(active);
+  for (std::size_t k = 0; k < n.slave_node.size(); ++k)
+    if (in(n.slave_level[k], n.slave_node[k])) n.slave_node[k] = std::uint32_t(local[n.slave_level[k]][n.slave_node[k]]);
+  for (std::size_t t = 0; t < n.term_node.size(); ++t)
+    if (in(n.term_level[t], n.term_node[t])) n.term_node[t] = std::uint32_t(local[n.term_level[t]][n.term_node[t]]);
+  // Per-level time steps: the coupled elements (whole-lattice layout: field f's node at
+  // f x nodes) in the window.
+  for (std::size_t l = 0; l < n.coupled.size(); ++l) {
+    if (n.coupled[l].empty()) continue;
+    const GridFields& G = n.levels[l].fields;
+    std::vector<std::uint32_t> kept;
+    for (const std::uint32_t e : n.coupled[l]) {
+      const std::size_t f = e / whole[l], node = e % whole[l];
+      if (local[l][node] >= 0) kept.push_back(std::uint32_t(G.start[f] + std::size_t(local[l][node])));
+    }
+    n.coupled[l].swap(kept);
+    n.coupled_mask[l].assign(G.size(), 0);
+    for (const std::uint32_t e : n.coupled[l]) n.coupled_mask[l][e] = 1;
+  }
+}
+
+}  // namespace
+
 void distribute_nested(State& s, const Comm& comm, bool fresh) {
   NestedState& n = *s.nested;
   const NestedSplit sp = split_nested(n, nested_coarse_count(n), comm.size());
@@ -152,6 +225,7 @@ void distribute_nested(State& s, const Comm& comm, bool fresh) {
     else if (comm.rank() > 0)
       L.strain_work = L.external_work = 0.0;
   }
+  window_levels(n);
   if (!fresh && comm.rank() > 0)
     for (CohesiveInterface& c : s.interfaces) c.work = 0.0;
   s.halo = n.levels[std::size_t(il >= 0 ? il : int(n.levels.size()) - 1)].halo;
