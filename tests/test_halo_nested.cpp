@@ -1,6 +1,6 @@
 // Tests for parallel/halo_nested.hpp on one process (the multi-process runs: tests/mpi/, label
 // mpi): the common split's blocks tile every level's lattice and are the same rectangle of the
-// plate on every level, and the reaches close the transitions: a rank holding only its reaches'
+// plate on every level (sides moved down to a coarser level's lines), and the reaches close the transitions: a rank holding only its reaches'
 // values (random, every node) condenses and distributes to the one-process values at every node
 // its particles may touch, which the touched nodes alone do not.
 #include <gtest/gtest.h>
@@ -47,7 +47,7 @@ long mismatches(const NestedState& n, const NestedSplit& sp, const std::vector<s
   condense(n.grid, ref.data());
   distribute(n.grid, ref.data());
   long bad = 0;
-  for (std::size_t r = 0; r < sp.coarse.block.size(); ++r) {
+  for (std::size_t r = 0; r < sp.cut.block.size(); ++r) {
     std::vector<double> mine(N, 0.0);
     for (std::size_t l = 0; l < levels; ++l) {
       const NodeBox& b = reaches[l][r];
@@ -75,32 +75,34 @@ TEST(HaloNested, every_level_is_tiled_by_the_same_rectangles_of_the_plate) {
   const State s = nested_reference();
   const NestedState& n = *s.nested;
   ASSERT_EQ(n.levels.size(), 3u);
-  for (int ranks : {1, 2, 3, 4, 7}) {
-    const NestedSplit sp = split_nested(n, nested_coarse_count(n), ranks);
+  for (int ranks : {1, 2, 3, 4, 7, 40}) {
+    const NestedSplit sp = split_nested(n, ranks);
+    EXPECT_EQ(sp.cut_level, 2);  // the finest level's cells over the plate: 276 x 624, few enough
     const Grid& g0 = n.levels[0].grid;
+    const double cut = g0.x.h / double(1 << sp.cut_level), tol = 1e-12;
     for (std::size_t l = 0; l < n.levels.size(); ++l) {
       const Grid& g = n.levels[l].grid;
       std::vector<int> owners(std::size_t(g.x.cells) * std::size_t(g.y.cells), 0);
+      // A side of the block on the level's lattice: the cut's line on levels as fine as the
+      // cut level, the level's line at or below it on coarser ones.
+      const auto side = [&](const Axis& a, int k, double line) {
+        if (int(l) >= sp.cut_level) {
+          EXPECT_NEAR(a.node(k), line, tol);
+        } else {
+          EXPECT_LE(a.node(k), line + tol);
+          EXPECT_GT(a.node(k) + a.h, line + tol);
+        }
+      };
       for (int r = 0; r < ranks; ++r) {
         const CellBlock& b = sp.blocks[l][std::size_t(r)];
-        const CellBlock& c = sp.coarse.block[std::size_t(r)];
+        const CellBlock& c = sp.cut.block[std::size_t(r)];
         for (int y = b.r0; y < b.r1; ++y)
           for (int x = b.c0; x < b.c1; ++x) ++owners[std::size_t(x) + std::size_t(y) * std::size_t(g.x.cells)];
         if (b.cells() == 0) continue;
-        // The block's sides are the coarse block's, where the level's lattice reaches them.
-        const double tol = 1e-12;
-        if (b.c0 > 0) {
-          EXPECT_NEAR(g.x.node(b.c0), g0.x.node(c.c0), tol);
-        }
-        if (b.c1 < g.x.cells) {
-          EXPECT_NEAR(g.x.node(b.c1), g0.x.node(c.c1), tol);
-        }
-        if (b.r0 > 0) {
-          EXPECT_NEAR(g.y.node(b.r0), g0.y.node(c.r0), tol);
-        }
-        if (b.r1 < g.y.cells) {
-          EXPECT_NEAR(g.y.node(b.r1), g0.y.node(c.r1), tol);
-        }
+        if (b.c0 > 0) side(g.x, b.c0, g0.x.origin + c.c0 * cut);
+        if (b.c1 < g.x.cells) side(g.x, b.c1, g0.x.origin + c.c1 * cut);
+        if (b.r0 > 0) side(g.y, b.r0, g0.y.origin + c.r0 * cut);
+        if (b.r1 < g.y.cells) side(g.y, b.r1, g0.y.origin + c.r1 * cut);
       }
       for (const int o : owners) ASSERT_EQ(o, 1) << "level " << l << ", " << ranks << " ranks";
     }
@@ -111,7 +113,7 @@ TEST(HaloNested, the_reaches_give_the_one_process_transitions_at_every_touched_n
   const State s = nested_reference();
   const NestedState& n = *s.nested;
   for (int ranks : {2, 3, 4, 16}) {
-    const NestedSplit sp = split_nested(n, nested_coarse_count(n), ranks);
+    const NestedSplit sp = split_nested(n, ranks);
     EXPECT_EQ(mismatches(n, sp, sp.reaches), 0) << ranks << " ranks";
     // The touched nodes alone miss slaves of DOFs the particles read (the test can fail).
     std::vector<std::vector<NodeBox>> touched = sp.reaches;

@@ -243,9 +243,13 @@ int exit_code(Outcome o) {
 void print_rank_plan(const Case& c, int ranks) {
   const State s = make_state(c);
   const RankPlan plan = plan_ranks(s, ranks);
-  fmt::print("ranks={} ({} bisected by particle count{})\n", ranks,
-             plan.levels.size() > 1 ? "level 0's cells" : "the grid's cells",
-             plan.levels.size() > 1 ? " of every level; rank r takes the same rectangle on every level" : "");
+  if (plan.levels.size() > 1)
+    fmt::print("ranks={} (level {}'s cells over the plate bisected by the work of every level's "
+               "particles; rank r takes the same rectangle on every level, its sides on a coarser "
+               "level's lines below)\n",
+               ranks, plan.cut_level);
+  else
+    fmt::print("ranks={} (the grid's cells bisected by particle count)\n", ranks);
   std::vector<std::size_t> particles(std::size_t(ranks), 0);
   std::vector<long> shared(std::size_t(ranks), 0);
   for (std::size_t l = 0; l < plan.levels.size(); ++l) {

@@ -4,6 +4,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstring>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -15,9 +17,19 @@
 
 namespace rupture {
 
-std::vector<std::uint32_t> nested_coarse_count(const NestedState& n) {
-  const Grid& g = n.levels[0].grid;
-  const int cols = g.x.cells, rows = g.y.cells;
+int nested_cut_level(const NestedState& n) {
+  const Grid& g0 = n.levels[0].grid;
+  int k = 0;
+  while (std::size_t(k) + 1 < n.levels.size() &&
+         (double(g0.x.cells) * double(g0.y.cells)) * double(1L << (2 * (k + 1))) <= double(kCutLatticeCells))
+    ++k;
+  return k;
+}
+
+std::vector<std::uint32_t> nested_cut_count(const NestedState& n, int k) {
+  const Grid& g0 = n.levels[0].grid;
+  const int cols = g0.x.cells << k, rows = g0.y.cells << k;
+  const double h = g0.x.h / double(1 << k);
   std::vector<std::uint32_t> count(std::size_t(cols) * std::size_t(rows), 0);
   // Per-level time steps: a level's particle costs 1 / period per finest step.
   int longest = 1;
@@ -26,26 +38,27 @@ std::vector<std::uint32_t> nested_coarse_count(const NestedState& n) {
     const Particles& P = n.levels[l].particles;
     const std::uint32_t weight = std::uint32_t(longest / (n.period.empty() ? 1 : n.period[l]));
     for (std::size_t p = 0; p < P.size(); ++p) {
-      const int c = std::clamp(g.x.cell_of(P.x[p]), 0, cols - 1);
-      const int r = std::clamp(g.y.cell_of(P.y[p]), 0, rows - 1);
+      const int c = std::clamp(int(std::floor((P.x[p] - g0.x.origin) / h)), 0, cols - 1);
+      const int r = std::clamp(int(std::floor((P.y[p] - g0.y.origin) / h)), 0, rows - 1);
       count[std::size_t(c) + std::size_t(r) * std::size_t(cols)] += weight;
     }
   }
   return count;
 }
 
-CellBlock level_block(const NestedGrid& g, int l, const CellBlock& coarse) {
+CellBlock level_block(const NestedGrid& g, int l, const CellBlock& cut, int k) {
   const Level& C = g.levels[0];
   const Level& L = g.levels[std::size_t(l)];
-  // Coarse line k lies at C.node0 + k C.unit finest units, a whole number of level l's cells
-  // from its first line.
-  const auto map = [&](int k, int d, int cells) {
-    const long u = C.node0[d] + long(k) * C.unit - L.node0[d];
-    const long q = u >= 0 ? u / L.unit : -((-u) / L.unit);
+  const long unit = C.unit >> k;  // the cut lattice's cell, finest units
+  // Cut line m lies at C.node0 + m unit finest units; on level l, at or above the level's line
+  // below it (floor: the same map for every block, so the blocks tile the level).
+  const auto map = [&](int m, int d, int cells) {
+    const long u = C.node0[d] + long(m) * unit - L.node0[d];
+    const long q = u >= 0 ? u / L.unit : -((-u + L.unit - 1) / L.unit);
     return int(std::clamp(q, 0L, long(cells)));
   };
-  return CellBlock{map(coarse.c0, 0, L.x.cells), map(coarse.c1, 0, L.x.cells), map(coarse.r0, 1, L.y.cells),
-                   map(coarse.r1, 1, L.y.cells)};
+  return CellBlock{map(cut.c0, 0, L.x.cells), map(cut.c1, 0, L.x.cells), map(cut.r0, 1, L.y.cells),
+                   map(cut.r1, 1, L.y.cells)};
 }
 
 std::vector<std::vector<NodeBox>> nested_reaches(const NestedState& n,
@@ -102,18 +115,20 @@ int nested_touched_width(const NestedState& n, int l) {
   return kMigrateCells * finest <= 0.5 * h ? 1 : kHaloNodes;
 }
 
-NestedSplit split_nested(const NestedState& n, const std::vector<std::uint32_t>& count, int ranks) {
+NestedSplit split_nested(const NestedState& n, int ranks) {
   NestedSplit sp;
   const Grid& g0 = n.levels[0].grid;
+  sp.cut_level = nested_cut_level(n);
   try {
-    sp.coarse = bisect_by_particles(count, g0.x.cells, g0.y.cells, ranks);
+    sp.cut = bisect_by_particles(nested_cut_count(n, sp.cut_level), g0.x.cells << sp.cut_level,
+                                 g0.y.cells << sp.cut_level, ranks);
   } catch (const std::invalid_argument& e) {
-    throw InputError(fmt::format("--ranks {}: nested level 0 (the coarse cells): {}", ranks, e.what()));
+    throw InputError(fmt::format("--ranks {}: nested level {}'s cells over the plate: {}", ranks, sp.cut_level, e.what()));
   }
   const std::size_t levels = n.levels.size();
   sp.blocks.assign(levels, {});
   for (std::size_t l = 0; l < levels; ++l)
-    for (const CellBlock& b : sp.coarse.block) sp.blocks[l].push_back(level_block(n.grid, int(l), b));
+    for (const CellBlock& b : sp.cut.block) sp.blocks[l].push_back(level_block(n.grid, int(l), b, sp.cut_level));
   sp.reaches = nested_reaches(n, sp.blocks);
   return sp;
 }
@@ -193,7 +208,7 @@ void window_levels(NestedState& n) {
 
 void distribute_nested(State& s, const Comm& comm, bool fresh) {
   NestedState& n = *s.nested;
-  const NestedSplit sp = split_nested(n, nested_coarse_count(n), comm.size());
+  const NestedSplit sp = split_nested(n, comm.size());
   const int il = n.interface_level;
   const double finest = n.levels.back().grid.x.h;
   for (std::size_t l = 0; l < n.levels.size(); ++l) {
@@ -233,6 +248,47 @@ void distribute_nested(State& s, const Comm& comm, bool fresh) {
   for (const State& L : n.levels) s.strain_work += L.strain_work, s.external_work += L.external_work;
   s.particles_step = -1;  // re-merge this rank's particles
   gather_particles(s);
+}
+
+void nested_send_to_owners(NestedState& n) {
+  if (!n.levels[0].halo) return;
+  const Comm& comm = n.levels[0].halo->comm;
+  constexpr std::size_t kRecord = (Particles::kPacked + 1) * sizeof(double);  // level, particle
+  std::vector<std::vector<unsigned char>> send(std::size_t(comm.size())), recv;
+  for (std::size_t l = 0; l < n.levels.size(); ++l) {
+    State& s = n.levels[l];
+    Halo& h = *s.halo;
+    Particles& P = s.particles;
+    std::vector<unsigned char> leaving(P.size(), 0);
+    bool any = false;
+    for (std::size_t p = 0; p < P.size(); ++p) {
+      const int c = std::clamp(s.grid.x.cell_of(P.x[p]), 0, s.grid.x.cells - 1);
+      const int r = std::clamp(s.grid.y.cell_of(P.y[p]), 0, s.grid.y.cells - 1);
+      if (h.owns_cell(c, r)) continue;
+      std::size_t q = 0;
+      while (q < h.blocks.size() && !(c >= h.blocks[q].c0 && c < h.blocks[q].c1 && r >= h.blocks[q].r0 && r < h.blocks[q].r1)) ++q;
+      if (q == h.blocks.size()) continue;  // cannot happen: the blocks tile the level
+      leaving[p] = 1, any = true;
+      double rec[Particles::kPacked + 1];
+      rec[0] = double(l);
+      P.pack(p, rec + 1);
+      std::vector<unsigned char>& out = send[q];
+      out.insert(out.end(), reinterpret_cast<unsigned char*>(rec), reinterpret_cast<unsigned char*>(rec) + kRecord);
+    }
+    if (!any) continue;
+    Particles gone;
+    P.move_marked(leaving, gone);
+    s.plan.valid = false;
+  }
+  comm.all_to_all(send, recv);
+  for (const std::vector<unsigned char>& in : recv)  // in rank order
+    for (std::size_t at = 0; at + kRecord <= in.size(); at += kRecord) {
+      double rec[Particles::kPacked + 1];
+      std::memcpy(rec, in.data() + at, kRecord);
+      State& s = n.levels[std::size_t(rec[0])];
+      s.particles.push_packed(rec + 1);
+      s.plan.valid = false;
+    }
 }
 
 void nested_migrate_ranks_if_due(NestedState& n) {

@@ -1,11 +1,11 @@
 // rupture/parallel/halo_nested.hpp
 // Nested refinement levels (solver/nested_state.hpp) in a distributed run (parallel/halo.hpp).
-// Every level shares one split of the plate: level 0's cells bisected by the particles of all
-// levels (by their centres), so rank r's block is the same rectangle on every level, cut on
-// coarse lines, which are lines of every level (grid/nested.hpp: a level's lattice lines lie at
-// multiples of its cell from the domain's corner). Each level keeps its own Halo (its lattice,
-// the block in its cells, its reach), so a particle that changes level stays on its rank and
-// the transitions between levels stay local:
+// Every level shares one split of the plate: a lattice of the cut level's cells over the whole
+// plate bisected by the particles of all levels (by their centres), so rank r's block is the
+// same rectangle on every level as fine as the cut level, and on coarser ones the rectangle
+// with its sides moved down to the level's lines (grid/nested.hpp: a level's lattice lines lie
+// at multiples of its cell from the domain's corner). Each level keeps its own Halo (its
+// lattice, the block in its cells, its reach), so the transitions between levels stay local:
 //  - After each scatter every level's halo sum, then the condense. A DOF's condensed value is
 //    the one-process value when every active slave feeding it is fully summed on this rank; a
 //    slave's distributed value when every DOF it reads is condensed so. Each rank's reach on
@@ -13,8 +13,8 @@
 //    (nested_touched_width), the DOFs of the node's slaves and the slaves of those DOFs and of
 //    the node itself (nested_reaches). Nodes beyond hold values no particle of this rank reads.
 //  - Particles change level when the drift bound over all ranks says so (every rank on the step
-//    one process would), and change rank, on every level at once, once any may have moved
-//    kMigrateCells of the finest cell.
+//    one process would), then go to the rank owning their cell on the new level; they change
+//    rank, on every level at once, once any may have moved kMigrateCells of the finest cell.
 //  - Sums that count a node once count it on the rank whose block holds it.
 // Per-level time steps (time.subcycling = "levels"): a level's held scatter is summed when its
 // step begins, every level's re-mapped momentum every finest step; particles change rank only
@@ -30,20 +30,29 @@
 
 namespace rupture {
 
+// The split is made on the lattice of the finest level whose cells over the whole plate number
+// at most kCutLatticeCells (a count per cell at set-up): fine enough to divide a refined band
+// among many ranks, coarse enough to count.
+inline constexpr long kCutLatticeCells = 1L << 22;
+
 struct NestedSplit {
-  Decomposition coarse;                         // level 0's cells, particles of every level
+  int cut_level = 0;                            // the lattice cut: level cut_level's lines
+  Decomposition cut;                            // its cells over the plate, every level's particles
   std::vector<std::vector<CellBlock>> blocks;   // per level, per rank: the block in its cells
   std::vector<std::vector<NodeBox>> reaches;    // per level, per rank: the nodes it holds summed
 };
 
-// Particles of every level per cell of level 0 (c + r cols), by their centres; with per-level
-// time steps each weighted by its level's steps per longest period (its work).
-std::vector<std::uint32_t> nested_coarse_count(const NestedState& n);
-// The split of `count` (nested_coarse_count, summed over the ranks) among `ranks`, each
-// level's blocks and reach widths. Throws InputError when level 0 has fewer cells than ranks.
-NestedSplit split_nested(const NestedState& n, const std::vector<std::uint32_t>& count, int ranks);
-// Level l's cells of a block of level 0's cells (empty where the level does not reach).
-CellBlock level_block(const NestedGrid& g, int l, const CellBlock& coarse);
+// The cut level (above), and the particles of every level per cell of its lattice over the
+// plate (c + r cols, level 0's extent), by their centres; with per-level time steps each
+// weighted by its level's steps per longest period (its work).
+int nested_cut_level(const NestedState& n);
+std::vector<std::uint32_t> nested_cut_count(const NestedState& n, int cut_level);
+// The split of this process's particles (at set-up: all of them) among `ranks`, each level's
+// blocks and reaches. Throws InputError when the cut lattice has fewer cells than ranks.
+NestedSplit split_nested(const NestedState& n, int ranks);
+// Level l's cells of a block of the cut lattice: exact on levels at least as fine; on coarser
+// ones each cut moves down to the level's line below it (empty where the level does not reach).
+CellBlock level_block(const NestedGrid& g, int l, const CellBlock& cut, int cut_level);
 // The nodes beyond its block a rank's particles of level l may touch: kHaloNodes on the finest
 // level, 1 on coarser ones (a particle strays at most one finest cell, half of their cell),
 // kInterfaceHaloNodes on the interfaces' level.
@@ -65,6 +74,10 @@ struct NestedDrift {
   std::vector<double> window_drift;  // per level, before the particle move
 };
 void nested_migrate_ranks_if_due(NestedState& n);
+// after particles changed level: each one whose cell on its new level is another rank's goes
+// there (on levels coarser than the cut level a block's sides move down to the level's lines,
+// so the owner may differ; collective: all ranks);
+void nested_send_to_owners(NestedState& n);
 // before the step's particle move, the levels' drift bounds (the move adds to them; a level
 // whose step goes on adds nothing);
 NestedDrift nested_drift_before(NestedState& n);

@@ -68,9 +68,10 @@ RankPlan plan_ranks(const State& s, int ranks) {
   const bool cohesive = !s.interfaces.empty();
   int interface_level = 0;  // the lattice holding the interfaces
   if (s.nested) {
-    // One split of level 0's cells for every level (parallel/halo_nested.hpp).
+    // One split for every level (parallel/halo_nested.hpp).
     const NestedState& n = *s.nested;
-    const NestedSplit sp = split_nested(n, nested_coarse_count(n), ranks);
+    const NestedSplit sp = split_nested(n, ranks);
+    plan.cut_level = sp.cut_level;
     for (std::size_t l = 0; l < n.levels.size(); ++l) {
       const State& ls = n.levels[l];
       LevelSplit L;

@@ -33,6 +33,7 @@ inline constexpr int kExchangedValues = 7;
 struct RankPlan {
   int ranks = 1;
   std::vector<LevelSplit> levels;  // one for a graded or uniform grid
+  int cut_level = 0;               // nested: the level whose lines the split cuts on
   std::vector<double> work;        // per rank: particle-updates per finest step
   // Per rank: bytes it sends per finest step: 8 x the values above per field and node of its
   // reach shared with each neighbour's (every field counted at every node, as the exchange

@@ -446,6 +446,7 @@ void step(NestedState& n) {
   const double due = (subcycled ? kSubcycleDrift : 1.0) * kMigrateDrift * n.levels.back().grid.x.h;
   if (all_begin && (n.step == 0 || drift >= due)) {
     migrate_levels(n);
+    nested_send_to_owners(n);  // distributed: each to the rank owning its cell on its level
     for (State& s : n.levels) s.window_drift = 0.0;
   }
   nested_migrate_ranks_if_due(n);  // distributed: particles that left the rank's block
