@@ -50,7 +50,9 @@ TEST(Decomposition, any_rank_count_partitions_a_uniform_lattice_evenly) {
 }
 
 TEST(Decomposition, balances_particles_not_cells) {
-  // Particles only in the left quarter of the lattice: two ranks split that quarter.
+  // Particles only in the left quarter of the lattice (16 x 32 cells): two ranks split that
+  // quarter, across its longer side (the cut with fewer particles beside it: 2 rows of 16
+  // cells, not 2 columns of 32), though the lattice is wider than tall.
   const int cols = 64, rows = 32;
   std::vector<std::uint32_t> count(std::size_t(cols) * std::size_t(rows), 0);
   for (int r = 0; r < rows; ++r)
@@ -58,7 +60,8 @@ TEST(Decomposition, balances_particles_not_cells) {
   const Decomposition d = bisect_by_particles(count, cols, rows, 2);
   expect_partition(d, cols, rows);
   EXPECT_EQ(d.particles[0], d.particles[1]);
-  EXPECT_EQ(d.block[0].c1, 8);  // half of the particles, an eighth of the cells
+  EXPECT_EQ(d.block[0].r1, 16);  // half of the particles, across the quarter's rows
+  EXPECT_EQ(d.block[0].c1, cols);
   EXPECT_EQ(d.imbalance(), 0.0);
 }
 

@@ -39,11 +39,13 @@ void split(const Lattice& L, const CellBlock& b, int first_rank, int ranks, Deco
     k_max = int(n - (long(high_ranks) + across - 1) / across);
     return k_min <= k_max;
   };
-  // The best cut across one axis: slices on the low side, and how far its particles miss the
-  // ranks' share (-1 when no cut leaves each side a cell per rank).
-  const auto best_cut = [&](bool along_x, double& miss) {
+  // The best cut across one axis: slices on the low side, how far its particles miss the
+  // ranks' share (-1 when no cut leaves each side a cell per rank), and the particles in the
+  // two slices beside it (contact).
+  const auto best_cut = [&](bool along_x, double& miss, double& contact) {
     int k_min = 0, k_max = 0;
     miss = -1.0;
+    contact = 0.0;
     if (!cut_range(along_x, k_min, k_max)) return 0;
     const std::vector<std::size_t> s = slices(L, b, along_x);
     const int n = int(s.size());
@@ -59,28 +61,33 @@ void split(const Lattice& L, const CellBlock& b, int first_rank, int ranks, Deco
       const double m = std::fabs(prefix - goal);
       if (m < miss) miss = m, best = k;  // the first of equal misses: deterministic
     }
+    if (n > 1) contact = double(s[std::size_t(std::max(best - 1, 0))] + s[std::size_t(std::min(best, n - 1))]);
     return best;
   };
-  // Across the longer side (squarer blocks: fewer shared nodes) while its cut misses the ranks'
-  // share by at most kSplitTolerance of a rank's share; else (the particles crowd along that
-  // side: a refined band, nested levels cut on coarse cells) across the axis with the closer cut
-  // (x on a tie); the other axis when no cut fits.
-  double miss_x = -1.0, miss_y = -1.0;
-  const int cut_x = best_cut(true, miss_x);
-  const int cut_y = best_cut(false, miss_y);
+  // Of the axes whose cut comes within kSplitTolerance of a rank's share, across the one whose
+  // cut has fewer particles beside it (the halo's work: on a uniform lattice, across the longer
+  // side; with refinement, across a refined band rather than along it), the longer side on a
+  // tie; if neither comes that close, the closer cut (x on a tie); the other axis when no cut
+  // fits.
+  double miss_x = -1.0, miss_y = -1.0, contact_x = 0.0, contact_y = 0.0;
+  const int cut_x = best_cut(true, miss_x, contact_x);
+  const int cut_y = best_cut(false, miss_y, contact_y);
   double total = 0.0;
   for (int r = b.r0; r < b.r1; ++r)
     for (int c = b.c0; c < b.c1; ++c) total += double(L.count[std::size_t(c) + std::size_t(r) * std::size_t(L.cols)]);
   const double tolerance = kSplitTolerance * total / double(ranks);
   const bool fits_x = miss_x >= 0.0, fits_y = miss_y >= 0.0;
+  const bool near_x = fits_x && miss_x <= tolerance, near_y = fits_y && miss_y <= tolerance;
   bool along_x = fits_x && (!fits_y || miss_x <= miss_y);  // the closer cut
-  if (width > height && fits_x && miss_x <= tolerance) along_x = true;
-  if (height > width && fits_y && miss_y <= tolerance) along_x = false;
+  if (near_x && near_y)
+    along_x = contact_x < contact_y || (contact_x == contact_y && width >= height);
+  else if (near_x || near_y)
+    along_x = near_x;
   int best = along_x ? cut_x : cut_y;
   if ((along_x ? miss_x : miss_y) < 0.0) {  // no cut across the preferred axis fits
     along_x = !along_x;
-    double miss = -1.0;
-    best = best_cut(along_x, miss);
+    double miss = -1.0, contact = 0.0;
+    best = best_cut(along_x, miss, contact);
     if (miss < 0.0)
       throw std::invalid_argument(fmt::format(
           "cannot split a block of {} x {} cells into {} blocks of whole cells", width, height, ranks));

@@ -1,8 +1,9 @@
 // rupture/parallel/decomposition.hpp
 // How a lattice of cells is split between N processes for a distributed run: recursive
 // coordinate bisection weighted by particle count. Each rank gets one rectangular block of
-// whole cells; a block with k of the N ranks is cut across its longer side (in cells; the other
-// side when that cut cannot come within kSplitTolerance of the share) where
+// whole cells; a block with k of the N ranks is cut (across the axis whose cut has fewer
+// particles beside it, among those within kSplitTolerance of the share: across the longer side
+// of a uniform lattice) where
 // the particles on the low side come closest to k_low / k of the block's, with
 // k_low = floor(k / 2) (so any N works, not only powers of two). The particle work of a step is
 // proportional to the particle count (the grid work is a few percent: docs/performance.md),
@@ -18,9 +19,9 @@
 
 namespace rupture {
 
-// A cut across a block's longer side is kept while it misses the ranks' share by at most this
-// fraction of one rank's share: the imbalance a run tolerates before it re-splits
-// (kRebalanceImbalance, parallel/halo.hpp); past it the other axis's closer cut is taken.
+// A cut that misses the ranks' share by at most this fraction of one rank's share counts as
+// balanced (the imbalance a run tolerates before it re-splits: kRebalanceImbalance,
+// parallel/halo.hpp); among balanced cuts the one with fewer particles beside it is taken.
 inline constexpr double kSplitTolerance = 0.05;
 
 // Cells [c0, c1) x [r0, r1) of a lattice (cell (c, r) at column c, row r).
