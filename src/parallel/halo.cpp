@@ -134,17 +134,8 @@ void distribute(State& s, const Comm& comm, bool fresh) {
   h->all_bonded = s.bonded;
   s.halo = h;
   set_blocks(s, plan_ranks(s, comm.size()).levels.at(0).split.block);
-  // Keep this rank's particles (every rank made the same State: the same particles, the same
-  // split).
+  keep_own_particles(s);  // every rank made the same State: the same particles, the same split
   Particles& P = s.particles;
-  std::vector<unsigned char> away(P.size(), 0);
-  for (std::size_t p = 0; p < P.size(); ++p) {
-    const int c = std::clamp(s.grid.x.cell_of(P.x[p]), 0, s.grid.x.cells - 1);
-    const int r = std::clamp(s.grid.y.cell_of(P.y[p]), 0, s.grid.y.cells - 1);
-    away[p] = !h->owns_cell(c, r);
-  }
-  Particles others;
-  P.move_marked(away, others);
   // E14: the strain work starts from this rank's part of the elastic energy; the initial
   // energy stays the whole run's (the history sums the parts).
   if (fresh) {
@@ -153,6 +144,18 @@ void distribute(State& s, const Comm& comm, bool fresh) {
     s.strain_work = s.external_work = 0.0;
     for (CohesiveInterface& c : s.interfaces) c.work = 0.0;
   }
+}
+
+void keep_own_particles(State& s) {
+  Particles& P = s.particles;
+  std::vector<unsigned char> away(P.size(), 0);
+  for (std::size_t p = 0; p < P.size(); ++p) {
+    const int c = std::clamp(s.grid.x.cell_of(P.x[p]), 0, s.grid.x.cells - 1);
+    const int r = std::clamp(s.grid.y.cell_of(P.y[p]), 0, s.grid.y.cells - 1);
+    away[p] = !s.halo->owns_cell(c, r);
+  }
+  Particles others;
+  P.move_marked(away, others);
 }
 
 void halo_sum(State& s, std::initializer_list<NodalArray> arrays) {

@@ -125,6 +125,10 @@ struct Halo {
 // runs do not support yet (the message names the key).
 void distribute(State& s, const Comm& comm, bool fresh = true);
 
+// Drops the particles whose centre's cell is not in this rank's block (after a split made
+// from every particle).
+void keep_own_particles(State& s);
+
 // (Re)builds this rank's halo for a new split: peers, halo nodes, interface nodes, ties; the
 // particles must follow (distribute, rebalance).
 void set_blocks(State& s, std::vector<CellBlock> blocks);

@@ -224,16 +224,8 @@ void distribute_nested(State& s, const Comm& comm, bool fresh) {
     if (int(l) == il) L.interfaces.swap(s.interfaces);  // the level's, lent for the split
     set_blocks(L, sp.blocks[l]);
     if (int(l) == il) L.interfaces.swap(s.interfaces);
-    // Keep this rank's particles (every rank made or read the same state).
-    Particles& P = L.particles;
-    std::vector<unsigned char> away(P.size(), 0);
-    for (std::size_t p = 0; p < P.size(); ++p) {
-      const int c = std::clamp(L.grid.x.cell_of(P.x[p]), 0, L.grid.x.cells - 1);
-      const int r = std::clamp(L.grid.y.cell_of(P.y[p]), 0, L.grid.y.cells - 1);
-      away[p] = !h->owns_cell(c, r);
-    }
-    Particles others;
-    P.move_marked(away, others);
+    keep_own_particles(L);  // every rank made or read the same state
+    const Particles& P = L.particles;
     // E14 as in distribute: this rank's parts of the run's sums.
     if (fresh)
       L.strain_work = strain_energy(P, L.stiffness);
