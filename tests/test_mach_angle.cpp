@@ -88,6 +88,43 @@ TEST(MachAngle, RecoversKnownAnglesOnBothSides) {
   }
 }
 
+TEST(MachAngle, ParticlesSplitAmongRanksGiveTheSameReading) {
+  // A distributed run bins each rank's particles and sums the bins over the ranks: two "ranks"
+  // (alternate particles, and a cut through the field) give the one-process line. The first
+  // rank's bins are kept by its sum; the second's sum adds them (bins, counts, material tally,
+  // in that order).
+  const double h = 0.125e-3;
+  const Cloud c = synthetic(h, 20.0, 33.3, 45.0, -0.002, 10e6, 2e6, 7);
+  for (int side : {+1, -1}) {
+    const MachSearch where = search(h, 20.0, 0.02);
+    const MachLine one = find_mach_line(c.x.data(), c.y.data(), c.tau.data(), c.material.data(), c.x.size(), where, side);
+    ASSERT_TRUE(one.found);
+    for (int split : {0, 1}) {
+      Cloud a, b;
+      for (std::size_t p = 0; p < c.x.size(); ++p) {
+        Cloud& to = (split == 0 ? p % 2 == 0 : c.x[p] < 0.03) ? a : b;
+        to.x.push_back(c.x[p]), to.y.push_back(c.y[p]), to.tau.push_back(c.tau[p]), to.material.push_back(c.material[p]);
+      }
+      std::vector<std::vector<double>> kept;
+      const SumOverRanks keep = [&](double* v, int n) { kept.emplace_back(v, v + n); };
+      find_mach_line(b.x.data(), b.y.data(), b.tau.data(), b.material.data(), b.x.size(), where, side, &keep);
+      ASSERT_EQ(kept.size(), 3u);
+      std::size_t call = 0;
+      const SumOverRanks add = [&](double* v, int n) {
+        for (int k = 0; k < n; ++k) v[k] += kept[call][std::size_t(k)];
+        ++call;
+      };
+      const MachLine two = find_mach_line(a.x.data(), a.y.data(), a.tau.data(), a.material.data(), a.x.size(), where, side, &add);
+      ASSERT_TRUE(two.found) << "split " << split << " side " << side;
+      // The bins' sums in another order: the same line to round-off.
+      EXPECT_NEAR(two.angle, one.angle, 1e-9) << "split " << split;
+      EXPECT_NEAR(two.jump, one.jump, 1e-6 * std::fabs(one.jump));
+      EXPECT_EQ(two.rows, one.rows);
+      EXPECT_EQ(two.material, one.material);
+    }
+  }
+}
+
 TEST(MachAngle, RotatedCrackGivesTheSameAngles) {
   // Different angles above and below (a bimaterial's two shear speeds), the front starting
   // 1 mm behind the tip; the crack running along 30 and 143 degrees.

@@ -31,6 +31,11 @@ class BinnedField {
     sum_[k] += value;
     count_[k] += 1.0;
   }
+  // Distributed: every rank's sums and counts added (before finish).
+  void sum_over_ranks(const SumOverRanks& sum) {
+    sum(sum_.data(), int(sum_.size()));
+    sum(count_.data(), int(count_.size()));
+  }
   // Bin means, then per row the prefix sums of the means and of the non-empty-bin count.
   void finish() {
     mean_prefix_.assign(std::size_t(nx_ + 1) * std::size_t(ny_), 0.0);
@@ -89,7 +94,7 @@ double speed_of_mach_angle(double beta_degrees, double c_s) {
 
 MachLine find_mach_line(const double* x, const double* y, const double* tau_max,
                         const std::uint8_t* material, std::size_t n, const MachSearch& where,
-                        int side) {
+                        int side, const SumOverRanks* over_ranks) {
   MachLine line;
   const double h = where.spacing, run = where.run;
   if (!(h > 0.0) || !(run > 0.0)) return line;
@@ -102,13 +107,17 @@ MachLine find_mach_line(const double* x, const double* y, const double* tau_max,
   // The crack's frame: xi along dir, eta along side x (dir rotated by +90 degrees).
   const double ex = where.dir_x, ey = where.dir_y;
   const double nx_ = -ey * side, ny_ = ex * side;
-  std::vector<int> materials(256, 0);
+  std::vector<double> materials(256, 0.0);
   for (std::size_t p = 0; p < n; ++p) {
     const double dx = x[p] - where.tip_x, dy = y[p] - where.tip_y;
     const double xi = dx * ex + dy * ey, eta = dx * nx_ + dy * ny_;
     if (eta < eta_min || eta >= eta_min + ny * h || xi < xi_min || xi >= xi_min + nx * h) continue;
     field.add(xi, eta, tau_max[p]);
-    ++materials[material[p]];
+    materials[material[p]] += 1.0;
+  }
+  if (over_ranks) {
+    field.sum_over_ranks(*over_ranks);
+    (*over_ranks)(materials.data(), int(materials.size()));
   }
   field.finish();
   line.material = int(std::max_element(materials.begin(), materials.end()) - materials.begin());
@@ -248,9 +257,11 @@ void write_mach_angles(const std::string& dir, const std::string& suffix,
 }
 
 bool read_mach_angle(const CrackTracker& crack, double c_s, const Particles& P, const Grid& grid,
-                     const std::vector<double>& shear_speed, double time, MachReading& out) {
+                     const std::vector<double>& shear_speed, double time, MachReading& out,
+                     const SumOverRanks* sum) {
   const std::vector<CrackSample>& samples = crack.samples();
-  if (samples.empty() || P.size() == 0) return false;
+  // (Distributed: every rank reads, with or without particles of its own.)
+  if (samples.empty() || (P.size() == 0 && !sum)) return false;
   const std::vector<double> v = crack.speeds();
   double speed = std::numeric_limits<double>::quiet_NaN();
   for (std::size_t j = v.size(); j-- > 0;)
@@ -285,8 +296,8 @@ bool read_mach_angle(const CrackTracker& crack, double c_s, const Particles& P, 
   out.tip_x = where.tip_x, out.tip_y = where.tip_y;
   out.dir_x = where.dir_x, out.dir_y = where.dir_y;
   out.speed = speed;
-  out.left = find_mach_line(P.x.data(), P.y.data(), tau.data(), P.material.data(), P.size(), where, +1);
-  out.right = find_mach_line(P.x.data(), P.y.data(), tau.data(), P.material.data(), P.size(), where, -1);
+  out.left = find_mach_line(P.x.data(), P.y.data(), tau.data(), P.material.data(), P.size(), where, +1, sum);
+  out.right = find_mach_line(P.x.data(), P.y.data(), tau.data(), P.material.data(), P.size(), where, -1, sum);
   auto shear = [&](const MachLine& m) {
     return m.material >= 0 && std::size_t(m.material) < shear_speed.size() ? shear_speed[std::size_t(m.material)] : c_s;
   };

@@ -25,6 +25,7 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -57,11 +58,17 @@ constexpr int kMinRows = 8;
 // nu > 0.47), 75 deg one at 1.035 c_S. A fitted angle outside them is not a reading.
 constexpr double kMinAngle = 15.0, kMaxAngle = 75.0;
 
+// Distributed runs: sums the n values in place over the ranks (each rank bins its particles;
+// the bins' sums and counts, and the material tally, are added before the search, so every
+// rank finds the same line from the same bins).
+using SumOverRanks = std::function<void(double*, int)>;
+
 // side = +1: to the left of the running direction (the crack's +n side), -1: to the right.
-// Particles: positions x, y (m), tau_max (Pa), material id; n of them.
+// Particles: positions x, y (m), tau_max (Pa), material id; n of them (this rank's, with
+// `sum`).
 MachLine find_mach_line(const double* x, const double* y, const double* tau_max,
                         const std::uint8_t* material, std::size_t n, const MachSearch& where,
-                        int side);
+                        int side, const SumOverRanks* sum = nullptr);
 
 // One measurement at an output time (every member is written in io/checkpoint.cpp).
 struct MachReading {
@@ -98,7 +105,8 @@ void write_mach_angles(const std::string& dir, const std::string& suffix,
 // along the line at the tip, h = the larger width of the grid cell holding the tip, each
 // side's c_S from its particles' material (shear_speed per material id). False: not read.
 bool read_mach_angle(const CrackTracker& crack, double c_s, const Particles& p, const Grid& grid,
-                     const std::vector<double>& shear_speed, double time, MachReading& out);
+                     const std::vector<double>& shear_speed, double time, MachReading& out,
+                     const SumOverRanks* sum = nullptr);
 
 // beta (degrees) for a front behind a tip at speed v in a material of shear speed c_s
 // (SPEC E12: sin(beta) = c_s / v), and the speed c_s / sin(beta) a measured beta implies.

@@ -103,7 +103,6 @@ struct OutputSpec {
   double crack_sample_interval = 0.05e-6;  // crack-tip sampling interval, s (E10)
   double interface_interval = 0.0;  // interface profiles (DIR/interface/*.csv), s; 0 = none
   double mach_interval = 0.0;       // shear Mach-angle readings (DIR/mach_angle*.csv), s; 0 = none
-  bool mach_interval_given = false;  // set in the input (else: the snapshot interval)
   double station_interval = 0.0;    // station samples (DIR/stations/*.csv), s; 0 = every step
   bool has_snapshot_region = false;
   double snapshot_region[4]{};      // xmin, ymin, xmax, ymax of the particles written, m

@@ -98,7 +98,6 @@ void parse_output(Section& top, Case& c) {
   if (c.output.crack_sample_interval <= 0)
     fail(o.key("crack_sample_interval"), c.output.crack_sample_interval, "must be > 0 (s)");
   c.output.interface_interval = o.number("interface_interval", c.output.snapshot_interval);
-  c.output.mach_interval_given = o.has("mach_interval");
   c.output.mach_interval = o.number("mach_interval", c.output.snapshot_interval);
   c.output.station_interval = o.number("station_interval", 0.0);
   if (c.output.station_interval < 0)

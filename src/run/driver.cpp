@@ -131,38 +131,6 @@ void set_up(RunContext& r, const Case& c, const std::string& dir, double checkpo
   r.station_schedule = Schedule(c.output.station_interval);
 }
 
-// What a distributed run does not do yet, refused before any work (every rank alike).
-void check_distributed_outputs(const Case& c, const RunOptions& o) {
-  const int n = o.comm.size();
-  if (n <= 1) return;
-  auto refuse = [&](const std::string& what) {
-    throw InputError(fmt::format("{} is not supported yet by a distributed run (mpirun -n {}); "
-                                 "run it on one process",
-                                 what, n));
-  };
-  // Mach readings look at the particles around a crack tip (no interface: nothing to read);
-  // left at its default (every snapshot) the key is dropped with a warning (for_ranks).
-  if (c.output.mach_interval > 0 && !c.interfaces.empty() && c.output.mach_interval_given)
-    refuse(fmt::format("output.mach_interval = {:g} (Mach-angle readings; set it to 0)",
-                       c.output.mach_interval));
-}
-
-// The case as a distributed run makes it: without the Mach-angle readings the input did not
-// ask for (output.mach_interval defaults to the snapshot interval), said once by rank 0.
-Case for_ranks(const Case& c, const RunOptions& o) {
-  Case out = c;
-  if (o.comm.distributed() && !c.interfaces.empty() && c.output.mach_interval > 0 &&
-      !c.output.mach_interval_given) {
-    out.output.mach_interval = 0.0;
-    if (o.comm.rank() == 0)
-      fmt::print(stderr,
-                 "warning: a distributed run makes no Mach-angle readings yet: output.mach_interval "
-                 "(by default the snapshot interval, {:g} s) is taken as 0\n",
-                 c.output.snapshot_interval);
-  }
-  return out;
-}
-
 // Rank 0 prepares the directory; every rank learns whether it could (InputError on all).
 void prepare_dir(const std::string& dir, const RunOptions& o) {
   std::string error;
@@ -183,13 +151,11 @@ void prepare_dir(const std::string& dir, const RunOptions& o) {
 
 }  // namespace
 
-RunResult run_case(const Case& input, const RunOptions& options) {
+RunResult run_case(const Case& c, const RunOptions& options) {
   namespace fs = std::filesystem;
-  const Case c = for_ranks(input, options);
   const std::string dir = options.output_dir;
   const Comm& comm = options.comm;
   const bool writer = comm.rank() == 0;  // the rank that writes the run directory
-  check_distributed_outputs(c, options);
   prepare_dir(dir, options);
   if (c.solver.threads > 0) omp_set_num_threads(c.solver.threads);
 
@@ -271,11 +237,14 @@ RunResult run_case(const Case& input, const RunOptions& options) {
   // SPEC E12 (output.mach_interval): the shear Mach front behind each crack running above c_S.
   std::vector<double> shear_speed;  // per material
   for (const WaveSpeeds& w : summary.speeds) shear_speed.push_back(w.shear);
+  // Distributed: each rank bins its particles, the bins summed over the ranks (collective).
+  const SumOverRanks sum_bins = [&comm](double* v, int n) { comm.sum(v, n); };
   auto read_mach_angles = [&]() {
     gather_particles(s);
     for (std::size_t k = 0; k < cracks.size(); ++k) {
       MachReading m;
-      if (read_mach_angle(cracks[k], crack_speeds[k].shear, s.particles, s.grid, shear_speed, s.time, m)) {
+      if (read_mach_angle(cracks[k], crack_speeds[k].shear, s.particles, s.grid, shear_speed, s.time, m,
+                          comm.distributed() ? &sum_bins : nullptr)) {
         m.interface = int(k);
         ctx.mach.push_back(m);
       }
