@@ -32,7 +32,9 @@ struct CheckpointAccess {
   template <class A>
   static void fields(A& a, SnapshotWriter& w) {
     // dir_ is the run directory, given when the writer is made
-    a("slot_of_id", w.slot_of_id_);
+    a("rows_first_id", w.rows_.first_id);
+    a("rows_first_row", w.rows_.first_row);
+    a("rows", w.rows_.rows);
     a("selected", w.selected_);
     a("files", w.files_);
     a("times", w.times_);

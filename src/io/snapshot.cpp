@@ -70,22 +70,46 @@ void write_scalar_attribute(hid_t file, const char* name, hid_t type, const void
 
 }  // namespace
 
-SnapshotWriter::SnapshotWriter(std::string dir, const Particles& p, const double* region,
-                               const Comm& comm)
-    : dir_(std::move(dir)), comm_(comm) {
-  if (comm_.rank() == 0) std::filesystem::create_directories(std::filesystem::path(dir_) / "snapshots");
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // failures are reported by IoError (with errno)
-  // Select by particle id (the solver re-sorts particles); slot_of_id_ gives each selected
-  // particle its row in every snapshot, in id order, so rows are comparable across files.
-  slot_of_id_.assign(p.size(), -1);
+void SnapshotRows::add(std::uint32_t id) {
+  if (first_id.empty() || first_id.back() + (rows - first_row.back()) != std::int64_t(id))
+    first_id.push_back(id), first_row.push_back(rows);  // not the next of the last run: a new one
+  ++rows;
+}
+
+std::int64_t SnapshotRows::row(std::uint32_t id) const {
+  const auto it = std::upper_bound(first_id.begin(), first_id.end(), std::int64_t(id));
+  if (it == first_id.begin()) return -1;
+  const std::size_t k = std::size_t(it - first_id.begin()) - 1;
+  const std::int64_t end = k + 1 < first_id.size() ? first_row[k + 1] : rows;  // run k's rows end
+  const std::int64_t r = first_row[k] + (std::int64_t(id) - first_id[k]);
+  return r < end ? r : -1;
+}
+
+bool in_snapshot_region(const double* region, double x, double y) {
+  return !region || (x >= region[0] && y >= region[1] && x <= region[2] && y <= region[3]);
+}
+
+SnapshotRows snapshot_rows(const Particles& p, const double* region) {
   std::vector<std::uint32_t> ids;
   for (std::size_t i = 0; i < p.size(); ++i)
-    if (!region || (p.x[i] >= region[0] && p.y[i] >= region[1] && p.x[i] <= region[2] &&
-                    p.y[i] <= region[3]))
-      ids.push_back(p.id[i]);
+    if (in_snapshot_region(region, p.x[i], p.y[i])) ids.push_back(p.id[i]);
   std::sort(ids.begin(), ids.end());
-  for (std::size_t k = 0; k < ids.size(); ++k) slot_of_id_[ids[k]] = std::int64_t(k);
-  selected_ = ids.size();
+  SnapshotRows rows;
+  for (const std::uint32_t id : ids) rows.add(id);
+  return rows;
+}
+
+SnapshotWriter::SnapshotWriter(std::string dir, const Particles& p, const double* region,
+                               const Comm& comm)
+    : SnapshotWriter(std::move(dir), snapshot_rows(p, region), comm) {}
+
+SnapshotWriter::SnapshotWriter(std::string dir, SnapshotRows rows, const Comm& comm)
+    : dir_(std::move(dir)), comm_(comm), rows_(std::move(rows)) {
+  if (comm_.rank() == 0) std::filesystem::create_directories(std::filesystem::path(dir_) / "snapshots");
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // failures are reported by IoError (with errno)
+  // Selected by particle id (the solver re-sorts particles), rows in id order, so rows are
+  // comparable across files.
+  selected_ = std::size_t(rows_.rows);
 }
 
 void SnapshotWriter::write(const Particles& p, const std::vector<ElasticStiffness>& stiffness,
@@ -112,7 +136,7 @@ void SnapshotWriter::write(const Particles& p, const std::vector<ElasticStiffnes
   std::vector<double> pos(3 * n), vel(3 * n), tau(n), sxx(n), syy(n), sxy(n), szz(n);
   std::vector<int> body(n), id(n), vertex(n);
   for (std::size_t i = 0; i < p.size(); ++i) {
-    const std::int64_t slot = slot_of_id_[p.id[i]];
+    const std::int64_t slot = rows_.row(p.id[i]);
     if (slot < 0) continue;
     const std::size_t k = std::size_t(slot);
     id[k] = int(p.id[i]);
@@ -169,7 +193,7 @@ void SnapshotWriter::write_collective(const Particles& p, const std::vector<Elas
   std::vector<double> pos, vel, tau, sxx, syy, sxy, szz;
   std::vector<int> body, id, vertex;
   for (std::size_t i = 0; i < p.size(); ++i) {
-    const std::int64_t slot = slot_of_id_[p.id[i]];
+    const std::int64_t slot = rows_.row(p.id[i]);
     if (slot < 0) continue;
     rows.push_back(hsize_t(slot));
     id.push_back(int(p.id[i]));

@@ -23,13 +23,31 @@
 
 namespace rupture {
 
+// Which particle ids the snapshots hold and each one's row (rows in id order): maximal runs of
+// consecutive ids, each with its first row, so the table stays small (one run per body and
+// row of particles in a region of interest, one in all without) whatever the particle count.
+struct SnapshotRows {
+  std::vector<std::int64_t> first_id, first_row;  // per run, increasing
+  std::int64_t rows = 0;                          // ids held
+  void add(std::uint32_t id);                     // ids in increasing order
+  std::int64_t row(std::uint32_t id) const;       // -1: not held
+};
+
+// The rows of the particles of `p` (every particle at t = 0) that lie inside `region`
+// (xmin, ymin, xmax, ymax; every particle when null).
+SnapshotRows snapshot_rows(const Particles& p, const double* region);
+bool in_snapshot_region(const double* region, double x, double y);
+
 class SnapshotWriter {
  public:
   // Writes every particle, or only those that start inside `region` (xmin, ymin, xmax, ymax)
   // when given: the same particles at every output time, so ParaView sees one point set.
-  // `p`: every particle at t = 0 (a distributed run makes the writer before its split).
+  // `p`: every particle at t = 0.
   SnapshotWriter(std::string dir, const Particles& p, const double* region = nullptr,
                  const Comm& comm = Comm::single());
+  // The same with the rows chosen already (a distributed run: among every particle the case
+  // seeds, solver/case_seeding.hpp, each rank holding only its own).
+  SnapshotWriter(std::string dir, SnapshotRows rows, const Comm& comm);
   // stiffness: the run's table indexed by p.material (sigma_zz follows from the in-plane stress).
   void write(const Particles& p, const std::vector<ElasticStiffness>& stiffness, double time,
              long step);
@@ -42,7 +60,7 @@ class SnapshotWriter {
                         double time, long step, const std::string& tmp);
   std::string dir_;
   Comm comm_ = Comm::single();
-  std::vector<std::int64_t> slot_of_id_;  // row of particle id in every file, -1: not written
+  SnapshotRows rows_;  // the particles written and their rows, the same in every file
   std::size_t selected_ = 0;
   std::vector<std::string> files_;  // relative to dir_
   std::vector<double> times_;

@@ -14,9 +14,16 @@
 
 namespace rupture {
 
-std::vector<StationProbe> make_probes(const std::vector<StationSpec>& specs, const State& s) {
+void NearestParticle::visit(double px, double py, std::uint32_t pid) {
+  const double d = std::hypot(px - x, py - y);
+  if (d < best || (d == best && pid < id)) best = d, id = pid;
+}
+
+std::vector<StationProbe> make_probes(const std::vector<StationSpec>& specs, const State& s,
+                                      const std::vector<std::uint32_t>* nearest) {
   std::vector<StationProbe> out;
-  for (const StationSpec& st : specs) {
+  for (std::size_t k = 0; k < specs.size(); ++k) {
+    const StationSpec& st = specs[k];
     StationProbe p;
     p.interface = st.interface;
     if (st.interface >= 0) {
@@ -30,14 +37,15 @@ std::vector<StationProbe> make_probes(const std::vector<StationSpec>& specs, con
       p.b = k + 1 < n ? k + 1 : (c.closed ? 0 : k);
       const double len = p.b == p.a ? 1.0 : (p.b == 0 ? c.length() : c.s0[p.b]) - c.s0[p.a];
       p.f = p.b == p.a ? 0.0 : std::clamp((arc - c.s0[p.a]) / len, 0.0, 1.0);
+    } else if (nearest) {
+      p.particle_id = (*nearest)[k];
+      p.slot = 0;  // found at the first read
     } else {
       const Particles& P = s.particles;
-      double best = INFINITY;
-      for (std::size_t q = 0; q < P.size(); ++q) {
-        const double d = std::hypot(P.x[q] - st.x, P.y[q] - st.y);
-        if (d < best) best = d, p.slot = q;
-      }
-      p.particle_id = P.id[p.slot];
+      NearestParticle n{st.x, st.y};
+      for (std::size_t q = 0; q < P.size(); ++q) n.visit(P.x[q], P.y[q], P.id[q]);
+      p.particle_id = n.id;
+      p.slot = std::size_t(std::find(P.id.begin(), P.id.end(), n.id) - P.id.begin());
     }
     out.push_back(p);
   }

@@ -9,6 +9,7 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -39,7 +40,20 @@ struct StationProbe {
 inline constexpr std::size_t kFaultColumns = 6;  // time, slip, slip_rate, opening, shear, normal
 inline constexpr std::size_t kBodyColumns = 5;   // time, x, y, vx, vy
 
-std::vector<StationProbe> make_probes(const std::vector<StationSpec>& specs, const State& s);
+// A body station reads the particle nearest its point at t = 0, the lowest id among equally
+// near ones (so the choice does not depend on the particles' order): among s's particles, or
+// when `nearest` is given, its entry for the station (a distributed run's choice among every
+// particle the case seeds, solver/case_seeding.hpp; entries of fault stations unused).
+std::vector<StationProbe> make_probes(const std::vector<StationSpec>& specs, const State& s,
+                                      const std::vector<std::uint32_t>* nearest = nullptr);
+// The id of the particle nearest (x, y) in a sequence visited one by one: the lowest among
+// equally near ones.
+struct NearestParticle {
+  double x = 0.0, y = 0.0;
+  double best = std::numeric_limits<double>::infinity();
+  std::uint32_t id = 0;
+  void visit(double px, double py, std::uint32_t pid);
+};
 // Appends one row per station at the state's time.
 void sample_stations(const State& s, std::vector<StationProbe>& probes,
                      std::vector<StationSeries>& series);

@@ -127,12 +127,7 @@ void set_blocks(State& s, std::vector<CellBlock> blocks) {
 void distribute(State& s, const Comm& comm, bool fresh) {
   check_distributable(s, comm.size());
   if (s.nested) return distribute_nested(s, comm, fresh);  // parallel/halo_nested.hpp
-  auto h = std::make_shared<Halo>();
-  h->comm = comm;
-  h->cell = std::min(s.grid.x.h, s.grid.y.h);
-  if (!s.interfaces.empty()) h->halo_nodes = kInterfaceHaloNodes;
-  h->all_bonded = s.bonded;
-  s.halo = h;
+  attach_halo(s, comm);
   set_blocks(s, plan_ranks(s, comm.size()).levels.at(0).split.block);
   keep_own_particles(s);  // every rank made the same State: the same particles, the same split
   Particles& P = s.particles;
@@ -144,6 +139,15 @@ void distribute(State& s, const Comm& comm, bool fresh) {
     s.strain_work = s.external_work = 0.0;
     for (CohesiveInterface& c : s.interfaces) c.work = 0.0;
   }
+}
+
+void attach_halo(State& s, const Comm& comm) {
+  auto h = std::make_shared<Halo>();
+  h->comm = comm;
+  h->cell = std::min(s.grid.x.h, s.grid.y.h);
+  if (!s.interfaces.empty()) h->halo_nodes = kInterfaceHaloNodes;
+  h->all_bonded = s.bonded;
+  s.halo = h;
 }
 
 void keep_own_particles(State& s) {

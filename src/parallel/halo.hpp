@@ -125,6 +125,16 @@ struct Halo {
 // runs do not support yet (the message names the key).
 void distribute(State& s, const Comm& comm, bool fresh = true);
 
+// A fresh run's State on this rank of `comm` (uniform or graded grid): the split of the case's
+// particles at t = 0 (the one distribute makes) computed by every rank from a count of the
+// case's seed points, and only this rank's particles made (parallel/rank_state.cpp): no rank
+// ever holds the case's particles. Nested levels: make_state, then distribute. On one rank too
+// (a halo with no peers, as distribute gives).
+State make_rank_state(const Case& c, const Comm& comm);
+
+// Gives s a halo on `comm` (no blocks yet: set_blocks follows).
+void attach_halo(State& s, const Comm& comm);
+
 // Drops the particles whose centre's cell is not in this rank's block (after a split made
 // from every particle).
 void keep_own_particles(State& s);

@@ -64,8 +64,7 @@ void fill(Particles& p, std::size_t k, const SeedPoint& s, const SeedProperties&
 
 }  // namespace
 
-void for_each_seed_point(const Grid& g, const Region& r, int ppc,
-                         const std::function<void(const SeedPoint&)>& visit) {
+void for_each_seed_point(const Grid& g, const Region& r, int ppc, const SeedVisit& visit) {
   const Box b = bounding_box(r);
   // On a uniform grid the box is clipped to the grid's extent (a nested level's lattice covers
   // part of the domain; the whole-domain grid holds every body anyway). Its ends are grid
@@ -100,8 +99,8 @@ std::size_t seed_region(Particles& p, const Grid& g, const Region& r, int ppc,
 
 // SPEC §5: on a refined grid every cell the body covers gets ppc x ppc particles of the
 // cell's own size (rectangular where the cell is), in rows of particles across the body.
-void seed_graded_rectangle(Particles& P, const Grid& g, const double min[2], const double max[2],
-                           int ppc, const SeedProperties& props) {
+void for_each_graded_rectangle_point(const Grid& g, const double min[2], const double max[2], int ppc,
+                                     const SeedVisit& visit) {
   const double tol = 1e-9 * g.x.h;
   std::vector<int> cols, rows;
   for (int i = 0; i < g.x.cells; ++i) {
@@ -112,15 +111,42 @@ void seed_graded_rectangle(Particles& P, const Grid& g, const double min[2], con
     const double yc = g.y.node(j) + 0.5 * g.y.width(j);
     if (yc > min[1] - tol && yc < max[1] + tol) rows.push_back(j);
   }
-  std::size_t k = P.size();
-  P.resize(k + cols.size() * rows.size() * std::size_t(ppc * ppc));
   for (int j : rows)
     for (int sj = 0; sj < ppc; ++sj)
       for (int i : cols)
-        for (int si = 0; si < ppc; ++si, ++k) {
+        for (int si = 0; si < ppc; ++si) {
           const double lx = g.x.width(i) / ppc, ly = g.y.width(j) / ppc;
-          fill(P, k, {g.x.node(i) + (si + 0.5) * lx, g.y.node(j) + (sj + 0.5) * ly, lx, ly}, props);
+          visit({g.x.node(i) + (si + 0.5) * lx, g.y.node(j) + (sj + 0.5) * ly, lx, ly});
         }
+}
+
+void seed_graded_rectangle(Particles& P, const Grid& g, const double min[2], const double max[2],
+                           int ppc, const SeedProperties& props) {
+  std::vector<SeedPoint> points;
+  for_each_graded_rectangle_point(g, min, max, ppc, [&](const SeedPoint& s) { points.push_back(s); });
+  std::size_t k = P.size();
+  P.resize(k + points.size());
+  for (const SeedPoint& s : points) fill(P, k++, s, props);
+}
+
+void for_each_rectangle_point(const double min[2], const double max[2], double h, int ppc,
+                              const double origin[2], const SeedVisit& visit) {
+  // The arithmetic of seed_rectangle (particles/particles.cpp), point for point.
+  const long cx = std::lround((max[0] - min[0]) / h);
+  const long cy = std::lround((max[1] - min[1]) / h);
+  const double side = h / ppc;
+  const long ix = std::lround((min[0] - origin[0]) / h) * ppc;
+  const long iy = std::lround((min[1] - origin[1]) / h) * ppc;
+  for (long j = 0; j < cy * ppc; ++j)
+    for (long i = 0; i < cx * ppc; ++i)
+      visit({lattice_centre(origin[0], side, ix + i), lattice_centre(origin[1], side, iy + j), side, side});
+}
+
+void append_seed_point(Particles& p, const SeedPoint& s, const SeedProperties& props, std::uint32_t id) {
+  const std::size_t k = p.size();
+  p.resize(k + 1);
+  fill(p, k, s, props);
+  p.id[k] = id;
 }
 
 }  // namespace rupture

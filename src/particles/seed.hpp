@@ -30,13 +30,15 @@ struct SeedProperties {
   double velocity[2]{};  // m/s
 };
 
+using SeedVisit = std::function<void(const SeedPoint&)>;
+
 // Visits, in seeding order, the sub-cell centres inside `r` on grid `g` (uniform or graded).
 // The sub-cells are those of the grid cells the region's bounding box overlaps; on a uniform
 // grid their centres are counted from the box's lower-left corner when it lies on grid lines
 // (so a rectangle given as a polygon gets bitwise the positions seed_rectangle gives it), from
 // the grid line below it otherwise.
 void for_each_seed_point(const Grid& g, const Region& r, int ppc,
-                         const std::function<void(const SeedPoint&)>& visit);
+                         const SeedVisit& visit);
 
 // How many particles region `r` gets.
 long count_seed_points(const Grid& g, const Region& r, int ppc);
@@ -49,5 +51,18 @@ std::size_t seed_region(Particles& p, const Grid& g, const Region& r, int ppc,
 // in [min, max] gets ppc x ppc particles of the cell's own size. Appends to `p`.
 void seed_graded_rectangle(Particles& p, const Grid& g, const double min[2], const double max[2],
                            int ppc, const SeedProperties& props);
+
+// Visits, in their order, the particles seed_graded_rectangle appends.
+void for_each_graded_rectangle_point(const Grid& g, const double min[2], const double max[2], int ppc,
+                                     const SeedVisit& visit);
+
+// Visits, in their order and bitwise at their positions, the particles seed_rectangle
+// (particles/particles.hpp) appends.
+void for_each_rectangle_point(const double min[2], const double max[2], double h, int ppc,
+                              const double origin[2], const SeedVisit& visit);
+
+// Appends one particle at `s` with identity `id` (a distributed run's rank keeps some of a
+// case's particles, numbered as one process numbers them).
+void append_seed_point(Particles& p, const SeedPoint& s, const SeedProperties& props, std::uint32_t id);
 
 }  // namespace rupture

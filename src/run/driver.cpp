@@ -26,6 +26,7 @@
 #include "run/output_dir.hpp"
 #include "run/progress.hpp"
 #include "solver/energy.hpp"
+#include "solver/case_seeding.hpp"
 #include "solver/nested_state.hpp"
 #include "solver/state.hpp"
 #include "solver/step.hpp"
@@ -99,15 +100,35 @@ void stamp_heartbeat(RunRecord& r) {
 }
 
 // Sets up a run's context from the case: the initial state, one crack tracker per interface,
-// the snapshot writer and the output schedules. A fresh run starts from it; a resumed one
-// overwrites it with the checkpoint.
-void set_up(RunContext& r, const Case& c, const std::string& dir, double checkpoint_interval,
-            const Comm& comm) {
-  r.s = make_state(c);
-  // Which particles the snapshots hold (every particle at t = 0: before a split).
-  if (c.output.snapshot_interval > 0)
-    r.snapshots = std::make_unique<SnapshotWriter>(
-        dir, r.s.particles, c.output.has_snapshot_region ? c.output.snapshot_region : nullptr, comm);
+// the snapshot writer and the output schedules; returns where the stations read. A fresh run
+// starts from it; a resumed one overwrites it with the checkpoint. Distributed on a uniform or
+// graded grid, each rank makes its own particles only (parallel/halo.hpp: make_rank_state) and
+// chooses the snapshot rows and the stations' particles among every particle the case seeds
+// (solver/case_seeding.hpp), as one process chooses them; nested levels are made whole on
+// every rank and split by the caller.
+std::vector<StationProbe> set_up(RunContext& r, const Case& c, const std::string& dir,
+                                 double checkpoint_interval, const Comm& comm) {
+  const bool by_rank = comm.distributed() && !c.grid.nested;
+  r.s = by_rank ? make_rank_state(c, comm) : make_state(c);
+  const double* region = c.output.has_snapshot_region ? c.output.snapshot_region : nullptr;
+  std::vector<StationProbe> probes;
+  if (by_rank) {
+    SnapshotRows rows;
+    std::vector<NearestParticle> nearest;
+    for (const StationSpec& st : c.stations) nearest.push_back({st.x, st.y});
+    for_each_case_point(c, r.s.grid, [&](const SeedPoint& p, std::size_t, std::uint32_t id) {
+      if (in_snapshot_region(region, p.x, p.y)) rows.add(id);
+      for (NearestParticle& n : nearest) n.visit(p.x, p.y, id);
+    });
+    if (c.output.snapshot_interval > 0) r.snapshots = std::make_unique<SnapshotWriter>(dir, std::move(rows), comm);
+    std::vector<std::uint32_t> ids;
+    for (const NearestParticle& n : nearest) ids.push_back(n.id);
+    probes = make_probes(c.stations, r.s, &ids);
+  } else {
+    // Which particles the snapshots hold and the stations read (every particle at t = 0).
+    if (c.output.snapshot_interval > 0) r.snapshots = std::make_unique<SnapshotWriter>(dir, r.s.particles, region, comm);
+    probes = make_probes(c.stations, r.s);
+  }
   const State& s = r.s;
   for (const CohesiveInterface& ci : s.interfaces) {
     // The cell width along the line at node k (the width in the line's direction).
@@ -129,6 +150,7 @@ void set_up(RunContext& r, const Case& c, const std::string& dir, double checkpo
   r.checkpoint = Schedule(checkpoint_interval);
   r.mach_schedule = Schedule(c.output.mach_interval);
   r.station_schedule = Schedule(c.output.station_interval);
+  return probes;
 }
 
 // Rank 0 prepares the directory; every rank learns whether it could (InputError on all).
@@ -161,13 +183,12 @@ RunResult run_case(const Case& c, const RunOptions& options) {
 
   const CaseSummary summary = summarize(c);
   RunContext ctx;
-  set_up(ctx, c, dir, options.checkpoint_interval, comm);
   // Where the stations read, from the state at t = 0 (a body station follows the particle
   // nearest its point then), before a checkpoint replaces the state.
-  std::vector<StationProbe> probes = make_probes(c.stations, ctx.s);
-  // Distributed: this rank's block and particles (every rank built the whole state at t = 0;
-  // a resumed run splits once the checkpoint is read).
-  if (comm.distributed() && !options.resume) distribute(ctx.s, comm);
+  std::vector<StationProbe> probes = set_up(ctx, c, dir, options.checkpoint_interval, comm);
+  // Distributed nested levels: this rank's block and particles (every rank built the whole
+  // state at t = 0; a resumed run splits once the checkpoint is read).
+  if (comm.distributed() && c.grid.nested && !options.resume) distribute(ctx.s, comm);
   if (options.resume) {
     read_checkpoint(checkpoint_path(dir), ctx);
     read_checkpoint_particles(dir, ctx);  // a distributed run's particle parts

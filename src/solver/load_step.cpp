@@ -29,12 +29,12 @@ inline void for_each_weight(const State& s, std::size_t p, Visit&& visit) {
 
 }  // namespace
 
-void set_up_loads(State& s, const Loads& loads, double cell_size) {
+void set_up_loads(State& s, const Loads& loads, double cell_size, const Particles* near) {
   LoadState& L = s.loads;
   L.spec = loads;
   if (loads.empty()) return;
   for (const TractionLoad& t : loads.tractions)
-    L.patches.push_back(find_traction_patch(t, s.particles, cell_size));
+    L.patches.push_back(find_traction_patch(t, near ? *near : s.particles, cell_size));
   for (const VelocityRegion& r : loads.velocity_regions) {
     L.region_ids.push_back(region_particles(r, s.particles));
     if (L.region_ids.back().empty())
@@ -47,7 +47,6 @@ void set_up_loads(State& s, const Loads& loads, double cell_size) {
   for (std::size_t k = 0; k < L.patches.size(); ++k) L.patch_index[k].resize(L.patches[k].ids.size());
   L.region_index.resize(L.region_ids.size());
   for (std::size_t k = 0; k < L.region_ids.size(); ++k) L.region_index[k].resize(L.region_ids[k].size());
-  L.slot_of_id.resize(s.particles.size());
   const std::size_t grid_nodes = s.fields.mass.size();
   L.accel_x.resize(std::size_t(s.fields.num_fields));
   L.accel_y.resize(std::size_t(s.fields.num_fields));
@@ -68,11 +67,16 @@ void prepare_loads(State& s) {
   if (L.spec.tractions.empty() && L.spec.velocity_regions.empty()) return;
   const Particles& P = s.particles;
   if (L.indexed_sort != s.plan.sorted_step) {
+    // Indexed by id: as long as the largest id held (a distributed rank's ids are some of the
+    // case's, and migration brings others).
+    std::uint32_t top = 0;
+    for (std::size_t p = 0; p < P.size(); ++p) top = std::max(top, P.id[p] + 1);
+    if (L.slot_of_id.size() < top) L.slot_of_id.resize(top, LoadState::kAbsent);
     for (std::size_t p = 0; p < P.size(); ++p) L.slot_of_id[P.id[p]] = std::uint32_t(p);
     // A distributed run holds some of the ids: an entry left from an earlier sort points at
     // another particle (or past the end) and marks the id absent.
     auto slot = [&](std::uint32_t id) {
-      const std::uint32_t p = L.slot_of_id[id];
+      const std::uint32_t p = id < L.slot_of_id.size() ? L.slot_of_id[id] : LoadState::kAbsent;
       return p < P.size() && P.id[p] == id ? p : LoadState::kAbsent;
     };
     for (std::size_t k = 0; k < L.patches.size(); ++k)

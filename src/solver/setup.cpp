@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "particles/seed.hpp"
+#include "solver/case_seeding.hpp"
 #include "solver/energy.hpp"
 #include "solver/field_windows.hpp"
 #include "solver/state.hpp"
@@ -36,35 +37,86 @@ void keep_only(Particles& P, std::size_t first, const std::function<bool(double,
   P.move_marked(drop, dropped);
 }
 
+// Visits body b's points on grid g in the order one process appends them.
+void for_each_body_point(const Case& c, const Grid& g, const BodySpec& b, const SeedVisit& visit) {
+  const int ppc = c.grid.particles_per_cell;
+  if (!b.plain_rectangle())  // point-in-shape of the sub-cell centres (particles/seed.hpp)
+    for_each_seed_point(g, b.region, ppc, visit);
+  else if (g.graded())
+    for_each_graded_rectangle_point(g, b.min, b.max, ppc, visit);
+  else
+    for_each_rectangle_point(b.min, b.max, c.grid.cell_size, ppc, g.domain_min, visit);
+}
+
+SeedProperties seed_properties(const Case& c, const BodySpec& b) {
+  const ElasticMaterial& m = c.materials[std::size_t(b.material)];
+  return {m.density, std::uint8_t(b.field), std::uint8_t(b.material), {b.velocity[0], b.velocity[1]}};
+}
+
+// Every particle at t = 0 (ids as one process gives them) whose box may meet a traction load's
+// segment or be among the nearest to its points (bc/loads.hpp: find_traction_patch looks no
+// further than twice a particle's half-diagonal, at most hypot(wx, wy) <= wx + wy for the
+// widest cells), in id order: find_traction_patch on them finds what it finds on all.
+Particles particles_near_loads(const Case& c, const Grid& g) {
+  Particles near;
+  if (c.loads.tractions.empty()) return near;
+  double wx = 0.0, wy = 0.0;
+  for (int i = 0; i < g.x.cells; ++i) wx = std::max(wx, g.x.width(i));
+  for (int j = 0; j < g.y.cells; ++j) wy = std::max(wy, g.y.width(j));
+  const double R = wx + wy;
+  std::uint32_t id = 0;
+  for (const BodySpec& b : c.bodies) {
+    const SeedProperties props = seed_properties(c, b);
+    for_each_body_point(c, g, b, [&](const SeedPoint& p) {
+      for (const TractionLoad& t : c.loads.tractions) {
+        const double dx = t.to[0] - t.from[0], dy = t.to[1] - t.from[1], L = std::hypot(dx, dy);
+        const double rx = p.x - t.from[0], ry = p.y - t.from[1];
+        const double along = (rx * dx + ry * dy) / L, across = (rx * dy - ry * dx) / L;
+        if (along > -R && along < L + R && std::fabs(across) < R) {
+          append_seed_point(near, p, props, id);
+          break;
+        }
+      }
+      ++id;
+    });
+  }
+  return near;
+}
+
 // make_state on a given grid. With `keep` (a nested level, solver/nested_state.hpp) every body
 // is seeded through its region on this lattice, only the particles `keep` accepts stay, ids
-// are their indices, and the boundary conditions are left to the caller.
-State make_state_on(const Case& c, Grid grid, const std::function<bool(double, double)>* keep) {
+// are their indices, and the boundary conditions are left to the caller. With `own` (a rank of
+// a distributed run, solver/case_seeding.hpp) only the particles `own` accepts are made, with
+// the ids one process gives them.
+State make_state_on(const Case& c, Grid grid, const PointFilter* keep, const PointFilter* own) {
   State s;
   s.grid = std::move(grid);
   const int num_fields = int(c.field_names.size());  // bodies sharing a field share its arrays
   // Whole-grid fields until the particles exist; fitted to windows below (solver/field_windows.hpp).
-  s.fields.resize(num_fields, std::size_t(s.grid.nodes_x()), std::size_t(s.grid.nodes_y()));
+  // A rank's start with one node each: it never holds the whole grid.
+  if (own) {
+    const std::vector<int> zero(std::size_t(num_fields), 0), one(std::size_t(num_fields), 1);
+    s.fields.set_windows(std::size_t(s.grid.nodes_x()), std::size_t(s.grid.nodes_y()), zero, one, zero, one);
+  } else {
+    s.fields.resize(num_fields, std::size_t(s.grid.nodes_x()), std::size_t(s.grid.nodes_y()));
+  }
 
   for (const ElasticMaterial& m : c.materials) s.stiffness.push_back(stiffness(m, c.plane));
   const int ppc = c.grid.particles_per_cell;
+  std::uint32_t next_id = 0;  // the id one process gives the next point
   for (const BodySpec& b : c.bodies) {
-    const ElasticMaterial& m = c.materials[std::size_t(b.material)];
-    const SeedProperties props{m.density, std::uint8_t(b.field), std::uint8_t(b.material),
-                               {b.velocity[0], b.velocity[1]}};
+    const SeedProperties props = seed_properties(c, b);
     const std::size_t first = s.particles.size();
     if (keep) {
       seed_region(s.particles, s.grid, b.region, ppc, props);
       keep_only(s.particles, first, *keep);
-    } else if (!b.plain_rectangle())  // point-in-shape of the sub-cell centres (particles/seed.hpp)
-      seed_region(s.particles, s.grid, b.region, ppc, props);
-    else if (s.grid.graded())
-      seed_graded_rectangle(s.particles, s.grid, b.min, b.max, ppc, props);
-    else
-      seed_rectangle(s.particles, b.min, b.max, c.grid.cell_size, ppc, m.density,
-                     std::uint8_t(b.field), std::uint8_t(b.material), b.velocity,
-                     s.grid.domain_min);
-    prestress(s.particles, first, s.particles.size(), b, m, c.plane);
+    } else {
+      for_each_body_point(c, s.grid, b, [&](const SeedPoint& p) {
+        if (!own || (*own)(p.x, p.y)) append_seed_point(s.particles, p, props, next_id);
+        ++next_id;
+      });
+    }
+    prestress(s.particles, first, s.particles.size(), b, c.materials[std::size_t(b.material)], c.plane);
   }
   if (keep) {
     for (std::size_t p = 0; p < s.particles.size(); ++p) s.particles.id[p] = std::uint32_t(p);
@@ -102,19 +154,50 @@ State make_state_on(const Case& c, Grid grid, const std::function<bool(double, d
   build_scatter_plan(s);
   fit_field_windows(s);
   s.windows_checked_step = -2;  // the first step measures again
-  set_up_loads(s, c.loads, c.grid.cell_size);
+  if (own) {  // a traction patch: found among every particle near its segment
+    const Particles near = particles_near_loads(c, s.grid);
+    set_up_loads(s, c.loads, c.grid.cell_size, &near);
+  } else {
+    set_up_loads(s, c.loads, c.grid.cell_size);
+  }
   return s;
 }
 
 }  // namespace
 
+void for_each_case_point(const Case& c, const Grid& g, const CasePointVisit& visit) {
+  std::uint32_t id = 0;
+  for (std::size_t k = 0; k < c.bodies.size(); ++k)
+    for_each_body_point(c, g, c.bodies[k], [&](const SeedPoint& p) { visit(p, k, id++); });
+}
+
+CaseTally tally_case_points(const Case& c, const Grid& g) {
+  CaseTally t;
+  const int cols = g.x.cells, rows = g.y.cells;
+  t.per_cell.assign(std::size_t(cols) * std::size_t(rows), 0);
+  t.min_mass = std::numeric_limits<double>::max();
+  for_each_case_point(c, g, [&](const SeedPoint& p, std::size_t body, std::uint32_t) {
+    const int i = std::clamp(g.x.cell_of(p.x), 0, cols - 1), j = std::clamp(g.y.cell_of(p.y), 0, rows - 1);
+    ++t.per_cell[std::size_t(i) + std::size_t(j) * std::size_t(cols)];
+    ++t.particles;
+    // The mass append_seed_point gives it (particles/seed.cpp: density * lx * ly).
+    const double m = c.materials[std::size_t(c.bodies[body].material)].density * p.lx * p.ly;
+    t.min_mass = std::min(t.min_mass, m);
+  });
+  return t;
+}
+
 State make_state(const Case& c) {
   if (c.grid.nested) return make_nested_run_state(c);  // solver/nested_state.hpp
-  return make_state_on(c, build_grid(c.grid), nullptr);
+  return make_state_on(c, build_grid(c.grid), nullptr, nullptr);
+}
+
+State make_state_owning(const Case& c, const PointFilter& own) {
+  return make_state_on(c, build_grid(c.grid), nullptr, &own);
 }
 
 State make_level_state(const Case& c, Grid lattice, const std::function<bool(double, double)>& keep) {
-  return make_state_on(c, std::move(lattice), &keep);
+  return make_state_on(c, std::move(lattice), &keep, nullptr);
 }
 
 }  // namespace rupture

@@ -86,8 +86,28 @@ int main(int argc, char** argv) {
   }
   const Case c = load_case(path, sets);
 
-  State d = make_state(c);
-  distribute(d, world);
+  // The distributed run's set-up: each rank makes its own particles only (make_rank_state).
+  State d = make_rank_state(c, world);
+  // It gives, bit for bit and in the same order, the particles, the split and the mass floor of
+  // the whole set-up split afterwards (make_state + distribute); the initial energy to round-off.
+  double setup_same = 1.0, initial_energy_difference = 0.0;
+  {
+    State w = make_state(c);
+    distribute(w, world);
+    const Particles &A = w.particles, &B = d.particles;
+    bool same = A.x == B.x && A.y == B.y && A.vx == B.vx && A.vy == B.vy && A.mass == B.mass &&
+                A.volume0 == B.volume0 && A.half_x == B.half_x && A.half_y == B.half_y && A.sxx == B.sxx &&
+                A.syy == B.syy && A.sxy == B.sxy && A.field == B.field && A.material == B.material && A.id == B.id;
+    same = same && w.mass_floor == d.mass_floor && w.strain_work == d.strain_work && !w.halo == !d.halo &&
+           (!w.halo || w.halo->blocks.size() == d.halo->blocks.size());
+    for (std::size_t r = 0; same && w.halo && r < w.halo->blocks.size(); ++r) {
+      const CellBlock &a = w.halo->blocks[r], &b = d.halo->blocks[r];
+      same = a.c0 == b.c0 && a.c1 == b.c1 && a.r0 == b.r0 && a.r1 == b.r1;
+    }
+    setup_same = world.min(double(same));  // every rank's
+    initial_energy_difference = w.initial_energy != 0.0 ? std::fabs(d.initial_energy / w.initial_energy - 1.0)
+                                                        : std::fabs(d.initial_energy);
+  }
   advance(d, steps);
   const long migrations = d.halo->migrations, rebalances = d.halo->rebalances;
   gather_interface_state(d);  // every interface node from its owner (collective)
@@ -159,12 +179,14 @@ int main(int argc, char** argv) {
     fmt::print("ranks={}\nsteps={}\nparticles={}\nparticles_distributed={}\nmissing={}\nrepeated={}\n",
                world.size(), steps, P.size(), n, missing, repeated);
     fmt::print("rebalances={}\n", rebalances);
+    fmt::print("setup_identical={}\ninitial_energy_difference_relative={:.3e}\n", setup_same == 1.0 ? 1 : 0,
+               initial_energy_difference);
     fmt::print("migrations={}\nmass_relative_difference={:.3e}\n", migrations, std::fabs(mass_d - mass) / mass);
     fmt::print("position_difference_over_h={:.3e}\nvelocity_difference_relative={:.3e}\n"
                "stress_difference_relative={:.3e}\nbound={:.1e}\n",
                rel_x, rel_v, rel_s, bound);
     // Mass: the same doubles summed in another order (round-off of the sum only).
-    ok = ok && n == P.size() && missing == 0 && repeated == 0 &&
+    ok = ok && setup_same == 1.0 && initial_energy_difference <= bound && n == P.size() && missing == 0 && repeated == 0 &&
          mass_d == mass && rel_x <= bound && rel_v <= bound &&
          rel_s <= bound && migrations >= min_migrations &&
          (world.size() == 1 || rebalances >= min_rebalances) && cracked == cracked_d && rel_u <= bound &&

@@ -1,0 +1,44 @@
+// rupture/solver/case_seeding.hpp
+// A case's particles at t = 0 without storing them: every body's seed points (particles/seed.hpp)
+// in the order make_state appends them, each with the id it gets there (0, 1, ... over the
+// bodies). A distributed run's ranks walk them to split the grid by particle count, to choose
+// the snapshots' rows, the stations' particles and the traction loads' particles as one process
+// does, and keep only their own (make_state_owning): memory per rank is its particles, never
+// the case's; time is one visit of every point per rank.
+// Units: m, kg.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "io/case.hpp"
+#include "particles/seed.hpp"
+#include "solver/state.hpp"
+
+namespace rupture {
+
+// One point of body `body` (index into Case::bodies) with its id.
+using CasePointVisit = std::function<void(const SeedPoint&, std::size_t body, std::uint32_t id)>;
+void for_each_case_point(const Case& c, const Grid& g, const CasePointVisit& visit);
+
+// A particle centre's test (x, y in m).
+using PointFilter = std::function<bool(double, double)>;
+
+// What the points add up to: particles per cell of g (cell (c, r) at c + r cols; a centre on
+// the lattice's edge counts in the edge cell), how many, and the lightest particle's mass.
+struct CaseTally {
+  std::vector<std::uint32_t> per_cell;
+  std::size_t particles = 0;
+  double min_mass = 0.0;  // kg per unit thickness
+};
+CaseTally tally_case_points(const Case& c, const Grid& g);
+
+// make_state (solver/state.hpp) for a uniform or graded grid holding only the particles whose
+// centre `own` accepts, with the ids one process gives them. Everything else is the whole
+// case's (grid, boundary, interfaces, loads: a traction patch is found among every particle
+// near its segment, as one process finds it). Sums over particles (mass floor, initial and
+// strain energy) are this process's: a distributed caller reduces them.
+State make_state_owning(const Case& c, const PointFilter& own);
+
+}  // namespace rupture
