@@ -132,6 +132,14 @@ void distribute(State& s, const Comm& comm, bool fresh = true);
 // (a halo with no peers, as distribute gives).
 State make_rank_state(const Case& c, const Comm& comm);
 
+// Splits s among comm's ranks when each holds some of the run's particles (a resumed run: each
+// rank read some of the checkpoint's parts), as distribute splits a restored State: the
+// particles per cell added over the ranks (one sum over the lattice's cells, at the start) and
+// bisected, each particle sent to its block's rank, the received ones put in increasing `key`
+// (per particle: the order one process reading every part would hold them in), the run's sums
+// kept on rank 0. No rank holds more than the particles it read and its own.
+void distribute_held(State& s, const Comm& comm, const std::vector<double>& key);
+
 // Gives s a halo on `comm` (no blocks yet: set_blocks follows).
 void attach_halo(State& s, const Comm& comm);
 

@@ -9,6 +9,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstring>
+#include <utility>
 #include <stdexcept>
 
 #include "core/errors.hpp"
@@ -47,6 +49,73 @@ State make_rank_state(const Case& c, const Comm& comm) {
   // measured it on this rank's particles); the initial energy is the run's.
   s.initial_energy = comm.sum(kinetic_energy(s.particles) + s.strain_work);
   return s;
+}
+
+}  // namespace rupture
+
+namespace rupture {
+
+void distribute_held(State& s, const Comm& comm, const std::vector<double>& key) {
+  check_distributable(s, comm.size());
+  Particles& P = s.particles;
+  const int cols = s.grid.x.cells, rows = s.grid.y.cells;
+  std::vector<int> cell(P.size());
+  std::vector<double> count(std::size_t(cols) * std::size_t(rows), 0.0);
+  for (std::size_t p = 0; p < P.size(); ++p) {
+    cell[p] = std::clamp(s.grid.x.cell_of(P.x[p]), 0, cols - 1) + std::clamp(s.grid.y.cell_of(P.y[p]), 0, rows - 1) * cols;
+    count[std::size_t(cell[p])] += 1.0;
+  }
+  // The split's input, once: every rank's count per cell (whole numbers: exact in a double).
+  comm.sum(count.data(), int(count.size()));
+  std::vector<std::uint32_t> whole(count.size());
+  for (std::size_t k = 0; k < count.size(); ++k) whole[k] = std::uint32_t(count[k]);
+  Decomposition d;
+  try {
+    d = bisect_by_particles(whole, cols, rows, comm.size());
+  } catch (const std::invalid_argument& e) {
+    throw InputError(fmt::format("mpirun -n {}: {}", comm.size(), e.what()));
+  }
+  std::vector<int> owner(whole.size(), 0);
+  for (std::size_t q = 0; q < d.block.size(); ++q) {
+    const CellBlock& b = d.block[q];
+    for (int r = b.r0; r < b.r1; ++r)
+      for (int c = b.c0; c < b.c1; ++c) owner[std::size_t(c + r * cols)] = int(q);
+  }
+  // Every particle (its key after it) to its block's rank, this rank's own included.
+  constexpr std::size_t kRecord = Particles::kPacked + 1;
+  std::vector<std::vector<unsigned char>> send(std::size_t(comm.size())), recv;
+  for (std::size_t p = 0; p < P.size(); ++p) {
+    std::vector<unsigned char>& out = send[std::size_t(owner[std::size_t(cell[p])])];
+    double rec[kRecord];
+    P.pack(p, rec);
+    rec[Particles::kPacked] = key[p];
+    const std::size_t at = out.size();
+    out.resize(at + sizeof rec);
+    std::memcpy(out.data() + at, rec, sizeof rec);
+  }
+  P = Particles();
+  comm.all_to_all(send, recv);
+  send.clear();
+  std::vector<std::pair<double, std::pair<std::size_t, std::size_t>>> order;  // key, (from, at)
+  for (std::size_t q = 0; q < recv.size(); ++q)
+    for (std::size_t at = 0; at + kRecord * sizeof(double) <= recv[q].size(); at += kRecord * sizeof(double)) {
+      double k;
+      std::memcpy(&k, recv[q].data() + at + Particles::kPacked * sizeof(double), sizeof k);
+      order.push_back({k, {q, at}});
+    }
+  std::sort(order.begin(), order.end());
+  for (const auto& o : order) {
+    double rec[Particles::kPacked];
+    std::memcpy(rec, recv[o.second.first].data() + o.second.second, sizeof rec);
+    P.push_packed(rec);
+  }
+  attach_halo(s, comm);
+  set_blocks(s, d.block);
+  // The run's sums stay on rank 0 (as distribute of a restored State).
+  if (comm.rank() > 0) {
+    s.strain_work = s.external_work = 0.0;
+    for (CohesiveInterface& c : s.interfaces) c.work = 0.0;
+  }
 }
 
 }  // namespace rupture

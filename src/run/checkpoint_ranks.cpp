@@ -116,4 +116,21 @@ void read_checkpoint_particles(const std::string& dir, RunContext& ctx) {
   gather_particles(s);
 }
 
+std::vector<double> read_checkpoint_share(const std::string& dir, RunContext& ctx, const Comm& comm) {
+  State& s = ctx.s;
+  std::vector<double> key;
+  const int n = s.particle_parts;
+  Particles mine;
+  for (int part = comm.rank(); part < n; part += comm.size()) {
+    const std::size_t before = mine.size();
+    read_checkpoint_parts(dir, s.step, part, 1, n, mine);
+    for (std::size_t k = before; k < mine.size(); ++k) key.push_back(double(part) * 4294967296.0 + double(k - before));
+  }
+  s.particles = std::move(mine);
+  s.particle_parts = 0;
+  s.plan.valid = false;  // re-sort: the stored plan was rank 0's
+  s.windows_checked_step = -2;
+  return key;
+}
+
 }  // namespace rupture

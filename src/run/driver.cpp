@@ -191,9 +191,15 @@ RunResult run_case(const Case& c, const RunOptions& options) {
   if (comm.distributed() && c.grid.nested && !options.resume) distribute(ctx.s, comm);
   if (options.resume) {
     read_checkpoint(checkpoint_path(dir), ctx);
-    read_checkpoint_particles(dir, ctx);  // a distributed run's particle parts
     // Split by where the particles are now (any number of ranks, whatever wrote it).
-    if (comm.distributed()) distribute(ctx.s, comm, false);
+    if (comm.distributed() && !c.grid.nested && ctx.s.particle_parts > 0) {
+      // Each rank reads some of the parts; the split sends each particle to its rank.
+      const std::vector<double> key = read_checkpoint_share(dir, ctx, comm);
+      distribute_held(ctx.s, comm, key);
+    } else {
+      read_checkpoint_particles(dir, ctx);  // a distributed run's particle parts, all of them
+      if (comm.distributed()) distribute(ctx.s, comm, false);
+    }
     ++ctx.segments;
     Schedule& ck = ctx.checkpoint;
     if (options.checkpoint_interval > 0 && options.checkpoint_interval != ck.interval) {

@@ -90,6 +90,7 @@ int main(int argc, char** argv) {
   State d = make_rank_state(c, world);
   // It gives, bit for bit and in the same order, the particles, the split and the mass floor of
   // the whole set-up split afterwards (make_state + distribute); the initial energy to round-off.
+  // So does a resumed run's split of particles each rank read some of (distribute_held).
   double setup_same = 1.0, initial_energy_difference = 0.0;
   {
     State w = make_state(c);
@@ -103,6 +104,27 @@ int main(int argc, char** argv) {
     for (std::size_t r = 0; same && w.halo && r < w.halo->blocks.size(); ++r) {
       const CellBlock &a = w.halo->blocks[r], &b = d.halo->blocks[r];
       same = a.c0 == b.c0 && a.c1 == b.c1 && a.r0 == b.r0 && a.r1 == b.r1;
+    }
+    // A resumed run's split (distribute_held): the particles dealt to the ranks in turn, keyed
+    // by their one-process index, end on the ranks and in the order distribute gives.
+    if (!c.grid.nested) {
+      State h = make_state(c);
+      std::vector<unsigned char> away(h.particles.size(), 0);
+      std::vector<double> key;
+      for (std::size_t p = 0; p < away.size(); ++p) {
+        away[p] = int(p % std::size_t(world.size())) != world.rank();
+        if (!away[p]) key.push_back(double(p));
+      }
+      Particles others;
+      h.particles.move_marked(away, others);
+      distribute_held(h, world, key);
+      const Particles& H = h.particles;
+      same = same && A.x == H.x && A.y == H.y && A.vx == H.vx && A.sxy == H.sxy && A.id == H.id &&
+             A.mass == H.mass && A.half_x == H.half_x && A.field == H.field;
+      for (std::size_t r = 0; same && r < w.halo->blocks.size(); ++r) {
+        const CellBlock &a = w.halo->blocks[r], &b = h.halo->blocks[r];
+        same = a.c0 == b.c0 && a.c1 == b.c1 && a.r0 == b.r0 && a.r1 == b.r1;
+      }
     }
     setup_same = world.min(double(same));  // every rank's
     initial_energy_difference = w.initial_energy != 0.0 ? std::fabs(d.initial_energy / w.initial_energy - 1.0)
