@@ -455,7 +455,11 @@ int main(int argc, char** argv) {
       fmt::print("rebalances={}\n", r.rebalances);
       fmt::print("exchange_bytes_per_rank_per_step={:.0f}\n", r.exchange_bytes_per_step);
       fmt::print("exchange_seconds={:.3f}\n", r.exchange_seconds);
+      fmt::print("peak_memory_mib_per_rank={:.0f}\n", fmt::join(r.peak_memory_per_rank, ","));
     }
+    if (!r.peak_memory_per_rank.empty())
+      fmt::print("peak_memory_mib={:.0f}\n",
+                 *std::max_element(r.peak_memory_per_rank.begin(), r.peak_memory_per_rank.end()));
     fmt::print("energy_balance_error={:.4e}\n", r.energy_balance_error);
     fmt::print("energy_balance_error_final={:.4e}\n", r.energy_balance_error_final);
     if (!r.cracks.empty()) {

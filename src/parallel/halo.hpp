@@ -125,11 +125,11 @@ struct Halo {
 // runs do not support yet (the message names the key).
 void distribute(State& s, const Comm& comm, bool fresh = true);
 
-// A fresh run's State on this rank of `comm` (uniform or graded grid): the split of the case's
-// particles at t = 0 (the one distribute makes) computed by every rank from a count of the
-// case's seed points, and only this rank's particles made (parallel/rank_state.cpp): no rank
-// ever holds the case's particles. Nested levels: make_state, then distribute. On one rank too
-// (a halo with no peers, as distribute gives).
+// A fresh run's State on this rank of `comm`: the split of the case's particles at t = 0 (the
+// one distribute makes) computed by every rank from a count of the case's seed points, and
+// only this rank's particles made (parallel/rank_state.cpp; nested levels:
+// parallel/halo_nested.hpp): no rank ever holds the case's particles. On one rank too (a halo
+// with no peers, as distribute gives).
 State make_rank_state(const Case& c, const Comm& comm);
 
 // Splits s among comm's ranks when each holds some of the run's particles (a resumed run: each

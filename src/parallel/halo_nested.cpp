@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -26,24 +27,58 @@ int nested_cut_level(const NestedState& n) {
   return k;
 }
 
-std::vector<std::uint32_t> nested_cut_count(const NestedState& n, int k) {
-  const Grid& g0 = n.levels[0].grid;
-  const int cols = g0.x.cells << k, rows = g0.y.cells << k;
-  const double h = g0.x.h / double(1 << k);
-  std::vector<std::uint32_t> count(std::size_t(cols) * std::size_t(rows), 0);
+namespace {
+
+// Adds a particle of level l at (x, y) to the cut lattice's count (nested_cut_count).
+struct CutCounter {
+  const NestedState& n;
+  int cols, rows, longest = 1;
+  double h;
+  std::vector<std::uint32_t> count;
+  CutCounter(const NestedState& nested, int k)
+      : n(nested), cols(nested.levels[0].grid.x.cells << k), rows(nested.levels[0].grid.y.cells << k),
+        h(nested.levels[0].grid.x.h / double(1 << k)) {
+    count.assign(std::size_t(cols) * std::size_t(rows), 0);
+    for (const int p : n.period) longest = std::max(longest, p);
+  }
   // Per-level time steps: a level's particle costs 1 / period per finest step.
-  int longest = 1;
-  for (const int p : n.period) longest = std::max(longest, p);
+  std::uint32_t weight(std::size_t l) const { return std::uint32_t(longest / (n.period.empty() ? 1 : n.period[l])); }
+  void add(std::uint32_t w, double x, double y) {
+    const Grid& g0 = n.levels[0].grid;
+    const int c = std::clamp(int(std::floor((x - g0.x.origin) / h)), 0, cols - 1);
+    const int r = std::clamp(int(std::floor((y - g0.y.origin) / h)), 0, rows - 1);
+    count[std::size_t(c) + std::size_t(r) * std::size_t(cols)] += w;
+  }
+};
+
+}  // namespace
+
+std::vector<std::uint32_t> nested_cut_count(const NestedState& n, int k) {
+  CutCounter cc(n, k);
   for (std::size_t l = 0; l < n.levels.size(); ++l) {
     const Particles& P = n.levels[l].particles;
-    const std::uint32_t weight = std::uint32_t(longest / (n.period.empty() ? 1 : n.period[l]));
-    for (std::size_t p = 0; p < P.size(); ++p) {
-      const int c = std::clamp(int(std::floor((P.x[p] - g0.x.origin) / h)), 0, cols - 1);
-      const int r = std::clamp(int(std::floor((P.y[p] - g0.y.origin) / h)), 0, rows - 1);
-      count[std::size_t(c) + std::size_t(r) * std::size_t(cols)] += weight;
-    }
+    const std::uint32_t w = cc.weight(l);
+    for (std::size_t p = 0; p < P.size(); ++p) cc.add(w, P.x[p], P.y[p]);
   }
-  return count;
+  return cc.count;
+}
+
+NestedTally nested_seed_tally(const Case& c, const NestedState& n, int k) {
+  CutCounter cc(n, k);
+  NestedTally t;
+  t.min_mass = std::numeric_limits<double>::max();
+  for (std::size_t l = 0; l < n.levels.size(); ++l) {
+    const std::uint32_t w = cc.weight(l);
+    std::uint32_t count = 0;
+    for_each_level_point(c, n, int(l), [&](double x, double y, double m) {
+      cc.add(w, x, y);
+      ++count;
+      t.min_mass = std::min(t.min_mass, m);
+    });
+    t.per_level.push_back(count);
+  }
+  t.cut_count = std::move(cc.count);
+  return t;
 }
 
 CellBlock level_block(const NestedGrid& g, int l, const CellBlock& cut, int k) {
@@ -116,12 +151,16 @@ int nested_touched_width(const NestedState& n, int l) {
 }
 
 NestedSplit split_nested(const NestedState& n, int ranks) {
+  const int k = nested_cut_level(n);
+  return split_nested(n, nested_cut_count(n, k), k, ranks);
+}
+
+NestedSplit split_nested(const NestedState& n, const std::vector<std::uint32_t>& count, int cut_level, int ranks) {
   NestedSplit sp;
   const Grid& g0 = n.levels[0].grid;
-  sp.cut_level = nested_cut_level(n);
+  sp.cut_level = cut_level;
   try {
-    sp.cut = bisect_by_particles(nested_cut_count(n, sp.cut_level), g0.x.cells << sp.cut_level,
-                                 g0.y.cells << sp.cut_level, ranks);
+    sp.cut = bisect_by_particles(count, g0.x.cells << sp.cut_level, g0.y.cells << sp.cut_level, ranks);
   } catch (const std::invalid_argument& e) {
     throw InputError(fmt::format("--ranks {}: nested level {}'s cells over the plate: {}", ranks, sp.cut_level, e.what()));
   }
@@ -206,9 +245,9 @@ void window_levels(NestedState& n) {
 
 }  // namespace
 
-void distribute_nested(State& s, const Comm& comm, bool fresh) {
+void distribute_nested(State& s, const Comm& comm, bool fresh, const NestedSplit* given) {
   NestedState& n = *s.nested;
-  const NestedSplit sp = split_nested(n, comm.size());
+  const NestedSplit sp = given ? *given : split_nested(n, comm.size());
   const int il = n.interface_level;
   const double finest = n.levels.back().grid.x.h;
   for (std::size_t l = 0; l < n.levels.size(); ++l) {
@@ -335,6 +374,42 @@ void nested_finish_step(NestedState& n, const NestedDrift& before) {
   if (failed < 0) return;
   const std::string what = comm.broadcast(failure, failed);
   throw SimulationError(comm.size() > 1 ? fmt::format("{} (rank {})", what, failed) : what);
+}
+
+State make_nested_rank_state(const Case& c, const Comm& comm) {
+  // The levels without particles: the lattices, transitions and periods the split needs.
+  const LevelShare none{[](int, double, double) { return false; }, {}};
+  std::vector<Grid> lattices;
+  NestedSplit sp;
+  NestedTally tally;
+  {
+    const State bare = make_nested_run_state(c, &none);
+    const NestedState& n = *bare.nested;
+    for (const State& l : n.levels) lattices.push_back(l.grid);
+    const int k = nested_cut_level(n);
+    tally = nested_seed_tally(c, n, k);
+    sp = split_nested(n, tally.cut_count, k, comm.size());
+  }
+  // This rank's particles: on each level, those whose cell is in its block there.
+  const std::size_t me = std::size_t(comm.rank());
+  LevelShare share;
+  share.own = [&](int l, double x, double y) {
+    const Grid& g = lattices[std::size_t(l)];
+    const CellBlock& b = sp.blocks[std::size_t(l)][me];
+    const int i = std::clamp(g.x.cell_of(x), 0, g.x.cells - 1), j = std::clamp(g.y.cell_of(y), 0, g.y.cells - 1);
+    return i >= b.c0 && i < b.c1 && j >= b.r0 && j < b.r1;
+  };
+  std::uint32_t first = 0;
+  for (const std::uint32_t count : tally.per_level) share.first_id.push_back(first), first += count;
+  State s = make_nested_run_state(c, &share);
+  check_distributable(s, comm.size());
+  distribute_nested(s, comm, true, &sp);
+  // The case's sums: one mass floor from its lightest particle (solver/setup.cpp), the initial
+  // energy the ranks' parts added.
+  s.mass_floor = 1e-20 * tally.min_mass;
+  for (State& l : s.nested->levels) l.mass_floor = s.mass_floor;
+  s.initial_energy = comm.sum(s.initial_energy);
+  return s;
 }
 
 }  // namespace rupture

@@ -47,9 +47,19 @@ struct NestedSplit {
 // weighted by its level's steps per longest period (its work).
 int nested_cut_level(const NestedState& n);
 std::vector<std::uint32_t> nested_cut_count(const NestedState& n, int cut_level);
+// The same count from the particles the case seeds (solver/nested_state.hpp:
+// for_each_level_point), without making them; with each level's particle count (one process's)
+// and the lightest particle's mass, kg per unit thickness.
+struct NestedTally {
+  std::vector<std::uint32_t> cut_count, per_level;
+  double min_mass = 0.0;
+};
+NestedTally nested_seed_tally(const Case& c, const NestedState& n, int cut_level);
 // The split of this process's particles (at set-up: all of them) among `ranks`, each level's
 // blocks and reaches. Throws InputError when the cut lattice has fewer cells than ranks.
 NestedSplit split_nested(const NestedState& n, int ranks);
+// The same from a count on the cut lattice (nested_cut_count, nested_seed_tally).
+NestedSplit split_nested(const NestedState& n, const std::vector<std::uint32_t>& count, int cut_level, int ranks);
 // Level l's cells of a block of the cut lattice: exact on levels at least as fine; on coarser
 // ones each cut moves down to the level's line below it (empty where the level does not reach).
 CellBlock level_block(const NestedGrid& g, int l, const CellBlock& cut, int cut_level);
@@ -66,7 +76,13 @@ std::vector<std::vector<NodeBox>> nested_reaches(const NestedState& n,
 // parallel/halo.hpp's distribute for a nested run State (s.nested): every level split as
 // above and this rank's particles kept on each; s.halo is the interfaces' level's halo (the
 // finest level's without interfaces).
-void distribute_nested(State& s, const Comm& comm, bool fresh);
+void distribute_nested(State& s, const Comm& comm, bool fresh, const NestedSplit* split = nullptr);
+
+// make_rank_state (parallel/halo.hpp) for nested levels: the levels made once without particles
+// (the split's lattices and transitions), the case's seed points counted on the cut lattice
+// (nested_seed_tally), the split made from that count, and each level's particles in this
+// rank's block made with the ids one process gives them; no rank holds the case's particles.
+State make_nested_rank_state(const Case& c, const Comm& comm);
 
 // In the nested step (solver/nested_state.cpp), distributed runs only (no-ops otherwise):
 // at the start, once due, every level's particles that left the block go to its rank;

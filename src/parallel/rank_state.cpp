@@ -16,17 +16,14 @@
 #include "core/errors.hpp"
 #include "parallel/decomposition.hpp"
 #include "parallel/halo.hpp"
+#include "parallel/halo_nested.hpp"
 #include "solver/case_seeding.hpp"
 #include "solver/energy.hpp"
 
 namespace rupture {
 
 State make_rank_state(const Case& c, const Comm& comm) {
-  if (c.grid.nested) {  // nested levels: split after a whole set-up
-    State s = make_state(c);
-    distribute(s, comm);
-    return s;
-  }
+  if (c.grid.nested) return make_nested_rank_state(c, comm);  // parallel/halo_nested.hpp
   const Grid g = build_grid(c.grid);
   const int cols = g.x.cells, rows = g.y.cells;
   const CaseTally tally = tally_case_points(c, g);

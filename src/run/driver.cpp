@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 #include <memory>
 #include <omp.h>
+#include <sys/resource.h>
 
 #include "cohesive/crack_tip.hpp"
 #include "cohesive/mach_angle.hpp"
@@ -101,24 +102,24 @@ void stamp_heartbeat(RunRecord& r) {
 
 // Sets up a run's context from the case: the initial state, one crack tracker per interface,
 // the snapshot writer and the output schedules; returns where the stations read. A fresh run
-// starts from it; a resumed one overwrites it with the checkpoint. Distributed on a uniform or
-// graded grid, each rank makes its own particles only (parallel/halo.hpp: make_rank_state) and
-// chooses the snapshot rows and the stations' particles among every particle the case seeds
-// (solver/case_seeding.hpp), as one process chooses them; nested levels are made whole on
-// every rank and split by the caller.
+// starts from it; a resumed one overwrites it with the checkpoint. Distributed, each rank makes
+// its own particles only (parallel/halo.hpp: make_rank_state) and chooses the snapshot rows and
+// the stations' particles among every particle the case seeds (solver/case_seeding.hpp), as
+// one process chooses them.
 std::vector<StationProbe> set_up(RunContext& r, const Case& c, const std::string& dir,
-                                 double checkpoint_interval, const Comm& comm) {
-  const bool by_rank = comm.distributed() && !c.grid.nested;
-  r.s = by_rank ? make_rank_state(c, comm) : make_state(c);
+                                 double checkpoint_interval, const Comm& comm, bool resume) {
+  const bool by_rank = comm.distributed();
+  // A distributed resume builds no particle: the checkpoint brings them and their sums.
+  r.s = !by_rank ? make_state(c) : resume ? make_state_without_particles(c) : make_rank_state(c, comm);
   const double* region = c.output.has_snapshot_region ? c.output.snapshot_region : nullptr;
   std::vector<StationProbe> probes;
   if (by_rank) {
     SnapshotRows rows;
     std::vector<NearestParticle> nearest;
     for (const StationSpec& st : c.stations) nearest.push_back({st.x, st.y});
-    for_each_case_point(c, r.s.grid, [&](const SeedPoint& p, std::size_t, std::uint32_t id) {
-      if (in_snapshot_region(region, p.x, p.y)) rows.add(id);
-      for (NearestParticle& n : nearest) n.visit(p.x, p.y, id);
+    for_each_run_point(c, r.s, [&](double x, double y, std::uint32_t id) {
+      if (in_snapshot_region(region, x, y)) rows.add(id);
+      for (NearestParticle& n : nearest) n.visit(x, y, id);
     });
     if (c.output.snapshot_interval > 0) r.snapshots = std::make_unique<SnapshotWriter>(dir, std::move(rows), comm);
     std::vector<std::uint32_t> ids;
@@ -185,10 +186,7 @@ RunResult run_case(const Case& c, const RunOptions& options) {
   RunContext ctx;
   // Where the stations read, from the state at t = 0 (a body station follows the particle
   // nearest its point then), before a checkpoint replaces the state.
-  std::vector<StationProbe> probes = set_up(ctx, c, dir, options.checkpoint_interval, comm);
-  // Distributed nested levels: this rank's block and particles (every rank built the whole
-  // state at t = 0; a resumed run splits once the checkpoint is read).
-  if (comm.distributed() && c.grid.nested && !options.resume) distribute(ctx.s, comm);
+  std::vector<StationProbe> probes = set_up(ctx, c, dir, options.checkpoint_interval, comm, options.resume);
   if (options.resume) {
     read_checkpoint(checkpoint_path(dir), ctx);
     // Split by where the particles are now (any number of ranks, whatever wrote it).
@@ -506,6 +504,14 @@ RunResult run_case(const Case& c, const RunOptions& options) {
     for (const State* l : level_states(s)) bytes += l->halo->bytes_sent, seconds += l->halo->exchange_seconds;
     result.exchange_bytes_per_step = comm.sum(bytes) / double(comm.size()) / double(steps);
     result.exchange_seconds = comm.max(seconds);
+  }
+  {  // every rank's peak resident memory in its slot, summed: known to every rank
+    rusage use{};
+    getrusage(RUSAGE_SELF, &use);
+    std::vector<double> peak(std::size_t(comm.size()), 0.0);
+    peak[std::size_t(comm.rank())] = double(use.ru_maxrss) / 1024.0;  // Linux: KiB
+    comm.sum(peak.data(), int(peak.size()));
+    result.peak_memory_per_rank = peak;
   }
   gather_interface_state(s);  // distributed: every node from its owner
   for (std::size_t k = 0; k < cracks.size(); ++k) {

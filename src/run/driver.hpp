@@ -71,6 +71,8 @@ struct RunResult {
   long rebalances = 0;                 // new splits when the load drifted (parallel/halo.hpp)
   double exchange_bytes_per_step = 0.0;  // bytes a rank sends its neighbours per step (mean over ranks)
   double exchange_seconds = 0.0;       // wall time in the exchanges, the largest over the ranks, s
+  // Each rank's largest resident memory over the run (getrusage: set-up, steps, outputs), MiB.
+  std::vector<double> peak_memory_per_rank;
 };
 
 RunResult run_case(const Case& c, const RunOptions& options);

@@ -22,6 +22,11 @@ namespace rupture {
 using CasePointVisit = std::function<void(const SeedPoint&, std::size_t body, std::uint32_t id)>;
 void for_each_case_point(const Case& c, const Grid& g, const CasePointVisit& visit);
 
+// The particles at t = 0 of the run State s was made for (make_state: a uniform or graded grid,
+// or nested levels, whatever particles s holds), in id order: centre (m) and id.
+using RunPointVisit = std::function<void(double, double, std::uint32_t id)>;
+void for_each_run_point(const Case& c, const State& s, const RunPointVisit& visit);
+
 // A particle centre's test (x, y in m).
 using PointFilter = std::function<bool(double, double)>;
 
@@ -40,5 +45,9 @@ CaseTally tally_case_points(const Case& c, const Grid& g);
 // near its segment, as one process finds it). Sums over particles (mass floor, initial and
 // strain energy) are this process's: a distributed caller reduces them.
 State make_state_owning(const Case& c, const PointFilter& own);
+
+// make_state with no particle at all (uniform, graded or nested): what a resumed distributed run
+// builds before its checkpoint brings the particles and the sums over them.
+State make_state_without_particles(const Case& c);
 
 }  // namespace rupture

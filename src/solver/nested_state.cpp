@@ -11,6 +11,7 @@
 #include "core/errors.hpp"
 #include "parallel/halo.hpp"
 #include "parallel/halo_nested.hpp"
+#include "particles/seed.hpp"
 #include "solver/cohesive_step.hpp"
 #include "solver/field_windows.hpp"
 #include "solver/grid_update.hpp"
@@ -173,9 +174,9 @@ double NestedState::external_work() const {
   return w;
 }
 
-State make_nested_run_state(const Case& c) {
+State make_nested_run_state(const Case& c, const LevelShare* share) {
   State s;
-  auto n = std::make_shared<NestedState>(make_nested_state(c));
+  auto n = std::make_shared<NestedState>(make_nested_state(c, share));
   for (std::size_t l = 0; l < n->levels.size(); ++l) {
     if (n->levels[l].interfaces.empty()) continue;
     if (n->interface_level >= 0)
@@ -277,7 +278,18 @@ void coupled_nodes(NestedState& n) {
 
 }  // namespace
 
-NestedState make_nested_state(const Case& c) {
+void for_each_level_point(const Case& c, const NestedState& n, int l,
+                          const std::function<void(double, double, double)>& visit) {
+  const Grid& lattice = n.levels[std::size_t(l)].grid;
+  for (const BodySpec& b : c.bodies) {  // as make_level_state seeds them
+    const double density = c.materials[std::size_t(b.material)].density;
+    for_each_seed_point(lattice, b.region, c.grid.particles_per_cell, [&](const SeedPoint& p) {
+      if (n.grid.level_of(p.x, p.y) == l) visit(p.x, p.y, density * p.lx * p.ly);
+    });
+  }
+}
+
+NestedState make_nested_state(const Case& c, const LevelShare* share) {
   const auto unsupported = [](const char* what) {
     return InputError(fmt::format("{}: not yet supported on nested levels (solver/nested_state.hpp)", what));
   };
@@ -300,8 +312,10 @@ NestedState make_nested_state(const Case& c) {
   for (int l = 0; l < levels; ++l) {
     const Level& L = n.grid.levels[std::size_t(l)];
     const NestedGrid& g = n.grid;
+    const std::function<bool(double, double)> own = [share, l](double x, double y) { return share->own(l, x, y); };
     n.levels.push_back(make_level_state(c, level_grid(n.grid, l),
-                                        [&g, l](double x, double y) { return g.level_of(x, y) == l; }));
+                                        [&g, l](double x, double y) { return g.level_of(x, y) == l; },
+                                        share ? &own : nullptr));
     State& s = n.levels.back();
     s.nested_level = true;
     // The case's step limits are the finest cell's (solver/summary.cpp); a level's scale with
@@ -312,7 +326,10 @@ NestedState make_nested_state(const Case& c) {
     s.whole_grid_fields = true;
     fit_field_windows(s);
     set_level_boundary(s, c, L, n.base_lines[std::size_t(l)]);
-    for (std::uint32_t& id : s.particles.id) id += next_id;  // ids unique over the levels
+    // Ids unique over the levels: level l's follow level l - 1's (a rank's share: as one
+    // process numbers them).
+    const std::uint32_t first = share && std::size_t(l) < share->first_id.size() ? share->first_id[std::size_t(l)] : next_id;
+    for (std::uint32_t& id : s.particles.id) id += first;
     next_id += std::uint32_t(s.particles.size());
     for (double m : s.particles.mass) min_mass = std::min(min_mass, m);
     // Every level ties the bonded stretches on its own lattice (make_state_on); an interface

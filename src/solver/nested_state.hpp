@@ -106,20 +106,37 @@ struct NestedState {
 };
 
 // make_state (solver/state.hpp) on a level's lattice: every body seeded through its region on
-// `lattice`, keeping the particles whose centre `keep` accepts; no boundary conditions.
-State make_level_state(const Case& c, Grid lattice, const std::function<bool(double, double)>& keep);
+// `lattice`, keeping the particles whose centre `keep` accepts, ids their index among those;
+// no boundary conditions. With `own`, only the kept particles `own` accepts are made (ids as
+// without it).
+State make_level_state(const Case& c, Grid lattice, const std::function<bool(double, double)>& keep,
+                       const std::function<bool(double, double)>* own = nullptr);
 
-// The levels of c.grid's boxes and their states. Throws InputError for what the nested step
-// does not support yet, and for a velocity condition on an edge that is not on a lattice line
-// of a level reaching it.
-NestedState make_nested_state(const Case& c);
+// A distributed rank's share of the levels' particles (parallel/halo_nested.hpp): level l makes
+// the particles whose centre own(l, x, y) accepts, with the ids one process gives them
+// (first_id[l] + the particle's index among level l's).
+struct LevelShare {
+  std::function<bool(int, double, double)> own;
+  std::vector<std::uint32_t> first_id;  // per level
+};
+
+// The levels of c.grid's boxes and their states (with `share`, each level's share of its
+// particles; the sums over particles, mass floor included, are then this process's). Throws
+// InputError for what the nested step does not support yet, and for a velocity condition on an
+// edge that is not on a lattice line of a level reaching it.
+NestedState make_nested_state(const Case& c, const LevelShare* share = nullptr);
+
+// Visits level l's particles at t = 0 as make_nested_state seeds them, in their order (their
+// centres, m, and masses, kg per unit thickness), without making them.
+void for_each_level_point(const Case& c, const NestedState& n, int l,
+                          const std::function<void(double, double, double)>& visit);
 
 // One time step (c.solver.scheme) on every level.
 void step(NestedState& n);
 
 // The run's State for grid.refinement = "nested" (make_state calls it): levels in s.nested,
 // the interfaces (all on one level, else InputError) in s.interfaces, particles gathered.
-State make_nested_run_state(const Case& c);
+State make_nested_run_state(const Case& c, const LevelShare* share = nullptr);
 // One step of s.nested (step(State&) calls it), then the clock, energies and limits of s.
 void step_nested_run(State& s);
 // Whether every particle of the run is at the run's time (always, but between the finest steps

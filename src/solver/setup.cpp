@@ -29,14 +29,6 @@ void prestress(Particles& P, std::size_t first, std::size_t last, const BodySpec
   }
 }
 
-// Drops the particles [first, size) that `keep` rejects (by centre).
-void keep_only(Particles& P, std::size_t first, const std::function<bool(double, double)>& keep) {
-  std::vector<unsigned char> drop(P.size(), 0);
-  for (std::size_t p = first; p < P.size(); ++p) drop[p] = !keep(P.x[p], P.y[p]);
-  Particles dropped;
-  P.move_marked(drop, dropped);
-}
-
 // Visits body b's points on grid g in the order one process appends them.
 void for_each_body_point(const Case& c, const Grid& g, const BodySpec& b, const SeedVisit& visit) {
   const int ppc = c.grid.particles_per_cell;
@@ -85,9 +77,9 @@ Particles particles_near_loads(const Case& c, const Grid& g) {
 
 // make_state on a given grid. With `keep` (a nested level, solver/nested_state.hpp) every body
 // is seeded through its region on this lattice, only the particles `keep` accepts stay, ids
-// are their indices, and the boundary conditions are left to the caller. With `own` (a rank of
-// a distributed run, solver/case_seeding.hpp) only the particles `own` accepts are made, with
-// the ids one process gives them.
+// are their indices among those, and the boundary conditions are left to the caller. With `own`
+// (a rank of a distributed run, solver/case_seeding.hpp) only the particles `own` accepts are
+// made, with the ids they get without it.
 State make_state_on(const Case& c, Grid grid, const PointFilter* keep, const PointFilter* own) {
   State s;
   s.grid = std::move(grid);
@@ -107,9 +99,12 @@ State make_state_on(const Case& c, Grid grid, const PointFilter* keep, const Poi
   for (const BodySpec& b : c.bodies) {
     const SeedProperties props = seed_properties(c, b);
     const std::size_t first = s.particles.size();
-    if (keep) {
-      seed_region(s.particles, s.grid, b.region, ppc, props);
-      keep_only(s.particles, first, *keep);
+    if (keep) {  // through the region on this lattice; ids: the index among the kept
+      for_each_seed_point(s.grid, b.region, ppc, [&](const SeedPoint& p) {
+        if (!(*keep)(p.x, p.y)) return;
+        if (!own || (*own)(p.x, p.y)) append_seed_point(s.particles, p, props, next_id);
+        ++next_id;
+      });
     } else {
       for_each_body_point(c, s.grid, b, [&](const SeedPoint& p) {
         if (!own || (*own)(p.x, p.y)) append_seed_point(s.particles, p, props, next_id);
@@ -118,9 +113,7 @@ State make_state_on(const Case& c, Grid grid, const PointFilter* keep, const Poi
     }
     prestress(s.particles, first, s.particles.size(), b, c.materials[std::size_t(b.material)], c.plane);
   }
-  if (keep) {
-    for (std::size_t p = 0; p < s.particles.size(); ++p) s.particles.id[p] = std::uint32_t(p);
-  } else {
+  if (!keep) {
     s.boundary = c.boundary;
     update_edge_lines(s.boundary, s.grid, 0.0, s.bc_lines);
     s.bc_nodes = resolve_nodes(s.boundary, s.grid, num_fields, s.bc_lines);
@@ -171,6 +164,16 @@ void for_each_case_point(const Case& c, const Grid& g, const CasePointVisit& vis
     for_each_body_point(c, g, c.bodies[k], [&](const SeedPoint& p) { visit(p, k, id++); });
 }
 
+void for_each_run_point(const Case& c, const State& s, const RunPointVisit& visit) {
+  if (!s.nested) {
+    for_each_case_point(c, s.grid, [&](const SeedPoint& p, std::size_t, std::uint32_t id) { visit(p.x, p.y, id); });
+    return;
+  }
+  std::uint32_t id = 0;  // level l's ids follow level l - 1's (solver/nested_state.cpp)
+  for (std::size_t l = 0; l < s.nested->levels.size(); ++l)
+    for_each_level_point(c, *s.nested, int(l), [&](double x, double y, double) { visit(x, y, id++); });
+}
+
 CaseTally tally_case_points(const Case& c, const Grid& g) {
   CaseTally t;
   const int cols = g.x.cells, rows = g.y.cells;
@@ -196,8 +199,16 @@ State make_state_owning(const Case& c, const PointFilter& own) {
   return make_state_on(c, build_grid(c.grid), nullptr, &own);
 }
 
-State make_level_state(const Case& c, Grid lattice, const std::function<bool(double, double)>& keep) {
-  return make_state_on(c, std::move(lattice), &keep, nullptr);
+State make_state_without_particles(const Case& c) {
+  const PointFilter none = [](double, double) { return false; };
+  if (!c.grid.nested) return make_state_owning(c, none);
+  const LevelShare no_level{[](int, double, double) { return false; }, {}};
+  return make_nested_run_state(c, &no_level);
+}
+
+State make_level_state(const Case& c, Grid lattice, const std::function<bool(double, double)>& keep,
+                       const std::function<bool(double, double)>* own) {
+  return make_state_on(c, std::move(lattice), &keep, own);
 }
 
 }  // namespace rupture
