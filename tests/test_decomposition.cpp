@@ -5,6 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <barrier>
+#include <mutex>
+#include <random>
+#include <thread>
 #include <stdexcept>
 #include <vector>
 
@@ -107,4 +111,81 @@ TEST(Decomposition, as_many_ranks_as_cells_and_no_more) {
   for (const CellBlock& b : d.block) EXPECT_EQ(b.cells(), 1);
   EXPECT_THROW(bisect_by_particles(count, 3, 2, 7), std::invalid_argument);
   EXPECT_THROW(bisect_by_particles(count, 3, 2, 0), std::invalid_argument);
+}
+
+// The bisection over ranks (each holding part of the counts, the blocks' slices summed among
+// them: three threads standing in for three ranks) gives the split of the summed counts, block
+// for block, and the particles per block.
+TEST(Decomposition, bisection_over_ranks_equals_the_bisection_of_the_summed_counts) {
+  const int cols = 57, rows = 31, holders = 3;
+  std::mt19937 rng(11);
+  std::uniform_int_distribution<int> amount(0, 40), who(0, holders - 1);
+  std::vector<std::uint32_t> count(std::size_t(cols) * std::size_t(rows), 0);
+  std::vector<std::vector<std::pair<long, double>>> part(holders);
+  for (long cell = 0; cell < long(count.size()); ++cell) {
+    const int n = cell % 7 == 0 ? 5 * amount(rng) : amount(rng) / 8;  // uneven: dense stripes
+    for (int k = 0; k < n; ++k) part[std::size_t(who(rng))].push_back({cell, 1.0}), ++count[std::size_t(cell)];
+  }
+  for (int ranks : {1, 2, 3, 5, 8, 13}) {
+    const Decomposition serial = bisect_by_particles(count, cols, rows, ranks);
+    std::barrier sync(holders);
+    std::mutex m;
+    std::vector<double> acc;
+    std::vector<Decomposition> got(holders);
+    std::vector<std::thread> threads;
+    for (int h = 0; h < holders; ++h)
+      threads.emplace_back([&, h] {
+        const auto sum = [&](double* v, int n) {  // as MPI_Allreduce: every holder gets the sum
+          {
+            std::lock_guard<std::mutex> lock(m);
+            if (acc.size() < std::size_t(n)) acc.resize(std::size_t(n), 0.0);
+            for (int i = 0; i < n; ++i) acc[std::size_t(i)] += v[i];
+          }
+          sync.arrive_and_wait();
+          for (int i = 0; i < n; ++i) v[i] = acc[std::size_t(i)];
+          sync.arrive_and_wait();
+          if (h == 0) acc.clear();
+          sync.arrive_and_wait();
+        };
+        got[std::size_t(h)] = bisect_over_ranks(cell_counts(part[std::size_t(h)], cols), cols, rows, ranks, sum);
+      });
+    for (std::thread& t : threads) t.join();
+    for (const Decomposition& d : got) {
+      ASSERT_EQ(d.block.size(), serial.block.size());
+      for (std::size_t q = 0; q < d.block.size(); ++q) {
+        EXPECT_EQ(d.block[q].c0, serial.block[q].c0) << ranks;
+        EXPECT_EQ(d.block[q].c1, serial.block[q].c1) << ranks;
+        EXPECT_EQ(d.block[q].r0, serial.block[q].r0) << ranks;
+        EXPECT_EQ(d.block[q].r1, serial.block[q].r1) << ranks;
+      }
+      EXPECT_EQ(d.particles, serial.particles) << ranks;
+      EXPECT_EQ(d.shared_nodes, serial.shared_nodes) << ranks;
+    }
+    // The locator finds every cell's block, as a scan of the blocks does.
+    const BlockLocator locate(serial.block, rows);
+    for (int r = 0; r < rows; ++r)
+      for (int c = 0; c < cols; ++c) {
+        int scan = -1;
+        for (std::size_t q = 0; q < serial.block.size(); ++q) {
+          const CellBlock& b = serial.block[q];
+          if (c >= b.c0 && c < b.c1 && r >= b.r0 && r < b.r1) scan = int(q);
+        }
+        ASSERT_EQ(locate.owner(c, r), scan) << c << ", " << r;
+      }
+  }
+}
+
+// cell_counts adds the amounts of one cell and rounds the sum once.
+TEST(Decomposition, cell_counts_merge_a_cells_amounts) {
+  const std::vector<CellCount> c = cell_counts({{7, 0.4}, {3, 1.0}, {7, 0.4}, {12, 2.0}, {3, 1.0}}, 5);
+  ASSERT_EQ(c.size(), 3u);
+  EXPECT_EQ(c[0].c, 3);
+  EXPECT_EQ(c[0].r, 0);
+  EXPECT_EQ(c[0].count, 2u);
+  EXPECT_EQ(c[1].c, 2);
+  EXPECT_EQ(c[1].r, 1);
+  EXPECT_EQ(c[1].count, 1u);  // 0.8 -> 1
+  EXPECT_EQ(c[2].c, 2);
+  EXPECT_EQ(c[2].r, 2);
+  EXPECT_EQ(c[2].count, 2u);
 }

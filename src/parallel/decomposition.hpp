@@ -14,7 +14,9 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace rupture {
@@ -43,6 +45,34 @@ struct Decomposition {
 // ranks.
 Decomposition bisect_by_particles(const std::vector<std::uint32_t>& count, int cols, int rows,
                                   int ranks);
+// The same bisection when each of the ranks holds some of the particles: `mine` lists this
+// rank's count per cell (each cell once, any order), and each block's slices (its particles per
+// column and per row) are summed over the ranks by `sum_over_ranks` (collective: every rank
+// calls it for the same blocks in the same order). The split equals bisect_by_particles of the
+// counts summed over the ranks, and no rank holds a count of the whole lattice.
+struct CellCount {
+  int c = 0, r = 0;
+  std::uint32_t count = 0;
+};
+Decomposition bisect_over_ranks(const std::vector<CellCount>& mine, int cols, int rows, int ranks,
+                                const std::function<void(double*, int)>& sum_over_ranks);
+// This rank's count per cell from amounts (cell index c + r cols, amount): the amounts of one
+// cell added, then rounded to a whole count.
+std::vector<CellCount> cell_counts(std::vector<std::pair<long, double>> amounts, int cols);
+
+// Which block holds a cell, without a lattice-sized table: per row, the blocks crossing it in
+// increasing columns (blocks that tile the lattice).
+class BlockLocator {
+ public:
+  BlockLocator(const std::vector<CellBlock>& blocks, int rows);
+  int owner(int c, int r) const;  // -1: no block holds it
+ private:
+  struct Span {
+    int c0, c1, rank;
+  };
+  std::vector<std::vector<Span>> row_;
+};
+
 // The particles and shared nodes of given blocks (a nested level's share of a common split).
 Decomposition decomposition_of(std::vector<CellBlock> blocks, const std::vector<std::uint32_t>& count, int cols);
 

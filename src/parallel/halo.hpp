@@ -134,8 +134,8 @@ State make_rank_state(const Case& c, const Comm& comm);
 
 // Splits s among comm's ranks when each holds some of the run's particles (a resumed run: each
 // rank read some of the checkpoint's parts), as distribute splits a restored State: the
-// particles per cell added over the ranks (one sum over the lattice's cells, at the start) and
-// bisected, each particle sent to its block's rank, the received ones put in increasing `key`
+// particles bisected with their blocks' slices summed over the ranks (bisect_over_ranks: the
+// split of their counts added, no rank holding the lattice's), each particle sent to its block's rank, the received ones put in increasing `key`
 // (per particle: the order one process reading every part would hold them in), the run's sums
 // kept on rank 0. No rank holds more than the particles it read and its own.
 void distribute_held(State& s, const Comm& comm, const std::vector<double>& key);

@@ -57,32 +57,26 @@ void distribute_held(State& s, const Comm& comm, const std::vector<double>& key)
   Particles& P = s.particles;
   const int cols = s.grid.x.cells, rows = s.grid.y.cells;
   std::vector<int> cell(P.size());
-  std::vector<double> count(std::size_t(cols) * std::size_t(rows), 0.0);
+  std::vector<std::pair<long, double>> count;
   for (std::size_t p = 0; p < P.size(); ++p) {
     cell[p] = std::clamp(s.grid.x.cell_of(P.x[p]), 0, cols - 1) + std::clamp(s.grid.y.cell_of(P.y[p]), 0, rows - 1) * cols;
-    count[std::size_t(cell[p])] += 1.0;
+    count.push_back({cell[p], 1.0});
   }
-  // The split's input, once: every rank's count per cell (whole numbers: exact in a double).
-  comm.sum(count.data(), int(count.size()));
-  std::vector<std::uint32_t> whole(count.size());
-  for (std::size_t k = 0; k < count.size(); ++k) whole[k] = std::uint32_t(count[k]);
+  // The split of every rank's particles, their slices summed over the ranks (no rank holds
+  // the lattice's count: parallel/decomposition.hpp).
   Decomposition d;
   try {
-    d = bisect_by_particles(whole, cols, rows, comm.size());
+    d = bisect_over_ranks(cell_counts(std::move(count), cols), cols, rows, comm.size(),
+                          [&comm](double* v, int n) { comm.sum(v, n); });
   } catch (const std::invalid_argument& e) {
     throw InputError(fmt::format("mpirun -n {}: {}", comm.size(), e.what()));
   }
-  std::vector<int> owner(whole.size(), 0);
-  for (std::size_t q = 0; q < d.block.size(); ++q) {
-    const CellBlock& b = d.block[q];
-    for (int r = b.r0; r < b.r1; ++r)
-      for (int c = b.c0; c < b.c1; ++c) owner[std::size_t(c + r * cols)] = int(q);
-  }
+  const BlockLocator locate(d.block, rows);
   // Every particle (its key after it) to its block's rank, this rank's own included.
   constexpr std::size_t kRecord = Particles::kPacked + 1;
   std::vector<std::vector<unsigned char>> send(std::size_t(comm.size())), recv;
   for (std::size_t p = 0; p < P.size(); ++p) {
-    std::vector<unsigned char>& out = send[std::size_t(owner[std::size_t(cell[p])])];
+    std::vector<unsigned char>& out = send[std::size_t(locate.owner(cell[p] % cols, cell[p] / cols))];
     double rec[kRecord];
     P.pack(p, rec);
     rec[Particles::kPacked] = key[p];

@@ -6,8 +6,9 @@
 // steps' wall time, exchanges excluded, per particle-update): no tuned weight, and 0 until
 // there is a measurement. Checked at every migration and every ScatterPlan::sort_interval
 // steps. With the largest load more than kRebalanceImbalance above the mean, every rank adds
-// its load per cell into one lattice count, the same bisection as at t = 0
-// (parallel/decomposition.hpp) splits it anew, and each particle goes to its new block's rank.
+// its load per cell, the same bisection as at t = 0 splits the load summed over the ranks
+// (parallel/decomposition.hpp: bisect_over_ranks, the blocks' slices summed, never the whole
+// lattice), and each particle goes to its new block's rank.
 // Why 5 %: a rebalance costs about one step (a count over the cells, an all-to-all of the
 // particles that change rank, a re-sort: measured in docs/parallel.md), and the checks come
 // tens of steps apart, so an imbalance of 5 % kept until the next check costs more. The new
@@ -52,39 +53,33 @@ void rebalance_if_needed(State& s) {
   const double before = mean > 0.0 ? largest / mean - 1.0 : 0.0;
   if (before <= kRebalanceImbalance) return;
   const auto t0 = std::chrono::steady_clock::now();
-  // The load per cell of the whole lattice (the split's input, as at t = 0).
+  // This rank's load per cell, and the bisection of the load summed over the ranks slice by
+  // slice (no rank holds the whole lattice's count; parallel/decomposition.hpp).
   const int cols = s.grid.x.cells, rows = s.grid.y.cells;
   auto cell_of = [&](double x, double y) {
     return std::clamp(s.grid.x.cell_of(x), 0, cols - 1) + std::clamp(s.grid.y.cell_of(y), 0, rows - 1) * cols;
   };
-  std::vector<double> load(std::size_t(cols) * std::size_t(rows), 0.0);
+  std::vector<std::pair<long, double>> load;
   std::vector<int> cell(P.size());
   for (std::size_t p = 0; p < P.size(); ++p) {
     cell[p] = cell_of(P.x[p], P.y[p]);
-    load[std::size_t(cell[p])] += kUnits;
+    load.push_back({cell[p], kUnits});
   }
   for (const CohesiveInterface& c : s.interfaces)
     for (std::size_t k = 0; k < c.num_nodes(); ++k)
-      if (c.owns(k)) load[std::size_t(cell_of(c.x0[k], c.y0[k]))] += kUnits * w;
-  comm.sum(load.data(), int(load.size()));
-  std::vector<std::uint32_t> whole(load.size());
-  for (std::size_t k = 0; k < load.size(); ++k) whole[k] = std::uint32_t(std::lround(load[k]));
-  const Decomposition d = bisect_by_particles(whole, cols, rows, comm.size());
+      if (c.owns(k)) load.push_back({cell_of(c.x0[k], c.y0[k]), kUnits * w});
+  const Decomposition d = bisect_over_ranks(cell_counts(std::move(load), cols), cols, rows, comm.size(),
+                                            [&comm](double* v, int n) { comm.sum(v, n); });
   // Only a split that gains: load concentrated in one row of cells (an interface along a cut
   // direction) may not be divisible further by whole cells.
   if (before - d.imbalance() <= kRebalanceImbalance) return;
   gather_interface_state(s);  // the new owners of interface nodes need their whole state
   // Each particle to the rank of the block holding its cell.
-  std::vector<int> owner(load.size(), 0);
-  for (std::size_t q = 0; q < d.block.size(); ++q) {
-    const CellBlock& b = d.block[q];
-    for (int r = b.r0; r < b.r1; ++r)
-      for (int c = b.c0; c < b.c1; ++c) owner[std::size_t(c + r * cols)] = int(q);
-  }
+  const BlockLocator locate(d.block, rows);
   std::vector<std::vector<unsigned char>> send(std::size_t(comm.size())), recv;
   std::vector<unsigned char> leaving(P.size(), 0);
   for (std::size_t p = 0; p < P.size(); ++p) {
-    const int q = owner[std::size_t(cell[p])];
+    const int q = locate.owner(cell[p] % cols, cell[p] / cols);
     if (q == comm.rank()) continue;
     leaving[p] = 1;
     std::vector<unsigned char>& out = send[std::size_t(q)];
