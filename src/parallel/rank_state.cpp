@@ -1,15 +1,16 @@
 // rupture/parallel/rank_state.cpp
 // A fresh distributed run's State, made by each rank alone (parallel/halo.hpp: make_rank_state).
-// Every rank walks the case's seed points once to count them per cell (solver/case_seeding.hpp;
-// no particle stored), bisects the counts as plan_ranks bisects a whole State's (the same
-// split), and seeds only the particles whose cell lies in its block, with the ids one process
-// gives them. The sums over particles a State holds become the run's by reductions: the mass
+// Every rank walks the case's seed points to count them per cell in its share of the rows
+// (solver/case_seeding.hpp; no particle stored), the counts are bisected over the ranks as
+// plan_ranks bisects a whole State's (the same split), and each rank seeds only the particles
+// whose cell lies in its block, with the ids one process gives them. The sums over particles a State holds become the run's by reductions: the mass
 // floor from the lightest particle of the case (exact), the initial energy as the ranks' parts
 // added (round-off of the one-process sum), the strain work this rank's part (as distribute).
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cstring>
+#include <limits>
 #include <utility>
 #include <stdexcept>
 
@@ -26,10 +27,28 @@ State make_rank_state(const Case& c, const Comm& comm) {
   if (c.grid.nested) return make_nested_rank_state(c, comm);  // parallel/halo_nested.hpp
   const Grid g = build_grid(c.grid);
   const int cols = g.x.cells, rows = g.y.cells;
-  const CaseTally tally = tally_case_points(c, g);
+  // This rank counts the case's points in the rows of cells r, r + N, ... (a count of those
+  // rows only), and the bisection sums the blocks' slices over the ranks: no rank holds a
+  // count of the whole lattice, and the split is the one of the whole count.
+  const int N = comm.size(), me = comm.rank();
+  const int my_rows = std::max(0, (rows - me + N - 1) / N);
+  std::vector<std::uint32_t> count(std::size_t(cols) * std::size_t(my_rows), 0);
+  double lightest = std::numeric_limits<double>::max();
+  for_each_case_point(c, g, [&](const SeedPoint& p, std::size_t body, std::uint32_t) {
+    const int j = std::clamp(g.y.cell_of(p.y), 0, rows - 1);
+    if (j % N != me) return;
+    const int i = std::clamp(g.x.cell_of(p.x), 0, cols - 1);
+    ++count[std::size_t(i) + std::size_t(j / N) * std::size_t(cols)];
+    // The mass append_seed_point gives it (particles/seed.cpp).
+    lightest = std::min(lightest, c.materials[std::size_t(c.bodies[body].material)].density * p.lx * p.ly);
+  });
+  std::vector<CellCount> mine_count;
+  for (std::size_t k = 0; k < count.size(); ++k)
+    if (count[k] > 0) mine_count.push_back({int(k % std::size_t(cols)), int(k / std::size_t(cols)) * N + me, count[k]});
+  count = {};
   Decomposition d;
   try {
-    d = bisect_by_particles(tally.per_cell, cols, rows, comm.size());
+    d = bisect_over_ranks(mine_count, cols, rows, N, [&comm](double* v, int n) { comm.sum(v, n); });
   } catch (const std::invalid_argument& e) {
     throw InputError(fmt::format("mpirun -n {}: {}", comm.size(), e.what()));
   }
@@ -41,7 +60,7 @@ State make_rank_state(const Case& c, const Comm& comm) {
   check_distributable(s, comm.size());
   attach_halo(s, comm);
   set_blocks(s, d.block);
-  s.mass_floor = 1e-20 * tally.min_mass;  // solver/setup.cpp: the case's lightest particle
+  s.mass_floor = 1e-20 * comm.min(lightest);  // solver/setup.cpp: the case's lightest particle
   // E14: the strain work starts from this rank's part of the elastic energy (make_state_owning
   // measured it on this rank's particles); the initial energy is the run's.
   s.initial_energy = comm.sum(kinetic_energy(s.particles) + s.strain_work);
