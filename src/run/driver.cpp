@@ -117,10 +117,11 @@ std::vector<StationProbe> set_up(RunContext& r, const Case& c, const std::string
     SnapshotRows rows;
     std::vector<NearestParticle> nearest;
     for (const StationSpec& st : c.stations) nearest.push_back({st.x, st.y});
-    for_each_run_point(c, r.s, [&](double x, double y, std::uint32_t id) {
-      if (in_snapshot_region(region, x, y)) rows.add(id);
-      for (NearestParticle& n : nearest) n.visit(x, y, id);
-    });
+    if (c.output.snapshot_interval > 0 || !c.stations.empty())
+      for_each_run_point(c, r.s, [&](double x, double y, std::uint32_t id) {
+        if (in_snapshot_region(region, x, y)) rows.add(id);
+        for (NearestParticle& n : nearest) n.visit(x, y, id);
+      });
     if (c.output.snapshot_interval > 0) r.snapshots = std::make_unique<SnapshotWriter>(dir, std::move(rows), comm);
     std::vector<std::uint32_t> ids;
     for (const NearestParticle& n : nearest) ids.push_back(n.id);
