@@ -35,20 +35,21 @@ struct CutCounter {
   int cols, rows, longest = 1;
   double h;
   std::vector<std::uint32_t> count;
-  CutCounter(const NestedState& nested, int k)
+  CutCounter(const NestedState& nested, int k, bool dense = true)
       : n(nested), cols(nested.levels[0].grid.x.cells << k), rows(nested.levels[0].grid.y.cells << k),
         h(nested.levels[0].grid.x.h / double(1 << k)) {
-    count.assign(std::size_t(cols) * std::size_t(rows), 0);
+    if (dense) count.assign(std::size_t(cols) * std::size_t(rows), 0);
     for (const int p : n.period) longest = std::max(longest, p);
   }
   // Per-level time steps: a level's particle costs 1 / period per finest step.
   std::uint32_t weight(std::size_t l) const { return std::uint32_t(longest / (n.period.empty() ? 1 : n.period[l])); }
-  void add(std::uint32_t w, double x, double y) {
+  long index(double x, double y) const {  // c + r cols on the cut lattice
     const Grid& g0 = n.levels[0].grid;
     const int c = std::clamp(int(std::floor((x - g0.x.origin) / h)), 0, cols - 1);
     const int r = std::clamp(int(std::floor((y - g0.y.origin) / h)), 0, rows - 1);
-    count[std::size_t(c) + std::size_t(r) * std::size_t(cols)] += w;
+    return long(c) + long(r) * long(cols);
   }
+  void add(std::uint32_t w, double x, double y) { count[std::size_t(index(x, y))] += w; }
 };
 
 }  // namespace
@@ -155,21 +156,94 @@ NestedSplit split_nested(const NestedState& n, int ranks) {
   return split_nested(n, nested_cut_count(n, k), k, ranks);
 }
 
-NestedSplit split_nested(const NestedState& n, const std::vector<std::uint32_t>& count, int cut_level, int ranks) {
+namespace {
+
+// The split's blocks and reaches on every level from the cut lattice's.
+NestedSplit split_of(const NestedState& n, Decomposition cut, int cut_level) {
   NestedSplit sp;
-  const Grid& g0 = n.levels[0].grid;
   sp.cut_level = cut_level;
-  try {
-    sp.cut = bisect_by_particles(count, g0.x.cells << sp.cut_level, g0.y.cells << sp.cut_level, ranks);
-  } catch (const std::invalid_argument& e) {
-    throw InputError(fmt::format("--ranks {}: nested level {}'s cells over the plate: {}", ranks, sp.cut_level, e.what()));
-  }
+  sp.cut = std::move(cut);
   const std::size_t levels = n.levels.size();
   sp.blocks.assign(levels, {});
   for (std::size_t l = 0; l < levels; ++l)
     for (const CellBlock& b : sp.cut.block) sp.blocks[l].push_back(level_block(n.grid, int(l), b, sp.cut_level));
   sp.reaches = nested_reaches(n, sp.blocks);
   return sp;
+}
+
+[[noreturn]] void cannot_split(int ranks, int cut_level, const std::invalid_argument& e) {
+  throw InputError(fmt::format("--ranks {}: nested level {}'s cells over the plate: {}", ranks, cut_level, e.what()));
+}
+
+}  // namespace
+
+NestedSplit split_nested(const NestedState& n, const std::vector<std::uint32_t>& count, int cut_level, int ranks) {
+  const Grid& g0 = n.levels[0].grid;
+  try {
+    return split_of(n, bisect_by_particles(count, g0.x.cells << cut_level, g0.y.cells << cut_level, ranks), cut_level);
+  } catch (const std::invalid_argument& e) {
+    cannot_split(ranks, cut_level, e);
+  }
+}
+
+void distribute_held_nested(State& s, const Comm& comm, const std::vector<std::vector<double>>& keys) {
+  NestedState& n = *s.nested;
+  check_distributable(s, comm.size());
+  const int k = nested_cut_level(n);
+  // Every rank's particles of every level on the cut lattice (weighted as at t = 0), bisected
+  // over the ranks (parallel/decomposition.hpp: no rank holds the lattice's count).
+  const CutCounter cc(n, k, false);
+  std::vector<std::pair<long, double>> amounts;
+  for (std::size_t l = 0; l < n.levels.size(); ++l) {
+    const Particles& P = n.levels[l].particles;
+    const double w = double(cc.weight(l));
+    for (std::size_t p = 0; p < P.size(); ++p) amounts.push_back({cc.index(P.x[p], P.y[p]), w});
+  }
+  Decomposition cut;
+  try {
+    cut = bisect_over_ranks(cell_counts(std::move(amounts), cc.cols), cc.cols, cc.rows, comm.size(),
+                            [&comm](double* v, int m) { comm.sum(v, m); });
+  } catch (const std::invalid_argument& e) {
+    cannot_split(comm.size(), k, e);
+  }
+  const NestedSplit sp = split_of(n, std::move(cut), k);
+  // Each particle (its level and key before it) to the rank whose block holds its cell on its
+  // level; received ones in key order per level (one process's order).
+  constexpr std::size_t kRecord = Particles::kPacked + 2;
+  std::vector<std::vector<unsigned char>> send(std::size_t(comm.size())), recv;
+  for (std::size_t l = 0; l < n.levels.size(); ++l) {
+    State& L = n.levels[l];
+    const BlockLocator locate(sp.blocks[l], L.grid.y.cells);
+    Particles& P = L.particles;
+    for (std::size_t p = 0; p < P.size(); ++p) {
+      const int c = std::clamp(L.grid.x.cell_of(P.x[p]), 0, L.grid.x.cells - 1);
+      const int r = std::clamp(L.grid.y.cell_of(P.y[p]), 0, L.grid.y.cells - 1);
+      double rec[kRecord];
+      rec[0] = double(l), rec[1] = keys[l][p];
+      P.pack(p, rec + 2);
+      std::vector<unsigned char>& out = send[std::size_t(locate.owner(c, r))];
+      out.insert(out.end(), reinterpret_cast<unsigned char*>(rec), reinterpret_cast<unsigned char*>(rec) + sizeof rec);
+    }
+    P = Particles();
+  }
+  comm.all_to_all(send, recv);
+  send.clear();
+  std::vector<std::vector<std::pair<double, std::pair<std::size_t, std::size_t>>>> order(n.levels.size());
+  for (std::size_t q = 0; q < recv.size(); ++q)
+    for (std::size_t at = 0; at + kRecord * sizeof(double) <= recv[q].size(); at += kRecord * sizeof(double)) {
+      double head[2];
+      std::memcpy(head, recv[q].data() + at, sizeof head);
+      order[std::size_t(head[0])].push_back({head[1], {q, at}});
+    }
+  for (std::size_t l = 0; l < n.levels.size(); ++l) {
+    std::sort(order[l].begin(), order[l].end());
+    for (const auto& o : order[l]) {
+      double rec[Particles::kPacked];
+      std::memcpy(rec, recv[o.second.first].data() + o.second.second + 2 * sizeof(double), sizeof rec);
+      n.levels[l].particles.push_packed(rec);
+    }
+  }
+  distribute_nested(s, comm, false, &sp);
 }
 
 namespace {

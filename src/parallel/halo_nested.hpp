@@ -78,6 +78,12 @@ std::vector<std::vector<NodeBox>> nested_reaches(const NestedState& n,
 // finest level's without interfaces).
 void distribute_nested(State& s, const Comm& comm, bool fresh, const NestedSplit* split = nullptr);
 
+// distribute_held (parallel/halo.hpp) for nested levels: each rank holds some of every level's
+// particles (a resume: some of the checkpoint's parts) with their keys per level; the cut
+// lattice's counts bisected over the ranks, each particle sent to its level's block's rank,
+// received ones in key order per level, then distribute_nested with that split.
+void distribute_held_nested(State& s, const Comm& comm, const std::vector<std::vector<double>>& keys);
+
 // make_rank_state (parallel/halo.hpp) for nested levels: the levels made once without particles
 // (the split's lattices and transitions), the case's seed points counted on the cut lattice
 // (nested_seed_tally), the split made from that count, and each level's particles in this

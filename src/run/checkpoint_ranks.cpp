@@ -116,21 +116,27 @@ void read_checkpoint_particles(const std::string& dir, RunContext& ctx) {
   gather_particles(s);
 }
 
-std::vector<double> read_checkpoint_share(const std::string& dir, RunContext& ctx, const Comm& comm) {
+std::vector<std::vector<double>> read_checkpoint_share(const std::string& dir, RunContext& ctx, const Comm& comm) {
   State& s = ctx.s;
-  std::vector<double> key;
-  const int n = s.particle_parts;
-  Particles mine;
-  for (int part = comm.rank(); part < n; part += comm.size()) {
-    const std::size_t before = mine.size();
-    read_checkpoint_parts(dir, s.step, part, 1, n, mine);
-    for (std::size_t k = before; k < mine.size(); ++k) key.push_back(double(part) * 4294967296.0 + double(k - before));
+  const std::vector<State*> held = parts_of(s);
+  const int n = s.particle_parts, parts = int(held.size()) * n;
+  std::vector<std::vector<double>> keys(held.size());
+  for (std::size_t l = 0; l < held.size(); ++l) {
+    State& p = *held[l];
+    Particles mine;
+    for (int part = comm.rank(); part < n; part += comm.size()) {
+      const std::size_t before = mine.size();
+      read_checkpoint_parts(dir, s.step, int(l) * n + part, 1, parts, mine);
+      for (std::size_t k = before; k < mine.size(); ++k) keys[l].push_back(double(part) * 4294967296.0 + double(k - before));
+    }
+    p.particles = std::move(mine);
+    p.particle_parts = 0;
+    p.plan.valid = false;  // re-sort: the stored plan was rank 0's
+    p.windows_checked_step = -2;
   }
-  s.particles = std::move(mine);
   s.particle_parts = 0;
-  s.plan.valid = false;  // re-sort: the stored plan was rank 0's
-  s.windows_checked_step = -2;
-  return key;
+  s.particles_step = -1;  // nested: the levels' particles merged anew
+  return keys;
 }
 
 }  // namespace rupture

@@ -23,6 +23,7 @@
 #include "io/run_json.hpp"
 #include "io/snapshot.hpp"
 #include "parallel/halo.hpp"
+#include "parallel/halo_nested.hpp"
 #include "run/interrupt.hpp"
 #include "run/output_dir.hpp"
 #include "run/progress.hpp"
@@ -191,10 +192,13 @@ RunResult run_case(const Case& c, const RunOptions& options) {
   if (options.resume) {
     read_checkpoint(checkpoint_path(dir), ctx);
     // Split by where the particles are now (any number of ranks, whatever wrote it).
-    if (comm.distributed() && !c.grid.nested && ctx.s.particle_parts > 0) {
+    if (comm.distributed() && ctx.s.particle_parts > 0) {
       // Each rank reads some of the parts; the split sends each particle to its rank.
-      const std::vector<double> key = read_checkpoint_share(dir, ctx, comm);
-      distribute_held(ctx.s, comm, key);
+      const std::vector<std::vector<double>> keys = read_checkpoint_share(dir, ctx, comm);
+      if (c.grid.nested)
+        distribute_held_nested(ctx.s, comm, keys);
+      else
+        distribute_held(ctx.s, comm, keys[0]);
     } else {
       read_checkpoint_particles(dir, ctx);  // a distributed run's particle parts, all of them
       if (comm.distributed()) distribute(ctx.s, comm, false);

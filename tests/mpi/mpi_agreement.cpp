@@ -31,6 +31,7 @@
 #include "io/case_toml.hpp"
 #include "parallel/comm.hpp"
 #include "parallel/halo.hpp"
+#include "parallel/halo_nested.hpp"
 #include "solver/nested_state.hpp"
 #include "solver/state.hpp"
 #include "solver/step.hpp"
@@ -90,7 +91,8 @@ int main(int argc, char** argv) {
   State d = make_rank_state(c, world);
   // It gives, bit for bit and in the same order, the particles, the split and the mass floor of
   // the whole set-up split afterwards (make_state + distribute); the initial energy to round-off.
-  // So does a resumed run's split of particles each rank read some of (distribute_held).
+  // So does a resumed run's split of particles each rank read some of (distribute_held,
+  // distribute_held_nested).
   double setup_same = 1.0, initial_energy_difference = 0.0;
   {
     State w = make_state(c);
@@ -107,17 +109,27 @@ int main(int argc, char** argv) {
     }
     // A resumed run's split (distribute_held): the particles dealt to the ranks in turn, keyed
     // by their one-process index, end on the ranks and in the order distribute gives.
-    if (!c.grid.nested) {
+    {
       State h = make_state(c);
-      std::vector<unsigned char> away(h.particles.size(), 0);
-      std::vector<double> key;
-      for (std::size_t p = 0; p < away.size(); ++p) {
-        away[p] = int(p % std::size_t(world.size())) != world.rank();
-        if (!away[p]) key.push_back(double(p));
+      // Deals p-th particle (of each level) to rank p mod N, keyed by p.
+      const auto deal = [&](Particles& P, std::vector<double>& key) {
+        std::vector<unsigned char> away(P.size(), 0);
+        for (std::size_t p = 0; p < away.size(); ++p) {
+          away[p] = int(p % std::size_t(world.size())) != world.rank();
+          if (!away[p]) key.push_back(double(p));
+        }
+        Particles others;
+        P.move_marked(away, others);
+      };
+      if (c.grid.nested) {
+        std::vector<std::vector<double>> keys(h.nested->levels.size());
+        for (std::size_t l = 0; l < keys.size(); ++l) deal(h.nested->levels[l].particles, keys[l]);
+        distribute_held_nested(h, world, keys);
+      } else {
+        std::vector<double> key;
+        deal(h.particles, key);
+        distribute_held(h, world, key);
       }
-      Particles others;
-      h.particles.move_marked(away, others);
-      distribute_held(h, world, key);
       const Particles& H = h.particles;
       same = same && A.x == H.x && A.y == H.y && A.vx == H.vx && A.sxy == H.sxy && A.id == H.id &&
              A.mass == H.mass && A.half_x == H.half_x && A.field == H.field;
