@@ -197,6 +197,9 @@ void GridFields::set_windows(std::size_t nx, std::size_t ny, const std::vector<i
   }
   for (auto* v : {&mass, &mom_x, &mom_y, &force_x, &force_y, &vel_x, &vel_y, &dvel_x, &dvel_y,
                   &remap_x, &remap_y}) {
+    // A layout much smaller than the memory held (a whole lattice cut to a rank's windows:
+    // parallel/halo_nested.hpp) gives the memory back; assign alone would keep it.
+    if (v->capacity() > 2 * start.back() + 4096) std::vector<double>().swap(*v);
     v->assign(start.back(), 0.0);
   }
 }

@@ -264,12 +264,14 @@ void coupled_nodes(NestedState& n) {
     for (std::size_t node = 0; node < near.size(); ++node) near[node] = near[node] || exact[l][node];
     for (const BondedTie& t : s.bonded)
       for (const std::size_t node : t.nodes) near[node] = 1;
-    const GridFields& G = s.fields;
-    n.coupled_mask[l].assign(G.size(), 0);
-    for (int f = 0; f < G.num_fields; ++f)
+    // Elements in the whole-lattice layout (field f's node at f x nodes: GridFields::resize),
+    // whatever the fields hold now (a distributed rank's are cut to its reach later).
+    const std::size_t nodes = s.grid.num_nodes();
+    n.coupled_mask[l].assign(std::size_t(s.fields.num_fields) * nodes, 0);
+    for (int f = 0; f < s.fields.num_fields; ++f)
       for (std::size_t node = 0; node < near.size(); ++node)
         if (near[node]) {
-          const std::size_t e = G.start[std::size_t(f)] + node;
+          const std::size_t e = std::size_t(f) * nodes + node;
           n.coupled[l].push_back(std::uint32_t(e));
           n.coupled_mask[l][e] = 1;
         }
@@ -324,7 +326,10 @@ NestedState make_nested_state(const Case& c, const LevelShare* share) {
     s.limits.cfl_dt *= scale;
     s.limits.bulk_eigen_bound /= scale * scale;
     s.whole_grid_fields = true;
-    fit_field_windows(s);
+    // One process: every level's fields over its whole lattice. A rank's share: the fields stay
+    // as make_level_state fitted them until the split makes them windows over the rank's reach
+    // (parallel/halo_nested.hpp), so no rank allocates a whole lattice.
+    if (!share) fit_field_windows(s);
     set_level_boundary(s, c, L, n.base_lines[std::size_t(l)]);
     // Ids unique over the levels: level l's follow level l - 1's (a rank's share: as one
     // process numbers them).
