@@ -67,7 +67,7 @@ void strip_rows(State& s, const std::uint32_t* key, int cy, std::size_t stencil_
 #pragma omp parallel for schedule(static)
   for (int k = 0; k < plan.num_strips; ++k) {  // each strip writes its own entries
     for (std::size_t p = begin[k]; p < begin[k + 1]; ++p) {
-      const int row = int((key[order[p]] / stencil_cols) % std::size_t(cy));
+      const int row = int((key[order[p]] / stencil_cols) % std::uint64_t(cy));
       const std::size_t e = std::size_t(k) * fields + P.field[p];
       lo[e] = std::min(lo[e], row);
       hi[e] = std::max(hi[e], row);
@@ -100,23 +100,47 @@ void sort_particles(State& s) {
                                int(stencil_cols) - 1);
     return (std::size_t(strip) * std::size_t(cy) + std::size_t(row)) * stencil_cols + std::size_t(col);
   };
-  const std::size_t buckets = std::size_t(plan.num_strips) * std::size_t(cy) * stencil_cols;
   // Each particle's bucket once, split over the threads (the cell lookups are most of the
   // sort's work); the counting passes below stay serial, so the order is the same.
+  // The lattice-wide key (strip, row, column) of every particle in 4 bytes (the sort's
+  // memory is per particle): lattices up to 2^32 of them, about 4e9 cells.
+  if (double(plan.num_strips) * double(cy) * double(stencil_cols) >= 4294967296.0)
+    throw SimulationError(fmt::format(
+        "the grid's {} x {} cells are more than the particle sort can number (2^32 buckets of "
+        "a strip, a row and a stencil column); use a coarser grid.cell_size or nested levels",
+        cx, cy));
   thread_local std::vector<std::uint32_t> key;  // the calling thread's: reached by pointer
   key.resize(n);
   std::uint32_t* const k_of = key.data();
-#pragma omp parallel for schedule(static)
-  for (long p = 0; p < long(n); ++p) k_of[p] = std::uint32_t(bucket_of(std::size_t(p)));
+  int strip_lo = std::numeric_limits<int>::max(), strip_hi = -1, row_lo = std::numeric_limits<int>::max(), row_hi = -1;
+#pragma omp parallel for schedule(static) reduction(min : strip_lo, row_lo) reduction(max : strip_hi, row_hi)
+  for (long p = 0; p < long(n); ++p) {
+    const std::uint32_t k = std::uint32_t(bucket_of(std::size_t(p)));
+    k_of[p] = k;
+    const int strip = int(k / (std::uint64_t(cy) * stencil_cols)), row = int((k / stencil_cols) % std::uint64_t(cy));
+    strip_lo = std::min(strip_lo, strip), strip_hi = std::max(strip_hi, strip);
+    row_lo = std::min(row_lo, row), row_hi = std::max(row_hi, row);
+  }
+  // Buckets for the strips and rows the particles occupy only (a rank of a distributed run
+  // holds a block, never counts over the whole lattice); the order is the lattice-wide one.
+  const std::uint64_t rows = n > 0 ? std::uint64_t(row_hi - row_lo + 1) : 0;
+  const auto relative = [&](std::uint64_t k) {
+    const std::uint64_t strip = k / (std::uint64_t(cy) * stencil_cols), row = (k / stencil_cols) % std::uint64_t(cy);
+    return ((strip - std::uint64_t(strip_lo)) * rows + (row - std::uint64_t(row_lo))) * stencil_cols + k % stencil_cols;
+  };
+  const std::size_t buckets = n > 0 ? std::size_t(strip_hi - strip_lo + 1) * std::size_t(rows) * stencil_cols : 0;
   plan.bucket.assign(buckets + 1, 0);
-  for (std::size_t p = 0; p < n; ++p) ++plan.bucket[k_of[p] + 1];
+  for (std::size_t p = 0; p < n; ++p) ++plan.bucket[relative(k_of[p]) + 1];
   for (std::size_t k = 0; k < buckets; ++k) plan.bucket[k + 1] += plan.bucket[k];
   plan.strip_begin.resize(std::size_t(plan.num_strips) + 1);
   for (int k = 0; k <= plan.num_strips; ++k)
-    plan.strip_begin[std::size_t(k)] = plan.bucket[std::size_t(k) * std::size_t(cy) * stencil_cols];
+    plan.strip_begin[std::size_t(k)] =
+        n == 0 || k <= strip_lo ? 0
+        : k > strip_hi          ? n
+                                : plan.bucket[std::size_t(k - strip_lo) * std::size_t(rows) * stencil_cols];
   // Stable counting sort: particles keep their previous relative order inside a bucket.
   plan.order.resize(n);
-  for (std::size_t p = 0; p < n; ++p) plan.order[plan.bucket[k_of[p]]++] = std::uint32_t(p);
+  for (std::size_t p = 0; p < n; ++p) plan.order[plan.bucket[relative(k_of[p])]++] = std::uint32_t(p);
   P.permute(plan.order, plan.scratch);
   strip_rows(s, k_of, cy, stencil_cols);
   plan.valid = true;
