@@ -101,16 +101,9 @@ void Halo::exchange(bool sized) {
   exchange_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-void check_distributable(const State& s, int ranks) {
-  if (ranks <= 1) return;
-  auto refuse = [&](const std::string& what) {
-    throw InputError(fmt::format("{} is not supported yet by a distributed run (mpirun -n {}); "
-                                 "run it on one process",
-                                 what, ranks));
-  };
-  // A region's velocity acts on the nodes its particles touch: every copy of such a node
-  // would need the other ranks' lists.
-  if (!s.loads.spec.velocity_regions.empty()) refuse("[loads] velocity regions");
+void check_distributable(const State&, int) {
+  // Every feature of a case is distributed now (velocity regions were the last refused): the
+  // place for a check that some feature must run on one process.
 }
 
 void set_blocks(State& s, std::vector<CellBlock> blocks) {
@@ -273,6 +266,45 @@ void halo_sum_added(State& s, std::initializer_list<NodalArray> arrays) {
         }
         (G.*arr)[e] = h.saved[(f * N + n) * A + a] + sum;
         ++a;
+      }
+    }
+}
+
+void halo_lowest_region(State& s, std::vector<int>& mark, std::vector<std::size_t>& changed) {
+  changed.clear();
+  if (!s.halo) return;
+  Halo& h = *s.halo;
+  const GridFields& G = s.fields;
+  const std::size_t F = std::size_t(G.num_fields);
+  constexpr double kNone = 1e9;  // no region (region indices are small)
+  for (std::size_t k = 0; k < h.peers.size(); ++k) {
+    const NodeBox& b = h.peers[k].box;
+    PeerBuffers& buf = h.buffers[k];
+    buf.send.resize(std::size_t(b.count()) * F * sizeof(double));
+    buf.recv.resize(buf.send.size());
+    double* out = reinterpret_cast<double*>(buf.send.data());
+    for (std::size_t f = 0; f < F; ++f)
+      for (int j = b.j0; j <= b.j1; ++j)
+        for (int i = b.i0; i <= b.i1; ++i) {
+          const int m = G.holds(int(f), i, j) ? mark[G.index(int(f), i, j)] : -1;
+          *out++ = m >= 0 ? double(m) : kNone;
+        }
+  }
+  h.exchange(true);
+  for (std::size_t f = 0; f < F; ++f)
+    for (std::size_t n = 0; n + 1 < h.first.size(); ++n) {
+      if (!G.holds(int(f), h.node_i[n], h.node_j[n])) continue;
+      const std::size_t e = G.index(int(f), h.node_i[n], h.node_j[n]);
+      double lowest = mark[e] >= 0 ? double(mark[e]) : kNone;
+      for (std::size_t t = h.first[n]; t < h.first[n + 1]; ++t) {
+        const Halo::Term& term = h.terms[t];
+        if (term.peer < 0) continue;
+        const long cnt = h.peers[std::size_t(term.peer)].box.count();
+        lowest = std::min(lowest, read_double(h.buffers[std::size_t(term.peer)].recv, f * std::size_t(cnt) + std::size_t(term.place)));
+      }
+      if (lowest < kNone && int(lowest) != mark[e]) {
+        mark[e] = int(lowest);
+        changed.push_back(e);
       }
     }
 }

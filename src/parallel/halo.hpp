@@ -194,6 +194,12 @@ void gather_crack_times(State& s);
 // The run's work on interface k (the ranks' parts summed), J/m.
 double interface_work(const State& s, std::size_t k);
 
+// [loads] velocity regions (solver/load_step.cpp): every copy of a halo node must be prescribed
+// alike. `mark`, per element of s.fields: the lowest region whose particles on this rank touch
+// the node, or -1; after the call, at every halo node, the lowest over the ranks holding it.
+// `changed`: the elements whose mark changed (collective among neighbours).
+void halo_lowest_region(State& s, std::vector<int>& mark, std::vector<std::size_t>& changed);
+
 // Whether a node-counted sum (external work of prescribed and absorbing edges) counts grid
 // node `node` of `field` on this rank: every copy holds the same values, and the lowest rank
 // that gave the node mass in this step's scatter counts it (a fixed owner may hold no particle

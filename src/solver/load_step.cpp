@@ -7,6 +7,7 @@
 #include <algorithm>
 
 #include "core/errors.hpp"
+#include "parallel/halo.hpp"
 
 namespace rupture {
 namespace {
@@ -36,7 +37,7 @@ void set_up_loads(State& s, const Loads& loads, double cell_size, const Particle
   for (const TractionLoad& t : loads.tractions)
     L.patches.push_back(find_traction_patch(t, near ? *near : s.particles, cell_size));
   for (const VelocityRegion& r : loads.velocity_regions) {
-    L.region_ids.push_back(region_particles(r, s.particles));
+    L.region_ids.push_back(region_particles(r, near ? *near : s.particles));
     if (L.region_ids.back().empty())
       throw InputError(fmt::format(
           "input keys 'loads.{0}.min', 'loads.{0}.max' = [{1:g}, {2:g}]..[{3:g}, {4:g}]: the box "
@@ -82,13 +83,22 @@ void prepare_loads(State& s) {
     for (std::size_t k = 0; k < L.patches.size(); ++k)
       for (std::size_t j = 0; j < L.patches[k].ids.size(); ++j)
         L.patch_index[k][j] = slot(L.patches[k].ids[j]);
-    for (std::size_t k = 0; k < L.region_ids.size(); ++k)
+    for (std::size_t k = 0; k < L.region_ids.size(); ++k) {  // the region particles held here
+      L.region_index[k].clear();  // keeps its capacity (the region's ids): no allocation
       for (std::size_t j = 0; j < L.region_ids[k].size(); ++j)
-        L.region_index[k][j] = slot(L.region_ids[k][j]);
+        if (const std::uint32_t p = slot(L.region_ids[k][j]); p != LoadState::kAbsent) L.region_index[k].push_back(p);
+    }
     L.indexed_sort = s.plan.sorted_step;
   }
   // Stamps per field node: re-made when the windows were re-fitted (solver/field_windows.hpp).
   if (L.node_stamp.size() != s.fields.size()) L.node_stamp.assign(s.fields.size(), 0);
+  const bool distributed = s.halo && !L.region_index.empty();
+  if (distributed) {  // the marks of the last step's list back to none
+    if (L.node_region.size() != s.fields.size())
+      L.node_region.assign(s.fields.size(), -1);
+    else
+      for (const LoadState::RegionNode& e : L.region_nodes) L.node_region[e.node] = -1;
+  }
   // Nodes the region particles touch at t^n, each listed once (in input and id order).
   L.region_nodes.clear();  // keeps its capacity: no allocation
   const long stamp = s.step + 1;
@@ -98,7 +108,21 @@ void prepare_loads(State& s) {
         if (L.node_stamp[i] == stamp) return;
         L.node_stamp[i] = stamp;
         L.region_nodes.push_back({i, int(r)});
+        if (distributed) L.node_region[i] = int(r);
       });
+  if (!distributed) return;
+  // Distributed: a halo node is listed on every rank holding it, with the lowest region any
+  // rank's particles give it (the one that lists it first on one process).
+  halo_lowest_region(s, L.node_region, L.region_changed);
+  for (const std::size_t e : L.region_changed) {
+    if (L.node_stamp[e] != stamp) {
+      L.node_stamp[e] = stamp;
+      L.region_nodes.push_back({e, L.node_region[e]});
+      continue;
+    }
+    for (LoadState::RegionNode& n : L.region_nodes)
+      if (n.node == e) n.region = L.node_region[e];
+  }
 }
 
 void add_external_forces(State& s) {
@@ -167,6 +191,20 @@ void add_external_forces(State& s) {
   }
 }
 
+namespace {
+
+// The field and the grid node (i + j nodes_x) of element e of the fields.
+int field_of(const GridFields& G, std::size_t e) {
+  return int(std::upper_bound(G.start.begin(), G.start.end(), e) - G.start.begin()) - 1;
+}
+std::size_t grid_node_of(const GridFields& G, std::size_t e) {
+  const std::size_t f = std::size_t(field_of(G, e)), local = e - G.start[f];
+  const std::size_t cols = std::size_t(G.cols[f]);
+  return std::size_t(G.col0[f]) + local % cols + (std::size_t(G.row0[f]) + local / cols) * G.nodes_x;
+}
+
+}  // namespace
+
 void apply_velocity_regions(State& s) {
   LoadState& L = s.loads;
   if (L.region_nodes.empty()) return;
@@ -179,8 +217,10 @@ void apply_velocity_regions(State& s) {
     const double dx = r.direction[0], dy = r.direction[1];
     const double v0 = r.velocity(t0), v1 = r.velocity(t1);
     const double jump = v1 - (G.vel_x[e.node] * dx + G.vel_y[e.node] * dy);
-    // Impulse m jump along d, acting at the mean prescribed speed (as apply_velocity_bcs, E14).
-    s.external_work += m * jump * 0.5 * (v0 + v1);
+    // Impulse m jump along d, acting at the mean prescribed speed (as apply_velocity_bcs, E14);
+    // distributed: a shared node's work counted once.
+    if (!s.halo || counts_node(s, field_of(G, e.node), grid_node_of(G, e.node)))
+      s.external_work += m * jump * 0.5 * (v0 + v1);
     G.vel_x[e.node] += jump * dx;
     G.vel_y[e.node] += jump * dy;
     G.dvel_x[e.node] += jump * dx;

@@ -27,8 +27,8 @@
 namespace rupture {
 
 // Setup (make_state): the particles each load acts on, from the particles at t = 0: the
-// traction patches from `near` when given (a distributed rank's: every particle near the
-// segments, solver/case_seeding.hpp), else from s's.
+// traction patches and velocity regions from `near` when given (a distributed rank's: every
+// particle near the segments and in the regions' boxes, solver/case_seeding.hpp), else from s's.
 void set_up_loads(State& s, const Loads& loads, double cell_size, const Particles* near = nullptr);
 
 void prepare_loads(State& s);

@@ -48,10 +48,11 @@ SeedProperties seed_properties(const Case& c, const BodySpec& b) {
 // Every particle at t = 0 (ids as one process gives them) whose box may meet a traction load's
 // segment or be among the nearest to its points (bc/loads.hpp: find_traction_patch looks no
 // further than twice a particle's half-diagonal, at most hypot(wx, wy) <= wx + wy for the
-// widest cells), in id order: find_traction_patch on them finds what it finds on all.
+// widest cells), or in a velocity region's box, in id order: find_traction_patch and
+// region_particles on them find what they find on all.
 Particles particles_near_loads(const Case& c, const Grid& g) {
   Particles near;
-  if (c.loads.tractions.empty()) return near;
+  if (c.loads.tractions.empty() && c.loads.velocity_regions.empty()) return near;
   double wx = 0.0, wy = 0.0;
   for (int i = 0; i < g.x.cells; ++i) wx = std::max(wx, g.x.width(i));
   for (int j = 0; j < g.y.cells; ++j) wy = std::max(wy, g.y.width(j));
@@ -60,6 +61,11 @@ Particles particles_near_loads(const Case& c, const Grid& g) {
   for (const BodySpec& b : c.bodies) {
     const SeedProperties props = seed_properties(c, b);
     for_each_body_point(c, g, b, [&](const SeedPoint& p) {
+      for (const VelocityRegion& r : c.loads.velocity_regions)  // bc/loads.cpp: region_particles
+        if (p.x >= r.min[0] && p.x <= r.max[0] && p.y >= r.min[1] && p.y <= r.max[1]) {
+          append_seed_point(near, p, props, id++);
+          return;
+        }
       for (const TractionLoad& t : c.loads.tractions) {
         const double dx = t.to[0] - t.from[0], dy = t.to[1] - t.from[1], L = std::hypot(dx, dy);
         const double rx = p.x - t.from[0], ry = p.y - t.from[1];

@@ -99,6 +99,10 @@ struct LoadState {
   };
   std::vector<RegionNode> region_nodes;  // nodes the region particles touch this step
   std::vector<long> node_stamp;          // per field node: step + 1 when listed
+  // Distributed (parallel/halo.hpp: halo_lowest_region): per field node, the region listing
+  // it (-1: none), and the halo nodes another rank's region particles made listed.
+  std::vector<int> node_region;
+  std::vector<std::size_t> region_changed;
   bool has_forces() const { return !spec.tractions.empty() || !spec.body_forces.empty(); }
 };
 
