@@ -33,6 +33,14 @@ std::vector<State*> parts_of(State& s) {
   return out;
 }
 
+// Particles read from the parts become p's (its stored plan and windows were rank 0's).
+void take_particles(State& p, Particles&& read) {
+  p.particles = std::move(read);
+  p.particle_parts = 0;
+  p.plan.valid = false;  // re-sort
+  p.windows_checked_step = -2;
+}
+
 }  // namespace
 
 void write_checkpoint_ranks(const std::string& dir, const CaseSource& source, RunContext& ctx,
@@ -106,10 +114,7 @@ void read_checkpoint_particles(const std::string& dir, RunContext& ctx) {
     State& p = *held[l];
     Particles all;
     read_checkpoint_parts(dir, s.step, int(l) * n, n, parts, all);
-    p.particles = std::move(all);
-    p.particle_parts = 0;
-    p.plan.valid = false;  // re-sort: the stored plan was rank 0's
-    p.windows_checked_step = -2;
+    take_particles(p, std::move(all));
   }
   s.particle_parts = 0;
   s.particles_step = -1;  // nested: the levels' particles merged anew
@@ -129,10 +134,7 @@ std::vector<std::vector<double>> read_checkpoint_share(const std::string& dir, R
       read_checkpoint_parts(dir, s.step, int(l) * n + part, 1, parts, mine);
       for (std::size_t k = before; k < mine.size(); ++k) keys[l].push_back(double(part) * 4294967296.0 + double(k - before));
     }
-    p.particles = std::move(mine);
-    p.particle_parts = 0;
-    p.plan.valid = false;  // re-sort: the stored plan was rank 0's
-    p.windows_checked_step = -2;
+    take_particles(p, std::move(mine));
   }
   s.particle_parts = 0;
   s.particles_step = -1;  // nested: the levels' particles merged anew
