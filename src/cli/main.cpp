@@ -451,6 +451,7 @@ int main(int argc, char** argv) {
     if (r.ranks > 1) {  // distributed: how the particles were split, and how often they moved
       fmt::print("ranks={}\n", r.ranks);
       fmt::print("particles_per_rank={}\n", fmt::join(r.particles_per_rank, ","));
+      fmt::print("particles_per_rank_end={}\n", fmt::join(r.particles_per_rank_end, ","));
       fmt::print("migrations={}\n", r.migrations);
       fmt::print("rebalances={}\n", r.rebalances);
       fmt::print("exchange_bytes_per_rank_per_step={:.0f}\n", r.exchange_bytes_per_step);

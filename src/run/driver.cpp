@@ -47,6 +47,14 @@ std::vector<const State*> level_states(const State& s) {
   return out;
 }
 
+// This rank's particles (nested: on every level).
+std::size_t sum_over_levels_particles(const State& s) {
+  if (!s.nested) return s.particles.size();
+  std::size_t n = 0;
+  for (const State& l : s.nested->levels) n += l.particles.size();
+  return n;
+}
+
 EnergySample sample(State& s) {
   // Distributed: the sums over particles and owned nodes, added over the ranks; every
   // interface node's state from its owner.
@@ -509,6 +517,23 @@ RunResult run_case(const Case& c, const RunOptions& options) {
     for (const State* l : level_states(s)) bytes += l->halo->bytes_sent, seconds += l->halo->exchange_seconds;
     result.exchange_bytes_per_step = comm.sum(bytes) / double(comm.size()) / double(steps);
     result.exchange_seconds = comm.max(seconds);
+  }
+  {  // every rank's particles now (nested: every level's), and what a kept split became
+    std::vector<double> count(std::size_t(comm.size()), 0.0);
+    count[std::size_t(comm.rank())] = double(sum_over_levels_particles(s));
+    comm.sum(count.data(), int(count.size()));
+    for (const double n : count) result.particles_per_rank_end.push_back(long(n));
+    // Nested levels keep their first split (parallel/halo_nested.hpp): say so when the
+    // particles drifted from it by more than a rebalance would tolerate.
+    const auto over = [](const std::vector<long>& v) {
+      double most = 0.0, all = 0.0;
+      for (const long n : v) most = std::max(most, double(n)), all += double(n);
+      return all > 0.0 ? most / (all / double(v.size())) - 1.0 : 0.0;
+    };
+    const double start = over(result.particles_per_rank), end = over(result.particles_per_rank_end);
+    if (s.nested && comm.distributed() && writer && end - start > kRebalanceImbalance)
+      fmt::print("nested levels keep their first split: the most particles on a rank went from {:.1f} % "
+                 "to {:.1f} % over the mean\n", 100.0 * start, 100.0 * end);
   }
   {  // every rank's peak resident memory in its slot, summed: known to every rank
     rusage use{};

@@ -67,6 +67,7 @@ struct RunResult {
   std::vector<CrackSummary> cracks;    // one per cohesive interface
   int ranks = 1;                       // processes (distributed runs)
   std::vector<long> particles_per_rank;  // at t = 0, after the split
+  std::vector<long> particles_per_rank_end;  // at the end of the run
   long migrations = 0;                 // particle migrations between ranks
   long rebalances = 0;                 // new splits when the load drifted (parallel/halo.hpp)
   double exchange_bytes_per_step = 0.0;  // bytes a rank sends its neighbours per step (mean over ranks)
