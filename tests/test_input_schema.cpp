@@ -108,6 +108,7 @@ std::vector<std::string> instances(const std::string& table, const std::string& 
   if (table == "interface.*.stretches[]") return {"interface.weak.stretches[0]"};
   if (table == "boundary.*") return {"boundary.push"};
   if (table == "interface.*") return {"interface.weak"};
+  if (table == "stations.*") return {"stations.st"};
   if (table == "loads.*") {
     if (when.find("type = traction") == 0) return {"loads.t"};
     if (when.find("type = body_force") == 0) return {"loads.g"};

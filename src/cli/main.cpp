@@ -38,6 +38,7 @@
 #include "parallel/comm.hpp"
 #include "parallel/rank_plan.hpp"
 #include "io/input_schema.hpp"
+#include "io/text_limits.hpp"
 #include "run/driver.hpp"
 #include "run/step_cost.hpp"
 #include "run/sweep.hpp"
@@ -206,11 +207,7 @@ int run_plot(const char* argv0, const std::string& dir, const std::vector<std::s
 }
 
 CaseSource read_case_source(const std::string& path, const std::vector<std::string>& overrides) {
-  std::ifstream in(path);
-  if (!in) throw InputError(fmt::format("cannot read case file '{}'", path));
-  std::stringstream buf;
-  buf << in.rdbuf();
-  return CaseSource{buf.str(), path, overrides};
+  return CaseSource{read_bounded_file(path, kMaxCaseBytes, "case file"), path, overrides};
 }
 
 // rupture check --explain KEY: the schema entry (io/input_schema.hpp), or exit code 1 with the

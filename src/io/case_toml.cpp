@@ -15,6 +15,7 @@
 #include "io/case_checks.hpp"
 #include "io/case_parse.hpp"
 #include "io/input_schema.hpp"
+#include "io/text_limits.hpp"
 #include "io/toml_section.hpp"
 
 namespace rupture {
@@ -27,7 +28,7 @@ void parse_model(Section& top, Case& c) {
 void parse_materials(Section& top, Case& c, ParseContext& ctx) {
   auto& material_index = ctx.material_index;
   Section mats = top.table("materials", true);
-  for (const auto& [k, v] : in_input_order(mats.raw())) {
+  for (const auto& [k, v] : named_entries(mats)) {
     const std::string& name = k;
     Section m = mats.table(name, true, allowed_keys("materials.*"));
     ElasticMaterial em;
@@ -131,9 +132,13 @@ void apply_override(toml::table& root, const std::string& assignment) {
   for (std::string part; std::getline(ss, part, '.');) {
     part.erase(0, part.find_first_not_of(" \t"));
     part.erase(part.find_last_not_of(" \t") + 1);
-    if (part.empty()) fail("--set", "\"" + assignment + "\"", "the key has an empty component");
+    if (part.empty()) fail("--set", "\"" + printable(assignment) + "\"", "the key has an empty component");
     parts.push_back(part);
   }
+  if (parts.size() > std::size_t(kMaxKeyParts))
+    fail("--set", fmt::format("{} dotted parts", parts.size()),
+         fmt::format("a key has at most {} parts", kMaxKeyParts));
+  check_toml_limits(text, "--set " + path);
   toml::table* t = &root;
   for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
     toml::node* n = t->get(parts[i]);
@@ -236,6 +241,7 @@ Grid build_grid(const GridSpec& g) {
 
 Case parse_case(const std::string& toml_text, const std::vector<std::string>& overrides,
                 const std::string& origin) {
+  check_toml_limits(toml_text, origin);  // before the parser: no input can exhaust its stack
   toml::table root;
   try {
     root = toml::parse(toml_text, origin);
@@ -253,11 +259,7 @@ Case parse_case(const std::string& toml_text, const std::vector<std::string>& ov
 }
 
 Case load_case(const std::string& path, const std::vector<std::string>& overrides) {
-  std::ifstream in(path);
-  if (!in) throw InputError(fmt::format("cannot read case file '{}'", path));
-  std::stringstream buf;
-  buf << in.rdbuf();
-  return parse_case(buf.str(), overrides, path);
+  return parse_case(read_bounded_file(path, kMaxCaseBytes, "case file"), overrides, path);
 }
 
 }  // namespace rupture

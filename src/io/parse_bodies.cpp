@@ -86,14 +86,15 @@ void parse_bodies(Section& top, Case& c, ParseContext& ctx) {
   auto& material_index = ctx.material_index;
   Section bodies = top.table("bodies", true);
   const double tol = 1e-9 * c.grid.cell_size;
-  for (const auto& [k, v] : in_input_order(bodies.raw())) {
+  for (const auto& [k, v] : named_entries(bodies)) {
     const std::string& name = k;
     Section b = bodies.table(name, true, allowed_keys("bodies.*"));
     BodySpec bs;
     bs.name = name;
     const std::string mat = b.string("material", "");
     if (mat.empty())
-      fail(b.key("material"), "(missing)", "required, the name of a [materials] entry");
+      fail(b.key("material"), b.has("material") ? "\"\"" : "(missing)",
+           "required, the name of a [materials] entry");
     if (!material_index.count(mat)) {
       std::vector<std::string> names;
       for (const auto& m : c.materials) names.push_back(m.name);
@@ -114,6 +115,7 @@ void parse_bodies(Section& top, Case& c, ParseContext& ctx) {
     if (field.empty())
       fail(b.key("field"), "\"\"", "must name a velocity field (bodies sharing one are one "
                                    "continuum); by default the body's own name");
+    check_name(b.key("field"), field);
     const auto f = std::find(c.field_names.begin(), c.field_names.end(), field);
     bs.field = int(f - c.field_names.begin());
     if (f == c.field_names.end()) {

@@ -12,7 +12,7 @@ namespace rupture {
 
 void parse_boundary(Section& top, Case& c, ParseContext& ctx) {
   Section bcs = top.table("boundary", false);
-  for (const auto& [k, v] : in_input_order(bcs.raw())) {
+  for (const auto& [k, v] : named_entries(bcs)) {
     const std::string& name = k;
     Section b = bcs.table(name, true, allowed_keys("boundary.*"));
     VelocityBC bc;

@@ -47,7 +47,7 @@ void parse_grid(Section& top, Case& c) {
   Section refine = g.table("refine", false);
   if (!refine.raw().empty() && !g.has("coarse_cell_size"))
     fail(g.key("refine"), "(present)", "needs grid.coarse_cell_size, the level-0 cell size");
-  for (const auto& [k, v] : in_input_order(refine.raw())) {
+  for (const auto& [k, v] : named_entries(refine)) {
     if (!c.grid.refined()) break;
     const std::string& name = k;
     Section r = refine.table(name, true, allowed_keys("grid.refine.*"));

@@ -382,7 +382,7 @@ void fail_on_invalid(Section& f, const std::string& problem,
 
 void parse_interfaces(Section& top, Case& c, ParseContext& ctx) {
   Section ifs = top.table("interface", false);
-  for (const auto& [k, v] : in_input_order(ifs.raw())) {
+  for (const auto& [k, v] : named_entries(ifs)) {
     const std::string& name = k;
     Section f = ifs.table(name, true, allowed_keys("interface.*"));
     InterfaceSpec is;

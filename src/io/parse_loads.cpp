@@ -42,7 +42,7 @@ std::vector<int> body_fields(Section& l, const Case& c, ParseContext& ctx) {
 
 void parse_loads(Section& top, Case& c, ParseContext& ctx) {
   Section loads = top.table("loads", false);
-  for (const auto& [k, v] : in_input_order(loads.raw())) {
+  for (const auto& [k, v] : named_entries(loads)) {
     const std::string& name = k;
     Section probe = loads.table(name, true);
     const std::string type = probe.string("type", "", {"traction", "body_force", "velocity"});

@@ -13,7 +13,7 @@ namespace rupture {
 
 void parse_stations(Section& top, Case& c) {
   Section all = top.table("stations", false);
-  for (const auto& [name, v] : in_input_order(all.raw())) {
+  for (const auto& [name, v] : named_entries(all)) {
     Section t = all.table(name, true, allowed_keys("stations.*"));
     StationSpec st;
     st.name = name;

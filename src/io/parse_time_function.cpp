@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "io/case_parse.hpp"
+#include "io/text_limits.hpp"
 
 namespace rupture {
 
@@ -38,8 +39,13 @@ bool two_numbers(std::string line, double& a, double& b) {
 
 void read_table_file(const std::string& key, const std::string& given, const std::string& path,
                      std::vector<double>& t, std::vector<double>& v, std::vector<int>& lines) {
-  std::ifstream in(path);
-  if (!in) fail(key, "\"" + given + "\"", fmt::format("cannot read the file '{}'", path));
+  std::string text;
+  try {  // a regular file of bounded size (io/text_limits.hpp)
+    text = read_bounded_file(path, kMaxCaseBytes, "table file");
+  } catch (const InputError& e) {
+    fail(key, "\"" + printable(given) + "\"", e.what());
+  }
+  std::istringstream in(text);
   std::string line;
   int number = 0;
   bool first = true;

@@ -42,4 +42,10 @@ std::vector<std::pair<std::string, const toml::node*>> in_input_order(const toml
   return out;
 }
 
+std::vector<std::pair<std::string, const toml::node*>> named_entries(const Section& s) {
+  auto out = in_input_order(s.raw());
+  for (const auto& [name, node] : out) check_name(s.key(name), name);
+  return out;
+}
+
 }  // namespace rupture

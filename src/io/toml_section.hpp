@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/errors.hpp"
+#include "io/names.hpp"
 
 namespace rupture {
 
@@ -61,7 +62,10 @@ class Section {
     }
   }
 
-  std::string key(const std::string& k) const { return path_.empty() ? k : path_ + "." + k; }
+  // The dotted key of `k` for messages (a name with odd bytes shown escaped: io/names.hpp).
+  std::string key(const std::string& k) const {
+    return path_.empty() ? printable(k) : path_ + "." + printable(k);
+  }
   bool has(const std::string& k) const { return t_.contains(k); }
   const toml::node* node(const std::string& k) const { return t_.get(k); }
 
@@ -172,5 +176,9 @@ inline bool whole_cells(double length, double h) {
 // name): bodies, fields and interfaces are numbered and reported in input order. Entries added
 // by --set (no source position) come last, in name order.
 std::vector<std::pair<std::string, const toml::node*>> in_input_order(const toml::table& t);
+
+// The named entries of a table ([bodies.NAME], [interface.NAME], ...) in input order, each name
+// checked against the rule of io/names.hpp (InputError naming the entry otherwise).
+std::vector<std::pair<std::string, const toml::node*>> named_entries(const Section& s);
 
 }  // namespace rupture

@@ -1,0 +1,143 @@
+// Tests of io/names and io/text_limits: every name a user gives is checked against one rule
+// (no name can reach a path outside the run directory), and no text can exhaust the parser's
+// stack or the memory before it is parsed.
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "core/errors.hpp"
+#include "io/case_toml.hpp"
+#include "io/names.hpp"
+#include "io/text_limits.hpp"
+#include "support.hpp"
+
+using namespace rupture;
+
+namespace {
+
+std::string error_of(const std::string& text, const std::vector<std::string>& overrides = {}) {
+  try {
+    parse_case(text, overrides);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+std::string replaced(std::string s, const std::string& from, const std::string& to) {
+  const auto pos = s.find(from);
+  EXPECT_NE(pos, std::string::npos) << from;
+  if (pos != std::string::npos) s.replace(pos, from.size(), to);
+  return s;
+}
+
+}  // namespace
+
+TEST(Names, rule_accepts_letters_digits_underscore_and_hyphen_only) {
+  EXPECT_TRUE(valid_name("weak_plane"));
+  EXPECT_TRUE(valid_name("st-12"));
+  EXPECT_TRUE(valid_name(std::string(kMaxNameLength, 'a')));
+  EXPECT_FALSE(valid_name(""));
+  EXPECT_FALSE(valid_name(std::string(kMaxNameLength + 1, 'a')));
+  for (const char* bad : {"..", "a/b", "../../../names/evil", "a b", "a.b", "a\\b", "é"})
+    EXPECT_FALSE(valid_name(bad)) << bad;
+  EXPECT_FALSE(valid_name(std::string("a\0b", 3)));
+}
+
+TEST(Names, printable_escapes_control_bytes_so_a_nul_does_not_cut_a_message) {
+  EXPECT_EQ(printable(std::string("a\0b", 3)), "a\\x00b");
+  EXPECT_EQ(printable("say \"hi\""), "say \\x22hi\\x22");
+  EXPECT_EQ(printable(std::string(500, 'x')).size(), 203u);  // 200 then "..."
+}
+
+// Every kind of named entry: the message names the entry, shows the name and states the rule.
+TEST(Names, every_named_table_checks_its_names) {
+  const std::string base = test::strip_case_toml();
+  struct Case_ {
+    std::string from, to, key;
+  };
+  const std::vector<Case_> cases = {
+      {"[materials.homalite]", "[materials.\"a/b\"]", "materials.a/b"},
+      {"[bodies.strip]", "[bodies.\"../../../names/evil\"]", "bodies.../../../names/evil"},
+      {"[boundary.push]", "[boundary.\"x y\"]", "boundary.x y"},
+      {"[output]", "[interface.\"a/b\"]\nfrom = [0.0, 0.001]\nto = [0.01, 0.001]\n[output]", "interface.a/b"},
+      {"[output]", "[stations.\"x/y\"]\nat = [0.005, 0.001]\n[output]", "stations.x/y"},
+      {"[output]", "[loads.\"..\"]\ntype = \"body_force\"\ngravity = [0.0, -9.8]\n[output]", "loads..."},
+  };
+  for (const Case_& k : cases) {
+    const std::string e = error_of(replaced(base, k.from, k.to));
+    EXPECT_NE(e.find("input key '" + k.key + "'"), std::string::npos) << e;
+    EXPECT_NE(e.find("1 to 64 characters from A-Z a-z 0-9 _ -"), std::string::npos) << e;
+  }
+  const std::string long_name(300, 'n');
+  const std::string e = error_of(replaced(base, "[bodies.strip]", "[bodies." + long_name + "]"));
+  EXPECT_NE(e.find("is 300 characters long"), std::string::npos) << e;
+  const std::string f = error_of(base, {"bodies.strip.field=a/b"});
+  EXPECT_NE(f.find("input key 'bodies.strip.field' = \"a/b\": the name holds '/'"), std::string::npos) << f;
+  const std::string nul = error_of(replaced(base, "[bodies.strip]", "[bodies.\"a\\u0000b\"]"));
+  EXPECT_NE(nul.find("\"a\\x00b\": the name holds '\\x00'"), std::string::npos) << nul;
+}
+
+TEST(Names, an_empty_material_name_is_shown_as_empty_not_missing) {
+  const std::string e = error_of(test::strip_case_toml(), {"bodies.strip.material=\"\""});
+  EXPECT_NE(e.find("'bodies.strip.material' = \"\": required"), std::string::npos) << e;
+}
+
+TEST(TextLimits, deep_dotted_headers_and_nesting_are_refused_before_parsing) {
+  std::string header = "[a";
+  for (int k = 0; k < 50000; ++k) header += ".a";
+  const std::string e = error_of(header + "]\n");
+  EXPECT_NE(e.find("a key of more than 32 dotted parts"), std::string::npos) << e;
+  const std::string deep = "x = " + std::string(1000, '[') + "1" + std::string(1000, ']') + "\n";
+  EXPECT_NE(error_of(deep).find("nested more than 32 deep"), std::string::npos);
+  const std::string inline_deep = "x = " + std::string(100, '{') + "\n";
+  EXPECT_NE(error_of(inline_deep).find("nested more than 32 deep"), std::string::npos);
+  std::string key = "a";
+  for (int k = 0; k < 100; ++k) key += ".a";
+  EXPECT_NE(error_of(test::strip_case_toml(), {key + "=1"}).find("at most 32 parts"), std::string::npos);
+  EXPECT_NE(error_of(test::strip_case_toml(), {"x=" + std::string(100, '[')}).find("nested more than 32"),
+            std::string::npos);
+}
+
+// The scan counts the dots of keys only: values with many dots (numbers in a long array,
+// strings, comments, multi-line strings) and a 32-part key are fine.
+TEST(TextLimits, dots_and_brackets_of_values_strings_and_comments_do_not_count) {
+  std::string text = "x = [";
+  for (int k = 0; k < 1000; ++k) text += "1.5, ";
+  text += "2.5]\n";
+  text += "s = \"a.b.c.d.e.f.g.h.i.j.k.l.m.n.o.p.q.r.s.t.u.v.w.x.y.z.a.b.c.d.e.f.g.h [[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[\"\n";
+  text += "m = '''\n" + std::string(100, '.') + std::string(100, '[') + "\n'''\n";
+  text += "e = \"\"\"quote \\\" inside\"\"\"\n";
+  text += "# comment " + std::string(100, '.') + std::string(100, '{') + "\n";
+  std::string key = "k";
+  for (int k = 1; k < kMaxKeyParts; ++k) key += ".k";
+  text += key + " = 1\n";
+  EXPECT_NO_THROW(check_toml_limits(text, "t"));
+  EXPECT_THROW(check_toml_limits(key + ".k = 1\n", "t"), InputError);
+}
+
+TEST(TextLimits, only_regular_files_of_bounded_size_are_read) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("rupture_limits_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string file = (dir / "case.toml").string();
+  std::ofstream(file) << "x = 1\n";
+  EXPECT_EQ(read_bounded_file(file, 100, "case file"), "x = 1\n");
+  try {
+    read_bounded_file(file, 3, "case file");
+    ADD_FAILURE() << "a file over the bound was read";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("holds 6 bytes"), std::string::npos) << e.what();
+  }
+  const std::string fifo = (dir / "fifo").string();
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  EXPECT_THROW(read_bounded_file(fifo, 100, "case file"), InputError);  // no hang: never opened
+  EXPECT_THROW(read_bounded_file("/dev/urandom", 100, "case file"), InputError);
+  EXPECT_THROW(read_bounded_file(dir.string(), 100, "case file"), InputError);
+  EXPECT_THROW(read_bounded_file((dir / "missing").string(), 100, "case file"), InputError);
+  fs::remove_all(dir);
+}
