@@ -141,3 +141,32 @@ TEST(TextLimits, only_regular_files_of_bounded_size_are_read) {
   EXPECT_THROW(read_bounded_file((dir / "missing").string(), 100, "case file"), InputError);
   fs::remove_all(dir);
 }
+
+// Finite but absurd inputs (io/case_checks check_run_limits): refused at input, naming the key,
+// before any allocation or step.
+TEST(RunLimits, absurd_materials_times_and_sizes_are_refused_before_any_work) {
+  const std::string base = test::strip_case_toml();
+  const std::string rho = error_of(base, {"materials.homalite.density=1e-300"});
+  EXPECT_NE(rho.find("'materials.homalite'"), std::string::npos) << rho;
+  EXPECT_NE(rho.find("c_D = inf m/s"), std::string::npos) << rho;
+  const std::string stiff = error_of(base, {"materials.homalite.youngs_modulus=1e308"});
+  EXPECT_NE(stiff.find("'time.end'"), std::string::npos) << stiff;
+  EXPECT_NE(stiff.find("at most 4.504e+09"), std::string::npos) << stiff;
+  const std::string end = error_of(base, {"time.end=1e308"});
+  EXPECT_NE(end.find("'time.end' = 1e+308"), std::string::npos) << end;
+  EXPECT_NE(end.find("inf steps"), std::string::npos) << end;
+  // 3.8e9 steps of the strip (dt = 7.9e-8 s) are allowed, 5.1e9 are not: the bound is 2^52 x 1e-6.
+  EXPECT_EQ(error_of(base, {"time.end=300.0"}), "");
+  EXPECT_NE(error_of(base, {"time.end=400.0"}).find("at most 4.504e+09"), std::string::npos);
+  const std::string memory = error_of(base, {"solver.memory_limit_mib=0.001"});
+  EXPECT_NE(memory.find("'solver.memory_limit_mib' = 0.001"), std::string::npos) << memory;
+  EXPECT_NE(memory.find("the case needs about"), std::string::npos) << memory;
+  EXPECT_EQ(error_of(base, {"solver.memory_limit_mib=1000"}), "");
+  EXPECT_NE(error_of(base, {"solver.memory_limit_mib=-1"}).find("must be >= 0"), std::string::npos);
+}
+
+TEST(RunLimits, a_long_run_warns_with_its_count_beyond_what_a_long_holds) {
+  const Case c = parse_case(test::strip_case_toml(), {"time.end=2.0"});  // 2.5e7 steps
+  ASSERT_EQ(c.warnings.size(), 1u);
+  EXPECT_NE(c.warnings[0].find("more than 1e7"), std::string::npos) << c.warnings[0];
+}

@@ -35,6 +35,8 @@
 #include "core/fp_mode.hpp"
 #include "io/case_toml.hpp"
 #include "io/checkpoint.hpp"
+#include "core/fault_injection.hpp"
+#include "parallel/agreement.hpp"
 #include "parallel/comm.hpp"
 #include "parallel/rank_plan.hpp"
 #include "io/input_schema.hpp"
@@ -292,6 +294,12 @@ int main(int argc, char** argv) {
   const Comm world = Comm::world();
   if (world.rank() > 0 && !std::freopen("/dev/null", "w", stdout)) return 3;
   const bool quiet_errors = world.rank() > 0;
+  try {
+    arm_fault_from_environment(world.rank());  // tests of failure paths (core/fault_injection.hpp)
+  } catch (const InputError& e) {
+    fmt::print(stderr, "error: {}\n", e.what());
+    return 1;
+  }
   CLI::App app{"rupture: dynamic fracture with GIMP and cohesive zones"};
   app.require_subcommand(1);
   std::string case_path, out_dir;
@@ -520,6 +528,9 @@ int main(int argc, char** argv) {
   } catch (const InputError& e) {  // the same on every rank of a distributed run
     if (!quiet_errors) fmt::print(stderr, "error: {}\n", e.what());
     return 1;
+  } catch (const AgreedFailure& e) {  // every rank holds it (parallel/agreement.hpp)
+    if (!quiet_errors) fmt::print(stderr, "error: {}\n", e.what());
+    return e.exit_code();
   } catch (const std::exception& e) {
     if (world.distributed()) {  // one rank's own failure: say which, and stop the others
       fmt::print(stderr, "error: rank {}: {}\n", world.rank(), e.what());

@@ -94,6 +94,7 @@ struct SolverSpec {
   Scheme scheme = Scheme::MUSL;
   double flip = 1.0;  // FLIP fraction of the particle velocity update (1 = FLIP, 0 = PIC)
   int threads = 0;    // 0 = OpenMP default
+  double memory_limit_mib = 0.0;  // largest memory estimate a run may start with (0 = RAM)
 };
 
 struct OutputSpec {

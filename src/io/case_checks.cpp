@@ -10,7 +10,10 @@
 #include <utility>
 #include <vector>
 
+#include <unistd.h>
+
 #include "core/errors.hpp"
+#include "io/toml_section.hpp"
 #include "particles/seed.hpp"
 #include "solver/summary.hpp"
 
@@ -202,17 +205,69 @@ void check_touching_bodies(const Case& c) {
     }
 }
 
-constexpr long kManySteps = 10000000;
+constexpr double kManySteps = 1e7;
+// Above this many steps the schedules' tolerance, 1e-6 dt (run/driver.cpp), is below the
+// round-off of the time itself (2^-52 time.end): outputs and the end time could be missed or
+// repeated, and near the bound t + dt rounds back to t. 2^52 x 1e-6 = 4.5e9 steps.
+constexpr double kMostSteps = 4503599627.370496;
 
-void warn_long_run(Case& c) {
-  const CaseSummary s = summarize(c);
-  if (s.steps <= kManySteps) return;
+void warn_long_run(Case& c, const CaseSummary& s) {
+  if (s.steps_exact <= kManySteps) return;
   c.warnings.push_back(fmt::format(
-      "the run takes {} time steps (more than 1e7): time.end = {:g} s at dt = {:.4g} s ({}); "
+      "the run takes {:.0f} time steps (more than 1e7): time.end = {:g} s at dt = {:.4g} s ({}); "
       "check time.end and grid.cell_size",
-      s.steps, c.time.end, s.dt,
+      s.steps_exact, c.time.end, s.dt,
       s.dt < s.dt_cfl ? "the cohesive stability limit x time.cohesive_safety, SPEC E6"
                       : "time.cfl x the smallest cell / c_D, SPEC E6"));
+}
+
+// The machine's physical memory, bytes (0 when unknown).
+double machine_memory_bytes() {
+  const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
+  return pages > 0 && page > 0 ? double(pages) * double(page) : 0.0;
+}
+
+// Finite but absurd inputs: what the run derives from them must be finite and in range
+// before any allocation or step (wave speeds, the step, the step count, memory, 32-bit ids).
+void check_run_limits(const Case& c, const CaseSummary& s) {
+  for (std::size_t k = 0; k < c.materials.size(); ++k) {
+    const ElasticMaterial& m = c.materials[k];
+    const WaveSpeeds& w = s.speeds[k];
+    if (std::isfinite(w.dilatational) && std::isfinite(w.shear) && w.dilatational > 0 && w.shear > 0)
+      continue;
+    fail("materials." + m.name, fmt::format("{{youngs_modulus = {:g} Pa, density = {:g} kg/m^3}}",
+                                            m.youngs_modulus, m.density),
+         fmt::format("the wave speeds (c_D = {:g} m/s, c_S = {:g} m/s, SPEC E1) must be finite and "
+                     "positive: the modulus over the density is out of range of a double",
+                     w.dilatational, w.shear));
+  }
+  if (!(std::isfinite(s.dt) && s.dt > 0))
+    fail("time.cfl", c.time.cfl,
+         fmt::format("the time step dt = {:g} s (SPEC E6, from grid.cell_size = {:g} m) must be finite "
+                     "and positive", s.dt, c.grid.cell_size));
+  if (!(s.steps_exact <= kMostSteps))
+    fail("time.end", c.time.end,
+         fmt::format("at dt = {:.4g} s (time.cfl x the smallest cell {:g} m / c_D, or the cohesive "
+                     "limit, SPEC E6) the run takes {:.4g} steps; at most {:.4g} (2^52 x 1e-6: beyond, "
+                     "the time's round-off exceeds the output schedules' tolerance of 1e-6 dt)",
+                     s.dt, s.min_cell_size, s.steps_exact, kMostSteps));
+  constexpr double kIds = 4294967295.0;  // particle ids and node indices are 32-bit
+  if (double(s.particles) > kIds)
+    fail("grid.cell_size", c.grid.cell_size,
+         fmt::format("the case seeds {} particles; at most 2^32 - 1 (32-bit particle ids)", s.particles));
+  if (double(s.nodes) * 3.0 >= 4294967296.0)
+    fail("grid.cell_size", c.grid.cell_size,
+         fmt::format("the grid has {} nodes; the particle sort numbers 3 per node in 32 bits (at most "
+                     "{:.0f}): use a coarser grid or nested levels", s.nodes, 4294967296.0 / 3.0));
+  const double estimate = double(s.memory_bytes) / (1024.0 * 1024.0);
+  const double machine = machine_memory_bytes() / (1024.0 * 1024.0);
+  const double limit = c.solver.memory_limit_mib > 0 ? c.solver.memory_limit_mib : machine;
+  if (limit > 0 && estimate > limit)
+    fail("solver.memory_limit_mib", limit,
+         fmt::format("the case needs about {:.0f} MiB (memory_estimate_mib: particles, grid fields, "
+                     "interfaces) and this machine has {:.0f} MiB; use a coarser grid.cell_size, "
+                     "nested levels, more ranks, or set solver.memory_limit_mib above the estimate "
+                     "to run anyway", estimate, machine));
 }
 
 }  // namespace
@@ -220,7 +275,9 @@ void warn_long_run(Case& c) {
 void check_case_consistency(Case& c) {
   check_boundary_conflicts(c);
   check_touching_bodies(c);
-  warn_long_run(c);
+  const CaseSummary s = summarize(c);
+  check_run_limits(c, s);
+  warn_long_run(c, s);
 }
 
 }  // namespace rupture

@@ -77,6 +77,9 @@ void parse_solver(Section& top, Case& c) {
   if (threads < 0 || threads > 1024)
     fail(s.key("threads"), double(threads), "must lie in [0, 1024] (0 = all cores)");
   c.solver.threads = int(threads);
+  c.solver.memory_limit_mib = s.number("memory_limit_mib", 0.0);
+  if (c.solver.memory_limit_mib < 0)
+    fail(s.key("memory_limit_mib"), c.solver.memory_limit_mib, "must be >= 0 (MiB; 0 = the machine's memory)");
 }
 
 void parse_output(Section& top, Case& c) {

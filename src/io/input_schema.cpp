@@ -193,6 +193,10 @@ std::vector<KeyDoc> build_schema() {
        "FLIP/PIC blend of the particle velocity update", "1.0"},
       {"solver.threads", "integer", "", "0", "[0, 1024] (0 = all cores)",
        "OpenMP threads (results do not depend on it)", "2"},
+      {"solver.memory_limit_mib", "number", "MiB", "0 (the machine's memory)", ">= 0",
+       "the largest memory estimate (rupture check's memory_estimate_mib) a run may start "
+       "with; a case above it is refused before any allocation. Raise it to run on purpose "
+       "beyond the machine's memory (swap)", "65536"},
 
       {"absorbing", "table", "", "none", "",
        "Absorbing domain edges: viscous dashpots rho c_P (normal) and rho c_S (tangential) on "

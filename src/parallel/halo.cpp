@@ -410,6 +410,13 @@ void finish_distributed_step(State& s, double drift_at_start) {
   throw SimulationError(h.comm.size() > 1 ? fmt::format("{} (rank {})", what, failed) : what);
 }
 
+void fail_in_step(State& s, const std::string& what) {
+  if (!s.halo) throw SimulationError(what);
+  if (s.halo->failure.empty()) s.halo->failure = what;
+}
+
+bool failed_in_step(const State& s) { return s.halo && !s.halo->failure.empty(); }
+
 double sum_over_ranks(const State& s, double v) { return s.halo ? s.halo->comm.sum(v) : v; }
 long sum_over_ranks(const State& s, long v) { return s.halo ? s.halo->comm.sum(v) : v; }
 

@@ -218,6 +218,14 @@ void migrate_particles(State& s);
 // rank together when one failed (its diagnosis, thrown as SimulationError on all ranks).
 void finish_distributed_step(State& s, double drift_at_start);
 
+// A failure a phase of the step found on this rank (what, where, when): one process throws it
+// at once as SimulationError; distributed, the step's first is kept, and the rank goes on
+// taking part in the step's exchanges, skipping the work the failure makes unsafe
+// (failed_in_step: the cohesive forces and face moves), until finish_distributed_step (or
+// nested_finish_step) stops every rank together with it.
+void fail_in_step(State& s, const std::string& what);
+bool failed_in_step(const State& s);
+
 // Sum over ranks of a per-rank quantity (identity when not distributed).
 double sum_over_ranks(const State& s, double v);
 long sum_over_ranks(const State& s, long v);

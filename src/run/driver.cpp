@@ -14,6 +14,7 @@
 #include "cohesive/crack_tip.hpp"
 #include "cohesive/mach_angle.hpp"
 #include "core/errors.hpp"
+#include "core/fault_injection.hpp"
 #include "io/atomic_file.hpp"
 #include "io/checkpoint.hpp"
 #include "run/checkpoint_ranks.hpp"
@@ -22,6 +23,7 @@
 #include "io/interface_csv.hpp"
 #include "io/run_json.hpp"
 #include "io/snapshot.hpp"
+#include "parallel/agreement.hpp"
 #include "parallel/halo.hpp"
 #include "parallel/halo_nested.hpp"
 #include "run/interrupt.hpp"
@@ -36,6 +38,9 @@
 
 namespace rupture {
 namespace {
+
+// Added to the step's agreed signal number when rank 0 failed to write (signals are < 128).
+constexpr double kWriteFailed = 1024.0;
 
 // The States that step (and hold a halo when distributed): the nested levels, or s itself.
 std::vector<const State*> level_states(const State& s) {
@@ -164,6 +169,23 @@ std::vector<StationProbe> set_up(RunContext& r, const Case& c, const std::string
   return probes;
 }
 
+// run.json of a run that failed before its first step (best effort: the error is reported
+// either way).
+void record_setup_failure(const std::string& dir, const Case& c, const CaseSummary& summary, int ranks,
+                          const std::string& message) {
+  RunRecord r;
+  r.status = "failed";
+  r.stop_reason = "error";
+  r.message = message;
+  r.ranks = ranks;
+  r.threads = omp_get_max_threads();
+  stamp_heartbeat(r);
+  try {
+    write_file_atomic(dir + "/run.json", run_json(c, summary, r));
+  } catch (const std::exception&) {
+  }
+}
+
 // Rank 0 prepares the directory; every rank learns whether it could (InputError on all).
 void prepare_dir(const std::string& dir, const RunOptions& o) {
   std::string error;
@@ -196,20 +218,33 @@ RunResult run_case(const Case& c, const RunOptions& options) {
   RunContext ctx;
   // Where the stations read, from the state at t = 0 (a body station follows the particle
   // nearest its point then), before a checkpoint replaces the state.
-  std::vector<StationProbe> probes = set_up(ctx, c, dir, options.checkpoint_interval, comm, options.resume);
+  std::vector<StationProbe> probes;
+  try {
+  probes = set_up(ctx, c, dir, options.checkpoint_interval, comm, options.resume);
+  // Set-up and resume: what one rank cannot do (a checkpoint entry refused, a part file
+  // missing, memory) stops every rank with its message (parallel/agreement.hpp), before any
+  // collective call that the failed rank would never make.
+  agree_on_failure(comm, [&] {
+    if (fault_due(FaultSite::setup, 0)) throw IoError("injected set-up failure (RUPTURE_INJECT_FAULT)");
+  });
   if (options.resume) {
-    read_checkpoint(checkpoint_path(dir), ctx);
+    std::vector<std::vector<double>> keys;
+    agree_on_failure(comm, [&] {
+      read_checkpoint(checkpoint_path(dir), ctx);
+      // Distributed: each rank reads some of the parts (a distributed run's checkpoint), or
+      // every particle from checkpoint.bin (one process wrote it).
+      if (comm.distributed() && ctx.s.particle_parts > 0) keys = read_checkpoint_share(dir, ctx, comm);
+      if (!comm.distributed()) read_checkpoint_particles(dir, ctx);  // every part, if any
+    });
     // Split by where the particles are now (any number of ranks, whatever wrote it).
-    if (comm.distributed() && ctx.s.particle_parts > 0) {
-      // Each rank reads some of the parts; the split sends each particle to its rank.
-      const std::vector<std::vector<double>> keys = read_checkpoint_share(dir, ctx, comm);
+    if (comm.distributed() && !keys.empty()) {
+      // The split sends each particle to its rank.
       if (c.grid.nested)
         distribute_held_nested(ctx.s, comm, keys);
       else
         distribute_held(ctx.s, comm, keys[0]);
-    } else {
-      read_checkpoint_particles(dir, ctx);  // a distributed run's particle parts, all of them
-      if (comm.distributed()) distribute(ctx.s, comm, false);
+    } else if (comm.distributed()) {
+      distribute(ctx.s, comm, false);  // one process's checkpoint: its particles split
     }
     ++ctx.segments;
     Schedule& ck = ctx.checkpoint;
@@ -217,6 +252,12 @@ RunResult run_case(const Case& c, const RunOptions& options) {
       ck.interval = options.checkpoint_interval;
       ck.next = (std::floor(ctx.s.time / ck.interval) + 1.0) * ck.interval;
     }
+  }
+  } catch (const std::exception& e) {
+    // A new run's directory says how it ended; a resume that could not start leaves the run
+    // directory as the last segment left it (resumable once the cause is fixed).
+    if (writer && !options.resume) record_setup_failure(dir, c, summary, comm.size(), e.what());
+    throw;
   }
   State& s = ctx.s;
   if (s.halo && !s.nested) s.halo->rebalance = options.rebalance;  // nested: one split (halo_nested)
@@ -249,10 +290,24 @@ RunResult run_case(const Case& c, const RunOptions& options) {
   for (const InterfaceSpec& is : c.interfaces)
     crack_speeds.push_back(summary.speeds[std::size_t(c.bodies[is.lower_body].material)]);
   int& interface_files = ctx.interface_files;
+  // Distributed: a file rank 0 alone writes that fails is kept here, and the run goes on to
+  // the step's agreement (below), where every rank learns it and stops with it; one process
+  // stops at once. Nothing rank 0 alone writes is attempted after one failed.
+  std::string pending_write;
+  auto writer_only = [&](auto&& write) {
+    if (!writer) return;
+    if (!comm.distributed()) return write();
+    if (!pending_write.empty()) return;
+    try {
+      write();
+    } catch (const std::exception& e) {
+      pending_write = e.what();
+    }
+  };
   auto write_interfaces = [&]() {
     if (s.interfaces.empty()) return;
     gather_interface_state(s);  // distributed: every node from its owner
-    if (!writer) return;
+    writer_only([&] {
     fs::create_directories(dir + "/interface");
     for (std::size_t k = 0; k < s.interfaces.size(); ++k) {
       const std::string named =
@@ -271,6 +326,7 @@ RunResult run_case(const Case& c, const RunOptions& options) {
       if (ec) fs::copy_file(first, named, fs::copy_options::overwrite_existing);
     }
     ++interface_files;
+    });
   };
   // SPEC E12 (output.mach_interval): the shear Mach front behind each crack running above c_S.
   std::vector<double> shear_speed;  // per material
@@ -341,13 +397,17 @@ RunResult run_case(const Case& c, const RunOptions& options) {
   };
   auto last_flush = std::chrono::steady_clock::now();
   auto flush = [&]() {
-    if (!writer) return;
-    history.write(dir + "/history.csv");
-    write_cracks();
-    write_stations(dir, c.stations, probes, ctx.stations);
-    fill_record(record);
-    write_file_atomic(dir + "/run.json", run_json(c, summary, record));
-    last_flush = std::chrono::steady_clock::now();
+    writer_only([&] {
+      if (fault_due(FaultSite::record_write, s.step))  // tests
+        throw IoError(fmt::format("error while writing '{}/history.csv': No space left on device "
+                                  "(injected: RUPTURE_INJECT_FAULT)", dir));
+      history.write(dir + "/history.csv");
+      write_cracks();
+      write_stations(dir, c.stations, probes, ctx.stations);
+      fill_record(record);
+      write_file_atomic(dir + "/run.json", run_json(c, summary, record));
+      last_flush = std::chrono::steady_clock::now();
+    });
   };
   auto checkpoint = [&]() {
     const double wall_before = ctx.wall_before;
@@ -372,7 +432,13 @@ RunResult run_case(const Case& c, const RunOptions& options) {
       for (const Schedule* due : {&hist, &snap, &ctx.station_schedule, &ctx.mach_schedule, &ctx.checkpoint})
         if (due->interval > 0) s.sync_by = std::min(s.sync_by, due->next - eps);
       if (!c.stations.empty() && ctx.station_schedule.interval <= 0) s.sync_by = -INFINITY;  // every step
+      const double t_before = s.time;
       step(s);
+      if (!(s.time > t_before))  // the same on every rank: one dt for all
+        throw SimulationError(fmt::format(
+            "time does not advance: step {} took t = {:.17g} s by dt = {:.6g} s to {:.17g} s (the "
+            "step is below the round-off of the time); time.end / dt is too large",
+            s.step, t_before, s.dt, s.time));
       if (s.halo && s.halo->rebalances != result.rebalances) {  // the split followed the load
         result.rebalances = s.halo->rebalances;
         if (writer) fmt::print("{}\n", s.halo->last_rebalance);
@@ -429,17 +495,25 @@ RunResult run_case(const Case& c, const RunOptions& options) {
       bool flushed = false;
       if (snapshots && synced && (snap.due(s.time, eps) || last)) {
         gather_particles(s);
+        flush();  // the small record files first: they say what happened if the disk fills
         snapshots->write(s.particles, s.stiffness, s.time, s.step);
-        flush();
         flushed = true;
         snap.advance(s.time, eps);
       }
       progress.update(s.step, s.time);
       // Durable runs: record files, checkpoints, interruption (after the step's outputs).
-      if (last) break;
-      if (!flushed && seconds_since(last_flush) >= kFlushSeconds) flush();
+      if (!last && !flushed && seconds_since(last_flush) >= kFlushSeconds) flush();
+      // The step's agreement: a signal on any rank and a write that failed on rank 0 reach
+      // every rank here (one reduction), and all stop together.
       caught_signal = interrupt_signal();
-      if (comm.distributed()) caught_signal = int(comm.max(double(caught_signal)));  // all stop together
+      if (comm.distributed()) {
+        const double code = comm.max(double(caught_signal) + (pending_write.empty() ? 0.0 : kWriteFailed));
+        if (code >= kWriteFailed) throw IoError(comm.broadcast(pending_write, 0) + " (rank 0)");
+        caught_signal = int(code);
+      } else if (!pending_write.empty()) {
+        throw IoError(pending_write);
+      }
+      if (last) break;
       const bool stop = caught_signal != 0 ||
                         (options.stop_after_steps > 0 && s.step >= options.stop_after_steps);
       // A checkpoint holds the particles at one time: a stop waits for the levels' steps to
@@ -483,13 +557,14 @@ RunResult run_case(const Case& c, const RunOptions& options) {
     progress.finish(s.step, s.time);
     io_failure = e.what();
   }
-  if (io_failure.empty() && writer) {
+  if (io_failure.empty() && !pending_write.empty()) io_failure = pending_write;  // at the last step
+  if (writer) {  // after a failed write too: the small files may still fit
     try {
       history.write(dir + "/history.csv");
       write_cracks();
       write_stations(dir, c.stations, probes, ctx.stations);
-    } catch (const IoError& e) {
-      io_failure = e.what();
+    } catch (const std::exception& e) {
+      if (io_failure.empty()) io_failure = e.what();
     }
   }
   if (!io_failure.empty()) {
@@ -568,12 +643,6 @@ RunResult run_case(const Case& c, const RunOptions& options) {
       result.stop_reason = "io_error";
       result.message = e.what();
     }
-  }
-  // Distributed: a write that failed on rank 0 leaves the others inside the time loop; what
-  // could be written is, the diagnosis is printed, and every rank stops.
-  if (comm.distributed() && result.outcome == Outcome::io_error) {
-    fmt::print(stderr, "error: {}\n", result.message);
-    comm.abort(3);
   }
   return result;
 }

@@ -9,6 +9,7 @@
 #include <variant>
 
 #include "core/errors.hpp"
+#include "core/fault_injection.hpp"
 #include "parallel/halo.hpp"
 
 namespace rupture {
@@ -222,9 +223,12 @@ void update_face_stencils(State& s) {
       c.face_up[k] = face_stencil(s, up, xa, ya);
       c.face_lo[k] = face_stencil(s, lo, xb, yb);
     }
+    if (bad == n && n > 0 && fault_due(FaultSite::face_outside_grid, s.step)) bad = 0;  // tests
     if (bad < n) {
+      // Distributed: this rank's faces stay as they were (no force from them this step) and
+      // the run stops with every rank at the step's end (parallel/halo.hpp).
       const std::size_t k = std::size_t(bad);
-      throw SimulationError(fmt::format(
+      fail_in_step(s, fmt::format(
           "unstable: cohesive interface node {} at (x, y) = ({:.6g}, {:.6g}) m has a face at a "
           "non-finite "
           "position or outside the grid at step {}, t = {:.6g} s: upper face displacement ({:.4g}, "
@@ -235,6 +239,7 @@ void update_face_stencils(State& s) {
 }
 
 void add_cohesive_forces(State& s) {
+  if (failed_in_step(s)) return;  // distributed: faces this rank found broken give no force
   GridFields& G = s.fields;
   for (CohesiveInterface& c : s.interfaces) {
     // Serial: ~15 face nodes share each grid node; this loop is O(interface nodes), tiny
@@ -332,9 +337,8 @@ constexpr int kUnstableStreak = 4;
 constexpr double kUnstableGrowth = 1e3;
 constexpr double kUnstableIncrement = 1e-3;  // x delta_n
 
-[[noreturn]] void throw_cohesive_oscillation(const State& s, const CohesiveInterface& c,
-                                             std::size_t k) {
-  throw SimulationError(fmt::format(
+void fail_cohesive_oscillation(State& s, const CohesiveInterface& c, std::size_t k) {
+  fail_in_step(s, fmt::format(
       "unstable: cohesive interface oscillates at node {} (x, y) = ({:.6g}, {:.6g}) m: its jump "
       "increment reversed sign and grew for {} steps in a row, {:.3g} times over, to ({:.3g}, "
       "{:.3g}) m "
@@ -356,10 +360,11 @@ void advance_interfaces(State& s, const double* vel_x, const double* vel_y) {
     const double floor = kUnstableIncrement * opening_scale(c.spec.law);
     record_openings(c);  // the crack measure before the faces move (node crack times)
     long unstable = n;
+    const bool frozen = failed_in_step(s);  // distributed: this rank's stencils may be broken
 #pragma omp parallel for schedule(static) reduction(min : unstable)
     for (long kl = 0; kl < n; ++kl) {
       const std::size_t k = std::size_t(kl);
-      if (!c.owns(k)) continue;  // distributed: the owner moves it, and sends it (below)
+      if (frozen || !c.owns(k)) continue;  // distributed: the owner moves it, sends it (below)
       // Each face moves with its own field's t^{n+1} grid velocity (the one its body's strain is
       // updated with), through the stencil its force was spread with (update_face_stencils).
       const FaceStencil& a = c.face_up[k];
@@ -390,7 +395,11 @@ void advance_interfaces(State& s, const double* vel_x, const double* vel_y) {
           size > kUnstableGrowth * c.streak_base[k])
         unstable = std::min(unstable, kl);
     }
-    if (unstable < n) throw_cohesive_oscillation(s, c, std::size_t(unstable));
+    if (unstable == n && !frozen && fault_due(FaultSite::cohesive_oscillation, s.step))  // tests
+      for (std::size_t k = 0; k < c.num_nodes() && unstable == n; ++k)
+        if (c.owns(k)) unstable = long(k);
+    // Distributed: the syncs below are collective, so the rank takes part, then all stop.
+    if (unstable < n) fail_cohesive_oscillation(s, c, std::size_t(unstable));
     // Distributed: the ghosts' faces from their owners, before the segments that reach them
     // are evaluated; after it, the ghosts' stiffness (the next step's bound, E6).
     sync_interface_nodes(s, c, {&CohesiveInterface::ux_up, &CohesiveInterface::uy_up,

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "grid/grid.hpp"
 #include "grid/nested.hpp"
@@ -85,7 +86,9 @@ CaseSummary summarize(const Case& c) {
     s.dt_cohesive = s.dt_cohesive > 0 ? std::min(s.dt_cohesive, limit) : limit;
   }
   if (s.dt_cohesive > 0) s.dt = std::min(s.dt, c.time.cohesive_safety * s.dt_cohesive);
-  s.steps = long(std::ceil(c.time.end / s.dt - 1e-9));
+  // A double first: an absurd case (dt = 0, time.end = 1e308) must not overflow the count.
+  s.steps_exact = s.dt > 0 ? std::ceil(c.time.end / s.dt - 1e-9) : INFINITY;
+  s.steps = s.steps_exact < 9e18 ? long(s.steps_exact) : std::numeric_limits<long>::max();
   const long ppcl = ppc;
   const int levels =
       c.grid.refined() ? int(std::lround(std::log2(c.grid.coarse_cell_size / c.grid.cell_size))) + 1

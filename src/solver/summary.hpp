@@ -19,7 +19,8 @@ struct CaseSummary {
   double bulk_eigen_bound = 0.0;   // lambda_bulk, 1/s^2
   double dt_bulk = 0.0;            // 2 / sqrt(lambda_bulk): the bulk's own bound, s
   double dt = 0.0;                 // step used, s
-  long steps = 0;                  // ceil(end / dt)
+  long steps = 0;                  // ceil(end / dt) (LONG_MAX when that does not fit)
+  double steps_exact = 0.0;        // ceil(end / dt) as a double (inf when dt = 0)
   long cells = 0;                  // physical cells
   long nodes = 0;                  // grid nodes, ghosts included
   long field_nodes = 0;            // nodes the fields' windows hold at t = 0, summed over fields
