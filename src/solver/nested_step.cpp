@@ -19,15 +19,14 @@ namespace rupture::detail {
 namespace {
 // Fields are whole-lattice on every level: element of (field f, node n) is start[f] + n.
 // One column per (field, array) of `arrays`: column c's array on level l starts at
-// base[c * levels + l]. The transitions treat all columns in one pass, so each term's indices
-// are read once for all of them.
+// base[c * levels + l]. The transitions treat up to kMaxColumns columns in one pass, so each
+// term's indices are read once for all of them; more columns (many fields) go in chunks of
+// kMaxColumns, which gives the same sums (every column is independent of the others).
 constexpr std::size_t kMaxColumns = 16;
 std::size_t column_bases(NestedState& n, std::initializer_list<NodalArray> arrays,
                          std::vector<double*>& base) {
   const std::size_t levels = n.levels.size(), fields = std::size_t(n.levels[0].fields.num_fields);
   const std::size_t columns = fields * arrays.size();
-  if (columns > kMaxColumns)
-    throw std::logic_error("nested transitions: more than kMaxColumns field arrays in one pass");
   base.resize(columns * levels);
   std::size_t c = 0;
   for (std::size_t f = 0; f < fields; ++f)
@@ -43,14 +42,23 @@ std::size_t column_bases(NestedState& n, std::initializer_list<NodalArray> array
 
 }  // namespace
 
+static void condense_columns(NestedState& n, double* const* base, std::size_t columns);
+static void distribute_columns(NestedState& n, double* const* base, std::size_t columns);
+
 // grid/nested.hpp's condense over the levels' arrays: every DOF adds c * (slave's value) of
 // the slaves it serves, in slave order (the transposed terms: NestedState::dof_start), so the
 // threads split the DOFs without sharing one and the sums are those of a loop over the
 // slaves; then the slaves are cleared.
 void condense_fields(NestedState& n, std::initializer_list<NodalArray> arrays) {
   thread_local std::vector<double*> base_store;
-  const std::size_t columns = column_bases(n, arrays, base_store), levels = n.levels.size();
-  double* const* base = base_store.data();
+  const std::size_t all = column_bases(n, arrays, base_store), levels = n.levels.size();
+  for (std::size_t first = 0; first < all; first += kMaxColumns)
+    condense_columns(n, base_store.data() + first * levels, std::min(kMaxColumns, all - first));
+}
+
+// The same over `columns` (at most kMaxColumns) columns from `base`.
+void condense_columns(NestedState& n, double* const* base, std::size_t columns) {
+  const std::size_t levels = n.levels.size();
   const long dofs = long(n.dof_level.size()), slaves = long(n.active_slaves.size());
 #pragma omp parallel
   {
@@ -78,10 +86,15 @@ void condense_fields(NestedState& n, std::initializer_list<NodalArray> arrays) {
 
 // grid/nested.hpp's distribute: every slave from its DOFs (slaves only read DOFs: no race).
 void distribute_fields(NestedState& n, std::initializer_list<NodalArray> arrays) {
-  const NestedGrid& g = n.grid;
   thread_local std::vector<double*> base_store;
-  const std::size_t columns = column_bases(n, arrays, base_store), levels = n.levels.size();
-  double* const* base = base_store.data();
+  const std::size_t all = column_bases(n, arrays, base_store), levels = n.levels.size();
+  for (std::size_t first = 0; first < all; first += kMaxColumns)
+    distribute_columns(n, base_store.data() + first * levels, std::min(kMaxColumns, all - first));
+}
+
+void distribute_columns(NestedState& n, double* const* base, std::size_t columns) {
+  const NestedGrid& g = n.grid;
+  const std::size_t levels = n.levels.size();
   const long slaves = long(n.active_slaves.size());
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < slaves; ++i) {
