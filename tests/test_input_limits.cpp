@@ -170,3 +170,21 @@ TEST(RunLimits, a_long_run_warns_with_its_count_beyond_what_a_long_holds) {
   ASSERT_EQ(c.warnings.size(), 1u);
   EXPECT_NE(c.warnings[0].find("more than 1e7"), std::string::npos) << c.warnings[0];
 }
+
+// What the nested set-up refuses, `rupture check` refuses too: at input, naming the key.
+TEST(RunLimits, nested_levels_refuse_at_input_what_their_set_up_refuses) {
+  const std::vector<std::string> nested = {
+      "grid.cell_size=0.25e-3", "grid.coarse_cell_size=0.5e-3", "grid.refinement=\"nested\"",
+      "grid.refine.f.min=[0.004,0.0]", "grid.refine.f.max=[0.006,0.002]", "grid.refine.f.level=1"};
+  EXPECT_EQ(error_of(test::strip_case_toml(), nested), "");
+  auto with = [&](const std::string& extra) {
+    std::vector<std::string> o = nested;
+    o.push_back(extra);
+    return error_of(test::strip_case_toml(), o);
+  };
+  const std::string absorbing = with("absorbing.edges=[\"right\"]");
+  EXPECT_NE(absorbing.find("'grid.refinement' = \"nested\": [absorbing] is not yet supported"), std::string::npos)
+      << absorbing;
+  const std::string loads = with("loads.g={type=\"body_force\", acceleration=[0.0, -9.8]}");
+  EXPECT_NE(loads.find("[loads] is not yet supported"), std::string::npos) << loads;
+}

@@ -205,6 +205,12 @@ void check_touching_bodies(const Case& c) {
     }
 }
 
+}  // namespace
+
+void check_nested_support(const Case& c);  // solver/nested_state.hpp
+
+namespace {
+
 constexpr double kManySteps = 1e7;
 // Above this many steps the schedules' tolerance, 1e-6 dt (run/driver.cpp), is below the
 // round-off of the time itself (2^-52 time.end): outputs and the end time could be missed or
@@ -275,6 +281,7 @@ void check_run_limits(const Case& c, const CaseSummary& s) {
 void check_case_consistency(Case& c) {
   check_boundary_conflicts(c);
   check_touching_bodies(c);
+  if (c.grid.nested) check_nested_support(c);  // what the set-up would refuse, refused here
   const CaseSummary s = summarize(c);
   check_run_limits(c, s);
   warn_long_run(c, s);

@@ -291,9 +291,11 @@ void for_each_level_point(const Case& c, const NestedState& n, int l,
   }
 }
 
-NestedState make_nested_state(const Case& c, const LevelShare* share) {
+void check_nested_support(const Case& c) {
   const auto unsupported = [](const char* what) {
-    return InputError(fmt::format("{}: not yet supported on nested levels (solver/nested_state.hpp)", what));
+    return InputError(fmt::format("input key 'grid.refinement' = \"nested\": {} is not yet supported on "
+                                  "nested levels (solver/nested_state.hpp); use grid.refinement = "
+                                  "\"graded\"", what));
   };
   if (!c.interfaces.empty() && c.solver.scheme == Scheme::USF)
     throw unsupported("solver.scheme = \"USF\" with interfaces");
@@ -304,6 +306,10 @@ NestedState make_nested_state(const Case& c, const LevelShare* share) {
   if (!c.absorbing_edges.empty()) throw unsupported("[absorbing]");
   if (!c.loads.empty()) throw unsupported("[loads]");
   if (!c.grid.refined()) throw unsupported("a grid without [grid.refine] boxes");
+}
+
+NestedState make_nested_state(const Case& c, const LevelShare* share) {
+  check_nested_support(c);
   NestedState n;
   n.grid = make_nested_grid(c.grid.min, c.grid.max, c.grid.coarse_cell_size, c.grid.cell_size,
                             refine_boxes(c.grid), std::max(0.0, c.grid.margin));

@@ -120,6 +120,10 @@ struct LevelShare {
   std::vector<std::uint32_t> first_id;  // per level
 };
 
+// InputError naming grid.refinement when the case holds what nested levels do not support yet
+// (rupture check and rupture run refuse it at input: io/case_checks).
+void check_nested_support(const Case& c);
+
 // The levels of c.grid's boxes and their states (with `share`, each level's share of its
 // particles; the sums over particles, mass floor included, are then this process's). Throws
 // InputError for what the nested step does not support yet, and for a velocity condition on an
