@@ -6,41 +6,25 @@
 
 #include <fmt/format.h>
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <cerrno>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 #include <type_traits>
 
 #include "core/errors.hpp"
 #include "io/atomic_file.hpp"
+#include "io/checkpoint_access.hpp"
+#include "io/checkpoint_checks.hpp"
 #include "solver/nested_state.hpp"
 
 namespace rupture {
-
-// Reaches the private members of CrackTracker and SnapshotWriter (friend of both).
-struct CheckpointAccess {
-  template <class A>
-  static void fields(A& a, CrackTracker& t) {
-    a("samples", t.samples_);
-    a("end_tolerance", t.end_tolerance_);
-    a("end_reached_time", t.end_reached_time_);
-  }
-  template <class A>
-  static void fields(A& a, SnapshotWriter& w) {
-    // dir_ is the run directory, given when the writer is made
-    a("rows_first_id", w.rows_.first_id);
-    a("rows_first_row", w.rows_.first_row);
-    a("rows", w.rows_.rows);
-    a("selected", w.selected_);
-    a("files", w.files_);
-    a("times", w.times_);
-    a("counts", w.counts_);
-  }
-};
 
 namespace {
 
@@ -181,6 +165,42 @@ class Writer {
   }
 };
 
+// Enums stored as their underlying integer: every one read must be one of its values.
+constexpr bool valid_enum(Scheme v) { return v == Scheme::USF || v == Scheme::USL || v == Scheme::MUSL; }
+
+// The entries that may hold +infinity (a step limit without interfaces); every other floating
+// point number a checkpoint holds is finite.
+bool may_be_infinite(const char* name) {
+  return std::strcmp(name, "cohesive_dt") == 0 || std::strcmp(name, "min_cohesive_dt") == 0;
+}
+
+// The bytes an entry's header takes with the name "item" (a list's items): length, name, kind,
+// type, size, count.
+constexpr std::size_t kItemHeaderBytes = sizeof(std::uint32_t) + 4 + 3 + sizeof(std::uint64_t);
+
+// Items whose entries are all unconditional: each takes at least what a default one takes.
+template <class E>
+constexpr bool fixed_entries = std::is_same_v<E, EnergySample> || std::is_same_v<E, CrackSample> ||
+                               std::is_same_v<E, MachReading> || std::is_same_v<E, StationSeries> ||
+                               std::is_same_v<E, NodeBC>;
+
+// The fewest bytes one item of a list of E takes, so that a list's count can be bounded by the
+// bytes left before anything is allocated.
+template <class E>
+std::size_t min_item_bytes() {
+  if constexpr (fixed_entries<E>) {
+    static const std::size_t n = [] {
+      Writer w;
+      const std::size_t before = w.out.size();
+      w("item", E{});
+      return w.out.size() - before;
+    }();
+    return n;
+  } else {
+    return kItemHeaderBytes;
+  }
+}
+
 class Reader {
  public:
   static constexpr bool reading = true;
@@ -222,14 +242,64 @@ class Reader {
       throw InputError(
           fmt::format("checkpoint '{}' does not belong to this case: {} = {} there, "
                       "{} here",
-                      origin_, name, stored, expected));
+                      origin_, where(name), stored, expected));
   }
 
   template <class T>
   void operator()(const char* name, T& v) {
-    if constexpr (is_plain<T>) {
+    path_.push_back({name, -1});
+    value(name, v);
+    path_.pop_back();
+  }
+
+ private:
+  // The entry being read, for messages: its names from the top, list items by index.
+  struct Frame {
+    const char* name;
+    std::int64_t index;  // -1: not a list item
+  };
+  std::string where(const char* last = nullptr) const {
+    std::string w;
+    for (const Frame& f : path_) {
+      if (!w.empty()) w += '.';
+      w += f.name;
+      if (f.index >= 0) w += fmt::format("[{}]", f.index);
+    }
+    if (last) w += (w.empty() ? "" : ".") + std::string(last);
+    return w;
+  }
+  [[noreturn]] void refuse(const std::string& value, const std::string& allowed, std::int64_t index = -1) const {
+    throw InputError(fmt::format("checkpoint '{}': {}{} = {}: {}", origin_, where(),
+                                 index >= 0 ? fmt::format("[{}]", index) : std::string(), value, allowed));
+  }
+  template <class E>
+  void check_finite(const char* name, const E* v, std::size_t n, bool indexed) const {
+    if constexpr (std::is_floating_point_v<E>) {
+      const bool inf_ok = may_be_infinite(name);
+      for (std::size_t k = 0; k < n; ++k)
+        if (!std::isfinite(v[k]) && !(inf_ok && v[k] > 0))
+          refuse(fmt::format("{}", v[k]), inf_ok ? "must be finite or +inf" : "must be finite",
+                 indexed ? std::int64_t(k) : -1);
+    }
+  }
+
+  template <class T>
+  void value(const char* name, T& v) {
+    if constexpr (std::is_same_v<T, bool>) {  // stored as one byte: 0 or 1, anything else is UB
+      expect(name, kScalar, 'b', sizeof(bool));
+      const auto b = pod<std::uint8_t>();
+      if (b > 1) refuse(std::to_string(int(b)), "must be 0 or 1 (a bool)");
+      v = b == 1;
+    } else if constexpr (std::is_enum_v<T>) {
+      using U = std::underlying_type_t<T>;
+      expect(name, kScalar, type_code<T>(), sizeof(T));
+      const U u = pod<U>();
+      if (!valid_enum(T(u))) refuse(std::to_string(u), "is not one of the enum's values");
+      v = T(u);
+    } else if constexpr (is_plain<T>) {
       expect(name, kScalar, type_code<T>(), sizeof(T));
       raw(&v, sizeof v);
+      check_finite(name, &v, 1, false);
     } else if constexpr (std::is_same_v<T, std::string>) {
       const std::uint64_t n = expect(name, kText, 'u', 1);
       need(n);
@@ -238,16 +308,29 @@ class Reader {
     } else if constexpr (is_vector<T>::value) {
       using E = typename T::value_type;
       if constexpr (is_plain<E>) {
+        static_assert(!std::is_enum_v<E> && !std::is_same_v<E, bool>, "vectors of enums or bools: check each value");
         const std::uint64_t n = expect(name, kVector, type_code<E>(), sizeof(E));
-        need(n * sizeof(E));
+        if (n > left_ / sizeof(E))  // n * sizeof(E) could wrap
+          throw InputError(fmt::format("checkpoint '{}' is truncated: {} holds {} values of {} bytes, {} bytes left",
+                                       origin_, where(), n, sizeof(E), left_));
         v.resize(std::size_t(n));
         raw(v.data(), std::size_t(n) * sizeof(E));
+        check_finite(name, v.data(), v.size(), true);
       } else {
         const std::uint64_t n = expect(name, kList, std::is_same_v<E, std::string> ? 't' : 'g', 0);
-        need(n);  // every item takes at least a byte
-        v.resize(
-            std::size_t(n));  // existing items keep what is not stored (CohesiveInterface::spec)
-        for (E& e : v) (*this)("item", e);
+        const std::size_t least = min_item_bytes<E>();
+        if (n > left_ / least)
+          throw InputError(fmt::format("checkpoint '{}' is truncated: {} holds {} items of at least {} bytes, {} bytes left",
+                                       origin_, where(), n, least, left_));
+        // Existing items keep what is not stored (CohesiveInterface::spec); new ones are added
+        // as they are read, so memory grows with the bytes actually there.
+        for (std::size_t k = 0; k < std::size_t(n); ++k) {
+          if (k == v.size()) v.emplace_back();
+          path_.back().index = std::int64_t(k);
+          value("item", v[k]);
+        }
+        path_.back().index = -1;
+        v.resize(std::size_t(n));
       }
     } else {
       expect(name, kGroup, 'g', 0);
@@ -255,11 +338,10 @@ class Reader {
     }
   }
 
- private:
   void need(std::uint64_t n) const {
     if (n > left_)
-      throw InputError(fmt::format("checkpoint '{}' is truncated (an entry of {} bytes, {} left)",
-                                   origin_, n, left_));
+      throw InputError(fmt::format("checkpoint '{}' is truncated ({}: an entry of {} bytes, {} left)",
+                                   origin_, where(), n, left_));
   }
   void raw(void* dst, std::size_t n) {
     need(n);
@@ -284,14 +366,14 @@ class Reader {
       throw InputError(
           fmt::format("checkpoint '{}' does not match this version of rupture: expected entry '{}' "
                       "({}{}{}), found '{}' ({}{}{})",
-                      origin_, name, kind, type, size, found, k, t, int(s)));
+                      origin_, where(), kind, type, size, found.substr(0, 64), k, t, int(s)));
     return count;
   }
   std::string origin_;
   const char* p_ = nullptr;
   std::size_t left_ = 0;
+  std::vector<Frame> path_;
 };
-
 template <class A>
 void fields(A& a, Particles& p) {
   a("x", p.x);
@@ -323,6 +405,9 @@ void fields(A& a, ScatterPlan& p) {
   a("valid", p.valid);
   a("strip_begin", p.strip_begin);
   a("drift", p.drift);  // decides the next re-sort (build_scatter_plan)
+  // The rows of the set-up state's sort are not the restored particles': the strip tiles find
+  // theirs from the particles until the next sort (solver/strip_tile.cpp).
+  if constexpr (A::reading) p.rows_known = false;
 }
 
 template <class A>
@@ -427,6 +512,7 @@ void fields(A& a, State& s) {
   if (s.nested_level) a("window_drift", s.window_drift);
   a.same("nested", s.nested != nullptr);
   if (s.nested) a("nested", *s.nested);
+  if constexpr (A::reading) s.particles_step = -1;  // nested: the levels' particles merged anew
 }
 
 template <class A>
@@ -534,9 +620,12 @@ void fields(A& a, ParticlePart& p) {
   a("particles", p.particles);
 }
 
+// A checkpoint is a regular file (a symbolic link to one is followed) read whole: its size
+// bounds the read (a FIFO or a device would be read without end), and no checkpoint larger
+// than this machine's memory can be restored.
 std::string read_all(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);  // a FIFO: no wait
+  if (fd < 0) {
     if (errno == ENOENT)
       throw InputError(
           fmt::format("no checkpoint at '{}' (a run writes one with "
@@ -544,10 +633,39 @@ std::string read_all(const std::string& path) {
                       path));
     throw_io_error("cannot read", path);
   }
-  std::ostringstream buf;
-  buf << in.rdbuf();
-  if (in.bad()) throw_io_error("error while reading", path);
-  return buf.str();
+  struct Closer {
+    int fd;
+    ~Closer() { ::close(fd); }
+  } closer{fd};
+  struct stat st {};
+  if (::fstat(fd, &st) != 0) throw_io_error("cannot stat", path);
+  if (!S_ISREG(st.st_mode))
+    throw InputError(fmt::format("checkpoint '{}' is not a regular file (a {}): rupture writes "
+                                 "checkpoints as regular files",
+                                 path, S_ISDIR(st.st_mode)    ? "directory"
+                                       : S_ISFIFO(st.st_mode) ? "FIFO"
+                                       : S_ISCHR(st.st_mode)  ? "character device"
+                                       : S_ISBLK(st.st_mode)  ? "block device"
+                                       : S_ISSOCK(st.st_mode) ? "socket"
+                                                              : "special file"));
+  const std::uint64_t size = std::uint64_t(st.st_size);
+  const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGESIZE);
+  const std::uint64_t memory = pages > 0 && page > 0 ? std::uint64_t(pages) * std::uint64_t(page) : UINT64_MAX;
+  if (size > memory)
+    throw InputError(fmt::format("checkpoint '{}' is {} bytes, more than this machine's memory ({} bytes): "
+                                 "a checkpoint is read whole, so this one cannot be restored here",
+                                 path, size, memory));
+  std::string bytes(std::size_t(size), '\0');
+  std::size_t got = 0;
+  while (got < bytes.size()) {  // at most the size fstat gave: a file that grows is not followed
+    const ssize_t n = ::read(fd, bytes.data() + got, bytes.size() - got);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) throw_io_error("error while reading", path);
+    if (n == 0)
+      throw IoError(fmt::format("checkpoint '{}' shrank while it was read ({} of {} bytes)", path, got, size));
+    got += std::size_t(n);
+  }
+  return bytes;
 }
 
 }  // namespace
@@ -569,11 +687,25 @@ std::string checkpoint_bytes(const CaseSource& source, const RunContext& ctx) {
 
 void restore_checkpoint_bytes(const std::string& bytes, const std::string& origin,
                               RunContext& ctx) {
+  const CheckpointBaseline fresh = checkpoint_baseline(ctx);  // before the checkpoint replaces it
   Reader r(bytes, origin);
   CaseSource source;
   r("case", source);
   r("run", ctx);
   if (!r.at_end()) throw InputError(fmt::format("checkpoint '{}' has data past its end", origin));
+  check_restored(ctx, fresh, origin);  // io/checkpoint_checks.hpp
+}
+
+void restore_run_checkpoint_bytes(const std::string& bytes, const std::string& origin, RunContext& ctx) {
+  restore_checkpoint_bytes(bytes, origin, ctx);
+  check_run_records(ctx, origin);
+}
+
+CaseSource checkpoint_source_from_bytes(const std::string& bytes, const std::string& origin) {
+  Reader r(bytes, origin);
+  CaseSource source;
+  r("case", source);
+  return source;
 }
 
 void write_checkpoint(const std::string& dir, const CaseSource& source, const RunContext& ctx) {
@@ -584,15 +716,11 @@ void write_checkpoint(const std::string& dir, const CaseSource& source, const Ru
 }
 
 CaseSource read_checkpoint_source(const std::string& path) {
-  const std::string bytes = read_all(path);
-  Reader r(bytes, path);
-  CaseSource source;
-  r("case", source);
-  return source;
+  return checkpoint_source_from_bytes(read_all(path), path);
 }
 
 void read_checkpoint(const std::string& path, RunContext& ctx) {
-  restore_checkpoint_bytes(read_all(path), path, ctx);
+  restore_run_checkpoint_bytes(read_all(path), path, ctx);
 }
 
 }  // namespace rupture
@@ -618,18 +746,24 @@ void read_checkpoint_parts(const std::string& dir, long step, int ranks, Particl
   read_checkpoint_parts(dir, step, 0, ranks, ranks, out);
 }
 
+void read_checkpoint_part_bytes(const std::string& bytes, const std::string& origin, long step, int rank,
+                                int ranks, Particles& out) {
+  Reader in(bytes, origin);
+  ParticlePart part;
+  in("part", part);
+  if (!in.at_end()) throw InputError(fmt::format("checkpoint part '{}' has data past its end", origin));
+  if (part.step != step || part.rank != rank || part.ranks != ranks)
+    throw InputError(fmt::format("checkpoint part '{}' is of step {}, rank {} of {}; expected "
+                                 "step {}, rank {} of {}",
+                                 origin, part.step, part.rank, part.ranks, step, rank, ranks));
+  check_particle_arrays(part.particles, "part.particles", origin);
+  out.append_copy(part.particles);
+}
+
 void read_checkpoint_parts(const std::string& dir, long step, int first, int count, int ranks, Particles& out) {
   for (int r = first; r < first + count; ++r) {
     const std::string path = checkpoint_part_path(dir, step, r);
-    const std::string bytes = read_all(path);
-    Reader in(bytes, path);
-    ParticlePart part;
-    in("part", part);
-    if (part.step != step || part.rank != r || part.ranks != ranks)
-      throw InputError(fmt::format("checkpoint part '{}' is of step {}, rank {} of {}; expected "
-                                   "step {}, rank {} of {}",
-                                   path, part.step, part.rank, part.ranks, step, r, ranks));
-    out.append_copy(part.particles);
+    read_checkpoint_part_bytes(read_all(path), path, step, r, ranks, out);
   }
 }
 

@@ -34,6 +34,7 @@ CaseSource read_checkpoint_source(const std::string& path);
 
 // Overwrites the evolving parts of `ctx` with the checkpoint's. `ctx` must have been set up
 // from the same case (make_state, trackers, snapshot writer); sizes are checked against it.
+// The checkpoint of a run (the driver's): its records hold the samples of t = 0 as well.
 void read_checkpoint(const std::string& path, RunContext& ctx);
 
 // A distributed run's checkpoint: checkpoint.bin (rank 0: everything but the particles,
@@ -49,8 +50,15 @@ void read_checkpoint_parts(const std::string& dir, long step, int ranks, Particl
 // level l's particles of rank r are part l N + r of L N).
 void read_checkpoint_parts(const std::string& dir, long step, int first, int count, int ranks, Particles& out);
 
-// The same as bytes (tests, and the file functions above).
+// The same as bytes (tests, the fuzzers in fuzz/, and the file functions above). `origin`
+// names the bytes in messages. Every failure is an InputError or IoError.
 std::string checkpoint_bytes(const CaseSource& source, const RunContext& ctx);
 void restore_checkpoint_bytes(const std::string& bytes, const std::string& origin, RunContext& ctx);
+void restore_run_checkpoint_bytes(const std::string& bytes, const std::string& origin, RunContext& ctx);  // read_checkpoint's
+CaseSource checkpoint_source_from_bytes(const std::string& bytes, const std::string& origin);
+// One part file's bytes (part `rank` of `ranks` at `step`): its particles appended to `out`
+// (arrays of one length; run/checkpoint_ranks.cpp checks them against the state).
+void read_checkpoint_part_bytes(const std::string& bytes, const std::string& origin, long step, int rank,
+                                int ranks, Particles& out);
 
 }  // namespace rupture

@@ -3,12 +3,15 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <filesystem>
 #include <utility>
 #include <vector>
 
 #include "core/errors.hpp"
 #include "io/checkpoint.hpp"
+#include "io/checkpoint_checks.hpp"
 #include "parallel/halo.hpp"
 #include "solver/nested_state.hpp"
 
@@ -31,6 +34,25 @@ std::vector<State*> parts_of(State& s) {
   else
     out.push_back(&s);
   return out;
+}
+
+// Every rank learns whether reading failed anywhere; the first failure is thrown on all ranks,
+// as the kind of error it was (InputError: a bad checkpoint, IoError: it could not be read).
+void agree_read(const Comm& comm, const std::string& failure, bool input_error) {
+  const int failed = comm.first_with(!failure.empty());
+  if (failed < 0) return;
+  const std::string m = comm.broadcast((input_error ? "I" : "O") + failure, failed);
+  if (m[0] == 'I') throw InputError(m.substr(1));
+  throw IoError(m.substr(1));
+}
+
+// Part `part` of the checkpoint at s.step appended to `out`, checked against `level` (the
+// State it goes into: fields, materials, lattice).
+void read_part(const std::string& dir, const State& s, const State& level, int part, int parts, Particles& out) {
+  Particles one;
+  read_checkpoint_parts(dir, s.step, part, 1, parts, one);
+  check_particles(one, level, "part.particles", checkpoint_part_path(dir, s.step, part));
+  out.append_copy(one);
 }
 
 // Particles read from the parts become p's (its stored plan and windows were rank 0's).
@@ -110,12 +132,16 @@ void read_checkpoint_particles(const std::string& dir, RunContext& ctx) {
   if (s.particle_parts == 0) return;
   const std::vector<State*> held = parts_of(s);
   const int n = s.particle_parts, parts = int(held.size()) * n;
+  // The set-up state holds the case's particles (nested: merged): the parts hold the same ids.
+  std::vector<std::uint32_t> expected = s.particles.id, ids;
+  std::sort(expected.begin(), expected.end());
+  std::vector<Particles> read(held.size());
   for (std::size_t l = 0; l < held.size(); ++l) {
-    State& p = *held[l];
-    Particles all;
-    read_checkpoint_parts(dir, s.step, int(l) * n, n, parts, all);
-    take_particles(p, std::move(all));
+    for (int r = 0; r < n; ++r) read_part(dir, s, *held[l], int(l) * n + r, parts, read[l]);
+    ids.insert(ids.end(), read[l].id.begin(), read[l].id.end());
   }
+  check_particle_ids(std::move(ids), expected, "part.particles.id (every part)", checkpoint_part_path(dir, s.step, 0));
+  for (std::size_t l = 0; l < held.size(); ++l) take_particles(*held[l], std::move(read[l]));
   s.particle_parts = 0;
   s.particles_step = -1;  // nested: the levels' particles merged anew
   gather_particles(s);
@@ -126,16 +152,36 @@ std::vector<std::vector<double>> read_checkpoint_share(const std::string& dir, R
   const std::vector<State*> held = parts_of(s);
   const int n = s.particle_parts, parts = int(held.size()) * n;
   std::vector<std::vector<double>> keys(held.size());
-  for (std::size_t l = 0; l < held.size(); ++l) {
-    State& p = *held[l];
-    Particles mine;
-    for (int part = comm.rank(); part < n; part += comm.size()) {
-      const std::size_t before = mine.size();
-      read_checkpoint_parts(dir, s.step, int(l) * n + part, 1, parts, mine);
-      for (std::size_t k = before; k < mine.size(); ++k) keys[l].push_back(double(part) * 4294967296.0 + double(k - before));
-    }
-    take_particles(p, std::move(mine));
+  std::vector<Particles> mine(held.size());
+  std::string failure;
+  bool input_error = false;
+  try {  // every rank reaches the agreement below, also when its parts are bad
+    for (std::size_t l = 0; l < held.size(); ++l)
+      for (int part = comm.rank(); part < n; part += comm.size()) {
+        const std::size_t before = mine[l].size();
+        read_part(dir, s, *held[l], int(l) * n + part, parts, mine[l]);
+        for (std::size_t k = before; k < mine[l].size(); ++k) keys[l].push_back(double(part) * 4294967296.0 + double(k - before));
+      }
+  } catch (const InputError& e) {
+    failure = e.what(), input_error = true;
+  } catch (const std::exception& e) {
+    failure = e.what();
   }
+  agree_read(comm, failure, input_error);
+  // No rank holds the case's particles: every id is below the run's count (the loads and
+  // stations index by id).
+  long count = 0;
+  for (const Particles& p : mine) count += long(p.size());
+  const long total = comm.sum(count);
+  failure.clear();
+  try {
+    for (std::size_t l = 0; l < held.size(); ++l)
+      check_ids_below(mine[l], std::uint64_t(total), "part.particles.id", checkpoint_part_path(dir, s.step, int(l) * n + comm.rank()));
+  } catch (const InputError& e) {
+    failure = e.what();
+  }
+  agree_read(comm, failure, true);
+  for (std::size_t l = 0; l < held.size(); ++l) take_particles(*held[l], std::move(mine[l]));
   s.particle_parts = 0;
   s.particles_step = -1;  // nested: the levels' particles merged anew
   return keys;
