@@ -25,7 +25,8 @@ using namespace rupture;
 namespace {
 
 std::string scratch_dir(const char* name) {
-  const auto d = std::filesystem::temp_directory_path() / name;
+  // One folder per process: ctest runs this file's tests side by side.
+  const auto d = std::filesystem::temp_directory_path() / (std::string(name) + "_" + std::to_string(::getpid()));
   std::filesystem::remove_all(d);
   std::filesystem::create_directories(d);
   return d.string();
