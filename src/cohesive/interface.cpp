@@ -22,6 +22,29 @@ std::vector<Polyline> InterfaceSpec::tie_geometries() const {
   return {p};
 }
 
+namespace {
+// The last stretch containing arc length s wins (0: none, the interface's own law).
+std::uint16_t stretch_at(const InterfaceSpec& spec, double s) {
+  std::uint16_t w = 0;
+  for (std::size_t k = 0; k < spec.stretches.size(); ++k)
+    if (s >= spec.stretches[k].from && s <= spec.stretches[k].to) w = std::uint16_t(k + 1);
+  return w;
+}
+}  // namespace
+
+void for_each_gauss_point_law(const InterfaceSpec& spec, const std::function<bool(std::uint16_t)>& visit) {
+  const Polyline line = spec.geometry();
+  const LineNodes nodes = discretize(line, spec.segments);
+  const std::size_t n = nodes.x.size(), nseg = line.closed ? n : n - 1;
+  const double* xi = CohesiveInterface::kGaussXi;
+  for (std::size_t s = 0; s < nseg; ++s) {
+    const std::size_t b = line.closed && s + 1 == n ? 0 : s + 1;  // as segment_end
+    const double len = std::hypot(nodes.x[b] - nodes.x[s], nodes.y[b] - nodes.y[s]);
+    for (int q = 0; q < CohesiveInterface::kGauss; ++q)
+      if (!visit(spec.stretches.empty() ? 0 : stretch_at(spec, nodes.s[s] + 0.5 * (1.0 + xi[q]) * len))) return;
+  }
+}
+
 CohesiveInterface make_interface(const InterfaceSpec& spec) {
   CohesiveInterface c;
   c.spec = spec;
@@ -69,13 +92,7 @@ CohesiveInterface make_interface(const InterfaceSpec& spec) {
   c.node_peak_slip_rate.assign(n, 0.0);
   c.node_slip_path.assign(n, 0.0);
   if (!spec.stretches.empty()) {
-    // The last stretch containing a point's arc length wins.
-    auto which = [&](double s) {
-      std::uint16_t w = 0;
-      for (std::size_t k = 0; k < spec.stretches.size(); ++k)
-        if (s >= spec.stretches[k].from && s <= spec.stretches[k].to) w = std::uint16_t(k + 1);
-      return w;
-    };
+    auto which = [&](double s) { return stretch_at(spec, s); };
     const double* xi = CohesiveInterface::kGaussXi;
     c.gp_law.resize(g);
     for (std::size_t s = 0; s < nseg; ++s)

@@ -14,6 +14,7 @@
 // near the line (solver/cohesive_step.hpp: tie_bonded_nodes): one continuum there.
 // Units: m, m/s, N per unit thickness (N/m), J/m.
 #pragma once
+#include <functional>
 #include <cmath>
 #include <cstdint>
 #include <variant>
@@ -155,6 +156,11 @@ struct CohesiveInterface {
 };
 
 CohesiveInterface make_interface(const InterfaceSpec& spec);
+
+// Which law each Gauss point of `spec`'s line uses (0: the interface's, k: stretch k - 1), as
+// make_interface assigns them, without making the interface (input checks of long lines);
+// `visit` returns false to stop.
+void for_each_gauss_point_law(const InterfaceSpec& spec, const std::function<bool(std::uint16_t)>& visit);
 
 // The law of Gauss point i (or, with node_law, of node k): the interface's or its stretch's.
 template <class Law>

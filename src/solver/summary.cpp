@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "cohesive/interface.hpp"
 #include "grid/grid.hpp"
 #include "grid/nested.hpp"
 #include "particles/particles.hpp"
@@ -166,11 +167,15 @@ CaseSummary summarize(const Case& c) {
     if (box.min[0] <= box.max[0]) s.field_nodes += long(window_nodes_estimate(grid, box));
   // 11 nodal arrays per field node (grid/grid.hpp) + particle arrays + sort scratch (order, one
   // double array for the permutation).
+  // The interfaces, counted from cohesive/interface.hpp's arrays: per node 20 doubles, the law,
+  // streak and rank-flag bytes and two face stencils; per segment 9 doubles; per Gauss point 6
+  // doubles and 3 bytes; the crack tracker's copy of the nodes (3 doubles) and the text of the
+  // rupture-time file written at the end (about 64 bytes a node).
   std::size_t interface_bytes = 0;
+  constexpr std::size_t kPerNode = 20 * sizeof(double) + 2 + 4 + 2 + 2 * sizeof(FaceStencil) + 3 * sizeof(double) + 64;
+  constexpr std::size_t kPerSegment = 9 * sizeof(double) + CohesiveInterface::kGauss * (6 * sizeof(double) + 3);
   for (const InterfaceSpec& is : c.interfaces)
-    interface_bytes +=
-        std::size_t(is.segments) * (4 * 4 * sizeof(double) + 4 + 4 * sizeof(double)) +
-        std::size_t(is.segments + 1) * 8 * sizeof(double);
+    interface_bytes += std::size_t(is.segments) * kPerSegment + std::size_t(is.segments + 1) * kPerNode;
   if (c.grid.nested) {
     summarize_nested(c, s);
     s.memory_bytes += interface_bytes;
