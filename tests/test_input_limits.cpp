@@ -188,3 +188,18 @@ TEST(RunLimits, nested_levels_refuse_at_input_what_their_set_up_refuses) {
   const std::string loads = with("loads.g={type=\"body_force\", acceleration=[0.0, -9.8]}");
   EXPECT_NE(loads.find("[loads] is not yet supported"), std::string::npos) << loads;
 }
+
+// Messages the trial of issue 35 found wrong or missing.
+TEST(InputMessages, refine_box_outside_the_grid_and_unresolvable_circle_are_named) {
+  const std::string box = error_of(test::strip_case_toml(),
+                                   {"grid.cell_size=0.25e-3", "grid.coarse_cell_size=0.5e-3", "grid.refine.f.min=[1.0,1.0]",
+                                    "grid.refine.f.max=[1.001,1.001]", "grid.refine.f.level=1"});
+  EXPECT_NE(box.find("'grid.refine.f.min'"), std::string::npos) << box;
+  EXPECT_NE(box.find("the box lies outside the grid"), std::string::npos) << box;
+  const std::vector<std::string> circle = {"interface.c.body=\"strip\"",  "interface.c.center=[0.005,0.001]",
+                                           "interface.c.radius=1e-300",    "interface.c.segments=80",
+                                           "interface.c.law=\"contact\"",  "interface.c.contact_stiffness=1e15"};
+  const std::string tiny = error_of(test::strip_case_toml(), circle);
+  EXPECT_NE(tiny.find("'interface.c.radius' = 1e-300"), std::string::npos) << tiny;
+  EXPECT_NE(tiny.find("too small to resolve"), std::string::npos) << tiny;
+}

@@ -69,6 +69,12 @@ void parse_grid(Section& top, Case& c) {
              fmt::format("box edges must lie on multiples of grid.cell_size = {:g} m from grid.min",
                          c.grid.cell_size));
     }
+    if (L.max[0] <= c.grid.min[0] || L.min[0] >= c.grid.max[0] || L.max[1] <= c.grid.min[1] ||
+        L.min[1] >= c.grid.max[1])
+      fail(r.key("min"), fmt::format("[{:g}, {:g}]..[{:g}, {:g}]", L.min[0], L.min[1], L.max[0], L.max[1]),
+           fmt::format("the box lies outside the grid [{:g}, {:g}]..[{:g}, {:g}] m: it would refine "
+                       "nothing; move it over the grid or remove it",
+                       c.grid.min[0], c.grid.min[1], c.grid.max[0], c.grid.max[1]));
     c.grid.refine.push_back(L);
   }
   const std::string realization = g.string("refinement", "graded", {"graded", "nested"});

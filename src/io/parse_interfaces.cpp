@@ -175,6 +175,17 @@ InterfaceLine parse_interface_geometry(Section& f, InterfaceSpec& is, const Case
     if (!(radius > 0)) fail(f.key("radius"), radius, "must be > 0 (m)");
     if (segments < 8)
       fail(f.key("segments"), double(segments), "a circle needs at least 8 segments");
+    // Its pieces must be longer than the geometry's tolerance (1e-9 of a cell, as for bodies).
+    constexpr double kPiece = 3.141592653589793;
+    const double piece = 2.0 * radius * std::sin(kPiece / double(segments));
+    if (!(piece > 1e-9 * c.grid.cell_size))
+      fail(f.key("radius"), radius,
+           fmt::format("with {} segments the circle's pieces are {:.3g} m long, below the geometry "
+                       "tolerance of 1e-9 x grid.cell_size = {:.3g} m: the circle is too small to "
+                       "resolve",
+                       segments, piece, 1e-9 * c.grid.cell_size));
+    if (!std::isfinite(center[0] + radius) || !std::isfinite(center[1] + radius))
+      fail(f.key("radius"), radius, "the circle must lie within range of a double");
     // A closed polygon with a vertex per segment, counter-clockwise: its normal points to the
     // centre, so the upper body is the one inside the circle.
     constexpr double kPi = 3.141592653589793;
