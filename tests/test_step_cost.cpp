@@ -3,6 +3,8 @@
 // No timing is asserted (speed is measured in bench/, never in a unit test).
 #include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
+#include <cstdlib>
 
 #include <filesystem>
 #include <string>
@@ -58,6 +60,11 @@ TEST(StepCost, output_counts_are_the_files_a_run_writes) {
 }
 
 TEST(StepCost, measures_the_steps_it_says_and_leaves_no_files) {
+  // A temporary folder of this process's own: `rupture check` runs of other tests, side by
+  // side under ctest, make and remove theirs in the shared one.
+  const fs::path own = fs::temp_directory_path() / ("rupture_step_cost_" + std::to_string(::getpid()));
+  fs::create_directories(own);
+  ::setenv("TMPDIR", own.c_str(), 1);
   const Case c = small_case(0.25e-6, 0.3e-6);
   auto leftovers = [] {
     long n = 0;
@@ -78,6 +85,8 @@ TEST(StepCost, measures_the_steps_it_says_and_leaves_no_files) {
   EXPECT_DOUBLE_EQ(predicted_wall_seconds(cost, c, 10),
                    cost.setup_seconds + 10 * cost.step_seconds + 6 * cost.snapshot_seconds +
                        5 * cost.interface_seconds);
+  ::unsetenv("TMPDIR");
+  fs::remove_all(own);
 }
 
 // Per-level time steps (nested levels): the timed steps are whole cycles of the longest period
