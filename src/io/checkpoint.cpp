@@ -596,6 +596,7 @@ void fields(A& a, RunContext& c) {
   a("interface_files", c.interface_files);
   a("wall_before", c.wall_before);
   a("segments", c.segments);
+  a("run_id", c.run_id);
 }
 
 template <class A>

@@ -16,13 +16,14 @@
 
 namespace rupture {
 
-inline constexpr int kCheckpointVersion = 9;  // 2: State::strain_work; 3: Mach readings;
+inline constexpr int kCheckpointVersion = 10;  // 2: State::strain_work; 3: Mach readings;
                                               // 4: interface rupture times, peak slip rates;
                                               // 5: nested levels; 6: particles store the
                                               // stress only (no strain, szz, volume);
                                               // 7: the scatter plan's drift since its sort;
                                               // 8: particle part files (distributed runs);
-                                              // 9: snapshot rows as runs of ids
+                                              // 9: snapshot rows as runs of ids;
+                                              // 10: the run's identity (run_id)
 
 std::string checkpoint_path(const std::string& dir);  // DIR/checkpoint/checkpoint.bin
 

@@ -2,6 +2,7 @@
 #include "io/run_json.hpp"
 
 #include <cmath>
+#include <fstream>
 #include <sstream>
 #include <toml++/toml.h>
 
@@ -18,6 +19,8 @@ std::string run_json(const Case& c, const CaseSummary& s, const RunRecord& r) {
   t.insert("status", r.status);
   t.insert("message", r.message);
   t.insert("stop_reason", r.stop_reason);
+  t.insert("run_id", r.run_id);
+  t.insert("case_hash", r.case_hash);
   toml::array warnings;  // what `rupture check` warned about (io/case_checks.hpp)
   for (const std::string& w : c.warnings) warnings.push_back(w);
   t.insert("warnings", warnings);
@@ -130,6 +133,21 @@ std::string run_json(const Case& c, const CaseSummary& s, const RunRecord& r) {
   std::ostringstream os;
   os << toml::json_formatter{t} << "\n";
   return os.str();
+}
+
+std::string recorded_run_id(const std::string& dir) {
+  std::ifstream in(dir + "/run.json");
+  if (!in) return {};
+  const std::string key = "\"run_id\"";
+  for (std::string line; std::getline(in, line);) {
+    const auto at = line.find(key);
+    if (at == std::string::npos) continue;
+    const auto open = line.find('"', line.find(':', at + key.size()));
+    const auto close = open == std::string::npos ? open : line.find('"', open + 1);
+    if (close == std::string::npos) return {};
+    return line.substr(open + 1, close - open - 1);
+  }
+  return {};
 }
 
 }  // namespace rupture

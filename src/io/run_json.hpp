@@ -25,6 +25,8 @@ struct RunRecord {
   // "end_time", "crack_reached_interface_end" (time.stop_at_interface_end), "failed"
   // (unstable), "io_error", "interrupted" or "error"
   std::string stop_reason;
+  std::string run_id;             // the run's identity (made at its start, kept by checkpoints)
+  std::string case_hash;          // FNV-1a of the case text and overrides the run started from
   std::string heartbeat;          // wall-clock time of this record, UTC ISO 8601
   double heartbeat_unix = 0.0;    // the same, s since 1970
   double checkpoint_time = -1.0;  // simulated time of the last checkpoint, s (-1: none)
@@ -46,5 +48,8 @@ struct RunRecord {
 };
 
 std::string run_json(const Case& c, const CaseSummary& s, const RunRecord& r);
+
+// The "run_id" recorded in DIR/run.json ("" when the file or the entry is missing or unreadable).
+std::string recorded_run_id(const std::string& dir);
 
 }  // namespace rupture

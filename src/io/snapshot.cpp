@@ -260,6 +260,28 @@ void SnapshotWriter::write_collective(const Particles& p, const std::vector<Elas
   }
 }
 
+std::vector<std::string> SnapshotWriter::drop_missing_files() {
+  std::string present(files_.size(), '1');
+  if (comm_.rank() == 0)
+    for (std::size_t k = 0; k < files_.size(); ++k)
+      if (!std::filesystem::is_regular_file(dir_ + "/" + files_[k])) present[k] = '0';
+  present = comm_.broadcast(present, 0);
+  std::vector<std::string> dropped, files;
+  std::vector<double> times;
+  std::vector<std::size_t> counts;
+  for (std::size_t k = 0; k < files_.size(); ++k) {
+    if (present[k] == '0') {
+      dropped.push_back(files_[k]);
+      continue;
+    }
+    files.push_back(files_[k]), times.push_back(times_[k]), counts.push_back(counts_[k]);
+  }
+  if (dropped.empty()) return dropped;
+  files_ = std::move(files), times_ = std::move(times), counts_ = std::move(counts);
+  if (comm_.rank() == 0) write_xdmf();
+  return dropped;
+}
+
 void SnapshotWriter::write_xdmf() const {
   std::string x =
       "<?xml version=\"1.0\" ?>\n"

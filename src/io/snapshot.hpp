@@ -52,6 +52,10 @@ class SnapshotWriter {
   void write(const Particles& p, const std::vector<ElasticStiffness>& stiffness, double time,
              long step);
   const std::vector<std::string>& files() const { return files_; }
+  // After a resume: the snapshots whose files are gone from the run directory (deleted by
+  // hand) leave the index, so particles.xdmf names only files that exist; returns their names.
+  // Rank 0 looks, every rank learns it (collective).
+  std::vector<std::string> drop_missing_files();
 
  private:
   friend struct CheckpointAccess;  // every member below must also be written in io/checkpoint.cpp

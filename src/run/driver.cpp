@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fmt/format.h>
 #include <memory>
+#include <random>
 #include <omp.h>
 #include <sys/resource.h>
 
@@ -169,6 +170,31 @@ std::vector<StationProbe> set_up(RunContext& r, const Case& c, const std::string
   return probes;
 }
 
+// A new run's identity: 64 random bits in hex (rank 0's, sent to every rank). Checkpoints keep
+// it, and a resume refuses a checkpoint whose identity is not the run directory's.
+std::string make_run_id(const Comm& comm) {
+  std::string id;
+  if (comm.rank() == 0) {
+    std::random_device rd;
+    const std::uint64_t bits = (std::uint64_t(rd()) << 32) ^ std::uint64_t(rd()) ^
+                               std::uint64_t(std::chrono::system_clock::now().time_since_epoch().count());
+    id = fmt::format("{:016x}", bits);
+  }
+  return comm.broadcast(id, 0);
+}
+
+// FNV-1a of the case text and its overrides, in hex: which input a run started from.
+std::string case_hash(const CaseSource& source) {
+  std::uint64_t h = 1469598103934665603ull;
+  auto add = [&](const std::string& text) {
+    for (const unsigned char ch : text) h = (h ^ ch) * 1099511628211ull;
+    h = (h ^ 0xffu) * 1099511628211ull;  // a separator no text byte can fake alone
+  };
+  add(source.text);
+  for (const std::string& o : source.overrides) add(o);
+  return fmt::format("{:016x}", h);
+}
+
 // run.json of a run that failed before its first step (best effort: the error is reported
 // either way).
 void record_setup_failure(const std::string& dir, const Case& c, const CaseSummary& summary, int ranks,
@@ -221,6 +247,7 @@ RunResult run_case(const Case& c, const RunOptions& options) {
   std::vector<StationProbe> probes;
   try {
   probes = set_up(ctx, c, dir, options.checkpoint_interval, comm, options.resume);
+  if (!options.resume) ctx.run_id = make_run_id(comm);  // a resume takes the checkpoint's
   // Set-up and resume: what one rank cannot do (a checkpoint entry refused, a part file
   // missing, memory) stops every rank with its message (parallel/agreement.hpp), before any
   // collective call that the failed rank would never make.
@@ -231,6 +258,13 @@ RunResult run_case(const Case& c, const RunOptions& options) {
     std::vector<std::vector<double>> keys;
     agree_on_failure(comm, [&] {
       read_checkpoint(checkpoint_path(dir), ctx);
+      // A checkpoint copied in from another run would replace this run's history.
+      const std::string here = recorded_run_id(dir);
+      if (!here.empty() && here != ctx.run_id)
+        throw InputError(fmt::format(
+            "checkpoint '{}' belongs to run {}, but the run directory's run.json is run {}: it was "
+            "copied from another run; resume that run's own directory",
+            checkpoint_path(dir), ctx.run_id.empty() ? "(none recorded)" : ctx.run_id, here));
       // Distributed: each rank reads some of the parts (a distributed run's checkpoint), or
       // every particle from checkpoint.bin (one process wrote it).
       if (comm.distributed() && ctx.s.particle_parts > 0) keys = read_checkpoint_share(dir, ctx, comm);
@@ -247,6 +281,13 @@ RunResult run_case(const Case& c, const RunOptions& options) {
       distribute(ctx.s, comm, false);  // one process's checkpoint: its particles split
     }
     ++ctx.segments;
+    if (ctx.snapshots) {  // snapshot files deleted since: particles.xdmf names only what exists
+      const std::vector<std::string> gone = ctx.snapshots->drop_missing_files();
+      if (!gone.empty() && writer)
+        fmt::print(stderr, "warning: {} snapshot file(s) of this run are missing ({}{}): left out of "
+                           "particles.xdmf\n",
+                   gone.size(), gone.front(), gone.size() > 1 ? ", ..." : "");
+    }
     Schedule& ck = ctx.checkpoint;
     if (options.checkpoint_interval > 0 && options.checkpoint_interval != ck.interval) {
       ck.interval = options.checkpoint_interval;
@@ -278,6 +319,8 @@ RunResult run_case(const Case& c, const RunOptions& options) {
   record.threads = omp_get_max_threads();
   record.ranks = comm.size();
   record.segments = ctx.segments;
+  record.run_id = ctx.run_id;
+  record.case_hash = case_hash(options.source);
   if (options.resume) record.checkpoint_time = s.time, record.checkpoint_step = s.step;
   stamp_heartbeat(record);
   if (writer) {

@@ -53,6 +53,7 @@ struct RunContext {
   int interface_files = 0;   // interface/*.csv written so far
   double wall_before = 0.0;  // wall seconds of earlier segments (resumed runs)
   int segments = 1;          // 1 + number of resumptions
+  std::string run_id;        // the run's identity (run.json "run_id"): a resume checks it
 };
 
 }  // namespace rupture

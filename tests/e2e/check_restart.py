@@ -10,7 +10,10 @@ REF_DIR holds an uninterrupted run of CASE with RUN_ARGS. MODE:
              it stops within 30 s with exit 4 and a checkpoint (it once spun forever); resume
   kill9      kill -9 once a checkpoint exists: run.json still "running"; resume
   overwrite  a used directory is refused (exit 1) unless --overwrite, which keeps user files
-  full_disk  a 12 MB tmpfs fills up: exit 3, "No space left on device", run.json not "running"
+  full_disk  a 12 MB tmpfs fills up: exit 3, "No space left on device", run.json not "running",
+             history.csv and crack_tip.csv written
+  foreign    another run's checkpoint copied in is refused (exit 1, both run ids named, nothing
+             changed); its own back with a snapshot file deleted: resumed, the index drops it
              (skipped, exit 77, where a tmpfs cannot be mounted)
 A resumed run must equal the reference bitwise: history.csv, crack_tip.csv,
 crack_stretches.csv, particles.xdmf, interface/*.csv byte for byte, every snapshot's datasets
@@ -217,9 +220,49 @@ def main():
             left = [p for p in glob.glob(os.path.join(out, "**", "*.tmp"), recursive=True)]
             if left:
                 fail(f"incomplete files left: {left}")
+            # The small files that say what happened come before the large ones.
+            with open(os.path.join(out, "history.csv")) as f:
+                rows = sum(1 for _ in f) - 1
+            if rows < 2 or not os.path.exists(os.path.join(out, "crack_tip.csv")):
+                fail(f"history.csv has {rows} rows after {j['steps']} steps (crack_tip.csv: "
+                     f"{os.path.exists(os.path.join(out, 'crack_tip.csv'))})")
             print(f"full disk: exit 3, {p.stderr.strip()}; run.json status failed (io_error)")
         finally:
             subprocess.run(["umount", d])
+    elif mode == "foreign":
+        # Another run's checkpoint copied into this run's directory is refused (run_id).
+        other = d + "_other"
+        shutil.rmtree(other, ignore_errors=True)
+        stop = ["--checkpoint-interval", "3e-6", "--stop-after-steps", "160"]
+        run(base + stop, 4, "run stopped after 160 steps")
+        run([rupture, "run", case, "-o", other, "--quiet"] + args + stop, 4, "the other run")
+        mine = os.path.join(d, "checkpoint", "checkpoint.bin")
+        shutil.copy(mine, mine + ".mine")
+        shutil.copy(os.path.join(other, "checkpoint", "checkpoint.bin"), mine)
+        history = open(os.path.join(d, "history.csv")).read()
+        p = run([rupture, "resume", d, "--quiet"], 1, "resume from another run's checkpoint")
+        if "belongs to run" not in p.stderr or run_json(d)["run_id"] not in p.stderr:
+            fail(f"message:\n{p.stderr}")
+        if open(os.path.join(d, "history.csv")).read() != history:
+            fail("the refused resume changed history.csv")
+        print(f"foreign checkpoint refused: {p.stderr.strip()[:160]}")
+        # Its own checkpoint back, one snapshot file deleted by hand: the index drops it.
+        shutil.move(mine + ".mine", mine)
+        snaps = sorted(glob.glob(os.path.join(d, "snapshots", "*.h5")))
+        if len(snaps) < 2:
+            fail(f"{len(snaps)} snapshots before the resume")
+        gone = os.path.basename(snaps[1])
+        os.remove(snaps[1])
+        p = run([rupture, "resume", d, "--quiet"], 0, "resume after a snapshot was deleted")
+        if "missing" not in p.stderr or gone not in p.stderr:
+            fail(f"no warning naming {gone}:\n{p.stderr}")
+        xdmf = open(os.path.join(d, "particles.xdmf")).read()
+        for f in glob.glob(os.path.join(d, "snapshots", "*.h5")):
+            if os.path.basename(f) not in xdmf:
+                fail(f"particles.xdmf does not name {f}")
+        if gone in xdmf:
+            fail(f"particles.xdmf still names the deleted {gone}")
+        print(f"deleted {gone}: warned, left out of particles.xdmf")
     else:
         fail(f"unknown mode {mode}")
     print("OK")
