@@ -24,8 +24,8 @@ using namespace rupture;
 
 namespace {
 
+// Per process: ctest runs this file's tests side by side.
 std::string scratch_dir(const char* name) {
-  // One folder per process: ctest runs this file's tests side by side.
   const auto d = std::filesystem::temp_directory_path() / (std::string(name) + "_" + std::to_string(::getpid()));
   std::filesystem::remove_all(d);
   std::filesystem::create_directories(d);
