@@ -5,8 +5,11 @@
 
 #include <algorithm>
 #include <climits>
+#include <cstdint>
+#include <cstring>
 #include <cstdlib>
 #include <stdexcept>
+#include <string>
 
 namespace rupture {
 namespace {
@@ -130,30 +133,56 @@ void Comm::exchange_sized(std::vector<PeerBuffers>& peers) const {
   check(MPI_Waitall(int(req.size()), req.data(), MPI_STATUSES_IGNORE), "MPI_Waitall");
 }
 
+// Counts travel as 64-bit integers; the bytes go in rounds of MPI_Alltoallv whose int counts
+// and displacements stay below `chunk_bytes` in all: each round moves up to chunk_bytes / N
+// bytes of every pair's message (at least one), and every rank takes part in as many rounds
+// as the longest message anywhere needs.
 void Comm::all_to_all(const std::vector<std::vector<unsigned char>>& send,
-                      std::vector<std::vector<unsigned char>>& recv) const {
-  recv.assign(std::size_t(size_), {});
+                      std::vector<std::vector<unsigned char>>& recv, std::size_t chunk_bytes) const {
+  const std::size_t n = std::size_t(size_);
+  if (send.size() != n)
+    throw std::invalid_argument("Comm::all_to_all: " + std::to_string(send.size()) + " send buffers for " +
+                                std::to_string(n) + " ranks");
+  if (chunk_bytes == 0 || chunk_bytes > kAllToAllChunk)
+    throw std::invalid_argument("Comm::all_to_all: chunk of " + std::to_string(chunk_bytes) + " bytes (1 to " +
+                                std::to_string(kAllToAllChunk) + " allowed)");
+  recv.assign(n, {});
   if (size_ == 1) {
     recv[0] = send[0];
     return;
   }
-  const std::size_t n = std::size_t(size_);
-  std::vector<int> out(n), in(n), out_at(n, 0), in_at(n, 0);
-  for (std::size_t q = 0; q < n; ++q) out[q] = int(send[q].size());
-  check(MPI_Alltoall(out.data(), 1, MPI_INT, in.data(), 1, MPI_INT, MPI_COMM_WORLD), "MPI_Alltoall");
-  std::vector<unsigned char> flat_out, flat_in;
+  std::vector<std::int64_t> out(n), in(n);
+  for (std::size_t q = 0; q < n; ++q) out[q] = std::int64_t(send[q].size());
+  check(MPI_Alltoall(out.data(), 1, MPI_INT64_T, in.data(), 1, MPI_INT64_T, MPI_COMM_WORLD), "MPI_Alltoall");
+  const std::int64_t piece = std::max<std::int64_t>(1, std::int64_t(chunk_bytes / n));
+  std::int64_t longest = 0;
   for (std::size_t q = 0; q < n; ++q) {
-    out_at[q] = int(flat_out.size());
-    flat_out.insert(flat_out.end(), send[q].begin(), send[q].end());
+    recv[q].resize(std::size_t(in[q]));
+    longest = std::max({longest, out[q], in[q]});
   }
-  long total = 0;
-  for (std::size_t q = 0; q < n; ++q) in_at[q] = int(total), total += in[q];
-  flat_in.resize(std::size_t(total));
-  check(MPI_Alltoallv(flat_out.data(), out.data(), out_at.data(), MPI_BYTE, flat_in.data(), in.data(),
-                      in_at.data(), MPI_BYTE, MPI_COMM_WORLD),
-        "MPI_Alltoallv");
-  for (std::size_t q = 0; q < n; ++q)
-    recv[q].assign(flat_in.begin() + in_at[q], flat_in.begin() + in_at[q] + in[q]);
+  long rounds = long((longest + piece - 1) / piece);
+  check(MPI_Allreduce(MPI_IN_PLACE, &rounds, 1, MPI_LONG, MPI_MAX, MPI_COMM_WORLD), "MPI_Allreduce");
+  std::vector<int> out_n(n), in_n(n), out_at(n), in_at(n);
+  std::vector<unsigned char> flat_out, flat_in;
+  for (long r = 0; r < rounds; ++r) {
+    const std::int64_t from = std::int64_t(r) * piece;  // this round's bytes of every message
+    int out_total = 0, in_total = 0;
+    for (std::size_t q = 0; q < n; ++q) {
+      out_n[q] = int(std::clamp<std::int64_t>(out[q] - from, 0, piece));
+      in_n[q] = int(std::clamp<std::int64_t>(in[q] - from, 0, piece));
+      out_at[q] = out_total, in_at[q] = in_total;
+      out_total += out_n[q], in_total += in_n[q];
+    }
+    flat_out.resize(std::size_t(out_total));
+    flat_in.resize(std::size_t(in_total));
+    for (std::size_t q = 0; q < n; ++q)
+      if (out_n[q] > 0) std::memcpy(flat_out.data() + out_at[q], send[q].data() + from, std::size_t(out_n[q]));
+    check(MPI_Alltoallv(flat_out.data(), out_n.data(), out_at.data(), MPI_BYTE, flat_in.data(), in_n.data(),
+                        in_at.data(), MPI_BYTE, MPI_COMM_WORLD),
+          "MPI_Alltoallv");
+    for (std::size_t q = 0; q < n; ++q)
+      if (in_n[q] > 0) std::memcpy(recv[q].data() + from, flat_in.data() + in_at[q], std::size_t(in_n[q]));
+  }
 }
 
 void Comm::abort(int code) const {

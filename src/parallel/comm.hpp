@@ -63,9 +63,13 @@ class Comm {
   // sides know the shared box): one message per peer and direction.
   void exchange_sized(std::vector<PeerBuffers>& peers) const;
   // Every rank sends send[q] to rank q and receives recv[q] from it (all ranks; rare: a
-  // rebalance). Each buffer under 2 GiB.
+  // rebalance). Buffers of any size: counts are 64-bit and the bytes go in rounds of at most
+  // `chunk_bytes` per rank (1 to kAllToAllChunk; tests choose small ones); every rank must
+  // pass the same chunk.
+  static constexpr std::size_t kAllToAllChunk = std::size_t(1) << 30;  // 1 GiB: int counts
   void all_to_all(const std::vector<std::vector<unsigned char>>& send,
-                  std::vector<std::vector<unsigned char>>& recv) const;
+                  std::vector<std::vector<unsigned char>>& recv,
+                  std::size_t chunk_bytes = kAllToAllChunk) const;
   // Stops every rank (after a failure that cannot be agreed on in step, e.g. an I/O error on
   // one rank), exit code `code`.
   [[noreturn]] void abort(int code) const;
