@@ -203,3 +203,16 @@ TEST(InputMessages, refine_box_outside_the_grid_and_unresolvable_circle_are_name
   EXPECT_NE(tiny.find("'interface.c.radius' = 1e-300"), std::string::npos) << tiny;
   EXPECT_NE(tiny.find("too small to resolve"), std::string::npos) << tiny;
 }
+
+// The nested levels' own set-up checks (a driven edge on every level's lines, an interface
+// within one level) run at input too: rupture check --no-timing refuses what the run would.
+TEST(RunLimits, nested_level_checks_of_interfaces_run_at_input) {
+  const std::vector<std::string> nested = {
+      "grid.cell_size=0.25e-3", "grid.coarse_cell_size=0.5e-3", "grid.refinement=\"nested\"",
+      "grid.refine.f.min=[0.004,0.0]", "grid.refine.f.max=[0.006,0.002]", "grid.refine.f.level=1",
+      "interface.c.body=\"strip\"", "interface.c.y=0.001", "interface.c.start=0.0", "interface.c.end=0.01",
+      "interface.c.segments=40", "interface.c.law=\"contact\"", "interface.c.contact_stiffness=1e15"};
+  const std::string e = error_of(test::strip_case_toml(), nested);
+  EXPECT_NE(e.find("interface.c: its node at"), std::string::npos) << e;
+  EXPECT_NE(e.find("not inside nested level"), std::string::npos) << e;
+}

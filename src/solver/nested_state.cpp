@@ -25,22 +25,30 @@ namespace {
 
 // The velocity conditions of the domain edges this level reaches (its outer sides), on the
 // level's lattice line of the edge.
+// The lattice line of level L that the domain edge of `bc` lies on; -1 when L does not reach
+// that edge. InputError when the edge is not on one of L's lines.
+long edge_line(const VelocityBC& bc, const Case& c, const Level& L) {
+  const int d = (bc.edge == Edge::left || bc.edge == Edge::right) ? 0 : 1;
+  const bool lo = bc.edge == Edge::left || bc.edge == Edge::bottom;
+  if (!(lo ? L.outer_lo[d] : L.outer_hi[d])) return -1;
+  const Axis& a = d == 0 ? L.x : L.y;
+  const double edge = lo ? c.grid.min[d] : c.grid.max[d];
+  const double u = (edge - a.origin) / a.h;
+  const long line = std::lround(u);
+  if (std::fabs(u - double(line)) > 1e-6)
+    throw InputError(fmt::format(
+        "boundary.{}: the {} edge ({} = {:g} m) is not on a node line of nested level {} "
+        "({:g} m cells, lines at {:g} m + k {:g} m); with nested levels a driven edge must lie "
+        "on the lines of every level that reaches it: make the domain's extent a whole number "
+        "of coarse cells", bc.name, edge_name(bc.edge), d == 0 ? "x" : "y", edge, L.level, a.h,
+        a.origin, a.h));
+  return line;
+}
+
 void set_level_boundary(State& s, const Case& c, const Level& L, std::vector<int>& base) {
   for (const VelocityBC& bc : c.boundary) {
-    const int d = (bc.edge == Edge::left || bc.edge == Edge::right) ? 0 : 1;
-    const bool lo = bc.edge == Edge::left || bc.edge == Edge::bottom;
-    if (!(lo ? L.outer_lo[d] : L.outer_hi[d])) continue;
-    const Axis& a = d == 0 ? L.x : L.y;
-    const double edge = lo ? c.grid.min[d] : c.grid.max[d];
-    const double u = (edge - a.origin) / a.h;
-    const long line = std::lround(u);
-    if (std::fabs(u - double(line)) > 1e-6)
-      throw InputError(fmt::format(
-          "boundary.{}: the {} edge ({} = {:g} m) is not on a node line of nested level {} "
-          "({:g} m cells, lines at {:g} m + k {:g} m); with nested levels a driven edge must lie "
-          "on the lines of every level that reaches it: make the domain's extent a whole number "
-          "of coarse cells", bc.name, edge_name(bc.edge), d == 0 ? "x" : "y", edge, L.level, a.h,
-          a.origin, a.h));
+    const long line = edge_line(bc, c, L);
+    if (line < 0) continue;
     s.boundary.push_back(bc);
     base.push_back(int(line));
   }
@@ -67,13 +75,14 @@ void follow_edges(State& s, const std::vector<int>& base) {
 // The level that holds interface `ci` whole: every face node's bilinear stencil (its cell's
 // four nodes) made of that level's DOFs, so the cohesive forces land on DOFs and the faces
 // read DOF velocities. Throws InputError otherwise.
-int owning_level(const NestedGrid& g, const CohesiveInterface& ci, const std::string& name) {
-  const int l = g.level_of(ci.x0[0], ci.y0[0]);
+int owning_level(const NestedGrid& g, const std::vector<double>& x0, const std::vector<double>& y0,
+                 const std::string& name) {
+  const int l = g.level_of(x0[0], y0[0]);
   const Level& L = g.levels[std::size_t(l)];
-  for (std::size_t k = 0; k < ci.num_nodes(); ++k) {
-    const double u = (ci.x0[k] - g.min[0]) / g.finest, v = (ci.y0[k] - g.min[1]) / g.finest;
+  for (std::size_t k = 0; k < x0.size(); ++k) {
+    const double u = (x0[k] - g.min[0]) / g.finest, v = (y0[k] - g.min[1]) / g.finest;
     const double cu = std::floor(u / double(L.unit)) * double(L.unit), cv = std::floor(v / double(L.unit)) * double(L.unit);
-    bool dofs = g.level_of(ci.x0[k], ci.y0[k]) == l;
+    bool dofs = g.level_of(x0[k], y0[k]) == l;
     for (double du : {0.0, double(L.unit)})
       for (double dv : {0.0, double(L.unit)}) {
         const bool finer = std::size_t(l) + 1 < g.levels.size() &&
@@ -85,7 +94,7 @@ int owning_level(const NestedGrid& g, const CohesiveInterface& ci, const std::st
           "interface.{}: its node at (x, y) = ({:g}, {:g}) m is not inside nested level {} with a "
           "cell to spare, where its first node is: on nested levels an interface must lie in one "
           "level's region (one [grid.refine] box and the level it sets), at least one cell from "
-          "the region's inner borders", name, ci.x0[k], ci.y0[k], l));
+          "the region's inner borders", name, x0[k], y0[k], l));
   }
   return l;
 }
@@ -306,6 +315,23 @@ void check_nested_support(const Case& c) {
   if (!c.absorbing_edges.empty()) throw unsupported("[absorbing]");
   if (!c.loads.empty()) throw unsupported("[loads]");
   if (!c.grid.refined()) throw unsupported("a grid without [grid.refine] boxes");
+  if (c.boundary.empty() && c.interfaces.empty()) return;
+  // What the levels' set-up checks, on the levels' lattices alone (no particle, no field).
+  const NestedGrid g = make_nested_grid(c.grid.min, c.grid.max, c.grid.coarse_cell_size, c.grid.cell_size,
+                                        refine_boxes(c.grid), std::max(0.0, c.grid.margin));
+  for (const Level& L : g.levels)
+    for (const VelocityBC& bc : c.boundary) edge_line(bc, c, L);
+  int level = -1;
+  for (std::size_t k = 0; k < c.interfaces.size(); ++k) {
+    const LineNodes nodes = discretize(c.interfaces[k].geometry(), c.interfaces[k].segments);
+    const int l = owning_level(g, nodes.x, nodes.y, c.interface_names[k]);
+    if (level >= 0 && l != level)
+      throw InputError(fmt::format(
+          "[interface]: with grid.refinement = \"nested\" every interface must lie on one level; "
+          "these lie on levels {} and {} (one [grid.refine] box around all of them)",
+          std::min(level, l), std::max(level, l)));
+    level = l;
+  }
 }
 
 NestedState make_nested_state(const Case& c, const LevelShare* share) {
@@ -347,7 +373,7 @@ NestedState make_nested_state(const Case& c, const LevelShare* share) {
     // lives on the one level that holds it whole.
     std::vector<CohesiveInterface> kept;
     for (std::size_t k = 0; k < s.interfaces.size(); ++k)
-      if (owning_level(n.grid, s.interfaces[k], c.interface_names[k]) == l) kept.push_back(std::move(s.interfaces[k]));
+      if (owning_level(n.grid, s.interfaces[k].x0, s.interfaces[k].y0, c.interface_names[k]) == l) kept.push_back(std::move(s.interfaces[k]));
     s.interfaces = std::move(kept);
     s.limits.cohesive_dt = s.interfaces.empty() ? INFINITY : s.limits.cohesive_dt;
   }
