@@ -165,6 +165,14 @@ TEST(RunLimits, absurd_materials_times_and_sizes_are_refused_before_any_work) {
   EXPECT_NE(error_of(base, {"solver.memory_limit_mib=-1"}).find("must be >= 0"), std::string::npos);
 }
 
+// 80 000 x 16 000 cells at 2 x 2: 5.12e9 particles, past the 32-bit ids (refused before the
+// memory check, which would refuse it too).
+TEST(RunLimits, particle_counts_past_32_bit_ids_are_refused) {
+  const std::string e = error_of(test::strip_case_toml(), {"grid.cell_size=1.25e-7", "time.end=1e-9"});
+  EXPECT_NE(e.find("'grid.cell_size' = 1.25e-07"), std::string::npos) << e;
+  EXPECT_NE(e.find("the case seeds 5120000000 particles; at most 2^32 - 1"), std::string::npos) << e;
+}
+
 TEST(RunLimits, a_long_run_warns_with_its_count_beyond_what_a_long_holds) {
   const Case c = parse_case(test::strip_case_toml(), {"time.end=2.0"});  // 2.5e7 steps
   ASSERT_EQ(c.warnings.size(), 1u);
