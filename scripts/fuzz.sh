@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer harnesses (cmake --preset fuzz: clang 14, ASan + UBSan; fuzz/README.md),
+# runs every saved regression input and seed through them, then fuzzes both harnesses side by
+# side (one core each) for RUPTURE_FUZZ_SECONDS seconds (default 45) from their seeds. A crash,
+# undefined behaviour or an exception a harness does not expect stops that harness: its input
+# is left in build/fuzz/crashes/TARGET/ and the script fails. Prints each phase's wall time and
+# libFuzzer's figures (executions, cov, ft).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds=${RUPTURE_FUZZ_SECONDS:-45}
+start=$SECONDS
+cmake --preset fuzz > /dev/null
+cmake --build --preset fuzz > build/fuzz-build.log 2>&1 || { tail -50 build/fuzz-build.log; exit 1; }
+echo "fuzz: build $((SECONDS - start)) s"
+export OMP_NUM_THREADS=1 ASAN_OPTIONS=detect_leaks=0
+# Halt on every UBSan report but the known findings not fixed yet (fuzz/found/README.md).
+export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1:suppressions=$PWD/fuzz/found/ubsan.supp
+t=$SECONDS
+ctest --test-dir build/fuzz -L fuzz --output-on-failure > build/fuzz/regressions.log 2>&1 ||
+  { cat build/fuzz/regressions.log; exit 1; }
+echo "fuzz: regression inputs $((SECONDS - t)) s"
+t=$SECONDS
+for target in checkpoint case_toml; do
+  work=build/fuzz/corpus/$target crashes=build/fuzz/crashes/$target
+  mkdir -p "$work" "$crashes"
+  seeds=(fuzz/corpus/checkpoint) limit=()
+  if [ "$target" = case_toml ]; then
+    seeds=(examples tests/inputs)
+    # toml++ recurses once per dotted part of a table header: ~50 000 parts overflow the stack
+    # (a known finding, fuzz/found/README.md); shorter inputs keep the run on everything else.
+    limit=(-max_len=4096)
+  fi
+  build/fuzz/bin/fuzz_$target -max_total_time="$seconds" "${limit[@]}" -detect_leaks=0 -print_final_stats=1 \
+    -artifact_prefix="$crashes/" "$work" "${seeds[@]}" > build/fuzz/$target.log 2>&1 &
+done
+wait || true
+status=0
+for target in checkpoint case_toml; do
+  grep -E "^#[0-9]+[[:space:]]+(INITED|DONE)|^stat::(number_of_executed_units|average_exec_per_sec)" build/fuzz/$target.log |
+    sed "s/^/fuzz_$target: /"
+  if compgen -G "build/fuzz/crashes/$target/*" > /dev/null; then
+    grep -E "runtime error|ERROR: AddressSanitizer|ERROR: libFuzzer|SUMMARY|^    #[0-9]+ " build/fuzz/$target.log | head -30 >&2
+    echo "fuzz: fuzz_$target found inputs that crash it: build/fuzz/crashes/$target (log: build/fuzz/$target.log)" >&2
+    status=1
+  fi
+done
+echo "fuzz: runs $((SECONDS - t)) s, total $((SECONDS - start)) s"
+exit $status
