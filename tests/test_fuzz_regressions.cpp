@@ -76,10 +76,15 @@ TEST(FuzzRegressions, checkpoint_seeds_restore_and_saved_inputs_come_back) {
             fuzz::Outcome::accepted)
       << "the seed no longer restores: RUPTURE_WRITE_SEEDS=1 ctest -R FuzzRegressions writes it anew";
   std::vector<fs::path> all = seeds;
+  const std::size_t kept = all.size();
   for (const fs::path& p : files_in(kFuzz / "regressions/checkpoint")) all.push_back(p);
-  for (const fs::path& p : all) {
-    const std::string b = read(p);
-    EXPECT_NO_THROW((void)fuzz::checkpoint_one(reinterpret_cast<const std::uint8_t*>(b.data()), b.size())) << p;
+  for (std::size_t k = 0; k < all.size(); ++k) {
+    const std::string b = read(all[k]);
+    fuzz::Outcome o = fuzz::Outcome::accepted;
+    EXPECT_NO_THROW(o = fuzz::checkpoint_one(reinterpret_cast<const std::uint8_t*>(b.data()), b.size())) << all[k];
+    // A saved crash is in the current format (its version and entries brought up to date when
+    // the format changes), so it reaches the checks after decoding and is refused there.
+    if (k >= kept && all[k].extension() == ".bin") EXPECT_EQ(o, fuzz::Outcome::refused) << all[k];
   }
 }
 
