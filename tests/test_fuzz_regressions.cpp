@@ -84,7 +84,9 @@ TEST(FuzzRegressions, checkpoint_seeds_restore_and_saved_inputs_come_back) {
     EXPECT_NO_THROW(o = fuzz::checkpoint_one(reinterpret_cast<const std::uint8_t*>(b.data()), b.size())) << all[k];
     // A saved crash is in the current format (its version and entries brought up to date when
     // the format changes), so it reaches the checks after decoding and is refused there.
-    if (k >= kept && all[k].extension() == ".bin") EXPECT_EQ(o, fuzz::Outcome::refused) << all[k];
+    if (k >= kept && all[k].extension() == ".bin") {
+      EXPECT_EQ(o, fuzz::Outcome::refused) << all[k];
+    }
   }
 }
 
