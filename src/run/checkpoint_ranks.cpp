@@ -176,7 +176,8 @@ std::vector<std::vector<double>> read_checkpoint_share(const std::string& dir, R
   failure.clear();
   try {
     for (std::size_t l = 0; l < held.size(); ++l)
-      check_ids_below(mine[l], std::uint64_t(total), "part.particles.id", checkpoint_part_path(dir, s.step, int(l) * n + comm.rank()));
+      check_ids_below(mine[l], std::uint64_t(total), fmt::format("part.particles.id (level {}: the parts rank {} read, in order)", l, comm.rank()),
+                      fmt::format("{}/checkpoint/particles_{}_*.bin", dir, s.step));
   } catch (const InputError& e) {
     failure = e.what();
   }
