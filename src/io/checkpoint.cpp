@@ -186,7 +186,14 @@ void fields(A& a, State& s) {
   a.same("fields", s.fields.num_fields);
   // A distributed run's particles are in part files (run/checkpoint_ranks.hpp).
   a("particle_parts", s.particle_parts);
-  if (!s.nested_level && s.particle_parts == 0) a.same("particles.count", s.particles.size());
+  if (!s.nested_level && s.particle_parts == 0) {
+    if (s.particles_from_checkpoint) {  // a distributed resume of one process's checkpoint
+      std::size_t count = s.particles.size();
+      a("particles.count", count);  // read: the file's (its ids are checked after decoding)
+    } else {
+      a.same("particles.count", s.particles.size());
+    }
+  }
   a.same("interfaces.count", s.interfaces.size());
   // nested: the levels hold them (merged on demand)
   if (!s.nested && s.particle_parts == 0) a("particles", s.particles);

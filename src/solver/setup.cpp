@@ -207,9 +207,10 @@ State make_state_owning(const Case& c, const PointFilter& own) {
 
 State make_state_without_particles(const Case& c) {
   const PointFilter none = [](double, double) { return false; };
-  if (!c.grid.nested) return make_state_owning(c, none);
   const LevelShare no_level{[](int, double, double) { return false; }, {}};
-  return make_nested_run_state(c, &no_level);
+  State s = c.grid.nested ? make_nested_run_state(c, &no_level) : make_state_owning(c, none);
+  s.particles_from_checkpoint = true;
+  return s;
 }
 
 State make_level_state(const Case& c, Grid lattice, const std::function<bool(double, double)>& keep,

@@ -165,6 +165,10 @@ struct State {
   // Checkpoints (io/checkpoint.hpp): 0 when the particles are in the file, N when a
   // distributed run wrote them in N part files beside it (run/checkpoint_ranks.hpp).
   int particle_parts = 0;
+  // Made without particles for a distributed resume (make_state_without_particles): the
+  // checkpoint brings them, so their count is the file's, not this state's (derived, not
+  // written).
+  bool particles_from_checkpoint = false;
 
   double cohesive_seconds = 0.0;  // wall time spent in the cohesive phases so far, s
   double external_work = 0.0;  // work of the prescribed velocities and loads so far, J (per unit thickness)
