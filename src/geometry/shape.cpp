@@ -23,10 +23,20 @@ int sign(double v) {
   return (v > 0.0) - (v < 0.0);
 }
 
+// The side of a-b that c lies on (+1 left, -1 right), 0 when the three are collinear to
+// round-off: |orient| within 1e-12 of the squared extent (the products' rounding, relative to
+// their size), as the line checks of cohesive/polyline do. A straight line extended by points
+// computed along it (a body split at an angle) is then collinear, not crossing itself.
+int side(const Point& a, const Point& b, const Point& c) {
+  const double v = orient(a, b, c);
+  const double scale = std::max({std::fabs(b.x - a.x), std::fabs(b.y - a.y), std::fabs(c.x - a.x), std::fabs(c.y - a.y)});
+  return std::fabs(v) <= 1e-12 * scale * scale ? 0 : sign(v);
+}
+
 // Closed segments p1-p2 and q1-q2 share a point (crossing or touching).
 bool segments_meet(const Point& p1, const Point& p2, const Point& q1, const Point& q2) {
-  const int o1 = sign(orient(p1, p2, q1)), o2 = sign(orient(p1, p2, q2));
-  const int o3 = sign(orient(q1, q2, p1)), o4 = sign(orient(q1, q2, p2));
+  const int o1 = side(p1, p2, q1), o2 = side(p1, p2, q2);
+  const int o3 = side(q1, q2, p1), o4 = side(q1, q2, p2);
   if (o1 * o2 < 0 && o3 * o4 < 0) return true;
   return (o1 == 0 && on_segment(p1, p2, q1)) || (o2 == 0 && on_segment(p1, p2, q2)) ||
          (o3 == 0 && on_segment(q1, q2, p1)) || (o4 == 0 && on_segment(q1, q2, p2));
@@ -159,7 +169,7 @@ std::optional<std::pair<int, int>> polygon_self_intersection(const std::vector<P
         const Point& s = next ? a1 : a0;  // the shared vertex
         const Point& p = next ? a0 : a1;  // the other end of edge i
         const Point& q = next ? b1 : b0;  // the other end of edge j
-        if (orient(p, s, q) == 0.0 && (p.x - s.x) * (q.x - s.x) + (p.y - s.y) * (q.y - s.y) > 0.0)
+        if (side(p, s, q) == 0 && (p.x - s.x) * (q.x - s.x) + (p.y - s.y) * (q.y - s.y) > 0.0)
           return std::make_pair(i, j);
         continue;
       }
