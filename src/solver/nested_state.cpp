@@ -165,6 +165,17 @@ void migrate_levels(NestedState& n) {
 
 }  // namespace
 
+namespace detail {
+
+Levels levels_of(NestedState& n) {
+  thread_local std::vector<State*> pointers;
+  pointers.clear();
+  for (State& s : n.levels) pointers.push_back(&s);
+  return Levels{pointers.data(), pointers.size(), &n};
+}
+
+}  // namespace detail
+
 std::size_t NestedState::num_particles() const {
   std::size_t n = 0;
   for (const State& s : levels) n += s.particles.size();
@@ -513,28 +524,14 @@ void step(NestedState& n) {
     follow_edges(s, n.base_lines[l]);
   }
   const NestedDrift before = nested_drift_before(n);
-  if (subcycled)
-    step_subcycled(n);
-  else
-    switch (n.levels[0].scheme) {
-      case Scheme::MUSL:
-        step_musl(n);
-        break;
-      case Scheme::USL:
-        step_usl(n);
-        break;
-      case Scheme::USF:
-        step_usf(n);
-        break;
-    }
-  for (State& s : n.levels) {
-    s.time += s.dt;
-    ++s.step;
-    // Face nodes follow their fields (solver/step.cpp): MUSL's re-mapped velocity, USL's t^{n+1}.
-    if (s.interfaces.empty()) continue;
-    const bool musl = n.levels[0].scheme == Scheme::MUSL;
-    advance_interfaces(s, musl ? s.fields.remap_x.data() : s.fields.vel_x.data(),
-                       musl ? s.fields.remap_y.data() : s.fields.vel_y.data());
+  const Levels all = detail::levels_of(n);
+  const Scheme scheme = n.levels[0].scheme;
+  if (subcycled) {
+    detail::step_subcycled(n);
+    detail::end_step(all, scheme);
+  } else {
+    detail::step_levels(all, scheme);
+    n.dt = n.levels[0].dt;
   }
   n.time += n.dt;
   ++n.step;

@@ -259,9 +259,9 @@ void step_subcycled(NestedState& n) {
       restore_scatter(n.levels[l].fields, n.hold[l], n.coupled[l]);
     }
   }
-  condense_fields(n, {&GridFields::mass, &GridFields::mom_x, &GridFields::mom_y,
+  condense_to_dofs(n, {&GridFields::mass, &GridFields::mom_x, &GridFields::mom_y,
                       &GridFields::force_x, &GridFields::force_y});
-  tie_and_face_stencils(n);                                  // bonded, faces
+  tie_and_face_stencils(levels_of(n));                                  // bonded, faces
   subcycled_time_step(n);                                    // h (E6)
 
   // Which levels end their step now: their period is over, or every level (the driver's next
@@ -288,7 +288,7 @@ void step_subcycled(NestedState& n) {
     if (n.period[l] > 1) n.hold[l].span = starts[l] ? h : n.hold[l].span + h;
   }
 
-  cohesive_forces_and_ties(n);  // E7-E9, bonded
+  cohesive_forces_and_ties(levels_of(n));  // E7-E9, bonded
   for (std::size_t l = 0; l < levels; ++l) {  // E4 + E2 velocity BCs
     State& s = n.levels[l];
     if (n.period[l] == 1)
@@ -298,7 +298,7 @@ void step_subcycled(NestedState& n) {
     else
       integrate_coupled(s, n.coupled[l], n.coupled_mask[l]);
   }
-  distribute_fields(n, {&GridFields::vel_x, &GridFields::vel_y, &GridFields::dvel_x, &GridFields::dvel_y});
+  spread_to_slaves(n, {&GridFields::vel_x, &GridFields::vel_y, &GridFields::dvel_x, &GridFields::dvel_y});
   for (std::size_t l = 0; l < levels; ++l) {
     if (n.period[l] == 1) continue;
     LevelHold& H = n.hold[l];
@@ -315,7 +315,7 @@ void step_subcycled(NestedState& n) {
   // goes on: its coupled nodes; its other nodes are not read before its step ends, which
   // clears them).
   for (State& s : n.levels) halo_sum(s, {&GridFields::remap_x, &GridFields::remap_y});
-  condense_fields(n, {&GridFields::remap_x, &GridFields::remap_y});
+  condense_to_dofs(n, {&GridFields::remap_x, &GridFields::remap_y});
   for (State& s : n.levels) tie_bonded_nodes(s, TieWhat::remapped_momentum);
   for (std::size_t l = 0; l < levels; ++l) {  // + E2 at t + h
     if (ends[l])
@@ -323,14 +323,12 @@ void step_subcycled(NestedState& n) {
     else
       remapped_grid_velocity(n.levels[l], n.coupled[l], n.coupled_mask[l]);
   }
-  distribute_fields(n, {&GridFields::remap_x, &GridFields::remap_y});
+  spread_to_slaves(n, {&GridFields::remap_x, &GridFields::remap_y});
   // The step each ending level's particles take is its span (E5's stress increment and move).
   for (std::size_t l = 0; l < levels; ++l)
     if (ends[l] && n.period[l] > 1) n.levels[l].dt = n.hold[l].span;
-  gather_levels(n, [&] {
-    grid_to_particles(ending.data(), ending.size(), &GridFields::remap_x, &GridFields::remap_y,
-                      G2PMode::stress_and_move);  // E5
-  });
+  gather(Levels{ending.data(), ending.size(), &n}, &GridFields::remap_x, &GridFields::remap_y,
+         G2PMode::stress_and_move);  // E5
   for (State& s : n.levels) s.dt = h;
   n.substep = all ? 0 : n.substep + 1;
 }

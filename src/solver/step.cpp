@@ -1,18 +1,25 @@
 // rupture/solver/step.cpp
 // The time step: one function per update scheme, each the method's phases in order with the
-// boundary conditions, loads and cohesive phases visible (SPEC E4-E9). The phases live in
-// solver/transfer (particle <-> grid), solver/grid_update (nodes, velocity BCs),
-// solver/cohesive_step (interfaces), solver/load_step ([loads]), solver/time_step (dt, E6).
+// boundary conditions, loads and cohesive phases visible (SPEC E4-E9), written once over the
+// levels of solver/levels.hpp (one grid: one level, whose transitions are no-ops). The phases
+// live in solver/transfer (particle <-> grid), solver/grid_update (nodes, velocity BCs,
+// absorbing edges), solver/cohesive_step (interfaces), solver/load_step ([loads]),
+// solver/time_step (dt, E6), solver/transitions (levels). Distributed runs (State::halo): every
+// scatter, and the forces added after it, is summed over the ranks sharing a node right after
+// it (parallel/halo.hpp), before the transitions combine the levels.
 #include "solver/step.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 
 #include "core/errors.hpp"
 #include "parallel/halo.hpp"
 #include "solver/cohesive_step.hpp"
 #include "solver/field_windows.hpp"
+#include "solver/levels.hpp"
 #include "solver/load_step.hpp"
-#include "solver/nested_state.hpp"
+#include "solver/nested_phases.hpp"
 #include "solver/time_step.hpp"
 
 namespace rupture {
@@ -38,115 +45,208 @@ class CohesiveTimer {
   double exchanged_;
 };
 
-// After the mass scatter: the bonded stretch becomes one body (shared mass and momentum),
-// then the face stencils see this step's masses, and the step follows from them (E6).
-void tie_stencils_and_time_step(State& s) {
-  if (!s.interfaces.empty()) {
-    CohesiveTimer timer(s);
-    tie_bonded_nodes(s, TieWhat::mass_momentum);
-    update_face_stencils(s);
-    check_faces_in_reach(s);  // distributed: faces within this rank's halo
-  }
-  choose_time_step(s);
-  if (s.halo) s.dt = s.halo->comm.min(s.dt);  // distributed: one step for all ranks
+template <class Phase>
+void each(const Levels& L, Phase&& phase) {
+  for (State* s : L) phase(*s);
 }
 
-// A gather that may find a bad particle: on several processes the diagnosis waits for the end
-// of the step (every rank takes part in the step's exchanges, then all stop together).
-void gather(State& s, NodalArray gx, NodalArray gy, G2PMode mode) {
-  if (!s.halo) return grid_to_particles(s, gx, gy, mode);
-  try {
-    grid_to_particles(s, gx, gy, mode);
-  } catch (const SimulationError& e) {
-    if (s.halo->failure.empty()) s.halo->failure = e.what();
-  }
+// The nodal arrays the scatters add to.
+constexpr std::initializer_list<NodalArray> kMassMomentum = {&GridFields::mass, &GridFields::mom_x,
+                                                             &GridFields::mom_y};
+constexpr std::initializer_list<NodalArray> kForce = {&GridFields::force_x, &GridFields::force_y};
+constexpr std::initializer_list<NodalArray> kMassMomentumForce = {
+    &GridFields::mass, &GridFields::mom_x, &GridFields::mom_y, &GridFields::force_x, &GridFields::force_y};
+constexpr std::initializer_list<NodalArray> kRemapped = {&GridFields::remap_x, &GridFields::remap_y};
+constexpr std::initializer_list<NodalArray> kVelocity = {&GridFields::vel_x, &GridFields::vel_y,
+                                                         &GridFields::dvel_x, &GridFields::dvel_y};
+
+// Distributed runs: each level's shared nodes summed over the ranks that reach them.
+void sum_over_ranks(const Levels& L, std::initializer_list<NodalArray> arrays) {
+  each(L, [&](State& s) { halo_sum(s, arrays); });
 }
 
-// The nodal arrays each scatter adds to, summed over the ranks that share a node (distributed
-// runs; parallel/halo.hpp).
-void sum_mass_momentum(State& s) { halo_sum(s, {&GridFields::mass, &GridFields::mom_x, &GridFields::mom_y}); }
-void sum_force(State& s) { halo_sum(s, {&GridFields::force_x, &GridFields::force_y}); }
-void sum_remapped(State& s) { halo_sum(s, {&GridFields::remap_x, &GridFields::remap_y}); }
-void sum_mass_momentum_force(State& s) {
-  halo_sum(s, {&GridFields::mass, &GridFields::mom_x, &GridFields::mom_y, &GridFields::force_x,
-               &GridFields::force_y});
+// One dt for every level and rank: the smallest of their limits (SPEC E6).
+void common_time_step(const Levels& L) {
+  double dt = INFINITY;
+  each(L, [&](State& s) {
+    choose_time_step(s);
+    dt = std::min(dt, s.dt);
+  });
+  if (L.first().halo) dt = L.first().halo->comm.min(dt);
+  each(L, [&](State& s) { s.dt = dt; });
 }
 
 // Tractions and body forces ([loads]) after the internal force; distributed: each rank's
 // particles' share, summed over the ranks like the scatter.
-void external_forces(State& s) {
-  if (!s.loads.has_forces()) return;
-  halo_save(s, {&GridFields::force_x, &GridFields::force_y});
-  add_external_forces(s);
-  halo_sum_added(s, {&GridFields::force_x, &GridFields::force_y});
+void external_forces(const Levels& L) {
+  each(L, [](State& s) {
+    if (!s.loads.has_forces()) return;
+    halo_save(s, kForce);
+    add_external_forces(s);
+    halo_sum_added(s, kForce);
+  });
 }
 
-void cohesive_forces_and_ties(State& s) {
-  if (s.interfaces.empty()) return;
-  CohesiveTimer timer(s);
-  halo_save(s, {&GridFields::force_x, &GridFields::force_y});
-  add_cohesive_forces(s);  // E7-E9 (distributed: each rank its owned faces',
-  halo_sum_added(s, {&GridFields::force_x, &GridFields::force_y});  // summed over the ranks)
-  tie_bonded_nodes(s, TieWhat::force);
+// E4's momentum update with the boundary conditions, in this order on each level: the
+// absorbing edges' dashpots and the prescribed edge velocities (E2, integrate_grid), the
+// [loads] velocity regions (along their direction), then the work of the external forces
+// over the step (E14).
+void update_grid(const Levels& L) {
+  each(L, [](State& s) {
+    integrate_grid(s);
+    apply_velocity_regions(s);
+    external_force_work(s);
+  });
+}
+
+// MUSL: the re-mapped velocity at t^{n+1} (+ E2) and the regions' prescribed component.
+void remapped_velocity(const Levels& L) {
+  each(L, [](State& s) {
+    if (!s.bonded.empty()) {
+      CohesiveTimer timer(s);
+      tie_bonded_nodes(s, TieWhat::remapped_momentum);
+    }
+    remapped_grid_velocity(s);  // + E2 velocity BCs at t^{n+1}
+    prescribe_region_velocity(s, s.fields.remap_x.data(), s.fields.remap_y.data(), s.time + s.dt);
+  });
+}
+
+// USF: the grid velocity at t^n (+ E2) and the regions' prescribed component.
+void velocity_at_start(const Levels& L) {
+  each(L, [](State& s) {
+    grid_velocity_from_momentum(s, s.time);
+    prescribe_region_velocity(s, s.fields.remap_x.data(), s.fields.remap_y.data(), s.time);
+  });
 }
 
 // MUSL (modified update stress last): the stress is updated with the grid velocity re-mapped
 // from the updated particle velocities.
-void step_musl(State& s) {
-  GridFields& G = s.fields;
-  particles_to_grid(s, true);             // E4: mass, momentum, internal force per field
-  sum_mass_momentum_force(s);             // distributed: shared nodes summed over ranks
-  tie_stencils_and_time_step(s);          // bonded stretch, face stencils, dt (E6)
-  external_forces(s);                     // E4 tractions, body forces ([loads])
-  cohesive_forces_and_ties(s);            // E7-E9, bonded stretch
-  integrate_grid(s);                      // E4 momentum update + E2 velocity BCs
-  apply_velocity_regions(s);              // [loads] velocity regions, along d
-  external_force_work(s);                 // E14
-  update_particle_velocity_and_remap(s);  // FLIP/PIC velocity, re-mapped momentum
-  sum_remapped(s);
-  if (!s.interfaces.empty()) {
-    CohesiveTimer timer(s);
-    tie_bonded_nodes(s, TieWhat::remapped_momentum);
-  }
-  remapped_grid_velocity(s);  // + E2 velocity BCs at t^{n+1}
-  prescribe_region_velocity(s, G.remap_x.data(), G.remap_y.data(), s.time + s.dt);
-  gather(s, &GridFields::remap_x, &GridFields::remap_y, G2PMode::stress_and_move);  // E5
+void step_musl(const Levels& L) {
+  particles_to_grid(L.level, L.count, true);  // E4: mass, momentum, internal force per field
+  sum_over_ranks(L, kMassMomentumForce);
+  external_forces(L);                         // E4 tractions, body forces ([loads])
+  condense_to_dofs(L, kMassMomentumForce);    // levels: slaves onto their DOFs
+  detail::tie_and_face_stencils(L);           // bonded stretch, face stencils
+  common_time_step(L);                        // dt (E6)
+  detail::cohesive_forces_and_ties(L);        // E7-E9, bonded stretch
+  update_grid(L);                             // E4 + absorbing edges, E2 velocity BCs, regions
+  spread_to_slaves(L, kVelocity);
+  update_particle_velocity_and_remap(L.level, L.count);  // FLIP/PIC velocity, re-mapped momentum
+  sum_over_ranks(L, kRemapped);
+  condense_to_dofs(L, kRemapped);
+  remapped_velocity(L);  // bonded stretch, v = p / m, E2 at t^{n+1}, regions
+  spread_to_slaves(L, kRemapped);
+  detail::gather(L, &GridFields::remap_x, &GridFields::remap_y, G2PMode::stress_and_move);  // E5
 }
 
 // USL (update stress last): the stress is updated with the t^{n+1} grid velocity.
-void step_usl(State& s) {
-  particles_to_grid(s, true);
-  sum_mass_momentum_force(s);
-  tie_stencils_and_time_step(s);
-  external_forces(s);
-  cohesive_forces_and_ties(s);
-  integrate_grid(s);
-  apply_velocity_regions(s);
-  external_force_work(s);
-  gather(s, &GridFields::vel_x, &GridFields::vel_y, G2PMode::stress_velocity_and_move);  // E5
+void step_usl(const Levels& L) {
+  particles_to_grid(L.level, L.count, true);
+  sum_over_ranks(L, kMassMomentumForce);
+  external_forces(L);
+  condense_to_dofs(L, kMassMomentumForce);
+  detail::tie_and_face_stencils(L);
+  common_time_step(L);
+  detail::cohesive_forces_and_ties(L);
+  update_grid(L);
+  spread_to_slaves(L, kVelocity);
+  detail::gather(L, &GridFields::vel_x, &GridFields::vel_y, G2PMode::stress_velocity_and_move);  // E5
 }
 
 // USF (update stress first): the stress is updated with the t^n grid velocity, before the
 // internal force is scattered.
-void step_usf(State& s) {
-  GridFields& G = s.fields;
-  particles_to_grid(s, false);  // E4: mass, momentum
-  sum_mass_momentum(s);
-  tie_stencils_and_time_step(s);
-  grid_velocity_from_momentum(s, s.time);  // + E2 velocity BCs at t^n
-  prescribe_region_velocity(s, G.remap_x.data(), G.remap_y.data(), s.time);
-  gather(s, &GridFields::remap_x, &GridFields::remap_y, G2PMode::stress_only);  // E5
-  particles_to_grid_force(s);
-  sum_force(s);
-  external_forces(s);
-  cohesive_forces_and_ties(s);
-  integrate_grid(s);
-  apply_velocity_regions(s);
-  external_force_work(s);
-  gather(s, &GridFields::vel_x, &GridFields::vel_y, G2PMode::velocity_and_move);
+void step_usf(const Levels& L) {
+  particles_to_grid(L.level, L.count, false);  // E4: mass, momentum
+  sum_over_ranks(L, kMassMomentum);
+  condense_to_dofs(L, kMassMomentum);
+  detail::tie_and_face_stencils(L);
+  common_time_step(L);
+  velocity_at_start(L);  // v^n = p / m, E2 at t^n, regions
+  spread_to_slaves(L, kRemapped);
+  detail::gather(L, &GridFields::remap_x, &GridFields::remap_y, G2PMode::stress_only);  // E5
+  each(L, [](State& s) { particles_to_grid_force(s); });
+  sum_over_ranks(L, kForce);
+  external_forces(L);
+  condense_to_dofs(L, kForce);
+  detail::cohesive_forces_and_ties(L);
+  update_grid(L);
+  spread_to_slaves(L, kVelocity);
+  detail::gather(L, &GridFields::vel_x, &GridFields::vel_y, G2PMode::velocity_and_move);
 }
 
 }  // namespace
+
+namespace detail {
+
+// The end of every scheme's step on each level: the region particles' component along d at
+// t^{n+1}, the clock, and the interfaces' face nodes moved with the velocity the bodies'
+// strain was updated with (MUSL: re-mapped, else t^{n+1}), so jumps and strains stay
+// consistent; jumps and tractions at t^{n+1}.
+void end_step(const Levels& L, Scheme scheme) {
+  each(L, [scheme](State& s) {
+    set_region_particle_velocity(s);
+    s.time += s.dt;
+    ++s.step;
+    if (s.interfaces.empty()) return;
+    CohesiveTimer timer(s);
+    const GridFields& G = s.fields;
+    const bool musl = scheme == Scheme::MUSL;
+    advance_interfaces(s, musl ? G.remap_x.data() : G.vel_x.data(), musl ? G.remap_y.data() : G.vel_y.data());
+  });
+}
+
+void tie_and_face_stencils(const Levels& L) {
+  each(L, [](State& s) {
+    if (s.bonded.empty() && s.interfaces.empty()) return;
+    CohesiveTimer timer(s);
+    tie_bonded_nodes(s, TieWhat::mass_momentum);
+    if (s.interfaces.empty()) return;
+    update_face_stencils(s);
+    check_faces_in_reach(s);  // distributed: faces within this rank's halo
+  });
+}
+
+void cohesive_forces_and_ties(const Levels& L) {
+  each(L, [](State& s) {
+    if (s.bonded.empty() && s.interfaces.empty()) return;
+    CohesiveTimer timer(s);
+    if (!s.interfaces.empty()) {
+      halo_save(s, kForce);
+      add_cohesive_forces(s);     // E7-E9 (distributed: each rank its owned faces',
+      halo_sum_added(s, kForce);  // summed over the ranks)
+    }
+    tie_bonded_nodes(s, TieWhat::force);
+  });
+}
+
+// A gather that may find a bad particle: on several processes the diagnosis waits for the end
+// of the step (every rank takes part in the step's exchanges, then all stop together).
+void gather(const Levels& L, NodalArray gx, NodalArray gy, G2PMode mode) {
+  State& first = L.first();
+  if (!first.halo) return grid_to_particles(L.level, L.count, gx, gy, mode);
+  try {
+    grid_to_particles(L.level, L.count, gx, gy, mode);
+  } catch (const SimulationError& e) {
+    if (first.halo->failure.empty()) first.halo->failure = e.what();
+  }
+}
+
+void step_levels(const Levels& L, Scheme scheme) {
+  switch (scheme) {
+    case Scheme::MUSL:
+      step_musl(L);
+      break;
+    case Scheme::USL:
+      step_usl(L);
+      break;
+    case Scheme::USF:
+      step_usf(L);
+      break;
+  }
+  end_step(L, scheme);
+}
+
+}  // namespace detail
 
 void step(State& s) {
   if (s.nested) {  // grid.refinement = "nested": the levels step (solver/nested_state.hpp)
@@ -161,29 +261,8 @@ void step(State& s) {
   if (update_edge_lines(s.boundary, s.grid, s.time, s.bc_lines))
     s.bc_nodes = resolve_nodes(s.boundary, s.grid, s.fields.num_fields, s.bc_lines);
   prepare_loads(s);  // loaded particles after a sort, region nodes at t^n
-  switch (s.scheme) {
-    case Scheme::MUSL:
-      step_musl(s);
-      break;
-    case Scheme::USL:
-      step_usl(s);
-      break;
-    case Scheme::USF:
-      step_usf(s);
-      break;
-  }
-  set_region_particle_velocity(s);  // region particles: component along d at t^{n+1}
-  s.time += s.dt;
-  ++s.step;
-  if (!s.interfaces.empty()) {
-    CohesiveTimer timer(s);
-    // Face nodes follow their fields with the velocity the bodies' strain is updated with (MUSL:
-    // re-mapped), so jumps and strains stay consistent; jumps and tractions at t^{n+1}.
-    const GridFields& G = s.fields;
-    const bool musl = s.scheme == Scheme::MUSL;
-    advance_interfaces(s, musl ? G.remap_x.data() : G.vel_x.data(),
-                       musl ? G.remap_y.data() : G.vel_y.data());
-  }
+  State* const one[] = {&s};
+  detail::step_levels(Levels{one, 1, nullptr}, s.scheme);
   finish_distributed_step(s, drift_at_start);  // migration bound; a failure on any rank stops all
 }
 
