@@ -30,6 +30,13 @@ void for_each_run_point(const Case& c, const State& s, const RunPointVisit& visi
 // A particle centre's test (x, y in m).
 using PointFilter = std::function<bool(double, double)>;
 
+// The particles at t = 0 near c.loads (a traction segment's reach, a velocity region's box) on
+// grid g, with the ids one process gives them from first_id, in id order: a distributed rank
+// (or a nested level) finds the loads' particles among them as one process finds them among
+// all. With `keep` (a nested level, solver/nested_state.hpp), the points of g's lattice seeded
+// through every body's region that `keep` accepts, as make_level_state makes them.
+Particles particles_near_loads(const Case& c, const Grid& g, const PointFilter* keep, std::uint32_t first_id);
+
 // What the points add up to: particles per cell of g (cell (c, r) at c + r cols; a centre on
 // the lattice's edge counts in the edge cell), how many, and the lightest particle's mass.
 struct CaseTally {

@@ -33,6 +33,10 @@ struct Levels {
 
 // The transitions over the levels' arrays (every field); no-ops when L.nested is null.
 void condense_to_dofs(const Levels& L, std::initializer_list<NodalArray> arrays);
+// The loads' nodal forces (LoadState::ext_fx, ext_fy: laid out as the fields), condensed as
+// the force is, so their work (E14) is counted at the DOFs the force acts on.
+using LoadArray = std::vector<double> LoadState::*;
+void condense_to_dofs(const Levels& L, std::initializer_list<LoadArray> arrays);
 void spread_to_slaves(const Levels& L, std::initializer_list<NodalArray> arrays);
 
 }  // namespace rupture

@@ -16,6 +16,7 @@ using rupture::NodalArray;
 
 // solver/levels.hpp's transitions over every level of n.
 void condense_to_dofs(NestedState& n, std::initializer_list<NodalArray> arrays);
+void condense_to_dofs(NestedState& n, std::initializer_list<LoadArray> arrays);
 void spread_to_slaves(NestedState& n, std::initializer_list<NodalArray> arrays);
 
 // The view over every level of n (levels_of keeps its pointers until n's levels change).

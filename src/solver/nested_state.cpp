@@ -12,9 +12,11 @@
 #include "parallel/halo.hpp"
 #include "parallel/halo_nested.hpp"
 #include "particles/seed.hpp"
+#include "solver/case_seeding.hpp"
 #include "solver/cohesive_step.hpp"
 #include "solver/field_windows.hpp"
 #include "solver/grid_update.hpp"
+#include "solver/load_step.hpp"
 #include "solver/time_step.hpp"
 #include "solver/nested_phases.hpp"
 #include "solver/transfer.hpp"
@@ -311,6 +313,30 @@ void for_each_level_point(const Case& c, const NestedState& n, int l,
   }
 }
 
+namespace {
+
+// [loads] on the levels (solver/load_step.hpp): every level lists each load's particles by the
+// run's ids, found among every level's particles near the loads at t = 0 (as one process makes
+// them, whatever share of them this process holds), so a level acts on the loaded particles it
+// holds (LoadState::kAbsent for the others, as for another rank's) and a particle changing
+// level keeps its load. A traction patch is found among particles of every size, each with its
+// own extent along the segment.
+void set_up_level_loads(const Case& c, NestedState& n, const std::vector<std::uint32_t>& first_ids) {
+  if (c.loads.empty()) return;
+  Particles near;
+  for (std::size_t l = 0; l < n.levels.size(); ++l) {
+    const NestedGrid& g = n.grid;
+    const PointFilter keep = [&g, l](double x, double y) { return g.level_of(x, y) == int(l); };
+    near.append_copy(particles_near_loads(c, n.levels[l].grid, &keep, first_ids[l]));
+  }
+  for (State& s : n.levels) {
+    s.loads = LoadState{};
+    set_up_loads(s, c.loads, c.grid.cell_size, &near);
+  }
+}
+
+}  // namespace
+
 void check_nested_support(const Case& c) {
   const auto unsupported = [](const char* what) {
     return InputError(fmt::format("input key 'grid.refinement' = \"nested\": {} is not yet supported on "
@@ -324,7 +350,10 @@ void check_nested_support(const Case& c) {
   if (c.time.subcycling == Subcycling::levels && c.solver.scheme != Scheme::MUSL)
     throw unsupported("time.subcycling = \"levels\" with solver.scheme other than \"MUSL\"");
   if (!c.absorbing_edges.empty()) throw unsupported("[absorbing]");
-  if (!c.loads.empty()) throw unsupported("[loads]");
+  // Loads are applied at every level's step; a level's step spanning several finest steps
+  // would need their impulse held over its span (not written).
+  if (!c.loads.empty() && c.time.subcycling == Subcycling::levels)
+    throw unsupported("time.subcycling = \"levels\" with [loads]");
   if (!c.grid.refined()) throw unsupported("a grid without [grid.refine] boxes");
   if (c.boundary.empty() && c.interfaces.empty()) return;
   // What the levels' set-up checks, on the levels' lattices alone (no particle, no field).
@@ -352,6 +381,7 @@ NestedState make_nested_state(const Case& c, const LevelShare* share) {
                             refine_boxes(c.grid), std::max(0.0, c.grid.margin));
   const int levels = int(n.grid.levels.size());
   std::uint32_t next_id = 0;
+  std::vector<std::uint32_t> first_ids;  // per level: its first particle's id (as one process)
   double min_mass = INFINITY;
   n.base_lines.resize(std::size_t(levels));
   for (int l = 0; l < levels; ++l) {
@@ -377,6 +407,7 @@ NestedState make_nested_state(const Case& c, const LevelShare* share) {
     // Ids unique over the levels: level l's follow level l - 1's (a rank's share: as one
     // process numbers them).
     const std::uint32_t first = share && std::size_t(l) < share->first_id.size() ? share->first_id[std::size_t(l)] : next_id;
+    first_ids.push_back(first);
     for (std::uint32_t& id : s.particles.id) id += first;
     next_id += std::uint32_t(s.particles.size());
     for (double m : s.particles.mass) min_mass = std::min(min_mass, m);
@@ -389,6 +420,7 @@ NestedState make_nested_state(const Case& c, const LevelShare* share) {
     s.limits.cohesive_dt = s.interfaces.empty() ? INFINITY : s.limits.cohesive_dt;
   }
   for (State& s : n.levels) s.mass_floor = 1e-20 * min_mass;  // one floor (solver/setup.cpp)
+  set_up_level_loads(c, n, first_ids);
   const auto locate = [&](std::uint32_t id, std::uint8_t& level, std::uint32_t& node) {
     const auto& st = n.grid.level_start;
     level = std::uint8_t(std::upper_bound(st.begin(), st.end(), std::size_t(id)) - st.begin() - 1);
@@ -522,6 +554,7 @@ void step(NestedState& n) {
       fit_field_windows(s);
     }
     follow_edges(s, n.base_lines[l]);
+    prepare_loads(s);  // loaded particles after a sort, region nodes at t^n
   }
   const NestedDrift before = nested_drift_before(n);
   const Levels all = detail::levels_of(n);

@@ -11,9 +11,11 @@
 // kMigrateDrift), keeping their size (uGIMP); one from two or more levels coarser would break
 // the GIMP contract and stops the run with a diagnosis.
 // Cohesive interfaces lie on one level (the one holding them whole); bonded stretches are
-// tied on every level. Not yet supported here (make_nested_state throws InputError naming
-// them): absorbing edges, [loads], interfaces on two levels, USF with interfaces. The run's
-// State wraps the levels (make_nested_run_state), so the driver and writers run unchanged.
+// tied on every level. [loads] act on every level (each lists the loaded particles by the run's
+// ids; forces added before the transitions condense them). Not yet supported here
+// (make_nested_state throws InputError naming them): absorbing edges, interfaces on two
+// levels, USF with interfaces, per-level steps with [loads]. The run's State wraps the levels
+// (make_nested_run_state), so the driver and writers run unchanged.
 #pragma once
 #include <cmath>
 #include <cstdint>

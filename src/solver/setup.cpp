@@ -45,22 +45,25 @@ SeedProperties seed_properties(const Case& c, const BodySpec& b) {
   return {m.density, std::uint8_t(b.field), std::uint8_t(b.material), {b.velocity[0], b.velocity[1]}};
 }
 
+}  // namespace
+
 // Every particle at t = 0 (ids as one process gives them) whose box may meet a traction load's
 // segment or be among the nearest to its points (bc/loads.hpp: find_traction_patch looks no
 // further than twice a particle's half-diagonal, at most hypot(wx, wy) <= wx + wy for the
 // widest cells), or in a velocity region's box, in id order: find_traction_patch and
 // region_particles on them find what they find on all.
-Particles particles_near_loads(const Case& c, const Grid& g) {
+Particles particles_near_loads(const Case& c, const Grid& g, const PointFilter* keep, std::uint32_t first_id) {
   Particles near;
   if (c.loads.tractions.empty() && c.loads.velocity_regions.empty()) return near;
   double wx = 0.0, wy = 0.0;
   for (int i = 0; i < g.x.cells; ++i) wx = std::max(wx, g.x.width(i));
   for (int j = 0; j < g.y.cells; ++j) wy = std::max(wy, g.y.width(j));
   const double R = wx + wy;
-  std::uint32_t id = 0;
+  std::uint32_t id = first_id;
   for (const BodySpec& b : c.bodies) {
     const SeedProperties props = seed_properties(c, b);
-    for_each_body_point(c, g, b, [&](const SeedPoint& p) {
+    const SeedVisit visit = [&](const SeedPoint& p) {
+      if (keep && !(*keep)(p.x, p.y)) return;  // another level's
       for (const VelocityRegion& r : c.loads.velocity_regions)  // bc/loads.cpp: region_particles
         if (p.x >= r.min[0] && p.x <= r.max[0] && p.y >= r.min[1] && p.y <= r.max[1]) {
           append_seed_point(near, p, props, id++);
@@ -76,10 +79,16 @@ Particles particles_near_loads(const Case& c, const Grid& g) {
         }
       }
       ++id;
-    });
+    };
+    if (keep)  // a nested level's: through the region on its lattice (make_state_on)
+      for_each_seed_point(g, b.region, c.grid.particles_per_cell, visit);
+    else
+      for_each_body_point(c, g, b, visit);
   }
   return near;
 }
+
+namespace {
 
 // make_state on a given grid. With `keep` (a nested level, solver/nested_state.hpp) every body
 // is seeded through its region on this lattice, only the particles `keep` accepts stay, ids
@@ -153,8 +162,9 @@ State make_state_on(const Case& c, Grid grid, const PointFilter* keep, const Poi
   build_scatter_plan(s);
   fit_field_windows(s);
   s.windows_checked_step = -2;  // the first step measures again
+  if (keep) return s;  // a nested level: its loads by the run's ids (make_nested_state)
   if (own) {  // a traction patch: found among every particle near its segment
-    const Particles near = particles_near_loads(c, s.grid);
+    const Particles near = particles_near_loads(c, s.grid, nullptr, 0);
     set_up_loads(s, c.loads, c.grid.cell_size, &near);
   } else {
     set_up_loads(s, c.loads, c.grid.cell_size);

@@ -77,14 +77,17 @@ void common_time_step(const Levels& L) {
 }
 
 // Tractions and body forces ([loads]) after the internal force; distributed: each rank's
-// particles' share, summed over the ranks like the scatter.
+// particles' share, summed over the ranks like the scatter. Added before the transitions
+// condense the force (levels: a slave's share goes to its DOFs with the rest), and the record
+// of them (for their work) condensed alike.
 void external_forces(const Levels& L) {
+  if (!L.first().loads.has_forces()) return;
   each(L, [](State& s) {
-    if (!s.loads.has_forces()) return;
     halo_save(s, kForce);
     add_external_forces(s);
     halo_sum_added(s, kForce);
   });
+  condense_to_dofs(L, {&LoadState::ext_fx, &LoadState::ext_fy});
 }
 
 // E4's momentum update with the boundary conditions, in this order on each level: the

@@ -16,17 +16,23 @@ namespace {
 // term's indices are read once for all of them; more columns (many fields) go in chunks of
 // kMaxColumns, which gives the same sums (every column is independent of the others).
 constexpr std::size_t kMaxColumns = 16;
-std::size_t column_bases(NestedState& n, std::initializer_list<NodalArray> arrays,
-                         std::vector<double*>& base) {
+
+// A level's nodal array: one of its fields' (GridFields) or of its loads' (LoadState: the same
+// layout as the fields).
+std::vector<double>& array_of(State& s, NodalArray a) { return s.fields.*a; }
+std::vector<double>& array_of(State& s, LoadArray a) { return s.loads.*a; }
+
+template <class Array>
+std::size_t column_bases(NestedState& n, std::initializer_list<Array> arrays, std::vector<double*>& base) {
   const std::size_t levels = n.levels.size(), fields = std::size_t(n.levels[0].fields.num_fields);
   const std::size_t columns = fields * arrays.size();
   base.resize(columns * levels);
   std::size_t c = 0;
   for (std::size_t f = 0; f < fields; ++f)
-    for (NodalArray a : arrays) {
+    for (Array a : arrays) {
       for (std::size_t l = 0; l < levels; ++l) {
-        GridFields& G = n.levels[l].fields;
-        base[c * levels + l] = (G.*a).data() + G.start[f];
+        State& s = n.levels[l];
+        base[c * levels + l] = array_of(s, a).data() + s.fields.start[f];
       }
       ++c;
     }
@@ -42,12 +48,16 @@ static void spread_columns(NestedState& n, double* const* base, std::size_t colu
 // the slaves it serves, in slave order (the transposed terms: NestedState::dof_start), so the
 // threads split the DOFs without sharing one and the sums are those of a loop over the
 // slaves; then the slaves are cleared.
-void condense_to_dofs(NestedState& n, std::initializer_list<NodalArray> arrays) {
+template <class Array>
+void condense_arrays(NestedState& n, std::initializer_list<Array> arrays) {
   thread_local std::vector<double*> base_store;
   const std::size_t all = column_bases(n, arrays, base_store), levels = n.levels.size();
   for (std::size_t first = 0; first < all; first += kMaxColumns)
     condense_columns(n, base_store.data() + first * levels, std::min(kMaxColumns, all - first));
 }
+
+void condense_to_dofs(NestedState& n, std::initializer_list<NodalArray> arrays) { condense_arrays(n, arrays); }
+void condense_to_dofs(NestedState& n, std::initializer_list<LoadArray> arrays) { condense_arrays(n, arrays); }
 
 // The same over `columns` (at most kMaxColumns) columns from `base`.
 void condense_columns(NestedState& n, double* const* base, std::size_t columns) {
@@ -108,6 +118,10 @@ void spread_columns(NestedState& n, double* const* base, std::size_t columns) {
 namespace rupture {
 
 void condense_to_dofs(const Levels& L, std::initializer_list<NodalArray> arrays) {
+  if (L.nested) detail::condense_to_dofs(*L.nested, arrays);
+}
+
+void condense_to_dofs(const Levels& L, std::initializer_list<LoadArray> arrays) {
   if (L.nested) detail::condense_to_dofs(*L.nested, arrays);
 }
 
