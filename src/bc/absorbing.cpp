@@ -2,6 +2,7 @@
 #include "bc/absorbing.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "io/case.hpp"
 #include "material/elastic.hpp"
@@ -19,13 +20,25 @@ const char* edge_name(Edge e) {
 }
 
 std::vector<AbsorbingNode> absorbing_nodes(const Case& c, const Grid& grid) {
+  return absorbing_nodes(c, grid, c.absorbing_edges, nullptr);
+}
+
+std::vector<AbsorbingNode> absorbing_nodes(const Case& c, const Grid& grid, const std::vector<Edge>& edges,
+                                           const std::function<bool(double, double)>* owns) {
   std::vector<AbsorbingNode> out;
-  for (const Edge e : c.absorbing_edges) {
+  for (const Edge e : edges) {
     const bool vertical = e == Edge::left || e == Edge::right;
     const Axis& along = vertical ? grid.y : grid.x;
     const Axis& across = vertical ? grid.x : grid.y;
-    const int line = (e == Edge::left || e == Edge::bottom) ? grid.ghost : across.cells - grid.ghost;
-    const double inward = (e == Edge::left || e == Edge::bottom) ? 1.0 : -1.0;
+    // The lattice line on the domain edge (a nested level's lattice may reach past the edge by
+    // the coarsest level's ghost ring, not its own).
+    const int d = vertical ? 0 : 1;
+    const bool low = e == Edge::left || e == Edge::bottom;
+    const double edge = low ? grid.domain_min[d] : grid.domain_max[d];
+    int line = 0;
+    for (int k = 1; k < across.nodes(); ++k)
+      if (std::fabs(across.node(k) - edge) < std::fabs(across.node(line) - edge)) line = k;
+    const double inward = low ? 1.0 : -1.0;
     const double nx = vertical ? -inward : 0.0, ny = vertical ? 0.0 : -inward;
     const double pos = across.node(line);
     // A point a quarter of the adjacent cell inside the domain: which body is there.
@@ -40,9 +53,10 @@ std::vector<AbsorbingNode> absorbing_nodes(const Case& c, const Grid& grid) {
           const int cell = k + side;
           if (cell < 0 || cell >= along.cells) continue;
           const double mid = along.node(cell) + 0.5 * along.width(cell);
+          const double x = vertical ? probe : mid, y = vertical ? mid : probe;
+          if (owns && !(*owns)(x, y)) continue;  // another level's part of the edge
           for (const BodySpec& b : c.bodies) {
             if (std::size_t(b.field) != f) continue;
-            const double x = vertical ? probe : mid, y = vertical ? mid : probe;
             if (!body_contains(b, x, y)) continue;
             area += 0.5 * along.width(cell);
             if (!body) body = &b;

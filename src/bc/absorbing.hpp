@@ -11,6 +11,7 @@
 // thickness (N s/m per metre of thickness).
 #pragma once
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 #include "bc/velocity_bc.hpp"
@@ -30,6 +31,11 @@ struct AbsorbingNode {
 };
 
 std::vector<AbsorbingNode> absorbing_nodes(const Case& c, const Grid& grid);
+// The same for `edges` only; with `owns` (a nested level, solver/nested_state.cpp) a node's
+// share counts only the adjacent cells whose probe point (the cell's middle along the edge, a
+// quarter cell inside) `owns` accepts: the levels' shares then add up to the edge's.
+std::vector<AbsorbingNode> absorbing_nodes(const Case& c, const Grid& grid, const std::vector<Edge>& edges,
+                                           const std::function<bool(double, double)>* owns);
 
 // "left", "right", "bottom", "top".
 const char* edge_name(Edge e);

@@ -137,7 +137,7 @@ std::vector<KeyDoc> build_schema() {
       {"grid.refinement", "string", "", "\"graded\"", "\"graded\" or \"nested\" (needs grid.refine boxes)",
        "how refinement boxes are realized: a graded tensor-product grid (fine rows and columns "
        "across the whole plate), or nested levels with transition nodes, each level over its "
-       "own box only (fewer particles; not yet with [absorbing]; time.subcycling = \"levels\" not with [loads])",
+       "own box only (fewer particles; time.subcycling = \"levels\" not with [loads] or [absorbing])",
        "\"nested\""},
       {"grid.margin", "number", "m",
        "depends: automatic, the largest prescribed or initial displacement of the run",

@@ -162,7 +162,16 @@ void rebalance_if_needed(State& s);
 void check_distributable(const State& s, int ranks);
 
 // Sums the given nodal arrays over the ranks that reach each shared node (collective among
-// neighbours; nothing when s is not distributed).
+// neighbours; nothing when s is not distributed): at every halo node each copy gets the
+// holders' values added in increasing rank order from 0.0 (a rank whose field window does not
+// hold the node adds 0), so every copy holds the same bits; nodes of no other rank's reach are
+// left as they are.
+// Side effect: when the FIRST array is &GridFields::mass (the P2G sum), it also records, per
+// field and halo node, whether this rank is the lowest rank that gave the node a non-zero mass
+// (Halo::counts_here, read by counts_node), from the values before the sum; a node no rank gave
+// mass is counted by none. It resets those counts on every such call, and leaves them alone in
+// a call whose first array is any other (forces, re-mapped momentum): pass the mass first in
+// the scatter's sum, and sum it again before any node-counted sum of a new step.
 void halo_sum(State& s, std::initializer_list<NodalArray> arrays);
 
 // The same for what a phase adds to arrays that were summed already (the owners' cohesive

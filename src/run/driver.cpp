@@ -77,13 +77,17 @@ EnergySample sample(State& s) {
 }
 
 // An explicit scheme that goes unstable grows its energy without bound; twice the energy put
-// in is far outside any discretization error and catches it long before overflow.
-void check_energy(const State& s, const EnergySample& e) {
+// in is far outside any discretization error and catches it long before overflow. The energy
+// put in by the loads is the most their work has been so far (`peak_work`, J/m, updated
+// here): absorbing edges take it out again (negative work), and what is left in the bodies
+// (a reflection's worth) must not read as a blow-up.
+void check_energy(const State& s, const EnergySample& e, double& peak_work) {
   // A prestressed fault (traction-offset form) releases energy into the bulk: its work on the
   // bodies, -work > 0, is supplied too.
   double released = 0.0;
   for (std::size_t k = 0; k < s.interfaces.size(); ++k) released += std::max(0.0, -interface_work(s, k));
-  const double supplied = e.initial + std::fabs(e.external_work) + released;
+  peak_work = std::max(peak_work, std::fabs(e.external_work));
+  const double supplied = e.initial + peak_work + released;
   const double mechanical = e.kinetic + e.strain;
   if (mechanical <= 2.0 * supplied || mechanical <= 0.0) return;
   const Particles& P = s.particles;
@@ -413,6 +417,8 @@ RunResult run_case(const Case& c, const RunOptions& options) {
     for (std::size_t k = 0; k < cracks.size(); ++k) cracks[k].sample(s.interfaces[k], s.time);
   }
 
+  double peak_work = 0.0;  // check_energy: the most the loads' work has been (a resume: so far)
+  for (const EnergySample& e : history.samples) peak_work = std::max(peak_work, std::fabs(e.external_work));
   const double eps = ctx.eps;
   Schedule &hist = ctx.hist, &snap = ctx.snap, &prof = ctx.prof, &crack = ctx.crack;
 
@@ -509,7 +515,7 @@ RunResult run_case(const Case& c, const RunOptions& options) {
           if (cracks[k].samples().back().time < s.time) cracks[k].sample(s.interfaces[k], s.time);
         gather_particles(s);  // nested levels: every level's particles, merged
         history.samples.push_back(sample(s));
-        check_energy(s, history.samples.back());
+        check_energy(s, history.samples.back(), peak_work);
         if (prof.interval > 0) write_interfaces();
         if (snapshots) snapshots->write(s.particles, s.stiffness, s.time, s.step);  // gathered above
         if (ctx.mach_schedule.interval > 0) read_mach_angles();
@@ -524,7 +530,7 @@ RunResult run_case(const Case& c, const RunOptions& options) {
       if (synced && (hist.due(s.time, eps) || last)) {
         gather_particles(s);  // nested levels: every level's particles, merged
         history.samples.push_back(sample(s));
-        check_energy(s, history.samples.back());
+        check_energy(s, history.samples.back(), peak_work);
         hist.advance(s.time, eps);
       }
       if (prof.due(s.time, eps) || (last && prof.interval > 0)) {

@@ -337,6 +337,70 @@ void set_up_level_loads(const Case& c, NestedState& n, const std::vector<std::ui
 
 }  // namespace
 
+namespace {
+
+// The absorbing edges' dashpots on the levels (bc/absorbing.hpp), so that together they damp
+// as one lattice would: each level reaching an absorbing edge gets its lattice nodes there,
+// each with rho c times its share of the edge within the bodies and within the level's own
+// region; then a slave's coefficients go to its DOFs times its terms, as its mass does
+// (condense), so the DOFs' coefficients add up to rho c times the edge's length and each is
+// applied with the condensed mass at its node. A slave on the edge has its DOFs on the edge
+// (a hanging node: the coarse nodes either side along it; a covered node: the finer node at
+// its point).
+void set_level_absorbing(const Case& c, NestedState& n) {
+  if (c.absorbing_edges.empty()) return;
+  const std::size_t levels = n.levels.size();
+  for (std::size_t l = 0; l < levels; ++l) {
+    const Level& L = n.grid.levels[l];
+    std::vector<Edge> reached;
+    for (const Edge e : c.absorbing_edges) {
+      const int d = (e == Edge::left || e == Edge::right) ? 0 : 1;
+      const bool low = e == Edge::left || e == Edge::bottom;
+      if (low ? L.outer_lo[d] : L.outer_hi[d]) reached.push_back(e);
+    }
+    const NestedGrid& g = n.grid;
+    const PointFilter owns = [&g, l](double x, double y) { return g.level_of(x, y) == int(l); };
+    n.levels[l].absorbing = absorbing_nodes(c, n.levels[l].grid, reached, &owns);
+  }
+  std::vector<std::vector<long>> slave_at(levels);
+  for (std::size_t l = 0; l < levels; ++l) slave_at[l].assign(n.grid.levels[l].num_nodes(), -1);
+  for (std::size_t k = 0; k < n.slave_level.size(); ++k) slave_at[n.slave_level[k]][n.slave_node[k]] = long(k);
+  struct Moved {
+    std::size_t level;
+    AbsorbingNode node;
+  };
+  std::vector<Moved> moved;
+  for (std::size_t l = 0; l < levels; ++l) {
+    std::vector<AbsorbingNode> kept;
+    for (const AbsorbingNode& a : n.levels[l].absorbing) {
+      const long k = slave_at[l][a.node];
+      if (k < 0) {
+        kept.push_back(a);
+        continue;
+      }
+      for (std::uint32_t t = n.grid.term_start[std::size_t(k)]; t < n.grid.term_start[std::size_t(k) + 1]; ++t) {
+        const double w = n.grid.terms[t].c;
+        moved.push_back({n.term_level[t], {a.field, n.term_node[t], a.nx, a.ny, w * a.c_normal, w * a.c_tangent}});
+      }
+    }
+    n.levels[l].absorbing = std::move(kept);
+  }
+  for (const Moved& m : moved) {
+    std::vector<AbsorbingNode>& list = n.levels[m.level].absorbing;
+    const auto same = std::find_if(list.begin(), list.end(), [&](const AbsorbingNode& a) {
+      return a.field == m.node.field && a.node == m.node.node && a.nx == m.node.nx && a.ny == m.node.ny;
+    });
+    if (same == list.end()) {
+      list.push_back(m.node);
+    } else {
+      same->c_normal += m.node.c_normal;
+      same->c_tangent += m.node.c_tangent;
+    }
+  }
+}
+
+}  // namespace
+
 void check_nested_support(const Case& c) {
   const auto unsupported = [](const char* what) {
     return InputError(fmt::format("input key 'grid.refinement' = \"nested\": {} is not yet supported on "
@@ -349,7 +413,10 @@ void check_nested_support(const Case& c) {
   // vibration); USL's dissipation would hide the growth that test looks for.
   if (c.time.subcycling == Subcycling::levels && c.solver.scheme != Scheme::MUSL)
     throw unsupported("time.subcycling = \"levels\" with solver.scheme other than \"MUSL\"");
-  if (!c.absorbing_edges.empty()) throw unsupported("[absorbing]");
+  // The dashpots act at every level's step end (remapped_grid_velocity keeps their velocity);
+  // a level's step spanning several finest steps is not written for them.
+  if (!c.absorbing_edges.empty() && c.time.subcycling == Subcycling::levels)
+    throw unsupported("time.subcycling = \"levels\" with [absorbing]");
   // Loads are applied at every level's step; a level's step spanning several finest steps
   // would need their impulse held over its span (not written).
   if (!c.loads.empty() && c.time.subcycling == Subcycling::levels)
@@ -473,6 +540,7 @@ NestedState make_nested_state(const Case& c, const LevelShare* share) {
     n.dof_c[j] = n.grid.terms[t].c;
   }
   n.dof_start.push_back(std::uint32_t(na));
+  set_level_absorbing(c, n);
   // Per-level time steps: level l at its own CFL step, period 2^(K - l) finest steps, K the
   // interface's level (its cohesive bound is recomputed every finest step: it and the finer
   // levels step every h) or, without interfaces, the finest.

@@ -61,7 +61,7 @@ constexpr std::initializer_list<NodalArray> kVelocity = {&GridFields::vel_x, &Gr
                                                          &GridFields::dvel_x, &GridFields::dvel_y};
 
 // Distributed runs: each level's shared nodes summed over the ranks that reach them.
-void sum_over_ranks(const Levels& L, std::initializer_list<NodalArray> arrays) {
+void sum_shared_nodes(const Levels& L, std::initializer_list<NodalArray> arrays) {
   each(L, [&](State& s) { halo_sum(s, arrays); });
 }
 
@@ -126,7 +126,7 @@ void velocity_at_start(const Levels& L) {
 // from the updated particle velocities.
 void step_musl(const Levels& L) {
   particles_to_grid(L.level, L.count, true);  // E4: mass, momentum, internal force per field
-  sum_over_ranks(L, kMassMomentumForce);
+  sum_shared_nodes(L, kMassMomentumForce);
   external_forces(L);                         // E4 tractions, body forces ([loads])
   condense_to_dofs(L, kMassMomentumForce);    // levels: slaves onto their DOFs
   detail::tie_and_face_stencils(L);           // bonded stretch, face stencils
@@ -135,7 +135,7 @@ void step_musl(const Levels& L) {
   update_grid(L);                             // E4 + absorbing edges, E2 velocity BCs, regions
   spread_to_slaves(L, kVelocity);
   update_particle_velocity_and_remap(L.level, L.count);  // FLIP/PIC velocity, re-mapped momentum
-  sum_over_ranks(L, kRemapped);
+  sum_shared_nodes(L, kRemapped);
   condense_to_dofs(L, kRemapped);
   remapped_velocity(L);  // bonded stretch, v = p / m, E2 at t^{n+1}, regions
   spread_to_slaves(L, kRemapped);
@@ -145,7 +145,7 @@ void step_musl(const Levels& L) {
 // USL (update stress last): the stress is updated with the t^{n+1} grid velocity.
 void step_usl(const Levels& L) {
   particles_to_grid(L.level, L.count, true);
-  sum_over_ranks(L, kMassMomentumForce);
+  sum_shared_nodes(L, kMassMomentumForce);
   external_forces(L);
   condense_to_dofs(L, kMassMomentumForce);
   detail::tie_and_face_stencils(L);
@@ -160,7 +160,7 @@ void step_usl(const Levels& L) {
 // internal force is scattered.
 void step_usf(const Levels& L) {
   particles_to_grid(L.level, L.count, false);  // E4: mass, momentum
-  sum_over_ranks(L, kMassMomentum);
+  sum_shared_nodes(L, kMassMomentum);
   condense_to_dofs(L, kMassMomentum);
   detail::tie_and_face_stencils(L);
   common_time_step(L);
@@ -168,7 +168,7 @@ void step_usf(const Levels& L) {
   spread_to_slaves(L, kRemapped);
   detail::gather(L, &GridFields::remap_x, &GridFields::remap_y, G2PMode::stress_only);  // E5
   each(L, [](State& s) { particles_to_grid_force(s); });
-  sum_over_ranks(L, kForce);
+  sum_shared_nodes(L, kForce);
   external_forces(L);
   condense_to_dofs(L, kForce);
   detail::cohesive_forces_and_ties(L);

@@ -13,6 +13,7 @@
 #include "core/errors.hpp"
 #include "io/case_toml.hpp"
 #include "io/checkpoint.hpp"
+#include "material/elastic.hpp"
 #include "solver/energy.hpp"
 #include "solver/nested_state.hpp"
 #include "wave_helpers.hpp"
@@ -304,12 +305,44 @@ TEST(NestedSolver, rejects_what_it_does_not_support_yet) {
   c.grid.coarse_cell_size = 0.5e-3;
   c.grid.refine = {{"fine", {0.02, 0.0}, {0.04, 0.001}, 2}};
   c.absorbing_edges = {Edge::right};
+  EXPECT_NO_THROW(make_nested_state(c)) << "absorbing edges on nested levels";
+  c.time.subcycling = Subcycling::levels;
   try {
     make_nested_state(c);
     FAIL() << "no error";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("[absorbing]"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("with [absorbing]"), std::string::npos) << e.what();
   }
+}
+
+// The absorbing edge's dashpots on nested levels (set_level_absorbing): an edge on three levels
+// with four transitions crossing it. Each dashpot sits on a DOF (a slave's coefficient went to
+// its DOFs), and together they are rho c_P and rho c_S times the edge's length, as on one
+// lattice (bc/absorbing.hpp), so no part of the edge is damped twice or not at all.
+TEST(NestedSolver, absorbing_edge_dashpots_add_up_to_the_edge_over_the_levels) {
+  const Case c = load_case(std::string(RUPTURE_SOURCE_DIR) + "/tests/inputs/absorbing_on_levels.toml");
+  const NestedState n = make_nested_state(c);
+  ASSERT_EQ(n.levels.size(), 3u);
+  std::vector<std::vector<char>> slave(n.levels.size());
+  for (std::size_t l = 0; l < n.levels.size(); ++l) slave[l].assign(n.grid.levels[l].num_nodes(), 0);
+  for (std::size_t k = 0; k < n.slave_level.size(); ++k) slave[n.slave_level[k]][n.slave_node[k]] = 1;
+  double cn = 0.0, ct = 0.0;
+  int on_levels = 0;
+  for (std::size_t l = 0; l < n.levels.size(); ++l) {
+    on_levels += !n.levels[l].absorbing.empty();
+    const Grid& g = n.levels[l].grid;
+    for (const AbsorbingNode& a : n.levels[l].absorbing) {
+      EXPECT_FALSE(slave[l][a.node]) << "level " << l << " node " << a.node << " is a slave";
+      EXPECT_NEAR(g.x.node(int(a.node % std::size_t(g.nodes_x()))), 0.08, 1e-12) << "on the right edge";
+      EXPECT_EQ(a.nx, 1.0);
+      cn += a.c_normal, ct += a.c_tangent;
+    }
+  }
+  EXPECT_EQ(on_levels, 3);
+  const WaveSpeeds w = wave_speeds(c.materials[0], c.plane);
+  const double rho = c.materials[0].density, length = 0.02;
+  EXPECT_NEAR(cn, rho * w.dilatational * length, 1e-12 * rho * w.dilatational * length);
+  EXPECT_NEAR(ct, rho * w.shear * length, 1e-12 * rho * w.shear * length);
 }
 
 // A particle made on level 0 (1 mm cells) that reaches level 2 (0.25 mm) through a band of
