@@ -59,11 +59,19 @@ struct Stencil1D {
 // (its box overlaps at most two cells; the third weight may be zero).
 // The first node of that stencil (the same arithmetic as the transfers' batched stencils,
 // solver/stencil_batch.hpp).
+// On a uniform lattice, from the particle's lattice coordinate xi = (xp - origin) / h: the
+// node below its cell in the cell's lower half, else the cell's own (as a double, so batched
+// loops vectorize). xi > 0 for every particle (the ghost cells keep them inside), so
+// truncation is floor; unlike std::floor it vectorizes without -ffast-math. The one statement
+// of this rule: the transfers (solver/stencil_batch.hpp), the loads and the per-level steps'
+// band (solver/nested_subcycle.cpp) call it.
+inline double uniform_stencil_first(double xi) {
+  const double cell = double(int(xi));
+  return xi - cell < 0.5 ? cell - 1.0 : cell;
+}
 inline int stencil_first(const Axis& a, double xp, double lp) {
   if (a.graded()) return a.cell_of(xp - lp);
-  const double xi = (xp - a.origin) * (1.0 / a.h);
-  const double cell = std::floor(xi);
-  return int(cell) - (xi - cell < 0.5 ? 1 : 0);
+  return int(uniform_stencil_first((xp - a.origin) * (1.0 / a.h)));
 }
 inline void stencil(const Axis& a, double xp, double lp, Stencil1D& st) {
   if (a.graded()) {

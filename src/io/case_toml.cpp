@@ -53,9 +53,9 @@ void parse_time(Section& top, Case& c) {
   Section t = top.table("time", true, allowed_keys("time"));
   c.time.end = t.number("end");
   if (c.time.end <= 0) fail(t.key("end"), c.time.end, "must be > 0 (s)");
-  c.time.cfl = t.number("cfl", 0.4);
+  c.time.cfl = t.number("cfl", TimeSpec{}.cfl);  // the default: io/case.hpp, once
   if (!(c.time.cfl > 0 && c.time.cfl <= 1)) fail(t.key("cfl"), c.time.cfl, "must lie in (0, 1]");
-  c.time.cohesive_safety = t.number("cohesive_safety", 0.9);
+  c.time.cohesive_safety = t.number("cohesive_safety", TimeSpec{}.cohesive_safety);
   if (!(c.time.cohesive_safety > 0 && c.time.cohesive_safety <= 1))
     fail(t.key("cohesive_safety"), c.time.cohesive_safety, "must lie in (0, 1]");
   c.time.stop_at_interface_end = t.boolean("stop_at_interface_end", false);

@@ -5,6 +5,10 @@
 // message for that key (test_input_schema checks a few), so a reader recognises one in the other.
 #include "io/input_schema.hpp"
 
+#include <fmt/format.h>
+
+#include "io/case.hpp"
+
 namespace rupture {
 namespace {
 
@@ -175,9 +179,9 @@ std::vector<KeyDoc> build_schema() {
       {"time", "table", "", "required", "",
        "The run's length and time step (SPEC E6, docs/time_step.md).", ""},
       {"time.end", "number", "s", "required", "> 0", "simulated time to run to", "19.2e-6"},
-      {"time.cfl", "number", "", "0.4", "(0, 1]",
+      {"time.cfl", "number", "", fmt::format("{:g}", TimeSpec{}.cfl), "(0, 1]",
        "Courant number: dt <= cfl h / c_D at the smallest cell", "0.4"},
-      {"time.cohesive_safety", "number", "", "0.9", "(0, 1]",
+      {"time.cohesive_safety", "number", "", fmt::format("{:g}", TimeSpec{}.cohesive_safety), "(0, 1]",
        "fraction of the cohesive interfaces' stability bound that dt may use", "0.9"},
       {"time.stop_at_interface_end", "boolean", "", "false", "true, false",
        "end the run once a crack tip comes within two cells of the end of its cohesive line",

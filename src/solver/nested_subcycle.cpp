@@ -126,17 +126,13 @@ void advance_hold(const GridFields& G, LevelHold& H, bool first, bool goes_on,
 
 // The level's particles whose stencil reaches a node of `mixed` (its step begins: they stay
 // where they are until it ends), in particle order. Only the first node of each stencil is
-// needed (solver/stencil_batch.hpp's rule on a uniform lattice: cell - 1 in the cell's lower
-// half), looked up in NestedState::mixed_reach; the threads take fixed chunks and their lists
+// needed (grid/grid.hpp's uniform_stencil_first), looked up in NestedState::mixed_reach; the threads take fixed chunks and their lists
 // are joined in order.
 void find_band(const State& s, const std::vector<unsigned char>& reach, LevelHold& H) {
   const Particles& P = s.particles;
   const int nx = s.grid.nodes_x();
   const double ox = s.grid.x.origin, oy = s.grid.y.origin, ix = 1.0 / s.grid.x.h, iy = 1.0 / s.grid.y.h;
-  const auto first = [](double xi) {
-    const double cell = double(int(xi));  // xi > 0: truncation is floor
-    return int(xi - cell < 0.5 ? cell - 1.0 : cell);
-  };
+  const auto first = [](double xi) { return int(uniform_stencil_first(xi)); };  // grid/grid.hpp
   std::vector<std::vector<std::uint32_t>> parts;  // shared: one list per thread
   H.band.clear();
 #pragma omp parallel

@@ -137,7 +137,8 @@ struct State {
   double sync_by = INFINITY;    // nested per-level steps: every level ends its step once the time
                                 // reaches this (the driver: its next output), s
   double forced_dt = 0.0;       // > 0: a fixed step that bypasses E6 (tests of instability only), s
-  double cohesive_safety = 0.2; // dt <= safety x the cohesive limit (time.cohesive_safety)
+  double cohesive_safety = TimeSpec{}.cohesive_safety;  // dt <= safety x the cohesive limit
+                                                        // (time.cohesive_safety; make_state sets it)
   double time = 0.0;     // s
   long step = 0;
   double mass_floor = 0.0;  // nodes lighter than this are treated as empty, kg

@@ -111,10 +111,7 @@ inline void axis_stencils(const Axis& ax, const double* __restrict xp, const dou
 #pragma omp simd
   for (int k = 0; k < n; ++k) {
     const double xi = (xp[k] - origin) * inv_h;
-    // xi > 0 for every particle (the grid keeps its ghost cells around them: checked after each
-    // move), so truncation is floor; unlike std::floor it vectorizes without -ffast-math.
-    const double cell = double(int(xi));
-    const double f = (xi - cell < 0.5) ? cell - 1.0 : cell;
+    const double f = uniform_stencil_first(xi);  // grid/grid.hpp (xi > 0: checked after each move)
     fl[k] = f;
     const double u = xi - f, l = lp[k] * inv_h;
     double g0, g1, g2;
