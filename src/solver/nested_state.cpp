@@ -407,8 +407,6 @@ void check_nested_support(const Case& c) {
                                   "nested levels (solver/nested_state.hpp); use grid.refinement = "
                                   "\"graded\"", what));
   };
-  if (!c.interfaces.empty() && c.solver.scheme == Scheme::USF)
-    throw unsupported("solver.scheme = \"USF\" with interfaces");
   // Per-level time steps are verified for MUSL only (docs/performance.md: the long free
   // vibration); USL's dissipation would hide the growth that test looks for.
   if (c.time.subcycling == Subcycling::levels && c.solver.scheme != Scheme::MUSL)

@@ -14,9 +14,8 @@
 // tied on every level. [loads] act on every level (each lists the loaded particles by the run's
 // ids; forces added before the transitions condense them). Absorbing edges damp on every level
 // reaching them, their slaves' dashpots moved to their DOFs (as their mass). Not yet supported
-// here (make_nested_state throws InputError naming them): interfaces on two levels, USF with
-// interfaces, per-level steps with [loads] or [absorbing] or with USL/USF, a grid without
-// boxes. The run's State wraps the levels (make_nested_run_state), so the driver and writers
+// here (make_nested_state throws InputError naming them): interfaces on two levels, per-level
+// steps with [loads] or [absorbing] or with USL/USF, a grid without boxes. The run's State wraps the levels (make_nested_run_state), so the driver and writers
 // run unchanged.
 #pragma once
 #include <cmath>
