@@ -3,8 +3,8 @@
 // the move, in batches of kBatch consecutive particles. Each batch runs as separate short
 // loops: the stencils (SIMD over particles, solver/stencil_batch.hpp), the node gather (one
 // particle at a time: 9 nodes of the strip's tile, solver/strip_tile.hpp, which packs the
-// values the pass reads per node: one vector load per node instead of one per grid array,
-// rupture-bench stress + move 22.4 -> 18.5 ns per particle-update on 1 thread), then the
+// values the pass reads per node: one vector load per node instead of one per grid array;
+// docs/performance.md, "Choices in the code"), then the
 // velocity, stress and move updates SIMD over the
 // batch's particles, which are contiguous in every particle array. Splitting the work this way
 // keeps few array pointers live per loop (one fused per-particle loop spilled them to the
@@ -236,7 +236,7 @@ void move_particles(Particles& P, std::size_t p, int n, const Gathered& g, doubl
     }
   }
   // Non-short-circuit tests and an int or-reduction: with && and a bool || reduction GCC 12
-  // left both loops scalar (rupture-bench stress + move 16.5 -> 15.8 ns per particle-update).
+  // left both loops scalar (docs/performance.md, "Choices in the code").
   int out = 0;
 #pragma omp simd reduction(max : fast) reduction(| : out)
   for (int k = 0; k < n; ++k) {
@@ -264,7 +264,7 @@ std::size_t first_bad(const Particles& P, std::size_t p, int n, const MoveLimits
   const double* __restrict syy = P.syy.data() + p;
   const double* __restrict sxy = P.sxy.data() + p;
   // An int or-reduction with non-short-circuit tests: GCC 12 leaves a bool || reduction
-  // scalar (rupture-bench stress + move 18.2 -> 17.3 ns per particle-update on 1 thread).
+  // scalar (docs/performance.md, "Choices in the code").
   int any = 0;
 #pragma omp simd reduction(| : any)
   for (int k = 0; k < n; ++k) {

@@ -158,8 +158,8 @@ void build_scatter_plan(State& s) {
   // Every sort_interval steps on a graded grid (the re-sort checks the GIMP contract there);
   // on a uniform lattice only once a particle may also have moved half a cell since (the
   // order then still holds the runs of shared stencils and the strip tiles' rows, and a sort
-  // costs about 35 particle-updates' time per particle on 1 thread: rupture-bench 1.1 ns per
-  // particle-update with one every 25 steps). A drift out of the strip's tolerance re-sorts
+  // costs about 35 particle-updates' time per particle: docs/performance.md, "Choices in the
+  // code"). A drift out of the strip's tolerance re-sorts
   // at once (valid false).
   const bool due = s.step - plan.sorted_step >= plan.sort_interval;
   const bool moved = plan.drift >= 0.5 * std::min(s.grid.x.h, s.grid.y.h);  // checkpointed

@@ -34,13 +34,11 @@ struct Halo;         // parallel/halo.hpp
 // cell: build_scatter_plan) or as soon as a particle drifts further (`valid` false). The
 // summation order at every node is fixed by the sort, so results do not depend on the
 // number of threads. 32 columns: each strip's tiles (solver/transfer.cpp) span its columns
-// plus 5, so narrow strips zero, fill and add back up to twice the nodes they need (62.5 um
-// nested example to 3 us, 2 threads: 6.74 s with 5 columns, 6.59 with 8, 6.39 with 12, 6.22
-// with 16, 6.20 with 24), and a strip walks its node rows one row pitch apart, a 4 KiB page
-// per row and grid array for lattices of 512 nodes or more: wider strips touch fewer pages
-// per node (rupture-bench 1 thread 65 -> 61 -> 60 ns per particle-update with 16, 32, 64
-// columns; the whole 62.5 um example 28.7-29.1 -> 28.1 -> 28.1 s). Not wider: a level of a
-// few hundred columns needs several strips per colour to keep the threads busy. The width is
+// plus 5, so narrow strips zero, fill and add back up to twice the nodes they need, and a
+// strip walks its node rows one row pitch apart, a 4 KiB page per row and grid array for
+// lattices of 512 nodes or more: wider strips touch fewer pages per node (the widths
+// measured: docs/performance.md, "Choices in the code"). Not wider: a level of a few hundred
+// columns needs several strips per colour to keep the threads busy. The width is
 // fixed (not chosen from the thread count): it sets the summation order.
 // Every member must also be written in io/checkpoint.cpp, or be listed there as scratch.
 struct ScatterPlan {

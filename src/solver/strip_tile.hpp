@@ -44,8 +44,8 @@ struct TileLayout {
 // The strip's tile. Its node rows per field: those the strip's particles reached at the last
 // sort, widened by their drift since and clipped to the field's window (ScatterPlan::row_lo,
 // row_hi, drift); after a restart, until the next sort, found from the particles
-// [begin, end) themselves (one pass over them: 2.5 ns per particle-update in rupture-bench's
-// scatter, which the sort's bounds save).
+// [begin, end) themselves (one pass over them, which the sort's bounds save: docs/
+// performance.md, "Choices in the code").
 void tile_layout(const State& s, int strip, std::size_t begin, std::size_t end, TileLayout& T);
 
 // Calls visit(tile_index, element, count) for every row of tile nodes that lie inside their
@@ -70,7 +70,7 @@ void for_each_tile_row(const State& s, const TileLayout& T, Visit&& visit) {
 // One tile row and the grid arrays: tile[c] = {in[0][e + c], .., in[kLanes-1][e + c], 0, ..}
 // (pack_tile_row), or out[lane][e + c] += tile[c][lane] (add_tile_row), c < count. The array
 // pointers are copied in first: reached through the GridFields vectors node by node, they
-// were reloaded for every node (rupture-bench P2G 18.8 -> 18.2 ns per particle-update).
+// were reloaded for every node (docs/performance.md, "Choices in the code").
 template <int kLanes, class Lane>
 inline void pack_tile_row(Lane* __restrict tile, int count, const double* const* in, std::size_t e) {
   const double* src[kLanes];

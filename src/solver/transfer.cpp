@@ -43,8 +43,8 @@ inline void batch_force(const Particles& P, const ElasticStiffness* stiffness, b
 
 // Adds particle k's contribution to node (a, b) of its stencil, sy_b col_a [+ dsy_b col_y_a],
 // to acc (scatter_strip): one fused multiply-add per term into the sum (forming the
-// contribution first and adding it took a third more vector operations: rupture-bench P2G
-// 18.0 -> 17.1 ns per particle-update).
+// contribution first and adding it took a third more vector operations; measured in
+// docs/performance.md, "Choices in the code").
 template <bool kWithForce>
 inline void add_node_contribution(Lane8& acc, const StencilBatch& B, int k, int b,
                                   const Lane8& col, const Lane8& col_y) {
