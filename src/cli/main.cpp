@@ -31,6 +31,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "cohesive/law_registry.hpp"
 #include "core/errors.hpp"
 #include "core/fp_mode.hpp"
 #include "io/case_toml.hpp"
@@ -86,32 +87,7 @@ void print_check(const std::string& path, const Case& c) {
     const InterfaceSpec& is = c.interfaces[k];
     const Polyline line = is.geometry();
     const double length = line.length();
-    std::string law_text;
-    if (is.precracked) {
-      law_text = "no cohesion (pre-crack)";
-    } else {
-      law_text = std::visit(
-          [](const auto& law) {
-            return fmt::format("G_Ic = {:.4g} J/m^2, G_IIc = {:.4g} J/m^2",
-                               law.fracture_energy_normal(), law.fracture_energy_tangential());
-          },
-          is.law);
-      if (const auto* f = std::get_if<SlipWeakening>(&is.law)) {
-        // The fault's background: strengths at the initial normal traction and the seismic
-        // ratio S = (tau_s - tau0)/(tau0 - tau_d) (Andrews 1976: supershear possible below ~1.77
-        // in 2D in-plane).
-        const double ts = f->static_strength(), td = f->dynamic_strength(), t0 = std::fabs(f->tt0);
-        law_text = fmt::format(
-            "mu_s = {:g}, mu_d = {:g}, Dc = {:g} m, initial traction [{:g}, {:g}] Pa, strength "
-            "{:.4g} Pa static, {:.4g} Pa dynamic, S = {}, {} stretch(es)",
-            f->static_friction, f->dynamic_friction, f->dc, f->tn0, f->tt0, ts, td,
-            t0 > td ? fmt::format("{:.3g}", (ts - t0) / (t0 - td)) : std::string("inf"),
-            is.stretches.size());
-      }
-      if (const auto* xn = std::get_if<XuNeedleman>(&is.law))
-        law_text = fmt::format("delta_t = {:.4g} um, phi_n = {:.4g} J/m^2, phi_t = {:.4g} J/m^2",
-                               1e6 * xn->delta_t, xn->phi_n(), xn->phi_t());
-    }
+    const std::string law_text = law_entry(is).describe(is);  // cohesive/law_registry.hpp
     const std::string where =
         line.num_vertices() == 2 && line.y[0] == line.y[1]
             ? fmt::format("on y = {:g} m, x in [{:g}, {:g}] m", line.y[0], line.x[0], line.x[1])

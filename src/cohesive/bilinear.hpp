@@ -71,6 +71,17 @@ struct BilinearLaw {
   double crack_threshold(double /*separation_factor*/) const { return 1.0; }
   bool softening(double dn, double dt) const { return effective_opening(dn, dt) >= lambda0; }
   double opening_scale() const { return lambda0 * std::min(delta_nc, delta_tc); }
+  // Its damage separates it (separated()): the interface has no criterion of its own.
+  bool separates_at(double /*dn*/, double /*dt*/, double /*separation_factor*/) const {
+    return false;
+  }
+  // The pristine traction as a fraction of the strengths: max(|Tt| / tau_max, Tn / sigma_max).
+  double load_fraction(double dn, double dt) const {
+    GaussHistory fresh;
+    const LawResponse r = respond(dn, dt, fresh);
+    return std::max(std::fabs(r.tt) / tau_max, r.tn / sigma_max);
+  }
+  static constexpr bool kSlipPathRate = false;  // the slip rate is the jump's
 
   // Traction at (dn, dt) after updating the damage S = max(S, lambda) (irreversible).
   LawResponse respond(double dn, double dt, GaussHistory& h) const {

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <type_traits>
 
 #include "io/atomic_file.hpp"
 
@@ -54,18 +53,6 @@ void CrackTracker::position(double s, double& x, double& y) const {
 
 namespace {
 
-// The traction of an undamaged point at this opening, as a fraction of its strength.
-template <class Law>
-double load_fraction(const Law& law, double dn, double dt) {
-  if constexpr (std::is_same_v<Law, SlipWeakening>) {
-    return 0.0;  // friction: the zone is where the fault slips (softening), nothing ahead of it
-  } else {
-    GaussHistory fresh;
-    const LawResponse r = law.respond(dn, dt, fresh);
-    return std::max(std::fabs(r.tt) / law.tau_max, r.tn / law.sigma_max);
-  }
-}
-
 // Zone lengths ahead of the tip (from node `first`): see CrackTracker::kTractionZoneFraction.
 template <class Law>
 void zone_lengths(const CohesiveInterface& c, const Law& law, std::size_t first, double t,
@@ -86,7 +73,7 @@ void zone_lengths(const CohesiveInterface& c, const Law& law, std::size_t first,
     // Softening nodes belong to the zone whatever their (decaying) traction; ahead of them,
     // the zone goes on while the rising-branch traction stays above the fraction.
     const double dn = c.jump_normal(k), dt = c.jump_tangential(k);
-    if (!law.softening(dn, dt) && load_fraction(law, dn, dt) < CrackTracker::kTractionZoneFraction)
+    if (!law.softening(dn, dt) && law.load_fraction(dn, dt) < CrackTracker::kTractionZoneFraction)
       break;
     loaded_end = c.s0[k];
   }

@@ -23,17 +23,30 @@
 //   double L::initial_stiffness() const;           Pa/m, the undamaged law's elastic stiffness
 //   bool L::separated(const GaussHistory& h) const;
 //       True once the law carries no cohesion (irreversible). XuNeedleman answers false: its
-//       criterion (|Delta| >= 5 delta_t, SPEC §3) is the interface's.
+//       criterion (|Delta| >= 5 delta_t, SPEC §3) is separates_at, which the loop asks first.
 //   double L::crack_measure(double dn, double dt) const;  double L::crack_threshold(double f)
 //   const;
 //       A node has cracked (E10) once crack_measure of its jumps reaches crack_threshold
 //       (f = the interface's separation factor, used by Xu-Needleman only).
 //   bool L::softening(double dn, double dt) const;   past the peak traction (cohesive zone)
 //   double L::opening_scale() const;                 a small opening of the law's own scale, m
+// and the questions the generic code asks instead of testing which law it has:
+//   bool L::separates_at(double dn, double dt, double f) const;
+//       True where the interface separates the point by its jump alone, before the law is
+//       asked (Xu-Needleman: |Delta| >= f delta_t, SPEC §3); false for a law whose own history
+//       says so (separated()).
+//   double L::load_fraction(double dn, double dt) const;
+//       The traction of a pristine point at these jumps as a fraction of its strength (the
+//       crack tracker's traction zone, cohesive/crack_tip.hpp); 0 for a law with no such zone
+//       ahead of its tip (friction: the zone is where the fault slips).
+//   static constexpr bool L::kSlipPathRate;
+//       True where GaussHistory::damage is a slip path (friction): a node's slip rate (rupture
+//       front, peak slip rate) is then the rate of that path, sliding only, not of its jump.
 // No allocation, no virtual call: every member is inline and the structs are plain data.
 //
-// To add a law: one header (+ .cpp for validate()) with a struct keeping the contract, its
-// test file, and one more alternative in CohesiveLaw and law_name (docs/cohesive_laws.md).
+// To add a law: one header (+ .cpp for validate() and its registry entry) with a struct keeping
+// the contract, its test file, one more alternative in CohesiveLaw, and its entry in the
+// table of cohesive/law_registry.hpp (docs/cohesive_laws.md).
 #pragma once
 #include <concepts>
 #include <variant>
@@ -58,6 +71,9 @@ concept TractionLaw = requires(const L& law, double d, GaussHistory& h, const Ga
   { law.crack_threshold(d) } -> std::same_as<double>;
   { law.softening(d, d) } -> std::same_as<bool>;
   { law.opening_scale() } -> std::same_as<double>;
+  { law.separates_at(d, d, d) } -> std::same_as<bool>;
+  { law.load_fraction(d, d) } -> std::same_as<double>;
+  requires std::same_as<decltype(L::kSlipPathRate), const bool>;
 };
 
 using CohesiveLaw = std::variant<XuNeedleman, BilinearLaw, SlipWeakening>;
@@ -66,15 +82,8 @@ static_assert(TractionLaw<XuNeedleman>);
 static_assert(TractionLaw<BilinearLaw>);
 static_assert(TractionLaw<SlipWeakening>);
 
-// The name the input file uses for the law.
-inline const char* law_name(const CohesiveLaw& law) {
-  struct Name {
-    const char* operator()(const XuNeedleman&) const { return "xu_needleman"; }
-    const char* operator()(const BilinearLaw&) const { return "bilinear"; }
-    const char* operator()(const SlipWeakening&) const { return "slip_weakening"; }
-  };
-  return std::visit(Name{}, law);
-}
+// The name the input file uses for the law: its registry entry's (cohesive/law_registry.cpp).
+const char* law_name(const CohesiveLaw& law);
 
 // The stability stiffness of a pristine point at rest (Dn = Dt = 0), Pa/m: what the time-step
 // estimate needs at t = 0 (for XuNeedleman, stability_stiffness(0, 0)).

@@ -65,6 +65,15 @@ struct SlipWeakening {
   // Slipping: the jump has passed a hundredth of Dc (the instability watch's scale too).
   bool softening(double /*dn*/, double dt) const { return std::fabs(dt) >= opening_scale(); }
   double opening_scale() const { return 1e-2 * dc; }
+  // Friction never lets go; its rupture front is the slip of its path D (GaussHistory::damage):
+  // a node's slip rate is that of D, sliding only (the stick spring's elastic jump, which
+  // passing waves load, is no slip). No traction zone ahead of the tip: the zone is where the
+  // fault slips (softening).
+  bool separates_at(double /*dn*/, double /*dt*/, double /*separation_factor*/) const {
+    return false;
+  }
+  double load_fraction(double /*dn*/, double /*dt*/) const { return 0.0; }
+  static constexpr bool kSlipPathRate = true;
 
   // The traction change dT at jumps (dn, dt); h.damage = slip path D, h.slip = the stick
   // spring's rest length, h.jump_t = dt at the previous call (the loop's gp_dt).

@@ -41,6 +41,13 @@ void parse_absorbing(Section& top, Case& c);  // after parse_boundary
 void parse_stations(Section& top, Case& c);   // after parse_interfaces
 // law = "slip_weakening" keys of an [interface] table into is.law, its stretches (io/parse_fault.cpp).
 void parse_fault_law(Section& f, const Case& c, InterfaceSpec& is);
+// The contact of separated points (cohesive/contact.hpp) from the keys contact, friction,
+// contact_stiffness and contact_tangential_stiffness into is.contact and is.contact_law
+// (io/parse_interfaces.cpp), for a law's parser (cohesive/law_registry.hpp). default_stiffness:
+// the law's own penalty, Pa/m, the default contact_stiffness. contact_only: law = "contact", a
+// pre-crack: contact defaults to true and must be, and contact_stiffness is required.
+void parse_separated_contact(Section& f, InterfaceSpec& is, double default_stiffness,
+                             bool contact_only);
 // A law's validate() message "name = value: rule" as the input error of its key (`keys` maps a
 // parameter name to its input key where they differ); nothing if `problem` is empty.
 void fail_on_invalid(Section& f, const std::string& problem,

@@ -129,9 +129,11 @@ void check_boundary(const Checker& ck, const State& s, const std::string& entry)
 }
 
 void check_interfaces(const Checker& ck, const State& s, const std::string& entry) {
-  const Grid& g = s.nested && s.nested->interface_level >= 0 ? s.nested->levels[std::size_t(s.nested->interface_level)].grid : s.grid;
-  const double xlo = g.x.node(0), xhi = g.x.node(g.x.cells), ylo = g.y.node(0), yhi = g.y.node(g.y.cells);
   for (std::size_t i = 0; i < s.interfaces.size(); ++i) {
+    // The lattice of the interface's level (nested: the level holding it), else the grid.
+    const bool on_level = s.nested && i < s.nested->interface_levels.size();
+    const Grid& g = on_level ? s.nested->levels[std::size_t(s.nested->interface_levels[i])].grid : s.grid;
+    const double xlo = g.x.node(0), xhi = g.x.node(g.x.cells), ylo = g.y.node(0), yhi = g.y.node(g.y.cells);
     const CohesiveInterface& c = s.interfaces[i];
     const std::string e = item(entry + ".interfaces", i);
     const std::size_t n = c.y0.size(), segs = c.seg_length.size(), gauss = segs * CohesiveInterface::kGauss;

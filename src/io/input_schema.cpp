@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "cohesive/law_registry.hpp"
 #include "io/case.hpp"
 
 namespace rupture {
@@ -43,6 +44,18 @@ std::vector<KeyDoc> shape_keys(const std::string& prefix, bool cut_out) {
       {p + "angle", "number", "degrees", "0", "finite",
        "rotation of the ellipse's a-axis from +x, counter-clockwise", "30", "shape = ellipse"},
   };
+}
+
+// interface.*.law: the laws of the registry (cohesive/law_registry.hpp) in its order, the first
+// the default, with each law's note.
+KeyDoc law_key() {
+  std::string values, description = "traction-separation law";
+  for (const LawEntry& e : law_registry()) {
+    values += (values.empty() ? "\"" : ", \"") + e.name + "\"";
+    if (!e.schema_note.empty()) description += "; " + e.schema_note;
+  }
+  return {"interface.*.law", "string", "", "\"" + law_registry().front().name + "\"", values,
+          description, "\"bilinear\""};
 }
 
 // `function` and its keys (bc/time_function.hpp, docs/loads.md); `amplitude` is the
@@ -337,11 +350,7 @@ std::vector<KeyDoc> build_schema() {
        "an integer in [1, 1e8]; at least the number of pieces of the line; a circle needs at "
        "least 8",
        "number of cohesive segments along the line (4 Gauss points each)", "12000"},
-      {"interface.*.law", "string", "", "\"xu_needleman\"",
-       "\"xu_needleman\", \"bilinear\", \"contact\", \"slip_weakening\"",
-       "traction-separation law; \"contact\" has no cohesion: a pre-crack whose faces only "
-       "touch; \"slip_weakening\": a prestressed fault with linear slip-weakening friction",
-       "\"bilinear\""},
+      law_key(),
       {"interface.*.sigma_max", "number", "Pa", "required", "> 0", "normal (mode I) strength",
        "24e6", cohesive},
       {"interface.*.tau_max", "number", "Pa", "depends: sigma_max", "> 0",

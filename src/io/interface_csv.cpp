@@ -3,38 +3,13 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
-#include <variant>
-
+#include "cohesive/law_registry.hpp"
 #include "io/atomic_file.hpp"
 
 namespace rupture {
 
 CohesiveTraction node_traction(const CohesiveInterface& c, std::size_t k) {
-  const std::size_t G = std::size_t(CohesiveInterface::kGauss);
-  const CohesiveLaw& law = node_law_variant(c, k);
-  if (const auto* f = std::get_if<SlipWeakening>(&law)) {
-    // Friction is history-dependent: the total traction T0 + dT of the Gauss points next to the
-    // node (the segments' first and last), averaged.
-    double tn = 0.0, tt = 0.0;
-    int count = 0;
-    if (k < c.num_segments()) tn += c.gp_tn[k * G], tt += c.gp_tt[k * G], ++count;
-    if (k > 0 || c.closed) {
-      const std::size_t prev = k > 0 ? k - 1 : c.num_segments() - 1;
-      tn += c.gp_tn[prev * G + G - 1], tt += c.gp_tt[prev * G + G - 1], ++count;
-    }
-    return {f->tn0 + tn / count, f->tt0 + tt / count};
-  }
-  if (c.node_crack_time[k] >= 0.0) return {0.0, 0.0};
-  // The law at the node's jump, with the largest damage of the Gauss points around it.
-  GaussHistory h;
-  for (std::size_t g = 0; g < G; ++g) {
-    if (k < c.num_segments()) h.damage = std::max(h.damage, c.gp_damage[k * G + g]);
-    if (k > 0) h.damage = std::max(h.damage, c.gp_damage[(k - 1) * G + g]);
-  }
-  const double dn = c.jump_normal(k), dt = c.jump_tangential(k);
-  const LawResponse r = std::visit([&](const auto& l) { return l.respond(dn, dt, h); }, law);
-  return {r.tn, r.tt};
+  return law_entry(c.spec).node_traction(c, k);  // the law's (cohesive/law_registry.hpp)
 }
 
 void write_interface_csv(const std::string& path, const CohesiveInterface& c, double time) {

@@ -9,9 +9,9 @@
 #include <map>
 #include <optional>
 #include <utility>
-#include <variant>
 
 #include "cohesive/interface.hpp"
+#include "cohesive/law_registry.hpp"
 #include "cohesive/polyline.hpp"
 #include "material/elastic.hpp"
 #include "io/case_parse.hpp"
@@ -219,122 +219,35 @@ InterfaceLine parse_interface_geometry(Section& f, InterfaceSpec& is, const Case
   return info;
 }
 
-// Keys that belong to one law only: given with another, they are an error (not ignored).
-const std::vector<std::string> kXuNeedlemanKeys = {"delta_n", "delta_t", "q", "r", "separation"};
-const std::vector<std::string> kBilinearKeys = {"delta_nc", "delta_tc", "lambda0"};
-const std::vector<std::string> kCohesiveKeys = {"sigma_max", "tau_max", "penalty"};
-
-void reject_keys(Section& f, const std::vector<std::string>& keys, const std::string& law) {
-  for (const std::string& k : keys)
-    if (f.has(k)) fail(f.key(k), show(*f.node(k)), "not a parameter of law = \"" + law + "\"");
+// The keys of the laws other than `law` are an error, not ignored. Refused in the order the
+// messages have always had, so that an input with several mistakes is told the same first one:
+// `faults` the keys of fault laws (before rupture_slip_rate is read), else those of the
+// cohesive laws: first the keys of one law only, law by law in the table's order, then those
+// several laws share.
+void refuse_keys_of_other_laws(Section& f, const LawEntry& law, bool faults) {
+  auto shared = [](const std::string& k) {
+    int owners = 0;
+    for (const LawEntry& e : law_registry()) owners += e.has_key(k) ? 1 : 0;
+    return owners > 1;
+  };
+  for (const bool of_several : {false, true})
+    for (const LawEntry& other : law_registry())
+      if (other.fault == faults)
+        for (const std::string& k : other.keys)
+          if (!law.has_key(k) && shared(k) == of_several && f.has(k))
+            fail(f.key(k), show(*f.node(k)), "not a parameter of law = \"" + law.name + "\"");
 }
 
-XuNeedleman parse_xu_needleman(Section& f, InterfaceSpec& is) {
-  XuNeedleman law;
-  law.sigma_max = f.number("sigma_max");
-  if (law.sigma_max <= 0) fail(f.key("sigma_max"), law.sigma_max, "must be > 0 (Pa)");
-  law.tau_max = f.number("tau_max", law.sigma_max);
-  if (law.tau_max <= 0) fail(f.key("tau_max"), law.tau_max, "must be > 0 (Pa)");
-  law.delta_n = f.number("delta_n");
-  if (law.delta_n <= 0) fail(f.key("delta_n"), law.delta_n, "must be > 0 (m)");
-  law.q = f.number("q", 1.0);
-  if (law.q <= 0) fail(f.key("q"), law.q, "must be > 0");
-  law.r = f.number("r", 0.0);
-  if (law.r < 0 || std::fabs(law.r - 1.0) < 1e-12)
-    fail(f.key("r"), law.r, "must be >= 0 and differ from 1");
-  if (f.has("delta_t")) {
-    law.delta_t = f.number("delta_t");
-    if (law.delta_t <= 0) fail(f.key("delta_t"), law.delta_t, "must be > 0 (m)");
-  } else {
-    // q = phi_t/phi_n with phi_t = sqrt(e/2) tau_max delta_t, phi_n = e sigma_max delta_n.
-    law.delta_t = law.q * std::exp(1.0) * law.sigma_max * law.delta_n /
-                  (std::sqrt(std::exp(1.0) / 2.0) * law.tau_max);
-  }
-  law.penalty = f.number("penalty", 1.0);
-  if (law.penalty < 0)
-    fail(f.key("penalty"), law.penalty, "must be >= 0 (multiple of phi_n/delta_n^2)");
-  is.separation_factor = f.number("separation", 5.0);
-  if (!(is.separation_factor > 0 && is.separation_factor <= 1000))
-    fail(f.key("separation"), is.separation_factor, "must lie in (0, 1000] (multiples of delta_t)");
-  return law;
-}
-
-BilinearLaw parse_bilinear(Section& f) {
-  BilinearLaw law;
-  law.sigma_max = f.number("sigma_max");
-  law.tau_max = f.number("tau_max", law.sigma_max);
-  law.delta_nc = f.number("delta_nc");
-  law.delta_tc = f.number("delta_tc", law.delta_nc);
-  law.lambda0 = f.number("lambda0", 0.01);
-  law.penalty = f.number("penalty", 1.0);
-  fail_on_invalid(f, law.validate(), {});
-  return law;
-}
-
-const std::vector<std::string> kFrictionKeys = {
-    "static_friction", "dynamic_friction", "dc",          "cohesion",
-    "normal_stiffness", "stick_stiffness",  "initial_traction", "stretches", "overstressed"};
-
-// law = "xu_needleman" (SPEC E7-E8, the default) | "bilinear" | "contact" (no cohesion: a
-// pre-crack whose faces only touch) | "slip_weakening" (a frictional fault), and the contact of
-// separated points.
+// law = one of the registry's names (cohesive/law_registry.hpp; the first is the default); the
+// law's own parser reads its keys.
 void parse_interface_law(Section& f, InterfaceSpec& is, const Case& c) {
-  const std::string law =
-      f.string("law", "xu_needleman", {"xu_needleman", "bilinear", "contact", "slip_weakening"});
-  if (law != "slip_weakening") reject_keys(f, kFrictionKeys, law);
+  const LawEntry& law = *find_law(f.string("law", law_registry().front().name, law_names()));
+  refuse_keys_of_other_laws(f, law, true);
   is.rupture_slip_rate = f.number("rupture_slip_rate", 1e-3);
   if (!(is.rupture_slip_rate > 0))
     fail(f.key("rupture_slip_rate"), is.rupture_slip_rate, "must be > 0 (m/s)");
-  if (law == "slip_weakening") {
-    reject_keys(f, kXuNeedlemanKeys, law);
-    reject_keys(f, kBilinearKeys, law);
-    reject_keys(f, kCohesiveKeys, law);
-    for (const char* k : {"contact", "friction", "contact_stiffness", "contact_tangential_stiffness"})
-      if (f.has(k))
-        fail(f.key(k), show(*f.node(k)),
-             "not with law = \"slip_weakening\": a fault is always in frictional contact (use "
-             "normal_stiffness, stick_stiffness)");
-    parse_fault_law(f, c, is);  // io/parse_fault.cpp
-    return;
-  }
-  double default_contact_stiffness = 0.0;  // the law's own penalty: one stiffness for both
-  if (law == "xu_needleman") {
-    reject_keys(f, kBilinearKeys, law);
-    const XuNeedleman xn = parse_xu_needleman(f, is);
-    default_contact_stiffness = xn.penalty_stiffness();
-    is.law = xn;
-  } else if (law == "bilinear") {
-    reject_keys(f, kXuNeedlemanKeys, law);
-    const BilinearLaw b = parse_bilinear(f);
-    default_contact_stiffness = b.penalty_stiffness();
-    is.law = b;
-  } else {
-    reject_keys(f, kXuNeedlemanKeys, law);
-    reject_keys(f, kBilinearKeys, law);
-    reject_keys(f, kCohesiveKeys, law);
-    is.precracked = true;
-  }
-  is.contact = f.boolean("contact", law == "contact");
-  if (law == "contact" && !is.contact)
-    fail(f.key("contact"), "false", "law = \"contact\" is contact only: it needs contact = true");
-  const bool contact_keys =
-      f.has("friction") || f.has("contact_stiffness") || f.has("contact_tangential_stiffness");
-  if (!is.contact && contact_keys)
-    fail(f.key("contact"), "false", "friction and contact_stiffness need contact = true");
-  if (!is.contact) return;
-  ContactLaw& k = is.contact_law;
-  if (law == "contact" && !f.has("contact_stiffness"))
-    fail(f.key("contact_stiffness"), "(missing)",
-         "required with law = \"contact\": the normal penalty, Pa/m, > 0");
-  k.stiffness = f.number("contact_stiffness", default_contact_stiffness);
-  k.friction = f.number("friction", 0.0);
-  k.tangential_stiffness = f.number("contact_tangential_stiffness", 0.0);
-  fail_on_invalid(f, k.validate(),
-                  {{"stiffness", "contact_stiffness"},
-                   {"tangential_stiffness", "contact_tangential_stiffness"}});
-  if (!(k.stiffness > 0))
-    fail(f.key("contact_stiffness"), k.stiffness,
-         "must be > 0 (Pa/m; the law's penalty is 0 here: give it)");
+  refuse_keys_of_other_laws(f, law, false);
+  law.parse(f, is, c);
 }
 
 // Interfaces may meet at their ends (a kinked crack of two interfaces) but not cross: where two
@@ -378,6 +291,31 @@ void check_no_crossing(Section& f, const InterfaceSpec& is, const Case& c) {
 }
 
 }  // namespace
+
+void parse_separated_contact(Section& f, InterfaceSpec& is, double default_stiffness,
+                             bool contact_only) {
+  is.contact = f.boolean("contact", contact_only);
+  if (contact_only && !is.contact)
+    fail(f.key("contact"), "false", "law = \"contact\" is contact only: it needs contact = true");
+  const bool contact_keys =
+      f.has("friction") || f.has("contact_stiffness") || f.has("contact_tangential_stiffness");
+  if (!is.contact && contact_keys)
+    fail(f.key("contact"), "false", "friction and contact_stiffness need contact = true");
+  if (!is.contact) return;
+  ContactLaw& k = is.contact_law;
+  if (contact_only && !f.has("contact_stiffness"))
+    fail(f.key("contact_stiffness"), "(missing)",
+         "required with law = \"contact\": the normal penalty, Pa/m, > 0");
+  k.stiffness = f.number("contact_stiffness", default_stiffness);
+  k.friction = f.number("friction", 0.0);
+  k.tangential_stiffness = f.number("contact_tangential_stiffness", 0.0);
+  fail_on_invalid(f, k.validate(),
+                  {{"stiffness", "contact_stiffness"},
+                   {"tangential_stiffness", "contact_tangential_stiffness"}});
+  if (!(k.stiffness > 0))
+    fail(f.key("contact_stiffness"), k.stiffness,
+         "must be > 0 (Pa/m; the law's penalty is 0 here: give it)");
+}
 
 // A law's validate() message "name = value: rule" as the input error of its key (`keys` maps a
 // parameter name to its input key where they differ).

@@ -321,6 +321,12 @@ void window_levels(NestedState& n) {
 
 void distribute_nested(State& s, const Comm& comm, bool fresh, const NestedSplit* given) {
   NestedState& n = *s.nested;
+  // The split lends one level the interfaces (its face halo, kInterfaceHaloNodes, and their
+  // owners); several levels' would need one each (not written). Every rank refuses the same.
+  if (n.interface_level == NestedState::kSeveralLevels)
+    throw InputError(
+        "[interface]: interfaces on more than one nested level are not yet supported under mpirun "
+        "(parallel/halo_nested.cpp); run on one process, or put one [grid.refine] box around all of them");
   const NestedSplit sp = given ? *given : split_nested(n, comm.size());
   const int il = n.interface_level;
   const double finest = n.levels.back().grid.x.h;

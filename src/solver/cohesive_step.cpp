@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <type_traits>
 #include <variant>
 
 #include "core/errors.hpp"
@@ -76,10 +75,10 @@ inline bool face_inside(const Grid& g, double x, double y) {
 namespace {
 
 // The Gauss-point and node loops of evaluate_interface for one law type (dispatched once per
-// interface: no law test inside the loops).
+// interface: no law test inside the loops; what differs between laws is asked of the law,
+// cohesive/law.hpp).
 template <class Law>
 void evaluate_with(CohesiveInterface& c, const Law& law, double t, double t_before) {
-  constexpr bool kXuNeedleman = std::is_same_v<Law, XuNeedleman>;
   const bool stretches = !c.gp_law.empty();
   const bool contact = c.spec.contact;
   const ContactLaw& contact_law = c.spec.contact_law;
@@ -107,13 +106,9 @@ void evaluate_with(CohesiveInterface& c, const Law& law, double t, double t_befo
       const Law& L = stretches ? law_of(c, law, c.gp_law[i]) : law;  // a stretch's own law
       GaussHistory h{c.gp_damage[i], c.gp_slip[i], c.gp_dt[i]};
       LawResponse r{0.0, 0.0, 0.0};
-      if constexpr (kXuNeedleman) {  // separated at |jump| >= 5 delta_t (SPEC §3)
-        // Squares, not std::hypot (a libm call, ~1 % of a run): the openings are far from
-        // overflow, and the two differ only within an ulp of the threshold.
-        const double threshold = L.crack_threshold(c.spec.separation_factor);
-        if (!c.gp_separated[i] && dn * dn + dt * dt >= threshold * threshold)
-          c.gp_separated[i] = 1, h.slip = dt;
-      }
+      // Xu-Needleman: separated at |jump| >= 5 delta_t (SPEC §3); the other laws never here.
+      if (!c.gp_separated[i] && L.separates_at(dn, dt, c.spec.separation_factor))
+        c.gp_separated[i] = 1, h.slip = dt;
       if (!c.gp_separated[i]) {
         r = L.respond(dn, dt, h);  // E7-E8; stiffness: the E6 bound (solver/time_step.hpp)
         if (L.separated(h)) c.gp_separated[i] = 1, h.slip = dt, r = {0.0, 0.0, 0.0};
@@ -152,11 +147,12 @@ void evaluate_with(CohesiveInterface& c, const Law& law, double t, double t_befo
     if (k <= last_seg) fx += c.seg_fa_x[k], fy += c.seg_fa_y[k], stiff += c.seg_ka[k];
     c.fx_node[k] = fx, c.fy_node[k] = fy, c.stiffness_node[k] = stiff;
     // Rupture front and peak slip rate (SCEC: the first time the slip rate exceeds 1 mm/s).
-    // On a fault the rate that counts is that of the slip path (sliding only): the stick
-    // spring's elastic jump, which passing waves load, is no slip.
+    // Where the law keeps a slip path (a fault: Law::kSlipPathRate) the rate that counts is
+    // that path's (sliding only): the stick spring's elastic jump, which passing waves load, is
+    // no slip.
     const double dt = t - t_before;
     double slip_rate = dt > 0.0 ? std::fabs(c.last_increment_t[k]) / dt : 0.0;
-    if constexpr (std::is_same_v<Law, SlipWeakening>) {
+    if constexpr (Law::kSlipPathRate) {
       const std::size_t G = std::size_t(kG);
       double path = 0.0;
       int count = 0;

@@ -199,19 +199,19 @@ double NestedState::external_work() const {
 State make_nested_run_state(const Case& c, const LevelShare* share) {
   State s;
   auto n = std::make_shared<NestedState>(make_nested_state(c, share));
-  for (std::size_t l = 0; l < n->levels.size(); ++l) {
-    if (n->levels[l].interfaces.empty()) continue;
-    if (n->interface_level >= 0)
-      throw InputError(fmt::format(
-          "[interface]: with grid.refinement = \"nested\" every interface must lie on one level; "
-          "these lie on levels {} and {} (one [grid.refine] box around all of them)",
-          n->interface_level, l));
-    n->interface_level = int(l);
+  // The interfaces in input order (each level kept its own in that order).
+  std::vector<std::size_t> next(n->levels.size(), 0);
+  for (const int l : n->interface_levels) {
+    s.interfaces.push_back(std::move(n->levels[std::size_t(l)].interfaces[next[std::size_t(l)]++]));
+    n->interface_level = n->interface_level == -1 || n->interface_level == l ? l : NestedState::kSeveralLevels;
   }
+  for (State& l : n->levels) l.interfaces.clear();
   const State& first = n->levels[0];
-  const int il = n->interface_level;
-  if (il >= 0) s.interfaces.swap(n->levels[std::size_t(il)].interfaces);
-  s.grid = n->levels[std::size_t(il >= 0 ? il : int(n->levels.size()) - 1)].grid;
+  // The finest level holding an interface (without: the finest), for what reads one grid.
+  int grid_level = int(n->levels.size()) - 1;
+  if (!n->interface_levels.empty())
+    grid_level = *std::max_element(n->interface_levels.begin(), n->interface_levels.end());
+  s.grid = n->levels[std::size_t(grid_level)].grid;
   s.scheme = first.scheme;
   s.flip = first.flip;
   s.stiffness = first.stiffness;  // the gathered particles' derived state (material/elastic.hpp)
@@ -225,27 +225,48 @@ State make_nested_run_state(const Case& c, const LevelShare* share) {
   return s;
 }
 
+namespace {
+
+// The run's interfaces to the levels holding them (for a step), in input order, and back.
+void lend_interfaces(State& s) {
+  NestedState& n = *s.nested;
+  for (std::size_t k = 0; k < s.interfaces.size(); ++k)
+    n.levels[std::size_t(n.interface_levels[k])].interfaces.push_back(std::move(s.interfaces[k]));
+}
+void return_interfaces(State& s) {
+  NestedState& n = *s.nested;
+  std::vector<std::size_t> next(n.levels.size(), 0);
+  for (std::size_t k = 0; k < s.interfaces.size(); ++k) {
+    const std::size_t l = std::size_t(n.interface_levels[k]);
+    s.interfaces[k] = std::move(n.levels[l].interfaces[next[l]++]);
+  }
+  for (State& l : n.levels) l.interfaces.clear();
+}
+
+}  // namespace
+
 void step_nested_run(State& s) {
   NestedState& n = *s.nested;
   for (State& l : n.levels) l.dt_cap = s.dt_cap, l.forced_dt = s.forced_dt;
   n.sync_by = s.sync_by;
-  const int il = n.interface_level;
-  State* owner = il >= 0 ? &n.levels[std::size_t(il)] : nullptr;
-  if (owner) owner->interfaces.swap(s.interfaces);  // lent for the step
+  lend_interfaces(s);  // for the step
   try {
     step(n);
   } catch (...) {
-    if (owner) owner->interfaces.swap(s.interfaces);
+    return_interfaces(s);
     throw;
   }
-  if (owner) owner->interfaces.swap(s.interfaces);
   s.time = n.time, s.step = n.step, s.dt = n.dt;
-  s.external_work = s.strain_work = 0.0;
+  s.external_work = s.strain_work = s.cohesive_seconds = 0.0;
+  double cohesive_dt = INFINITY;
   for (const State& l : n.levels) {
     s.external_work += l.external_work, s.strain_work += l.strain_work;
+    s.cohesive_seconds += l.cohesive_seconds;
     s.limits.min_cohesive_dt = std::min(s.limits.min_cohesive_dt, l.limits.min_cohesive_dt);
+    if (!l.interfaces.empty()) cohesive_dt = std::min(cohesive_dt, l.limits.cohesive_dt);
   }
-  if (owner) s.limits.cohesive_dt = owner->limits.cohesive_dt;
+  if (!s.interfaces.empty()) s.limits.cohesive_dt = cohesive_dt;
+  return_interfaces(s);
 }
 
 void gather_particles(State& s) {
@@ -430,11 +451,14 @@ void check_nested_support(const Case& c) {
   for (std::size_t k = 0; k < c.interfaces.size(); ++k) {
     const LineNodes nodes = discretize(c.interfaces[k].geometry(), c.interfaces[k].segments);
     const int l = owning_level(g, nodes.x, nodes.y, c.interface_names[k]);
-    if (level >= 0 && l != level)
+    // Per-level steps step the interfaces' level and the finer ones every finest step, the
+    // coarser ones at their periods: interfaces on two levels would need a coarser level's
+    // cohesive forces held over its period (not written).
+    if (level >= 0 && l != level && c.time.subcycling == Subcycling::levels)
       throw InputError(fmt::format(
-          "[interface]: with grid.refinement = \"nested\" every interface must lie on one level; "
-          "these lie on levels {} and {} (one [grid.refine] box around all of them)",
-          std::min(level, l), std::max(level, l)));
+          "input key 'time.subcycling' = \"levels\": with interfaces on more than one nested level "
+          "(levels {} and {}) is not yet supported; use time.subcycling = \"none\" or one "
+          "[grid.refine] box around all of them", std::min(level, l), std::max(level, l)));
     level = l;
   }
 }
@@ -479,8 +503,12 @@ NestedState make_nested_state(const Case& c, const LevelShare* share) {
     // Every level ties the bonded stretches on its own lattice (make_state_on); an interface
     // lives on the one level that holds it whole.
     std::vector<CohesiveInterface> kept;
+    n.interface_levels.resize(s.interfaces.size());
     for (std::size_t k = 0; k < s.interfaces.size(); ++k)
-      if (owning_level(n.grid, s.interfaces[k].x0, s.interfaces[k].y0, c.interface_names[k]) == l) kept.push_back(std::move(s.interfaces[k]));
+      if (owning_level(n.grid, s.interfaces[k].x0, s.interfaces[k].y0, c.interface_names[k]) == l) {
+        kept.push_back(std::move(s.interfaces[k]));
+        n.interface_levels[k] = l;
+      }
     s.interfaces = std::move(kept);
     s.limits.cohesive_dt = s.interfaces.empty() ? INFINITY : s.limits.cohesive_dt;
   }

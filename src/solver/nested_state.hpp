@@ -10,12 +10,13 @@
 // centre crosses into another level's region move there at the start of a step (batched:
 // kMigrateDrift), keeping their size (uGIMP); one from two or more levels coarser would break
 // the GIMP contract and stops the run with a diagnosis.
-// Cohesive interfaces lie on one level (the one holding them whole); bonded stretches are
-// tied on every level. [loads] act on every level (each lists the loaded particles by the run's
+// Each cohesive interface lies on one level (the finest holding it whole; different
+// interfaces may lie on different levels); bonded stretches are tied on every level. [loads] act on every level (each lists the loaded particles by the run's
 // ids; forces added before the transitions condense them). Absorbing edges damp on every level
 // reaching them, their slaves' dashpots moved to their DOFs (as their mass). Not yet supported
-// here (make_nested_state throws InputError naming them): interfaces on two levels, per-level
-// steps with [loads] or [absorbing] or with USL/USF, a grid without boxes. The run's State wraps the levels (make_nested_run_state), so the driver and writers
+// here (make_nested_state throws InputError naming them): per-level steps with [loads],
+// [absorbing], USL/USF or interfaces on more than one level, a grid without boxes (and, under
+// mpirun, interfaces on more than one level: parallel/halo_nested.cpp). The run's State wraps the levels (make_nested_run_state), so the driver and writers
 // run unchanged.
 #pragma once
 #include <cmath>
@@ -75,7 +76,13 @@ struct NestedState {
   double dt = 0.0;    // the last step's, s
   long step = 0;
   long migrations = 0;  // particles moved between levels so far
-  int interface_level = -1;  // the level holding every interface (-1: none)
+  // The level holding every interface: -1 none, kSeveralLevels when they lie on more than one
+  // (one process only: parallel/halo_nested.cpp refuses it); interface_levels[k]: the level of
+  // the run's interface k (input order). A level holds its interfaces during a step only
+  // (step_nested_run lends them); between steps they are the run State's.
+  static constexpr int kSeveralLevels = -2;
+  int interface_level = -1;
+  std::vector<int> interface_levels;
   // Per-level time steps (time.subcycling = "levels"): level l takes one step every period[l]
   // finest steps (all 1 without them). substep: finest steps since every level last ended a
   // step together (0: all at one time; checkpoints and outputs only then).
@@ -142,7 +149,7 @@ void for_each_level_point(const Case& c, const NestedState& n, int l,
 void step(NestedState& n);
 
 // The run's State for grid.refinement = "nested" (make_state calls it): levels in s.nested,
-// the interfaces (all on one level, else InputError) in s.interfaces, particles gathered.
+// the interfaces (each on the level that holds it whole) in s.interfaces, particles gathered.
 State make_nested_run_state(const Case& c, const LevelShare* share = nullptr);
 // One step of s.nested (step(State&) calls it), then the clock, energies and limits of s.
 void step_nested_run(State& s);

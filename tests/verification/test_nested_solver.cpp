@@ -315,6 +315,29 @@ TEST(NestedSolver, rejects_what_it_does_not_support_yet) {
   }
 }
 
+// Interfaces on two nested levels (examples/two_planes.toml: the lower plane in a 0.5 mm box,
+// the upper one on the 1 mm level around it): each lies on the level holding it, the run State
+// holds both between steps (in input order, none left on a level), and a step lends each to
+// its level. (Its crack against the uniform grid's: levels_two_planes_match_uniform.)
+TEST(NestedSolver, interfaces_on_two_levels_step_each_on_its_own) {
+  const Case c = load_case(std::string(RUPTURE_SOURCE_DIR) + "/examples/two_planes.toml",
+                           {"grid.coarse_cell_size=2e-3", "grid.refinement=\"nested\"",
+                            "grid.refine.a={min=[0.0,-0.06],max=[0.075,0.04],level=1}",
+                            "grid.refine.b={min=[0.0,-0.06],max=[0.075,0.004],level=2}"});
+  State s = make_state(c);
+  ASSERT_TRUE(s.nested);
+  EXPECT_EQ(s.nested->interface_level, NestedState::kSeveralLevels);
+  EXPECT_EQ(s.nested->interface_levels, (std::vector<int>{2, 1}));
+  ASSERT_EQ(s.interfaces.size(), 2u);
+  const double y_lower = s.interfaces[0].y0[0], y_upper = s.interfaces[1].y0[0];
+  for (int k = 0; k < 20; ++k) step(s);
+  for (const State& l : s.nested->levels) EXPECT_TRUE(l.interfaces.empty());
+  ASSERT_EQ(s.interfaces.size(), 2u);
+  EXPECT_EQ(s.interfaces[0].y0[0], y_lower) << "input order kept";
+  EXPECT_EQ(s.interfaces[1].y0[0], y_upper);
+  EXPECT_TRUE(std::isfinite(s.limits.cohesive_dt) && s.limits.cohesive_dt > 0.0);
+}
+
 // The absorbing edge's dashpots on nested levels (set_level_absorbing): an edge on three levels
 // with four transitions crossing it. Each dashpot sits on a DOF (a slave's coefficient went to
 // its DOFs), and together they are rho c_P and rho c_S times the edge's length, as on one
