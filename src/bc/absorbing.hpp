@@ -4,22 +4,19 @@
 // P or S wave arriving along the normal out of the domain without reflection (the dashpot's
 // impedance equals the medium's). Obliquely incident waves are absorbed in part (docs/faults.md
 // gives the measured reflection at 0, 30 and 60 degrees).
-// absorbing_nodes() lists, once per run, every (field, node) on an absorbing edge that a body
-// of that field reaches, with the dashpot coefficients C = rho c A (A: the node's share of the
-// edge, half the adjacent cells' widths inside the body); the time step applies them implicitly
-// (solver/grid_update.cpp), so no step limit is added. Units: SI; C in kg/(s m) per unit
+// solver/absorbing_setup.hpp lists, once per run, every (field, node) on an absorbing edge that
+// a body of that field reaches, with the dashpot coefficients C = rho c A (A: the node's share
+// of the edge, half the adjacent cells' widths inside the body); the time step applies them in
+// the trapezoidal form (solver/grid_update.cpp), so no step limit is added. Units: SI; C in kg/(s m) per unit
 // thickness (N s/m per metre of thickness).
 #pragma once
 #include <cstddef>
-#include <functional>
 #include <vector>
 
 #include "bc/velocity_bc.hpp"
 #include "grid/grid.hpp"
 
 namespace rupture {
-
-struct Case;
 
 struct AbsorbingNode {
   int field;
@@ -30,12 +27,7 @@ struct AbsorbingNode {
   double vx = 0.0, vy = 0.0;  // this step's damped velocity (scratch), m/s
 };
 
-std::vector<AbsorbingNode> absorbing_nodes(const Case& c, const Grid& grid);
-// The same for `edges` only; with `owns` (a nested level, solver/nested_state.cpp) a node's
-// share counts only the adjacent cells whose probe point (the cell's middle along the edge, a
-// quarter cell inside) `owns` accepts: the levels' shares then add up to the edge's.
-std::vector<AbsorbingNode> absorbing_nodes(const Case& c, const Grid& grid, const std::vector<Edge>& edges,
-                                           const std::function<bool(double, double)>* owns);
+
 
 // "left", "right", "bottom", "top".
 const char* edge_name(Edge e);

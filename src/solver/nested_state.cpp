@@ -12,6 +12,7 @@
 #include "parallel/halo.hpp"
 #include "parallel/halo_nested.hpp"
 #include "particles/seed.hpp"
+#include "solver/absorbing_setup.hpp"
 #include "solver/case_seeding.hpp"
 #include "solver/cohesive_step.hpp"
 #include "solver/field_windows.hpp"

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "particles/seed.hpp"
+#include "solver/absorbing_setup.hpp"
 #include "solver/case_seeding.hpp"
 #include "solver/energy.hpp"
 #include "solver/field_windows.hpp"
