@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "io/atomic_file.hpp"
+#include "core/atomic_file.hpp"
 
 namespace rupture {
 

@@ -8,7 +8,7 @@
 #include <limits>
 #include <vector>
 
-#include "io/atomic_file.hpp"
+#include "core/atomic_file.hpp"
 
 namespace rupture {
 namespace {

@@ -19,7 +19,7 @@
 #include <type_traits>
 
 #include "core/errors.hpp"
-#include "io/atomic_file.hpp"
+#include "core/atomic_file.hpp"
 #include "io/checkpoint_access.hpp"
 #include "io/checkpoint_archive.hpp"
 #include "io/checkpoint_checks.hpp"

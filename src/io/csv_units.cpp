@@ -1,7 +1,7 @@
 // rupture/io/csv_units.cpp
 #include "io/csv_units.hpp"
 
-#include "io/atomic_file.hpp"
+#include "core/atomic_file.hpp"
 
 namespace rupture {
 

@@ -4,7 +4,7 @@
 #include <fmt/format.h>
 
 #include "cohesive/law_registry.hpp"
-#include "io/atomic_file.hpp"
+#include "core/atomic_file.hpp"
 
 namespace rupture {
 

@@ -15,7 +15,7 @@
 #include <stdexcept>
 
 #include "core/errors.hpp"
-#include "io/atomic_file.hpp"
+#include "core/atomic_file.hpp"
 
 namespace rupture {
 namespace {

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <filesystem>
 
-#include "io/atomic_file.hpp"
+#include "core/atomic_file.hpp"
 #include "io/interface_csv.hpp"
 #include "parallel/halo.hpp"
 #include "solver/state.hpp"

@@ -16,7 +16,7 @@
 #include "cohesive/mach_angle.hpp"
 #include "core/errors.hpp"
 #include "core/fault_injection.hpp"
-#include "io/atomic_file.hpp"
+#include "core/atomic_file.hpp"
 #include "io/checkpoint.hpp"
 #include "run/checkpoint_ranks.hpp"
 #include "io/csv_units.hpp"

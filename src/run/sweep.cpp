@@ -18,7 +18,7 @@
 #include <thread>
 
 #include "core/errors.hpp"
-#include "io/atomic_file.hpp"
+#include "core/atomic_file.hpp"
 #include "io/case_toml.hpp"
 
 namespace rupture {

@@ -1,4 +1,4 @@
-// rupture/io/atomic_file.hpp
+// rupture/core/atomic_file.hpp
 // Files appear whole or not at all: content goes to "<path>.tmp", is flushed to the disk
 // (fsync) and then renamed over <path> (rename is atomic on POSIX file systems), and the
 // directory is synced so the rename itself survives a crash. A crash or a full disk leaves the

@@ -1,5 +1,5 @@
-// rupture/io/atomic_file.cpp
-#include "io/atomic_file.hpp"
+// rupture/core/atomic_file.cpp
+#include "core/atomic_file.hpp"
 
 #include <fcntl.h>
 #include <fmt/format.h>
