@@ -11,8 +11,8 @@
 #include "cohesive/mach_angle.hpp"
 #include "core/errors.hpp"
 #include "io/case_toml.hpp"
-#include "io/checkpoint.hpp"
-#include "io/checkpoint_checks.hpp"
+#include "run/checkpoint.hpp"
+#include "run/checkpoint_checks.hpp"
 #include "run/run_context.hpp"
 #include "solver/nested_state.hpp"
 #include "solver/step.hpp"
@@ -97,7 +97,7 @@ const Prepared& prepared() {
 
 void reseal(std::string& bytes) {
   if (bytes.size() < 24) return;  // no body: the reader refuses it before the checksum
-  std::uint64_t h = 1469598103934665603ull;  // FNV-1a, as io/checkpoint_archive.hpp
+  std::uint64_t h = 1469598103934665603ull;  // FNV-1a, as run/checkpoint_archive.hpp
   for (std::size_t k = 0; k + 8 < bytes.size(); ++k) h = (h ^ std::uint8_t(bytes[k])) * 1099511628211ull;
   std::memcpy(bytes.data() + bytes.size() - 8, &h, sizeof h);
 }

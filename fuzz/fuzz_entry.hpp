@@ -29,7 +29,7 @@ void set_up_like_driver(RunContext& r, const Case& c, const std::string& dir);
 // fuzzer's mutations then reach what lies behind the checksum.
 void reseal(std::string& bytes);
 
-// `bytes`, resealed, as a checkpoint.bin of that case: restored (io/checkpoint.hpp:
+// `bytes`, resealed, as a checkpoint.bin of that case: restored (run/checkpoint.hpp:
 // restore_run_checkpoint_bytes) into a context set up as the driver sets one up and, when it
 // restores, stepped twice with the trackers sampled and summarized; also its case source
 // (checkpoint_source_from_bytes) and, as a part file, its particles (read_checkpoint_part_bytes

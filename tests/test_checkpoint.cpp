@@ -1,4 +1,4 @@
-// Checkpoints (io/checkpoint.hpp): a written and re-read RunContext is bitwise the same, the
+// Checkpoints (run/checkpoint.hpp): a written and re-read RunContext is bitwise the same, the
 // run continues bitwise the same from it, and damaged or foreign files are refused clearly.
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 
 #include "core/errors.hpp"
 #include "io/case_toml.hpp"
-#include "io/checkpoint.hpp"
+#include "run/checkpoint.hpp"
 #include "solver/energy.hpp"
 #include "solver/step.hpp"
 #include "support.hpp"

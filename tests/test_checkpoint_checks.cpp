@@ -1,4 +1,4 @@
-// Checkpoints as untrusted input (io/checkpoint_checks.hpp): every invariant a restored run
+// Checkpoints as untrusted input (run/checkpoint_checks.hpp): every invariant a restored run
 // relies on is checked, a violation refused with an InputError naming the entry, the value and
 // what is allowed; damaged files (bytes changed, checksum recomputed) restore cleanly or are
 // refused, never crash; only regular files are read, bounded by their size.
@@ -15,8 +15,8 @@
 #include "core/errors.hpp"
 #include "fuzz_entry.hpp"
 #include "io/case_toml.hpp"
-#include "io/checkpoint.hpp"
-#include "io/checkpoint_checks.hpp"
+#include "run/checkpoint.hpp"
+#include "run/checkpoint_checks.hpp"
 #include "solver/energy.hpp"
 #include "solver/step.hpp"
 
@@ -93,7 +93,7 @@ struct Entry {
   char kind;
   std::size_t count_at, payload_at, payload;  // payload: its bytes (0 for lists and groups)
 };
-// Every entry in order (the format is self-describing: io/checkpoint.cpp).
+// Every entry in order (the format is self-describing: run/checkpoint.cpp).
 std::vector<Entry> entries(const std::string& b) {
   std::vector<Entry> out;
   std::size_t at = 16;

@@ -12,7 +12,7 @@
 
 #include "fuzz_entry.hpp"
 #include "io/case_toml.hpp"
-#include "io/checkpoint.hpp"
+#include "run/checkpoint.hpp"
 #include "solver/energy.hpp"
 #include "solver/step.hpp"
 

@@ -35,7 +35,7 @@
 #include "core/errors.hpp"
 #include "core/fp_mode.hpp"
 #include "io/case_toml.hpp"
-#include "io/checkpoint.hpp"
+#include "run/checkpoint.hpp"
 #include "core/fault_injection.hpp"
 #include "parallel/agreement.hpp"
 #include "parallel/comm.hpp"

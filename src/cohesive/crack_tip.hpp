@@ -33,7 +33,7 @@
 
 namespace rupture {
 
-// Every member must also be written in io/checkpoint.cpp (restart is bitwise).
+// Every member must also be written in run/checkpoint.cpp (restart is bitwise).
 struct CrackSample {
   double time = 0.0;
   double tip = 0.0;            // tip position s (0, the line's start, if not initiated), m
@@ -139,7 +139,7 @@ class CrackTracker {
   void position(double s, double& x, double& y) const;
 
  private:
-  friend struct CheckpointAccess;  // every member below must also be written in io/checkpoint.cpp
+  friend struct CheckpointAccess;  // every member below must also be written in run/checkpoint.cpp
   std::vector<CrackSample> samples_;
   std::vector<double> x0_, y0_, s0_;  // the interface's nodes (from the case, not stored)
   double daughter_ligament_ = 0.0;    // m (from the case, not stored)

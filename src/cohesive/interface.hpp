@@ -78,7 +78,7 @@ struct FaceStencil {
   double c[4];
 };
 
-// Every member must also be written in io/checkpoint.cpp (restart is bitwise), except `spec`,
+// Every member must also be written in run/checkpoint.cpp (restart is bitwise), except `spec`,
 // which is rebuilt from the case, and the derived scratch arrays marked so.
 struct CohesiveInterface {
   static constexpr int kGauss = 4;  // Gauss points per segment (E9)

@@ -70,7 +70,7 @@ MachLine find_mach_line(const double* x, const double* y, const double* tau_max,
                         const std::uint8_t* material, std::size_t n, const MachSearch& where,
                         int side, const SumOverRanks* sum = nullptr);
 
-// One measurement at an output time (every member is written in io/checkpoint.cpp).
+// One measurement at an output time (every member is written in run/checkpoint.cpp).
 struct MachReading {
   int interface = 0;                // which interface's crack (input order)
   double time = 0.0;                // s

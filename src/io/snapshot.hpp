@@ -58,7 +58,7 @@ class SnapshotWriter {
   std::vector<std::string> drop_missing_files();
 
  private:
-  friend struct CheckpointAccess;  // every member below must also be written in io/checkpoint.cpp
+  friend struct CheckpointAccess;  // every member below must also be written in run/checkpoint.cpp
   void write_xdmf() const;
   void write_collective(const Particles& p, const std::vector<ElasticStiffness>& stiffness,
                         double time, long step, const std::string& tmp);

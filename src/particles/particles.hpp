@@ -13,7 +13,7 @@
 
 namespace rupture {
 
-// Every array must also be written in io/checkpoint.cpp (restart is bitwise).
+// Every array must also be written in run/checkpoint.cpp (restart is bitwise).
 struct Particles {
   std::vector<double> x, y;            // position, m
   std::vector<double> vx, vy;          // velocity, m/s

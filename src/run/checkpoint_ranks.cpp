@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "core/errors.hpp"
-#include "io/checkpoint.hpp"
-#include "io/checkpoint_checks.hpp"
+#include "run/checkpoint.hpp"
+#include "run/checkpoint_checks.hpp"
 #include "parallel/halo.hpp"
 #include "solver/nested_state.hpp"
 

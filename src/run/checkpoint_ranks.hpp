@@ -1,7 +1,7 @@
 // rupture/run/checkpoint_ranks.hpp
 // Checkpoints of a distributed run (parallel/halo.hpp), read back by any number of processes
 // (1 included). Writing (collective): every rank writes its particles into a part file named
-// by the step (io/checkpoint.hpp), then rank 0 writes checkpoint.bin with the run's sums
+// by the step (run/checkpoint.hpp), then rank 0 writes checkpoint.bin with the run's sums
 // (strain and external work, interface work: the ranks' parts added), every interface node
 // from its owner and State::particle_parts = N; older parts are removed once it is in place.
 // A write that fails on any rank fails on all (IoError naming the file). Reading: after

@@ -17,7 +17,7 @@
 #include "core/errors.hpp"
 #include "core/fault_injection.hpp"
 #include "core/atomic_file.hpp"
-#include "io/checkpoint.hpp"
+#include "run/checkpoint.hpp"
 #include "run/checkpoint_ranks.hpp"
 #include "io/csv_units.hpp"
 #include "io/history.hpp"

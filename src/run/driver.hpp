@@ -5,7 +5,7 @@
 //   DIR/particles.xdmf + DIR/snapshots/*.h5   particle snapshots (io/snapshot.hpp)
 //   DIR/crack_tip.csv, DIR/crack_stretches.csv crack tip and separated stretches (E10, E11)
 //   DIR/interface/*.csv                       interface profiles (io/interface_csv.hpp)
-//   DIR/checkpoint/checkpoint.bin              last checkpoint (io/checkpoint.hpp)
+//   DIR/checkpoint/checkpoint.bin              last checkpoint (run/checkpoint.hpp)
 // An unstable run stops with status "failed" and a diagnosis; what was written stays valid.
 // While running, history.csv, the crack files and run.json (status "running", heartbeat) are
 // brought up to date every kFlushSeconds of wall time, so a killed run keeps its record up to

@@ -1,7 +1,7 @@
 // rupture/run/run_context.hpp
 // Everything a run carries from one time step to the next besides the Case: the solver state,
 // the crack trackers, the energy history, the output schedules and the snapshot writer. The
-// driver (run/driver.cpp) starts it fresh or from a checkpoint (io/checkpoint.hpp), which holds
+// driver (run/driver.cpp) starts it fresh or from a checkpoint (run/checkpoint.hpp), which holds
 // all of it, so a resumed run continues bit for bit.
 #pragma once
 #include <memory>
@@ -38,7 +38,7 @@ struct CaseSource {
   std::vector<std::string> overrides;  // --set key=value, in order
 };
 
-// Every member must also be written in io/checkpoint.cpp (restart is bitwise).
+// Every member must also be written in run/checkpoint.cpp (restart is bitwise).
 struct RunContext {
   State s;
   History history;

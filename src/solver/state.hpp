@@ -40,7 +40,7 @@ struct Halo;         // parallel/halo.hpp
 // measured: docs/performance.md, "Choices in the code"). Not wider: a level of a few hundred
 // columns needs several strips per colour to keep the threads busy. The width is
 // fixed (not chosen from the thread count): it sets the summation order.
-// Every member must also be written in io/checkpoint.cpp, or be listed there as scratch.
+// Every member must also be written in run/checkpoint.cpp, or be listed there as scratch.
 struct ScatterPlan {
   int strip_cells = 32;
   int sort_interval = 25;
@@ -65,7 +65,7 @@ struct ScatterPlan {
   double row_height = 0.0;
 };
 
-// Every member must also be written in io/checkpoint.cpp.
+// Every member must also be written in run/checkpoint.cpp.
 struct StepLimits {
   double cfl_dt = 0.0;       // cfl * h / max c_D, s (SPEC E6)
   double bulk_eigen_bound = 0.0;  // lambda_bulk of solver/time_step.hpp, 1/s^2
@@ -111,7 +111,7 @@ struct BondedTie {
   bool operator==(const BondedTie&) const = default;
 };
 
-// Every member must also be written in io/checkpoint.cpp (restart is bitwise), or be listed
+// Every member must also be written in run/checkpoint.cpp (restart is bitwise), or be listed
 // there as rebuilt from the case or per-step scratch.
 struct State {
   Grid grid;
@@ -152,7 +152,7 @@ struct State {
   // State keeps the run's clock, energies and step limits, holds the interfaces (lent to their
   // level during a step), `grid` is that level's (the finest without interfaces), and
   // `particles` is every level's particles merged, as of step `particles_step`
-  // (gather_particles). io/checkpoint.cpp stores the levels.
+  // (gather_particles). run/checkpoint.cpp stores the levels.
   std::shared_ptr<NestedState> nested;
   long particles_step = -1;
   bool nested_level = false;  // one level of a nested run (checkpointed as such)
@@ -161,7 +161,7 @@ struct State {
   // exchanges; null on one process. `particles` are then this rank's, and strain_work and
   // external_work this rank's parts of the run's sums.
   std::shared_ptr<Halo> halo;
-  // Checkpoints (io/checkpoint.hpp): 0 when the particles are in the file, N when a
+  // Checkpoints (run/checkpoint.hpp): 0 when the particles are in the file, N when a
   // distributed run wrote them in N part files beside it (run/checkpoint_ranks.hpp).
   int particle_parts = 0;
   // Made without particles for a distributed resume (make_state_without_particles): the

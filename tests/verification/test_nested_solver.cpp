@@ -12,7 +12,7 @@
 
 #include "core/errors.hpp"
 #include "io/case_toml.hpp"
-#include "io/checkpoint.hpp"
+#include "run/checkpoint.hpp"
 #include "material/elastic.hpp"
 #include "solver/energy.hpp"
 #include "solver/nested_state.hpp"
@@ -441,7 +441,7 @@ cell_size = 0.25e-3
   }
 }
 
-// Checkpoints of a nested run (io/checkpoint.cpp): written after particles have moved between
+// Checkpoints of a nested run (run/checkpoint.cpp): written after particles have moved between
 // levels (the block of free_block_translates_rigidly_through_transitions) and re-read into a
 // fresh run, they write the same bytes, and the run continues bitwise as the uninterrupted one.
 // The reference problem's crop (0.5 mm, levels 1-2) checks the same with its interface.

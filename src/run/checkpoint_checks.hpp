@@ -1,6 +1,6 @@
-// rupture/io/checkpoint_checks.hpp
+// rupture/run/checkpoint_checks.hpp
 // A checkpoint is untrusted input (a damaged disk, a foreign or edited file whose checksum was
-// recomputed). io/checkpoint.cpp decodes it checking the encoding (names, types, sizes, counts
+// recomputed). run/checkpoint.cpp decodes it checking the encoding (names, types, sizes, counts
 // the remaining bytes can hold, bools 0 or 1, enums one of their values, numbers finite); these
 // checks then make sure every invariant the solver, trackers and writers rely on holds in what
 // was decoded (array lengths, indices into the case's tables, positions inside the lattice,

@@ -1,8 +1,8 @@
-// rupture/io/checkpoint.cpp
+// rupture/run/checkpoint.cpp
 // One short list per struct (`fields`) says what a checkpoint holds; the same list writes and
 // reads, so the two cannot drift apart. A member added to State, Particles, CohesiveInterface,
 // CrackTracker, SnapshotWriter or RunContext that evolves during a run needs one line here.
-#include "io/checkpoint.hpp"
+#include "run/checkpoint.hpp"
 
 #include <fmt/format.h>
 
@@ -20,9 +20,9 @@
 
 #include "core/errors.hpp"
 #include "core/atomic_file.hpp"
-#include "io/checkpoint_access.hpp"
-#include "io/checkpoint_archive.hpp"
-#include "io/checkpoint_checks.hpp"
+#include "run/checkpoint_access.hpp"
+#include "run/checkpoint_archive.hpp"
+#include "run/checkpoint_checks.hpp"
 #include "solver/nested_state.hpp"
 
 namespace rupture {
@@ -399,7 +399,7 @@ void restore_checkpoint_bytes(const std::string& bytes, const std::string& origi
   r("case", source);
   r("run", ctx);
   if (!r.at_end()) throw InputError(fmt::format("checkpoint '{}' has data past its end", origin));
-  check_restored(ctx, fresh, origin);  // io/checkpoint_checks.hpp
+  check_restored(ctx, fresh, origin);  // run/checkpoint_checks.hpp
 }
 
 void restore_run_checkpoint_bytes(const std::string& bytes, const std::string& origin, RunContext& ctx) {

@@ -1,5 +1,5 @@
-// rupture/io/checkpoint_access.hpp
-// Internal to io/checkpoint*.cpp: the private members of CrackTracker and SnapshotWriter that a
+// rupture/run/checkpoint_access.hpp
+// Internal to run/checkpoint*.cpp: the private members of CrackTracker and SnapshotWriter that a
 // checkpoint stores (both name CheckpointAccess their friend), listed once for writing,
 // reading and checking.
 #pragma once
@@ -26,7 +26,7 @@ struct CheckpointAccess {
     a("times", w.times_);
     a("counts", w.counts_);
   }
-  // What io/checkpoint_checks.cpp reads.
+  // What run/checkpoint_checks.cpp reads.
   static double end_tolerance(const CrackTracker& t) { return t.end_tolerance_; }
   static const SnapshotRows& rows(const SnapshotWriter& w) { return w.rows_; }
   static std::size_t selected(const SnapshotWriter& w) { return w.selected_; }

@@ -1,4 +1,4 @@
-// rupture/io/checkpoint.hpp
+// rupture/run/checkpoint.hpp
 // Checkpoints: DIR/checkpoint/checkpoint.bin holds a whole RunContext (run/run_context.hpp)
 // plus the case source, so `rupture resume DIR` continues a run bit for bit, also after kill -9.
 // Format (native byte order, checked): magic "RUPTCKPT", format version, byte-order mark, then

@@ -1,5 +1,5 @@
-// rupture/io/checkpoint_checks.cpp
-#include "io/checkpoint_checks.hpp"
+// rupture/run/checkpoint_checks.cpp
+#include "run/checkpoint_checks.hpp"
 
 #include <fmt/format.h>
 
@@ -9,7 +9,7 @@
 #include <cmath>
 
 #include "core/errors.hpp"
-#include "io/checkpoint_access.hpp"
+#include "run/checkpoint_access.hpp"
 #include "solver/nested_state.hpp"
 
 namespace rupture {

@@ -1,10 +1,10 @@
-// rupture/io/checkpoint_archive.hpp
-// Internal to io/checkpoint.cpp: the archive a checkpoint is written and read with. Named,
+// rupture/run/checkpoint_archive.hpp
+// Internal to run/checkpoint.cpp: the archive a checkpoint is written and read with. Named,
 // typed entries (name, kind, element type and size, count, bytes) in native byte order after
 // a magic, the format version and a byte-order mark, and an FNV-1a checksum of everything
-// before it. Writer and Reader walk the same `fields` lists (io/checkpoint.cpp: found by
+// before it. Writer and Reader walk the same `fields` lists (run/checkpoint.cpp: found by
 // argument-dependent lookup in this namespace); the Reader checks the encoding of every entry
-// (io/checkpoint_checks.hpp checks what it decodes to).
+// (run/checkpoint_checks.hpp checks what it decodes to).
 #pragma once
 #include <fmt/format.h>
 
@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "core/errors.hpp"
-#include "io/checkpoint.hpp"
+#include "run/checkpoint.hpp"
 
 namespace rupture::checkpoint_detail {
 
