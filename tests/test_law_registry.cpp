@@ -1,4 +1,4 @@
-// Tests of the table of traction laws (cohesive/law_registry.hpp): every law has one entry of
+// Tests of the table of traction laws (io/law_registry.hpp): every law has one entry of
 // its own name, in the order and with the default that the input reference gives law = ...;
 // every alternative of CohesiveLaw has exactly one entry (law_name is its name); each entry's
 // keys are exactly those io/input_schema.cpp documents for that law; its parser accepts a
@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "cohesive/interface.hpp"
-#include "cohesive/law_registry.hpp"
+#include "io/law_registry.hpp"
 #include "core/errors.hpp"
 #include "io/case_toml.hpp"
 #include "io/input_schema.hpp"

@@ -31,7 +31,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "cohesive/law_registry.hpp"
+#include "io/law_registry.hpp"
 #include "core/errors.hpp"
 #include "core/fp_mode.hpp"
 #include "io/case_toml.hpp"
@@ -87,7 +87,7 @@ void print_check(const std::string& path, const Case& c) {
     const InterfaceSpec& is = c.interfaces[k];
     const Polyline line = is.geometry();
     const double length = line.length();
-    const std::string law_text = law_entry(is).describe(is);  // cohesive/law_registry.hpp
+    const std::string law_text = law_entry(is).describe(is);  // io/law_registry.hpp
     const std::string where =
         line.num_vertices() == 2 && line.y[0] == line.y[1]
             ? fmt::format("on y = {:g} m, x in [{:g}, {:g}] m", line.y[0], line.x[0], line.x[1])

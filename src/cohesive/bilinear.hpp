@@ -82,6 +82,7 @@ struct BilinearLaw {
     return std::max(std::fabs(r.tt) / tau_max, r.tn / sigma_max);
   }
   static constexpr bool kSlipPathRate = false;  // the slip rate is the jump's
+  static constexpr const char* kName = "bilinear";
 
   // Traction at (dn, dt) after updating the damage S = max(S, lambda) (irreversible).
   LawResponse respond(double dn, double dt, GaussHistory& h) const {

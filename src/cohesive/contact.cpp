@@ -1,15 +1,9 @@
-// rupture/cohesive/contact.cpp: parameter ranges of the contact law, and the entry of
-// law = "contact" in the law registry (cohesive/law_registry.hpp): a pre-crack, no cohesion,
-// whose faces only touch (the contact law alone on every point). Units: Pa/m.
+// rupture/cohesive/contact.cpp: parameter ranges of the contact law.
 #include "cohesive/contact.hpp"
 
 #include <fmt/format.h>
 
 #include <cmath>
-
-#include "cohesive/interface.hpp"
-#include "cohesive/law_registry.hpp"
-#include "io/case_parse.hpp"
 
 namespace rupture {
 
@@ -22,31 +16,6 @@ std::string ContactLaw::validate() const {
     return fmt::format("tangential_stiffness = {:g}: must be >= 0 and finite (Pa/m; 0 = stiffness)",
                        tangential_stiffness);
   return "";
-}
-
-namespace {
-
-// Every point starts separated; contact is on and its stiffness must be given.
-void parse(Section& f, InterfaceSpec& is, const Case& /*c*/) {
-  is.precracked = true;
-  parse_separated_contact(f, is, 0.0, true);
-}
-
-std::string describe(const InterfaceSpec& /*is*/) { return "no cohesion (pre-crack)"; }
-
-}  // namespace
-
-LawEntry contact_entry() {
-  return {"contact",
-          "no cohesion: a pre-crack whose faces only press and rub on each other (penalty "
-          "contact with Coulomb friction)",
-          "\"contact\" has no cohesion: a pre-crack whose faces only touch",
-          -1,
-          false,
-          {},
-          parse,
-          describe,
-          traction_at_node_jump};
 }
 
 }  // namespace rupture

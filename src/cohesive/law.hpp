@@ -42,11 +42,13 @@
 //   static constexpr bool L::kSlipPathRate;
 //       True where GaussHistory::damage is a slip path (friction): a node's slip rate (rupture
 //       front, peak slip rate) is then the rate of that path, sliding only, not of its jump.
+//   static constexpr const char* L::kName;   the name the input file uses (law = "...")
 // No allocation, no virtual call: every member is inline and the structs are plain data.
 //
-// To add a law: one header (+ .cpp for validate() and its registry entry) with a struct keeping
-// the contract, its test file, one more alternative in CohesiveLaw, and its entry in the
-// table of cohesive/law_registry.hpp (docs/cohesive_laws.md).
+// To add a law: one header (+ .cpp for validate()) with a struct keeping the contract, its
+// test file, one more alternative in CohesiveLaw, and its entry in the table of laws the
+// input may name (io/law_registry.hpp: its keys, parser, words in `rupture check`, node
+// traction; docs/cohesive_laws.md).
 #pragma once
 #include <concepts>
 #include <variant>
@@ -74,6 +76,7 @@ concept TractionLaw = requires(const L& law, double d, GaussHistory& h, const Ga
   { law.separates_at(d, d, d) } -> std::same_as<bool>;
   { law.load_fraction(d, d) } -> std::same_as<double>;
   requires std::same_as<decltype(L::kSlipPathRate), const bool>;
+  { L::kName } -> std::convertible_to<const char*>;
 };
 
 using CohesiveLaw = std::variant<XuNeedleman, BilinearLaw, SlipWeakening>;
@@ -82,8 +85,10 @@ static_assert(TractionLaw<XuNeedleman>);
 static_assert(TractionLaw<BilinearLaw>);
 static_assert(TractionLaw<SlipWeakening>);
 
-// The name the input file uses for the law: its registry entry's (cohesive/law_registry.cpp).
-const char* law_name(const CohesiveLaw& law);
+// The name the input file uses for the law.
+inline const char* law_name(const CohesiveLaw& law) {
+  return std::visit([](const auto& l) -> const char* { return l.kName; }, law);
+}
 
 // The stability stiffness of a pristine point at rest (Dn = Dt = 0), Pa/m: what the time-step
 // estimate needs at t = 0 (for XuNeedleman, stability_stiffness(0, 0)).

@@ -74,6 +74,7 @@ struct SlipWeakening {
   }
   double load_fraction(double /*dn*/, double /*dt*/) const { return 0.0; }
   static constexpr bool kSlipPathRate = true;
+  static constexpr const char* kName = "slip_weakening";
 
   // The traction change dT at jumps (dn, dt); h.damage = slip path D, h.slip = the stick
   // spring's rest length, h.jump_t = dt at the previous call (the loop's gp_dt).

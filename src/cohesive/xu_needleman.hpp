@@ -146,6 +146,7 @@ struct XuNeedleman {
     return std::max(std::fabs(pristine.tt) / tau_max, pristine.tn / sigma_max);
   }
   static constexpr bool kSlipPathRate = false;  // the slip rate is the jump's
+  static constexpr const char* kName = "xu_needleman";
 };
 
 }  // namespace rupture

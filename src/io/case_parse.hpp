@@ -43,7 +43,7 @@ void parse_stations(Section& top, Case& c);   // after parse_interfaces
 void parse_fault_law(Section& f, const Case& c, InterfaceSpec& is);
 // The contact of separated points (cohesive/contact.hpp) from the keys contact, friction,
 // contact_stiffness and contact_tangential_stiffness into is.contact and is.contact_law
-// (io/parse_interfaces.cpp), for a law's parser (cohesive/law_registry.hpp). default_stiffness:
+// (io/parse_interfaces.cpp), for a law's parser (io/law_registry.hpp). default_stiffness:
 // the law's own penalty, Pa/m, the default contact_stiffness. contact_only: law = "contact", a
 // pre-crack: contact defaults to true and must be, and contact_stiffness is required.
 void parse_separated_contact(Section& f, InterfaceSpec& is, double default_stiffness,

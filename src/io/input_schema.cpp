@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "cohesive/law_registry.hpp"
+#include "io/law_registry.hpp"
 #include "io/case.hpp"
 
 namespace rupture {
@@ -46,7 +46,7 @@ std::vector<KeyDoc> shape_keys(const std::string& prefix, bool cut_out) {
   };
 }
 
-// interface.*.law: the laws of the registry (cohesive/law_registry.hpp) in its order, the first
+// interface.*.law: the laws of the registry (io/law_registry.hpp) in its order, the first
 // the default, with each law's note.
 KeyDoc law_key() {
   std::string values, description = "traction-separation law";

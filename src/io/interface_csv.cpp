@@ -3,13 +3,13 @@
 
 #include <fmt/format.h>
 
-#include "cohesive/law_registry.hpp"
+#include "io/law_registry.hpp"
 #include "core/atomic_file.hpp"
 
 namespace rupture {
 
 CohesiveTraction node_traction(const CohesiveInterface& c, std::size_t k) {
-  return law_entry(c.spec).node_traction(c, k);  // the law's (cohesive/law_registry.hpp)
+  return law_entry(c.spec).node_traction(c, k);  // the law's (io/law_registry.hpp)
 }
 
 void write_interface_csv(const std::string& path, const CohesiveInterface& c, double time) {

@@ -12,7 +12,7 @@
 namespace rupture {
 
 // The traction at node k (Pa, normal and tangential in the node's frame), as the interface's
-// law reports it (its LawEntry::node_traction, cohesive/law_registry.hpp): a cohesive law at
+// law reports it (its LawEntry::node_traction, io/law_registry.hpp): a cohesive law at
 // the node's jump (0 once cracked); friction the total traction T0 + dT of the Gauss points
 // around it.
 CohesiveTraction node_traction(const CohesiveInterface& c, std::size_t k);

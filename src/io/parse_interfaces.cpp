@@ -11,7 +11,7 @@
 #include <utility>
 
 #include "cohesive/interface.hpp"
-#include "cohesive/law_registry.hpp"
+#include "io/law_registry.hpp"
 #include "cohesive/polyline.hpp"
 #include "material/elastic.hpp"
 #include "io/case_parse.hpp"
@@ -238,7 +238,7 @@ void refuse_keys_of_other_laws(Section& f, const LawEntry& law, bool faults) {
             fail(f.key(k), show(*f.node(k)), "not a parameter of law = \"" + law.name + "\"");
 }
 
-// law = one of the registry's names (cohesive/law_registry.hpp; the first is the default); the
+// law = one of the registry's names (io/law_registry.hpp; the first is the default); the
 // law's own parser reads its keys.
 void parse_interface_law(Section& f, InterfaceSpec& is, const Case& c) {
   const LawEntry& law = *find_law(f.string("law", law_registry().front().name, law_names()));

@@ -2,7 +2,7 @@
 // Validation helpers shared by the per-table parsers of io/case_toml: a Section is a view of
 // one TOML table that checks types and reports unknown keys (with a did-you-mean hint); fail()
 // raises the InputError every bad value gets, naming the key, the value and what is allowed.
-// Internal to io/ and the laws' parsers (cohesive/law_registry.hpp).
+// Internal to io/.
 #pragma once
 #include <fmt/format.h>
 #include <toml++/toml.h>

@@ -1,15 +1,14 @@
-// rupture/cohesive/xu_needleman.cpp: the Xu-Needleman law's entry in the law registry
-// (cohesive/law_registry.hpp): its input keys, their defaults and ranges (SPEC E7-E8, the
-// separation criterion of SPEC §3), and its words in `rupture check`. Units: Pa, m, J/m^2.
-#include "cohesive/xu_needleman.hpp"
-
+// rupture/io/law_xu_needleman.cpp: the Xu-Needleman law's entry in the table of laws
+// (io/law_registry.hpp): its input keys, their defaults and ranges (SPEC E7-E8, the separation
+// criterion of SPEC §3), and its words in `rupture check`. Units: Pa, m, J/m^2.
 #include <fmt/format.h>
 
 #include <cmath>
+#include <variant>
 
 #include "cohesive/interface.hpp"
-#include "cohesive/law_registry.hpp"
 #include "io/case_parse.hpp"
+#include "io/law_registry.hpp"
 
 namespace rupture {
 
@@ -61,7 +60,7 @@ std::string describe(const InterfaceSpec& is) {
 }  // namespace
 
 LawEntry xu_needleman_entry() {
-  return {"xu_needleman",
+  return {XuNeedleman::kName,
           "the Xu-Needleman exponential traction-separation law with an interpenetration "
           "penalty (SPEC E7-E8), separated at |jump| = separation x delta_t",
           "",

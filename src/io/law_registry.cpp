@@ -1,6 +1,6 @@
-// rupture/cohesive/law_registry.cpp: the table of traction laws (cohesive/law_registry.hpp),
-// its look-ups, and the node traction the cohesive laws share.
-#include "cohesive/law_registry.hpp"
+// rupture/io/law_registry.cpp: the table of traction laws (io/law_registry.hpp), its
+// look-ups, and the node traction the cohesive laws share.
+#include "io/law_registry.hpp"
 
 #include <algorithm>
 
@@ -50,10 +50,6 @@ const LawEntry& law_entry(const CohesiveLaw& law) {
 
 const LawEntry& law_entry(const InterfaceSpec& is) {
   return entry_of_alternative(is.precracked ? -1 : int(is.law.index()));
-}
-
-const char* law_name(const CohesiveLaw& law) {
-  return law_entry(law).name.c_str();
 }
 
 CohesiveTraction traction_at_node_jump(const CohesiveInterface& c, std::size_t k) {

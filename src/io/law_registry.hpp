@@ -1,17 +1,18 @@
-// rupture/cohesive/law_registry.hpp
+// rupture/io/law_registry.hpp
 // The traction laws an [interface] table may name, in one table. Each entry holds the law's
 // input name, a one-line description, its own input keys (those io/input_schema.cpp documents
 // with when = "law = ... <name> ..."), and the hooks the generic code calls instead of asking
 // which law it has: the parser of its keys, its words in `rupture check`, and the traction a
-// node reports (interface profiles, stations). Each law's own file defines its entry
-// (<law>_entry()); the table lists them in the order of the input's `law = ...` values, the
+// node reports (interface profiles, stations). Each law's entry is defined in its own file,
+// io/law_<name>.cpp; the table lists them in the order of the input's `law = ...` values, the
 // first being the default. Nothing here is on the hot path: the interface loop dispatches on
 // CohesiveLaw once per interface (std::visit) and asks the law's own members
-// (cohesive/law.hpp). Units: SI (Pa, m).
+// (cohesive/law.hpp). It lives in io/ because it reads TOML; cohesive/ knows nothing of it.
+// Units: SI (Pa, m).
 //
-// To add a law: its file defines <law>_entry() (declared below), one line in law_registry()
-// (law_registry.cpp), its keys in io/input_schema.cpp, and tests/test_law_registry.cpp checks
-// the entry against the schema and the parser.
+// To add a law: io/law_<name>.cpp defines <name>_entry() (declared below), one line in
+// law_registry() lists it (io/law_registry.cpp), its keys go in io/input_schema.cpp, and
+// tests/test_law_registry.cpp checks the entry against the schema and the parser.
 #pragma once
 #include <cstddef>
 #include <string>
@@ -40,7 +41,7 @@ constexpr int law_alternative() {
 }
 
 struct LawEntry {
-  std::string name;         // law = "<name>" in the input
+  std::string name;         // law = "<name>" in the input (a cohesive law's kName)
   std::string description;  // one line: what the law is
   // Its words in the description of interface.*.law ("" none), each after a "; ".
   std::string schema_note;
@@ -84,10 +85,10 @@ const LawEntry& law_entry(const InterfaceSpec& is);
 // with the largest damage of the Gauss points around it; 0 once the node has cracked.
 CohesiveTraction traction_at_node_jump(const CohesiveInterface& c, std::size_t k);
 
-// Each law's entry, defined in the law's own file.
-LawEntry xu_needleman_entry();    // cohesive/xu_needleman.cpp
-LawEntry bilinear_entry();        // cohesive/bilinear.cpp
-LawEntry contact_entry();         // cohesive/contact.cpp
-LawEntry slip_weakening_entry();  // cohesive/slip_weakening.cpp
+// Each law's entry, defined in its own file.
+LawEntry xu_needleman_entry();    // io/law_xu_needleman.cpp
+LawEntry bilinear_entry();        // io/law_bilinear.cpp
+LawEntry contact_entry();         // io/law_contact.cpp
+LawEntry slip_weakening_entry();  // io/law_slip_weakening.cpp
 
 }  // namespace rupture
