@@ -41,7 +41,9 @@ from = [-0.015, 0.0259807621]
 to = [0.0456217783, 0.0609807621]
 traction = [0.0, 1.0e6]
 )"));
-  out.push_back(parse_case(example("rosakis1999.toml")));
+  // The seeding of one grid: the example's boxes as the graded grid (nested levels seed each
+  // level's region: tests/verification/test_nested_solver.cpp).
+  out.push_back(parse_case(example("rosakis1999.toml"), {"grid.refinement=\"graded\""}));
   out.push_back(parse_case(example("inclusion.toml")));
   out.push_back(parse_case(example("rosakis1999.toml"), {"grid.coarse_cell_size=0", "grid.cell_size=1e-3"}));
   return out;

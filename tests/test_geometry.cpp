@@ -209,7 +209,7 @@ TEST(Geometry, a_rectangle_as_a_polygon_seeds_the_same_particles) {
   const std::string poly =
       "[bodies.strip]\nmaterial = \"homalite\"\nshape = \"polygon\"\n"
       "vertices = [[0.009, 0.0005], [0.009, 0.002], [0.002, 0.002], [0.002, 0.0005]]\n";
-  const std::vector<std::string> graded = {"grid.coarse_cell_size=1e-3", "grid.refine.fine.min=[0.004, 0.0]",
+  const std::vector<std::string> graded = {"grid.coarse_cell_size=1e-3", "grid.refinement=\"graded\"", "grid.refine.fine.min=[0.004, 0.0]",
                                            "grid.refine.fine.max=[0.008, 0.002]", "grid.refine.fine.level=1",
                                            "bodies.strip.min=[0.002, 0.0]"};
   for (const bool refined : {false, true}) {

@@ -37,6 +37,7 @@ min = [0.0, 0.0]
 max = [0.016, 0.004]
 cell_size = 0.25e-3
 coarse_cell_size = 1e-3
+refinement = "graded"      # the graded grid's contract (nested levels re-home particles)
 margin = 0.0
 [grid.refine.fine]
 min = [0.008, 0.0]

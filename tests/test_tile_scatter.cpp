@@ -81,6 +81,7 @@ end = 1e-6
 const std::string kUniform = three_bodies("");
 // Finest 0.5 mm inside the box, 2 mm elsewhere (transitions 2 -> 1 -> 0.5 mm along x and y).
 const std::string kGraded = three_bodies(R"(coarse_cell_size = 2e-3
+refinement = "graded"
 [grid.refine.middle]
 min = [0.024, 0.004]
 max = [0.048, 0.008]

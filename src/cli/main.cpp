@@ -107,6 +107,13 @@ void print_check(const std::string& path, const Case& c) {
     fmt::print("refinement={} ({})\n", c.grid.nested ? "nested" : "graded",
                c.grid.nested ? "nested levels, each over its own boxes, transition nodes"
                              : "graded tensor-product grid, fine rows and columns across the plate");
+    if (c.grid.nested)
+      fmt::print("subcycling={} ({})\n", c.time.subcycling == Subcycling::levels ? "levels" : "none",
+                 c.time.subcycling_given ? "time.subcycling as given"
+                 : c.time.subcycling == Subcycling::levels
+                     ? "the default: per-level time steps, verified for this case"
+                     : "the default here: per-level steps are not verified with [loads], [absorbing], "
+                       "USL/USF or interfaces on two levels");
     for (std::size_t L = 0; L < s.level_sizes.size(); ++L)
       fmt::print("level {} ({:g} m): cells_level_{}={} particles_level_{}={}\n", L, s.level_sizes[L],
                  L, s.cells_per_level[L], L, s.particles_per_level[L]);

@@ -61,8 +61,9 @@ struct GridSpec {
   // by those moves by about as much (the reference problem's crop bottom moved 0.2 mm while
   // its driven edge moved 0.45 mm, more than two 0.125 mm ghost cells hold).
   double margin = 0.0;
-  // How a refined grid is realized (SPEC §5): a graded tensor-product grid (grid/grid.hpp), or
-  // nested levels with transition nodes (grid/nested.hpp, solver/nested_state.hpp).
+  // How a refined grid is realized (SPEC §5): nested levels with transition nodes
+  // (grid/nested.hpp, solver/nested_state.hpp; the default with [grid.refine] boxes), or a
+  // graded tensor-product grid (grid/grid.hpp; grid.refinement = "graded").
   bool nested = false;
 
   bool refined() const { return coarse_cell_size > 0.0; }
@@ -73,7 +74,9 @@ struct GridSpec {
 };
 
 // Per-level time steps on nested levels (solver/nested_subcycle.cpp): none (one dt for every
-// level) or levels (each level at its own CFL step).
+// level) or levels (each level at its own CFL step). Unless time.subcycling is given, levels
+// where it is verified (subcycling_verified_for in io/parse_time.cpp's caller, case_toml.cpp),
+// none elsewhere.
 enum class Subcycling { none, levels };
 
 struct TimeSpec {
@@ -88,6 +91,7 @@ struct TimeSpec {
   // the sustained speed (last 4 us of the run) would then measure the arrest, not the crack.
   bool stop_at_interface_end = false;
   Subcycling subcycling = Subcycling::none;
+  bool subcycling_given = false;  // time.subcycling was in the input (not the default)
 };
 
 struct SolverSpec {

@@ -12,6 +12,8 @@
 #include <sstream>
 
 #include "core/errors.hpp"
+#include "cohesive/polyline.hpp"
+#include "grid/nested.hpp"
 #include "io/case_checks.hpp"
 #include "io/case_parse.hpp"
 #include "io/input_schema.hpp"
@@ -59,6 +61,7 @@ void parse_time(Section& top, Case& c) {
   if (!(c.time.cohesive_safety > 0 && c.time.cohesive_safety <= 1))
     fail(t.key("cohesive_safety"), c.time.cohesive_safety, "must lie in (0, 1]");
   c.time.stop_at_interface_end = t.boolean("stop_at_interface_end", false);
+  c.time.subcycling_given = t.has("subcycling");  // absent: set_default_subcycling decides
   const std::string subcycling = t.string("subcycling", "none", {"none", "levels"});
   c.time.subcycling = subcycling == "levels" ? Subcycling::levels : Subcycling::none;
   if (c.time.subcycling == Subcycling::levels && !c.grid.nested)
@@ -184,6 +187,27 @@ std::string input_echo(const toml::table& root, const ParseContext& ctx) {
   return echo.str();
 }
 
+// time.subcycling's default, once the whole case is known: per-level steps where they are
+// verified (docs/performance.md "Per-level time steps": MUSL, velocity conditions, interfaces
+// on one level), one dt for every level elsewhere. Given explicitly, "levels" keeps its
+// named refusals (solver/nested_state.cpp check_nested_support).
+void set_default_subcycling(Case& c) {
+  if (c.time.subcycling_given || !c.grid.nested) return;
+  bool verified = c.solver.scheme == Scheme::MUSL && c.loads.empty() && c.absorbing_edges.empty();
+  if (verified && c.interfaces.size() > 1) {
+    const NestedGrid g = make_nested_grid(c.grid.min, c.grid.max, c.grid.coarse_cell_size, c.grid.cell_size,
+                                          refine_boxes(c.grid), std::max(0.0, c.grid.margin));
+    int first = -1;
+    for (const InterfaceSpec& spec : c.interfaces) {
+      const LineNodes nodes = discretize(spec.geometry(), spec.segments);
+      const int l = g.level_of(nodes.x[0], nodes.y[0]);  // the level that must hold it whole
+      if (first >= 0 && l != first) verified = false;
+      first = l;
+    }
+  }
+  c.time.subcycling = verified ? Subcycling::levels : Subcycling::none;
+}
+
 Case build_case(const toml::table& root, const std::string& case_dir) {
   Case c;
   Section top(root, "", allowed_keys(""));
@@ -205,6 +229,7 @@ Case build_case(const toml::table& root, const std::string& case_dir) {
   set_automatic_margin(c);
   parse_output(top, c);
   parse_stations(top, c);
+  set_default_subcycling(c);
   check_bodies_on_graded_grid(c);
   check_body_seeding(c);
 

@@ -151,11 +151,12 @@ std::vector<KeyDoc> build_schema() {
        "upper-right corner of the box", "[0.09, 0.04]"},
       {"grid.refine.*.level", "integer", "", "required", "[1, 20]",
        "refinement level L: cells of coarse_cell_size / 2^L (no finer than grid.cell_size)", "1"},
-      {"grid.refinement", "string", "", "\"graded\"", "\"graded\" or \"nested\" (needs grid.refine boxes)",
-       "how refinement boxes are realized: a graded tensor-product grid (fine rows and columns "
-       "across the whole plate), or nested levels with transition nodes, each level over its "
-       "own box only (fewer particles; time.subcycling = \"levels\" not with [loads] or [absorbing])",
-       "\"nested\""},
+      {"grid.refinement", "string", "", "depends: \"nested\" with grid.refine boxes, else \"graded\"",
+       "\"graded\" or \"nested\" (needs grid.refine boxes)",
+       "how refinement boxes are realized: nested levels with transition nodes, each level over "
+       "its own box only (fewer particles, per-level time steps), or a graded tensor-product grid "
+       "(fine rows and columns across the whole plate)",
+       "\"graded\""},
       {"grid.margin", "number", "m",
        "depends: automatic, the largest prescribed or initial displacement of the run",
        "[0, half the larger domain extent]",
@@ -199,9 +200,13 @@ std::vector<KeyDoc> build_schema() {
       {"time.stop_at_interface_end", "boolean", "", "false", "true, false",
        "end the run once a crack tip comes within two cells of the end of its cohesive line",
        "true"},
-      {"time.subcycling", "string", "", "\"none\"", "\"none\" or \"levels\" (needs grid.refinement = \"nested\" and solver.scheme = \"MUSL\")",
+      {"time.subcycling", "string", "",
+       "depends: \"levels\" on nested levels where verified (solver.scheme = \"MUSL\", no [loads], no "
+       "[absorbing], interfaces on one level), else \"none\"",
+       "\"none\" or \"levels\" (needs grid.refinement = \"nested\" and solver.scheme = \"MUSL\"; "
+       "not with [loads], [absorbing] or interfaces on two levels)",
        "per-level time steps: each nested level steps at its own CFL step (2^k finest steps, "
-       "docs/performance.md); the interface's level and finer ones every finest step", "\"levels\""},
+       "docs/performance.md); the interface's level and finer ones every finest step", "\"none\""},
 
       {"solver", "table", "", "optional", "", "The MPM update and threads.", ""},
       {"solver.scheme", "string", "", "\"MUSL\"", "\"MUSL\", \"USL\", \"USF\"",

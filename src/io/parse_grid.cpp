@@ -77,9 +77,12 @@ void parse_grid(Section& top, Case& c) {
                        c.grid.min[0], c.grid.min[1], c.grid.max[0], c.grid.max[1]));
     c.grid.refine.push_back(L);
   }
-  const std::string realization = g.string("refinement", "graded", {"graded", "nested"});
+  // Nested levels by default: the same boxes with a fraction of the particles and per-level
+  // steps (docs/performance.md); a grid without boxes has nothing to nest.
+  const bool boxes = c.grid.refined() && !c.grid.refine.empty();
+  const std::string realization = g.string("refinement", boxes ? "nested" : "graded", {"graded", "nested"});
   c.grid.nested = realization == "nested";
-  if (c.grid.nested && !c.grid.refined())
+  if (c.grid.nested && !boxes)
     fail(g.key("refinement"), "\"nested\"",
          "needs grid.coarse_cell_size and [grid.refine] boxes (nested levels refine boxes)");
   c.grid.margin = g.number("margin", -1.0);  // < 0: automatic, set once the loads are known

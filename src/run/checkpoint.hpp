@@ -16,14 +16,17 @@
 
 namespace rupture {
 
-inline constexpr int kCheckpointVersion = 10;  // 2: State::strain_work; 3: Mach readings;
+inline constexpr int kCheckpointVersion = 11;  // 2: State::strain_work; 3: Mach readings;
                                               // 4: interface rupture times, peak slip rates;
                                               // 5: nested levels; 6: particles store the
                                               // stress only (no strain, szz, volume);
                                               // 7: the scatter plan's drift since its sort;
                                               // 8: particle part files (distributed runs);
                                               // 9: snapshot rows as runs of ids;
-                                              // 10: the run's identity (run_id)
+                                              // 10: the run's identity (run_id);
+                                              // 11: refined grids default to nested levels
+                                              // with per-level steps (a stored case without
+                                              // grid.refinement meant "graded" before)
 
 std::string checkpoint_path(const std::string& dir);  // DIR/checkpoint/checkpoint.bin
 

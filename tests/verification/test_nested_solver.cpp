@@ -383,8 +383,10 @@ TEST(NestedSolver, a_particle_two_levels_too_coarse_stops_the_run_with_a_diagnos
   }
 }
 
-// grid.refinement: "graded" (default) or "nested"; nested needs refinement boxes; a bad value
-// names the key, the value and the choices.
+// grid.refinement: "nested" (the default with boxes) or "graded"; nested needs refinement boxes;
+// a bad value names the key, the value and the choices. time.subcycling defaults to "levels"
+// where per-level steps are verified (MUSL, no [loads], no [absorbing], interfaces on one
+// level) and to "none" elsewhere; given, "levels" keeps its refusals.
 TEST(NestedSolver, input_chooses_the_realization_and_rejects_bad_values) {
   const std::string base = std::string(test::kHomaliteToml) + R"(
 [bodies.block]
@@ -405,9 +407,35 @@ cell_size = 0.25e-3
     return text.insert(text.find(key) + key.size(), line + "\n");
   };
   const std::string boxes = "coarse_cell_size = 1e-3\n[grid.refine.fine]\nmin = [0.008, 0.004]\nmax = [0.012, 0.006]\nlevel = 2\n";
-  EXPECT_FALSE(parse_case(base + boxes).grid.nested);
+  EXPECT_FALSE(parse_case(base).grid.nested);  // no boxes: nothing to nest
+  EXPECT_FALSE(parse_case(base + "refinement = \"graded\"\n" + boxes).grid.nested);
+  EXPECT_EQ(parse_case(base + "refinement = \"graded\"\n" + boxes).time.subcycling, Subcycling::none);
+  const Case by_default = parse_case(base + boxes);
+  EXPECT_TRUE(by_default.grid.nested);
+  EXPECT_EQ(by_default.time.subcycling, Subcycling::levels);
+  EXPECT_FALSE(by_default.time.subcycling_given);
   const Case nested = parse_case(base + "refinement = \"nested\"\n" + boxes);
   EXPECT_TRUE(nested.grid.nested);
+  EXPECT_EQ(nested.time.subcycling, Subcycling::levels);
+  // Where per-level steps are not verified the default is one dt for every level.
+  const std::string usl = "[solver]\nscheme = \"USL\"\n";
+  EXPECT_EQ(parse_case(base + boxes + usl).time.subcycling, Subcycling::none);
+  const std::string load = "[loads.pull]\ntype = \"body_force\"\nacceleration = [0.0, -9.81]\n";
+  EXPECT_EQ(parse_case(base + boxes + load).time.subcycling, Subcycling::none);
+  const std::string edge = "[absorbing]\nedges = [\"right\"]\n";
+  EXPECT_EQ(parse_case(base + boxes + edge).time.subcycling, Subcycling::none);
+  // Asked for explicitly there, it is refused by name.
+  for (const std::string& extra : {usl, load, edge}) {
+    const std::string text = with_time_key("subcycling = \"levels\"") + boxes + extra;
+    try {
+      const Case c = parse_case(text);
+      (void)make_state(c);
+      ADD_FAILURE() << "no error for " << extra;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("time.subcycling"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_EQ(parse_case(with_time_key("subcycling = \"none\"") + boxes).time.subcycling, Subcycling::none);
   for (const Scheme other : {Scheme::USL, Scheme::USF}) {
     Case c = nested;
     c.solver.scheme = other;
@@ -427,7 +455,7 @@ cell_size = 0.25e-3
            {base + "refinement = \"nested\"\n", {"grid.refinement", "nested", "needs grid.coarse_cell_size"}},
            {base + "refinement = \"octree\"\n" + boxes, {"grid.refinement", "octree", "graded", "nested"}},
            // per-level time steps step nested levels; "none" and "levels" only
-           {with_time_key("subcycling = \"levels\"") + boxes,
+           {with_time_key("subcycling = \"levels\"") + "refinement = \"graded\"\n" + boxes,
             {"time.subcycling", "levels", "nested"}},
            {with_time_key("subcycling = \"always\"") +
                 "refinement = \"nested\"\n" + boxes,
