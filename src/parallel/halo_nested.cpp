@@ -144,7 +144,7 @@ std::vector<std::vector<NodeBox>> nested_reaches(const NestedState& n,
 }
 
 int nested_touched_width(const NestedState& n, int l) {
-  if (l == n.interface_level) return kInterfaceHaloNodes;  // the faces' stencils, as on one grid
+  if (n.holds_interfaces(l)) return kInterfaceHaloNodes;  // the faces' stencils, as on one grid
   // A particle is less than kMigrateCells finest cells out of its block (rank moves) and
   // touches nodes closer than h + lp <= 1.5 h: node d of the rim when d < 1.5 + finest / h.
   const double finest = n.levels.back().grid.x.h, h = n.levels[std::size_t(l)].grid.x.h;
@@ -321,14 +321,10 @@ void window_levels(NestedState& n) {
 
 void distribute_nested(State& s, const Comm& comm, bool fresh, const NestedSplit* given) {
   NestedState& n = *s.nested;
-  // The split lends one level the interfaces (its face halo, kInterfaceHaloNodes, and their
-  // owners); several levels' would need one each (not written). Every rank refuses the same.
-  if (n.interface_level == NestedState::kSeveralLevels)
-    throw InputError(
-        "[interface]: interfaces on more than one nested level are not yet supported under mpirun "
-        "(parallel/halo_nested.cpp); run on one process, or put one [grid.refine] box around all of them");
   const NestedSplit sp = given ? *given : split_nested(n, comm.size());
-  const int il = n.interface_level;
+  // Each level's split sees its own interfaces (their faces' owners and links, in the order a
+  // step lends them: solver/nested_state.hpp lend_interfaces).
+  lend_interfaces(s);
   const double finest = n.levels.back().grid.x.h;
   for (std::size_t l = 0; l < n.levels.size(); ++l) {
     State& L = n.levels[l];
@@ -340,9 +336,7 @@ void distribute_nested(State& s, const Comm& comm, bool fresh, const NestedSplit
     h->count_by_block = true;
     h->rebalance = false;  // the levels share one split (a rebalance would move all of them)
     L.halo = h;
-    if (int(l) == il) L.interfaces.swap(s.interfaces);  // the level's, lent for the split
     set_blocks(L, sp.blocks[l]);
-    if (int(l) == il) L.interfaces.swap(s.interfaces);
     keep_own_particles(L);  // every rank made or read the same state
     const Particles& P = L.particles;
     // E14 as in distribute: this rank's parts of the run's sums.
@@ -351,10 +345,15 @@ void distribute_nested(State& s, const Comm& comm, bool fresh, const NestedSplit
     else if (comm.rank() > 0)
       L.strain_work = L.external_work = 0.0;
   }
+  return_interfaces(s);
   window_levels(n);
   if (!fresh && comm.rank() > 0)
     for (CohesiveInterface& c : s.interfaces) c.work = 0.0;
-  s.halo = n.levels[std::size_t(il >= 0 ? il : int(n.levels.size()) - 1)].halo;
+  // The run's gathers of interface state need the communicator only; the finest level holding
+  // an interface (as the run State's grid, solver/nested_state.cpp), else the finest.
+  int il = int(n.levels.size()) - 1;
+  if (!n.interface_levels.empty()) il = *std::max_element(n.interface_levels.begin(), n.interface_levels.end());
+  s.halo = n.levels[std::size_t(il)].halo;
   s.strain_work = s.external_work = 0.0;
   for (const State& L : n.levels) s.strain_work += L.strain_work, s.external_work += L.external_work;
   s.particles_step = -1;  // re-merge this rank's particles

@@ -66,7 +66,7 @@ RankPlan plan_ranks(const State& s, int ranks) {
   RankPlan plan;
   plan.ranks = ranks;
   const bool cohesive = !s.interfaces.empty();
-  int interface_level = 0;  // the lattice holding the interfaces
+  std::vector<bool> interface_levels;  // per lattice: it holds interfaces (one grid: the grid)
   if (s.nested) {
     // One split for every level (parallel/halo_nested.hpp).
     const NestedState& n = *s.nested;
@@ -82,7 +82,7 @@ RankPlan plan_ranks(const State& s, int ranks) {
       L.split = decomposition_of(sp.blocks[l], particles_per_cell(ls), L.cols);
       plan.levels.push_back(std::move(L));
     }
-    interface_level = std::max(0, n.interface_level);
+    for (std::size_t l = 0; l < n.levels.size(); ++l) interface_levels.push_back(n.holds_interfaces(int(l)));
   } else {
     plan.levels.push_back(split_level(s, 1, ranks));
     for (const CellBlock& b : plan.levels.back().split.block)
@@ -92,7 +92,7 @@ RankPlan plan_ranks(const State& s, int ranks) {
   plan.exchange_bytes.assign(std::size_t(ranks), 0.0);
   for (std::size_t l = 0; l < plan.levels.size(); ++l) {
     const LevelSplit& L = plan.levels[l];
-    const bool here = cohesive && int(l) == interface_level;  // the cohesive forces' sum
+    const bool here = cohesive && (l < interface_levels.size() ? bool(interface_levels[l]) : l == 0);  // the cohesive forces' sum
     // Per finest step: the scatter's sums once per level step (mass, momentum, force; [loads]
     // forces), the re-mapped momentum every finest step, the cohesive forces on their level.
     const double values = double(kExchangedValues - 2 + (s.loads.has_forces() ? 2 : 0)) / double(L.period) +

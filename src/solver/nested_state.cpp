@@ -226,9 +226,10 @@ State make_nested_run_state(const Case& c, const LevelShare* share) {
   return s;
 }
 
-namespace {
+bool NestedState::holds_interfaces(int level) const {
+  return std::find(interface_levels.begin(), interface_levels.end(), level) != interface_levels.end();
+}
 
-// The run's interfaces to the levels holding them (for a step), in input order, and back.
 void lend_interfaces(State& s) {
   NestedState& n = *s.nested;
   for (std::size_t k = 0; k < s.interfaces.size(); ++k)
@@ -243,8 +244,6 @@ void return_interfaces(State& s) {
   }
   for (State& l : n.levels) l.interfaces.clear();
 }
-
-}  // namespace
 
 void step_nested_run(State& s) {
   NestedState& n = *s.nested;

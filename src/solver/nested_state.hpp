@@ -76,10 +76,10 @@ struct NestedState {
   double dt = 0.0;    // the last step's, s
   long step = 0;
   long migrations = 0;  // particles moved between levels so far
-  // The level holding every interface: -1 none, kSeveralLevels when they lie on more than one
-  // (one process only: parallel/halo_nested.cpp refuses it); interface_levels[k]: the level of
-  // the run's interface k (input order). A level holds its interfaces during a step only
-  // (step_nested_run lends them); between steps they are the run State's.
+  // The level holding every interface: -1 none, kSeveralLevels when they lie on more than one;
+  // interface_levels[k]: the level of the run's interface k (input order). A level holds its
+  // interfaces during a step only (step_nested_run lends them); between steps they are the run
+  // State's.
   static constexpr int kSeveralLevels = -2;
   int interface_level = -1;
   std::vector<int> interface_levels;
@@ -110,6 +110,7 @@ struct NestedState {
 
   bool subcycled() const;
   bool synchronized() const { return substep == 0; }
+  bool holds_interfaces(int level) const;  // some interface lies on this level
 
   std::size_t num_particles() const;
   double external_work() const;  // J per unit thickness, summed over the levels
@@ -129,6 +130,11 @@ struct LevelShare {
   std::function<bool(int, double, double)> own;
   std::vector<std::uint32_t> first_id;  // per level
 };
+
+// The run's interfaces (s.interfaces, input order) to the levels holding them, each level's in
+// input order, and back: a level's step and its share of a split see its own interfaces only.
+void lend_interfaces(State& s);
+void return_interfaces(State& s);
 
 // InputError naming grid.refinement when the case holds what nested levels do not support yet
 // (rupture check and rupture run refuse it at input: io/case_checks).

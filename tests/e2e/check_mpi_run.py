@@ -4,7 +4,7 @@
 Usage: check_mpi_run.py SERIAL_DIR DISTRIBUTED_DIR RANKS BOUND
 history.csv: the same sample times, and kinetic energy, strain energy and external work equal
 to BOUND relative to each column's largest magnitude; crack_tip.csv and the last interface
-profile and the Mach-angle readings value by value, to BOUND of each column's largest
+profile, every interface's last profile and crack_tip_NAME.csv and the Mach-angle readings value by value, to BOUND of each column's largest
 magnitude (nan, a side not measured, on both); run.json: status completed, "ranks"
 equal to RANKS, the same steps.
 """
@@ -35,7 +35,15 @@ for col in ("time", "kinetic_energy", "strain_energy", "external_work"):
     diff = max(abs(float(x[col]) - float(y[col])) for x, y in zip(a, b))
     check(diff <= bound * scale, f"{col}: largest difference {diff / scale:.2e} of its largest value (bound {bound:g})")
 # Interfaces: the crack tip's history and the last interface profile, value by value.
-for name in ("crack_tip.csv", "interface/interface_000004.csv", "mach_angle.csv"):
+import glob
+import os
+# Every interface's own crack file too (crack_tip_NAME.csv: the runs of several interfaces).
+named = sorted(os.path.basename(f) for f in glob.glob(f"{a_dir}/crack_tip_*.csv"))
+# ... and every interface's last profile (interface/NAME_NNNNNN.csv).
+last = {}
+for f in sorted(glob.glob(f"{a_dir}/interface/*_[0-9][0-9][0-9][0-9][0-9][0-9].csv")):
+    last[os.path.basename(f)[:-11]] = "interface/" + os.path.basename(f)
+for name in ["crack_tip.csv", "interface/interface_000004.csv", "mach_angle.csv"] + named + sorted(set(last.values())):
     try:
         ta, tb = open(f"{a_dir}/{name}").read(), open(f"{b_dir}/{name}").read()
     except FileNotFoundError:
@@ -67,8 +75,6 @@ for name in ("crack_tip.csv", "interface/interface_000004.csv", "mach_angle.csv"
                 worst = max(worst, abs(fu - fv) / (scale[k] or 1e-300))
     check(same_shape and worst <= bound, f"{name}: {len(ra_)} rows, largest difference {worst:.2e} of its column's largest value")
 # Stations: each column to BOUND of its largest magnitude.
-import glob
-import os
 for path in sorted(glob.glob(f"{a_dir}/stations/*.csv")):
     name = os.path.basename(path)
     sa = list(csv.DictReader(open(path)))
