@@ -26,7 +26,6 @@
 #include "io/snapshot.hpp"
 #include "parallel/agreement.hpp"
 #include "parallel/halo.hpp"
-#include "parallel/halo_nested.hpp"
 #include "run/interrupt.hpp"
 #include "run/output_dir.hpp"
 #include "run/progress.hpp"
@@ -42,24 +41,6 @@ namespace {
 
 // Added to the step's agreed signal number when rank 0 failed to write (signals are < 128).
 constexpr double kWriteFailed = 1024.0;
-
-// The States that step (and hold a halo when distributed): the nested levels, or s itself.
-std::vector<const State*> level_states(const State& s) {
-  std::vector<const State*> out;
-  if (s.nested)
-    for (const State& l : s.nested->levels) out.push_back(&l);
-  else
-    out.push_back(&s);
-  return out;
-}
-
-// This rank's particles (nested: on every level).
-std::size_t sum_over_levels_particles(const State& s) {
-  if (!s.nested) return s.particles.size();
-  std::size_t n = 0;
-  for (const State& l : s.nested->levels) n += l.particles.size();
-  return n;
-}
 
 EnergySample sample(State& s) {
   // Distributed: the sums over particles and owned nodes, added over the ranks; every
@@ -276,11 +257,7 @@ RunResult run_case(const Case& c, const RunOptions& options) {
     });
     // Split by where the particles are now (any number of ranks, whatever wrote it).
     if (comm.distributed() && !keys.empty()) {
-      // The split sends each particle to its rank.
-      if (c.grid.nested)
-        distribute_held_nested(ctx.s, comm, keys);
-      else
-        distribute_held(ctx.s, comm, keys[0]);
+      split_held_particles(ctx.s, comm, keys);  // sends each particle to its rank
     } else if (comm.distributed()) {
       distribute(ctx.s, comm, false);  // one process's checkpoint: its particles split
     }
@@ -305,7 +282,7 @@ RunResult run_case(const Case& c, const RunOptions& options) {
     throw;
   }
   State& s = ctx.s;
-  if (s.halo && !s.nested) s.halo->rebalance = options.rebalance;  // nested: one split (halo_nested)
+  enable_rebalance(s, options.rebalance);
   const long total_particles = sum_over_ranks(s, long(s.particles.size()));
   const long first_step = s.step;  // 0, or the checkpoint's
   RunResult result;
@@ -637,27 +614,17 @@ RunResult run_case(const Case& c, const RunOptions& options) {
   if (s.halo) {
     result.migrations = s.halo->migrations;
     const long steps = std::max(1L, s.step - first_step);  // this process's steps
-    double bytes = 0.0, seconds = 0.0;  // nested levels: every level's halo
-    for (const State* l : level_states(s)) bytes += l->halo->bytes_sent, seconds += l->halo->exchange_seconds;
-    result.exchange_bytes_per_step = comm.sum(bytes) / double(comm.size()) / double(steps);
-    result.exchange_seconds = comm.max(seconds);
+    const ExchangeCost cost = exchange_cost(s);
+    result.exchange_bytes_per_step = comm.sum(cost.bytes_sent) / double(comm.size()) / double(steps);
+    result.exchange_seconds = comm.max(cost.seconds);
   }
-  {  // every rank's particles now (nested: every level's), and what a kept split became
+  {  // every rank's particles now, and what a kept split became
     std::vector<double> count(std::size_t(comm.size()), 0.0);
-    count[std::size_t(comm.rank())] = double(sum_over_levels_particles(s));
+    count[std::size_t(comm.rank())] = double(held_particles(s));
     comm.sum(count.data(), int(count.size()));
     for (const double n : count) result.particles_per_rank_end.push_back(long(n));
-    // Nested levels keep their first split (parallel/halo_nested.hpp): say so when the
-    // particles drifted from it by more than a rebalance would tolerate.
-    const auto over = [](const std::vector<long>& v) {
-      double most = 0.0, all = 0.0;
-      for (const long n : v) most = std::max(most, double(n)), all += double(n);
-      return all > 0.0 ? most / (all / double(v.size())) - 1.0 : 0.0;
-    };
-    const double start = over(result.particles_per_rank), end = over(result.particles_per_rank_end);
-    if (s.nested && comm.distributed() && writer && end - start > kRebalanceImbalance)
-      fmt::print("nested levels keep their first split: the most particles on a rank went from {:.1f} % "
-                 "to {:.1f} % over the mean\n", 100.0 * start, 100.0 * end);
+    const std::string drift = kept_split_drift(s, comm, result.particles_per_rank, result.particles_per_rank_end);
+    if (writer && !drift.empty()) fmt::print("{}\n", drift);
   }
   {  // every rank's peak resident memory in its slot, summed: known to every rank
     rusage use{};
