@@ -16,22 +16,20 @@
 // --overwrite, no usable checkpoint to resume), 2 the run went unstable, 3 I/O failure (the
 // message names the file and the operating system's reason) or other failure, 4 interrupted by
 // SIGINT/SIGTERM after writing a checkpoint (the message says how to resume).
-#include <omp.h>
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
 #include <cerrno>
 #include <cstdio>
-#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fmt/format.h>
-#include <fmt/ranges.h>
 #include <fstream>
 #include <sstream>
 
-#include "io/law_registry.hpp"
+#include "cli/print_check.hpp"
+#include "cli/print_result.hpp"
 #include "core/errors.hpp"
 #include "core/fp_mode.hpp"
 #include "io/case_toml.hpp"
@@ -39,116 +37,14 @@
 #include "core/fault_injection.hpp"
 #include "parallel/agreement.hpp"
 #include "parallel/comm.hpp"
-#include "parallel/rank_plan.hpp"
 #include "io/input_schema.hpp"
 #include "io/text_limits.hpp"
 #include "run/driver.hpp"
-#include "run/step_cost.hpp"
 #include "run/sweep.hpp"
-#include "solver/state.hpp"
-#include "solver/summary.hpp"
 
 using namespace rupture;
 
 namespace {
-// A length in the unit that suits it (um, mm or m): laboratory and kilometre-scale cases alike.
-std::string show_length(double m) {
-  const double a = std::fabs(m);
-  if (a > 0.0 && a < 1e-3) return fmt::format("{:.4g} um", 1e6 * m);
-  if (a > 0.0 && a < 1.0) return fmt::format("{:.4g} mm", 1e3 * m);
-  return fmt::format("{:.4g} m", m);
-}
-}  // namespace
-
-namespace {
-
-void print_check(const std::string& path, const Case& c) {
-  const CaseSummary s = summarize(c);
-  fmt::print("case: {}{}\n", path, c.title.empty() ? "" : " (" + c.title + ")");
-  fmt::print("plane {}, scheme {}, flip {:g}\n", c.plane == PlaneMode::strain ? "strain" : "stress",
-             scheme_name(c.solver.scheme), c.solver.flip);
-  for (std::size_t k = 0; k < c.materials.size(); ++k) {
-    const WaveSpeeds& w = s.speeds[k];
-    fmt::print(
-        "material {}: c_D = {:.1f} m/s, c_S = {:.1f} m/s, c_R = {:.1f} m/s (approx. {:.1f}), "
-        "sqrt(2) c_S = {:.1f} m/s\n",
-        c.materials[k].name, w.dilatational, w.shear, w.rayleigh, w.rayleigh_approx,
-        std::sqrt(2.0) * w.shear);
-  }
-  for (std::size_t b = 0; b < c.bodies.size(); ++b)
-    fmt::print("body {} (field {} \"{}\"): {} particles\n", c.bodies[b].name, c.bodies[b].field,
-               c.field_names[std::size_t(c.bodies[b].field)],
-               s.particles_per_body[b]);
-  fmt::print("dt={:.6e}\n", s.dt);
-  fmt::print("dt_cfl_limit={:.6e}\n", s.dt_cfl);
-  fmt::print("dt_bulk_limit={:.6e}\n", s.dt_bulk);
-  if (s.dt_cohesive > 0) fmt::print("dt_cohesive_limit={:.6e}\n", s.dt_cohesive);
-  for (std::size_t k = 0; k < c.interfaces.size(); ++k) {
-    const InterfaceSpec& is = c.interfaces[k];
-    const Polyline line = is.geometry();
-    const double length = line.length();
-    const std::string law_text = law_entry(is).describe(is);  // io/law_registry.hpp
-    const std::string where =
-        line.num_vertices() == 2 && line.y[0] == line.y[1]
-            ? fmt::format("on y = {:g} m, x in [{:g}, {:g}] m", line.y[0], line.x[0], line.x[1])
-            : fmt::format("along a {} line of {} points, {:g} m long, from ({:g}, {:g}) m",
-                          line.closed ? "closed" : "open", line.num_vertices(), length, line.x[0], line.y[0]);
-    std::string ties;
-    for (const Polyline& tie : is.tie_geometries())
-      ties += fmt::format("; bonded along {:g} m from ({:g}, {:g}) m", tie.length(), tie.x[0], tie.y[0]);
-    fmt::print("interface {}: {} segments of {} {}; {}, {}{}{}; bodies {} (upper) and {}\n",
-               c.interface_names[k], is.segments, show_length(length / is.segments), where, law_name(is.law),
-               law_text, is.contact ? fmt::format("; contact, friction {:g}", is.contact_law.friction) : "",
-               ties, c.bodies[std::size_t(is.upper_body)].name, c.bodies[std::size_t(is.lower_body)].name);
-  }
-  if (c.grid.refined()) {
-    fmt::print("refined grid: {} levels, level 0 = {:g} m, finest = {:g} m; smallest cell {:g} m\n",
-               s.level_sizes.size(), c.grid.coarse_cell_size, c.grid.cell_size, s.min_cell_size);
-    fmt::print("refinement={} ({})\n", c.grid.nested ? "nested" : "graded",
-               c.grid.nested ? "nested levels, each over its own boxes, transition nodes"
-                             : "graded tensor-product grid, fine rows and columns across the plate");
-    if (c.grid.nested)
-      fmt::print("subcycling={} ({})\n", c.time.subcycling == Subcycling::levels ? "levels" : "none",
-                 c.time.subcycling_given ? "time.subcycling as given"
-                 : c.time.subcycling == Subcycling::levels
-                     ? "the default: per-level time steps, verified for this case"
-                     : "the default here: per-level steps are not verified with [loads], [absorbing], "
-                       "USL/USF or interfaces on two levels");
-    for (std::size_t L = 0; L < s.level_sizes.size(); ++L)
-      fmt::print("level {} ({:g} m): cells_level_{}={} particles_level_{}={}\n", L, s.level_sizes[L],
-                 L, s.cells_per_level[L], L, s.particles_per_level[L]);
-  }
-  fmt::print("cells={}\n", s.cells);
-  fmt::print("nodes={}\n", s.nodes);
-  fmt::print("field_nodes={} ({} fields; {:.2f} x the grid)\n", s.field_nodes, s.fields,
-             double(s.field_nodes) / double(s.nodes));
-  fmt::print("ghost_cells={} (margin {} for free surfaces to move into)\n", s.ghost_cells,
-             show_length(c.grid.margin));
-  fmt::print("particles={}\n", s.particles);
-  fmt::print("steps={}\n", s.steps);
-  fmt::print("memory_estimate_mib={:.1f}\n", double(s.memory_bytes) / (1024.0 * 1024.0));
-}
-
-// The run's wall time predicted from a few timed steps of this case on this machine
-// (run/step_cost.hpp); the progress line's ETA refines it during the run.
-void print_predicted_time(const Case& c) {
-  const CaseSummary s = summarize(c);
-  const StepCost cost = measure_step_cost(c);
-  fmt::print("measured_setup_seconds={:.3f}\n", cost.setup_seconds);
-  fmt::print("measured_step_seconds={:.4e} (mean of {} steps after a warm-up one, {} threads)\n",
-             cost.step_seconds, cost.steps, omp_get_max_threads());
-  fmt::print("measured_ns_per_particle_update={:.1f}\n", cost.ns_per_particle_update);
-  if (!cost.level_periods.empty())
-    fmt::print("level_periods={} (finest steps per step of levels 0..{}, time.subcycling = \"levels\"; "
-               "{:.0f} particle-updates per finest step instead of {})\n",
-               fmt::join(cost.level_periods, ","), cost.level_periods.size() - 1,
-               cost.updates_per_finest_step, cost.particles);
-  if (cost.snapshot_seconds > 0 || cost.interface_seconds > 0)
-    fmt::print("measured_output_seconds={:.3f} per snapshot, {:.3f} per set of interface profiles\n",
-               cost.snapshot_seconds, cost.interface_seconds);
-  fmt::print("predicted_wall_seconds={:.1f} (set-up + {} steps + snapshots and interface profiles)\n",
-             predicted_wall_seconds(cost, c, s.steps), s.steps);
-}
 
 std::string plot_script(const char* argv0) {
   namespace fs = std::filesystem;
@@ -219,51 +115,6 @@ int exit_code(Outcome o) {
     case Outcome::error: return 3;
   }
   return 3;
-}
-
-// rupture check --ranks N: how a distributed run would split the case (parallel/rank_plan.hpp).
-void print_rank_plan(const Case& c, int ranks) {
-  const State s = make_state(c);
-  const RankPlan plan = plan_ranks(s, ranks);
-  if (plan.levels.size() > 1)
-    fmt::print("ranks={} (level {}'s cells over the plate bisected by the work of every level's "
-               "particles; rank r takes the same rectangle on every level, its sides on a coarser "
-               "level's lines below)\n",
-               ranks, plan.cut_level);
-  else
-    fmt::print("ranks={} (the grid's cells bisected by particle count)\n", ranks);
-  std::vector<std::size_t> particles(std::size_t(ranks), 0);
-  std::vector<long> shared(std::size_t(ranks), 0);
-  for (std::size_t l = 0; l < plan.levels.size(); ++l) {
-    const LevelSplit& L = plan.levels[l];
-    fmt::print("{}{} x {} cells{}, imbalance {:.4f}, reach up to {} nodes beyond a block\n",
-               plan.levels.size() > 1 ? fmt::format("level {}: ", l) : std::string("grid: "), L.cols,
-               L.rows, L.period > 1 ? fmt::format(", one step every {} finest", L.period) : "",
-               L.split.imbalance(), L.width());
-    for (int r = 0; r < ranks; ++r) {
-      const CellBlock& b = L.split.block[std::size_t(r)];
-      fmt::print("  rank {}: cells [{}, {}) x [{}, {}), particles {}, shared nodes {}\n", r, b.c0,
-                 b.c1, b.r0, b.r1, L.split.particles[std::size_t(r)],
-                 L.split.shared_nodes[std::size_t(r)]);
-      particles[std::size_t(r)] += L.split.particles[std::size_t(r)];
-      shared[std::size_t(r)] += L.split.shared_nodes[std::size_t(r)];
-    }
-  }
-  const auto join = [](const auto& v, const char* f) {
-    std::string out;
-    for (const auto& x : v) {
-      if (!out.empty()) out += ',';
-      out += fmt::format(fmt::runtime(f), x);
-    }
-    return out;
-  };
-  fmt::print("particles_per_rank={}\n", join(particles, "{}"));
-  fmt::print("work_per_rank={} (particle-updates per finest step)\n", join(plan.work, "{:.0f}"));
-  fmt::print("shared_nodes_per_rank={}\n", join(shared, "{}"));
-  fmt::print("exchange_bytes_per_rank={} (sent to the neighbours per finest step: {} values or "
-             "more per halo node and field)\n",
-             join(plan.exchange_bytes, "{:.0f}"), kExchangedValues);
-  fmt::print("predicted_imbalance={:.4f} (largest work / mean - 1)\n", plan.imbalance());
 }
 
 }  // namespace
@@ -429,78 +280,7 @@ int main(int argc, char** argv) {
     warn(c);
     print_check(options.source.origin, c);
     const RunResult r = run_case(c, options);
-    fmt::print("status={}\n", r.status);
-    fmt::print("stop_reason={}\n", r.stop_reason);
-    fmt::print("steps={}\n", r.steps);
-    fmt::print("simulated_time={:.6e}\n", r.simulated_time);
-    fmt::print("wall_seconds={:.3f}\n", r.wall_seconds);
-    fmt::print("particle_updates_per_second={:.4e}\n", r.particle_updates_per_second);
-    fmt::print("cohesive_seconds={:.3f}\n", r.cohesive_seconds);
-    if (r.ranks > 1) {  // distributed: how the particles were split, and how often they moved
-      fmt::print("ranks={}\n", r.ranks);
-      fmt::print("particles_per_rank={}\n", fmt::join(r.particles_per_rank, ","));
-      fmt::print("particles_per_rank_end={}\n", fmt::join(r.particles_per_rank_end, ","));
-      fmt::print("migrations={}\n", r.migrations);
-      fmt::print("rebalances={}\n", r.rebalances);
-      fmt::print("exchange_bytes_per_rank_per_step={:.0f}\n", r.exchange_bytes_per_step);
-      fmt::print("exchange_seconds={:.3f}\n", r.exchange_seconds);
-      fmt::print("peak_memory_mib_per_rank={:.0f}\n", fmt::join(r.peak_memory_per_rank, ","));
-    }
-    if (!r.peak_memory_per_rank.empty())
-      fmt::print("peak_memory_mib={:.0f}\n",
-                 *std::max_element(r.peak_memory_per_rank.begin(), r.peak_memory_per_rank.end()));
-    fmt::print("energy_balance_error={:.4e}\n", r.energy_balance_error);
-    fmt::print("energy_balance_error_final={:.4e}\n", r.energy_balance_error_final);
-    if (!r.cracks.empty()) {
-      const CrackSummary& k = r.cracks.front();
-      fmt::print("crack.initiation_time={:.6e}\n", k.initiation_time);
-      fmt::print("crack.sustained_speed={:.1f}\n", k.sustained_speed);
-      {  // against the lower body's material (run.json has both sides)
-        const WaveSpeeds w = wave_speeds(
-            c.materials[std::size_t(c.bodies[std::size_t(c.interfaces[0].lower_body)].material)], c.plane);
-        fmt::print("crack.sustained_speed_over_cR={:.4f}\n", k.sustained_speed / w.rayleigh);
-        fmt::print("crack.sustained_speed_over_cS={:.4f}\n", k.sustained_speed / w.shear);
-      }
-      fmt::print("crack.peak_speed={:.1f}\n", k.peak_speed);
-      fmt::print("crack.intersonic_time={:.6e}\n", k.intersonic_time);
-      fmt::print("crack.daughter_crack_time={:.6e}\n", k.daughter_time);
-      fmt::print("crack.final_tip={:.6e}\n", k.final_tip);
-      fmt::print("crack.final_cohesive_zone_length={:.6e}\n", k.final_cohesive_zone);
-      fmt::print("crack.final_traction_zone_length={:.6e}\n", k.final_traction_zone);
-      fmt::print("crack.cohesive_zone_definition={}\n", CrackTracker::kCohesiveZoneDefinition);
-      fmt::print("crack.traction_zone_definition={}\n", CrackTracker::kTractionZoneDefinition);
-      fmt::print("crack.end_reached_time={:.6e}\n", k.end_reached_time);
-      fmt::print("crack.regime={}\n", k.regime);
-      fmt::print("crack.steady_begin={:.6e}\n", k.steady_begin);
-      fmt::print("crack.steady_end={:.6e}\n", k.steady_end);
-      fmt::print("crack.last_window_speed={:.1f}\n", k.last_window_speed);
-      fmt::print("crack.arrested={}\n", k.arrested);
-      fmt::print("crack.arrest_time={:.6e}\n", k.arrest_time);
-      fmt::print("crack.arrest_s={:.6e}\n", k.arrest_s);
-      // SPEC E12: the shear Mach angle read at the snapshot times (-1: not measured).
-      fmt::print("crack.mach_readings={}\n", k.mach_readings);
-      fmt::print("crack.mach_angle={:.2f}\n", k.mach_angle);
-      fmt::print("crack.mach_angle_spread={:.2f}\n", k.mach_angle_spread);
-      fmt::print("crack.mach_angle_left={:.2f}\n", k.mach_angle_left);
-      fmt::print("crack.mach_angle_right={:.2f}\n", k.mach_angle_right);
-      fmt::print("crack.mach_speed={:.1f}\n", k.mach_speed);
-      // Every interface by name, in input order (the first also under crack.* above).
-      for (std::size_t i = 0; i < r.cracks.size(); ++i) {
-        const CrackSummary& q = r.cracks[i];
-        const std::string& n = c.interface_names[i];
-        fmt::print("crack.{}.initiation_time={:.6e}\n", n, q.initiation_time);
-        fmt::print("crack.{}.initiation_s={:.6e}\n", n, q.initiation_s);
-        fmt::print("crack.{}.sustained_speed={:.1f}\n", n, q.sustained_speed);
-        fmt::print("crack.{}.back_speed={:.1f}\n", n, q.back_speed);
-        fmt::print("crack.{}.final_tip_s={:.6e}\n", n, q.final_tip_s);
-        fmt::print("crack.{}.regime={}\n", n, q.regime);
-        fmt::print("crack.{}.last_window_speed={:.1f}\n", n, q.last_window_speed);
-        fmt::print("crack.{}.arrested={}\n", n, q.arrested);
-        fmt::print("crack.{}.mach_angle={:.2f}\n", n, q.mach_angle);
-        fmt::print("crack.{}.mach_speed={:.1f}\n", n, q.mach_speed);
-      }
-    }
-    fmt::print("output={}\n", out_dir);
+    print_run_result(c, r, out_dir);
     if (quiet_errors) {
     } else if (r.outcome == Outcome::interrupted) {
       fmt::print(stderr, "{}\n", r.message);

@@ -212,7 +212,7 @@ void check_nested_support(const Case& c);  // solver/nested_state.hpp
 namespace {
 
 constexpr double kManySteps = 1e7;
-// Above this many steps the schedules' tolerance, 1e-6 dt (run/driver.cpp), is below the
+// Above this many steps the schedules' tolerance, 1e-6 dt (run/run_setup.cpp), is below the
 // round-off of the time itself (2^-52 time.end): outputs and the end time could be missed or
 // repeated, and near the bound t + dt rounds back to t. 2^52 x 1e-6 = 4.5e9 steps.
 constexpr double kMostSteps = 4503599627.370496;

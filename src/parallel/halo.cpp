@@ -117,6 +117,25 @@ void set_blocks(State& s, std::vector<CellBlock> blocks) {
   s.windows_checked_step = -2;  // re-fit the windows to this rank's particles
 }
 
+void split_held_particles(State& s, const Comm& comm, const std::vector<std::vector<double>>& keys) {
+  if (s.nested) return distribute_held_nested(s, comm, keys);  // parallel/halo_nested.hpp
+  distribute_held(s, comm, keys.at(0));
+}
+
+ExchangeCost exchange_cost(const State& s) {
+  ExchangeCost cost;
+  const auto add = [&](const State& l) {
+    if (!l.halo) return;
+    cost.bytes_sent += l.halo->bytes_sent;
+    cost.seconds += l.halo->exchange_seconds;
+  };
+  if (s.nested)
+    for (const State& l : s.nested->levels) add(l);
+  else
+    add(s);
+  return cost;
+}
+
 void distribute(State& s, const Comm& comm, bool fresh) {
   check_distributable(s, comm.size());
   if (s.nested) return distribute_nested(s, comm, fresh);  // parallel/halo_nested.hpp

@@ -140,6 +140,11 @@ State make_rank_state(const Case& c, const Comm& comm);
 // kept on rank 0. No rank holds more than the particles it read and its own.
 void distribute_held(State& s, const Comm& comm, const std::vector<double>& key);
 
+// The split of a resumed run whose ranks each hold some of the checkpoint's particles, with
+// their keys per level (run/checkpoint_ranks.hpp: read_checkpoint_share): distribute_held, or
+// for nested levels distribute_held_nested (parallel/halo_nested.hpp).
+void split_held_particles(State& s, const Comm& comm, const std::vector<std::vector<double>>& keys);
+
 // Gives s a halo on `comm` (no blocks yet: set_blocks follows).
 void attach_halo(State& s, const Comm& comm);
 
@@ -157,6 +162,23 @@ void set_blocks(State& s, std::vector<CellBlock> blocks);
 // the load as it is now and move each particle to its new block's rank (collective).
 inline constexpr double kRebalanceImbalance = 0.05;
 void rebalance_if_needed(State& s);
+
+// Lets the split follow the load (`on`) or keeps it (--no-rebalance), where the run's split can
+// move at all: nested levels share one split and always keep it (parallel/halo_nested.hpp).
+void enable_rebalance(State& s, bool on);
+
+// A run whose split cannot follow the load (nested levels) says so when its particles drifted
+// from the split by more than a rebalance would tolerate: the line to print, from the
+// particles per rank at the start and at the end of the run; empty otherwise.
+std::string kept_split_drift(const State& s, const Comm& comm, const std::vector<long>& start,
+                             const std::vector<long>& end);
+
+// What the exchanges cost so far, summed over every halo the run steps with (one per nested
+// level): bytes this rank sent and the wall time in them, s.
+struct ExchangeCost {
+  double bytes_sent = 0.0, seconds = 0.0;
+};
+ExchangeCost exchange_cost(const State& s);
 
 // The distributed run's checks of a case, before any work starts (InputError naming the key).
 void check_distributable(const State& s, int ranks);

@@ -111,4 +111,24 @@ void rebalance_if_needed(State& s) {
       s.step, s.time, largest, mean, 100.0 * before, w, 100.0 * d.imbalance(), moved_all, seconds);
 }
 
+void enable_rebalance(State& s, bool on) {
+  if (s.halo && !s.nested) s.halo->rebalance = on;  // nested levels: one split (halo_nested.cpp)
+}
+
+std::string kept_split_drift(const State& s, const Comm& comm, const std::vector<long>& start,
+                             const std::vector<long>& end) {
+  if (!s.nested || !comm.distributed()) return {};  // other splits follow the load, or none is made
+  // The most particles on a rank over the mean, minus 1.
+  const auto over = [](const std::vector<long>& v) {
+    double most = 0.0, all = 0.0;
+    for (const long n : v) most = std::max(most, double(n)), all += double(n);
+    return all > 0.0 ? most / (all / double(v.size())) - 1.0 : 0.0;
+  };
+  const double before = over(start), after = over(end);
+  if (!(after - before > kRebalanceImbalance)) return {};
+  return fmt::format("nested levels keep their first split: the most particles on a rank went from {:.1f} % "
+                     "to {:.1f} % over the mean",
+                     100.0 * before, 100.0 * after);
+}
+
 }  // namespace rupture

@@ -30,8 +30,8 @@ CheckpointBaseline checkpoint_baseline(const RunContext& fresh);
 // distributed run's part files are checked as they are read, run/checkpoint_ranks.cpp).
 void check_restored(const RunContext& ctx, const CheckpointBaseline& fresh, const std::string& origin);
 
-// What the driver's records rely on (run/driver.cpp reads their last entries): the history and
-// every crack tracker hold at least the samples a run takes at t = 0.
+// What the run's records rely on (run/outputs.cpp and run/run_io.cpp read their last
+// entries): the history and every crack tracker hold at least the samples a run takes at t = 0.
 void check_run_records(const RunContext& ctx, const std::string& origin);
 
 // Every array of `p` has the same length.

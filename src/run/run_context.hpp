@@ -1,8 +1,8 @@
 // rupture/run/run_context.hpp
 // Everything a run carries from one time step to the next besides the Case: the solver state,
 // the crack trackers, the energy history, the output schedules and the snapshot writer. The
-// driver (run/driver.cpp) starts it fresh or from a checkpoint (run/checkpoint.hpp), which holds
-// all of it, so a resumed run continues bit for bit.
+// run's start (run/run_setup.cpp) makes it fresh or from a checkpoint (run/checkpoint.hpp), which
+// holds all of it, so a resumed run continues bit for bit.
 #pragma once
 #include <memory>
 #include <string>

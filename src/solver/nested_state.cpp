@@ -276,6 +276,13 @@ void gather_particles(State& s) {
   s.particles_step = s.step;
 }
 
+std::size_t held_particles(const State& s) {
+  if (!s.nested) return s.particles.size();
+  std::size_t n = 0;
+  for (const State& l : s.nested->levels) n += l.particles.size();
+  return n;
+}
+
 namespace {
 
 // NestedState::coupled of every level with period > 1 (after `mixed` and the transposed terms).

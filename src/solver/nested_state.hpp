@@ -164,5 +164,7 @@ void step_nested_run(State& s);
 bool synchronized(const State& s);
 // Merges every level's particles into s.particles, once per step (a no-op for other runs).
 void gather_particles(State& s);
+// This process's particles (a nested run's: on every level, whether gathered or not).
+std::size_t held_particles(const State& s);
 
 }  // namespace rupture

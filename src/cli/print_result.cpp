@@ -1,0 +1,88 @@
+// rupture/cli/print_result.cpp
+#include "cli/print_result.hpp"
+
+#include <algorithm>
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "cohesive/crack_tip.hpp"
+#include "material/elastic.hpp"
+
+namespace rupture {
+
+void print_run_result(const Case& c, const RunResult& r, const std::string& out_dir) {
+  fmt::print("status={}\n", r.status);
+  fmt::print("stop_reason={}\n", r.stop_reason);
+  fmt::print("steps={}\n", r.steps);
+  fmt::print("simulated_time={:.6e}\n", r.simulated_time);
+  fmt::print("wall_seconds={:.3f}\n", r.wall_seconds);
+  fmt::print("particle_updates_per_second={:.4e}\n", r.particle_updates_per_second);
+  fmt::print("cohesive_seconds={:.3f}\n", r.cohesive_seconds);
+  if (r.ranks > 1) {  // distributed: how the particles were split, and how often they moved
+    fmt::print("ranks={}\n", r.ranks);
+    fmt::print("particles_per_rank={}\n", fmt::join(r.particles_per_rank, ","));
+    fmt::print("particles_per_rank_end={}\n", fmt::join(r.particles_per_rank_end, ","));
+    fmt::print("migrations={}\n", r.migrations);
+    fmt::print("rebalances={}\n", r.rebalances);
+    fmt::print("exchange_bytes_per_rank_per_step={:.0f}\n", r.exchange_bytes_per_step);
+    fmt::print("exchange_seconds={:.3f}\n", r.exchange_seconds);
+    fmt::print("peak_memory_mib_per_rank={:.0f}\n", fmt::join(r.peak_memory_per_rank, ","));
+  }
+  if (!r.peak_memory_per_rank.empty())
+    fmt::print("peak_memory_mib={:.0f}\n",
+               *std::max_element(r.peak_memory_per_rank.begin(), r.peak_memory_per_rank.end()));
+  fmt::print("energy_balance_error={:.4e}\n", r.energy_balance_error);
+  fmt::print("energy_balance_error_final={:.4e}\n", r.energy_balance_error_final);
+  if (!r.cracks.empty()) {
+    const CrackSummary& k = r.cracks.front();
+    fmt::print("crack.initiation_time={:.6e}\n", k.initiation_time);
+    fmt::print("crack.sustained_speed={:.1f}\n", k.sustained_speed);
+    {  // against the lower body's material (run.json has both sides)
+      const WaveSpeeds w = wave_speeds(
+          c.materials[std::size_t(c.bodies[std::size_t(c.interfaces[0].lower_body)].material)], c.plane);
+      fmt::print("crack.sustained_speed_over_cR={:.4f}\n", k.sustained_speed / w.rayleigh);
+      fmt::print("crack.sustained_speed_over_cS={:.4f}\n", k.sustained_speed / w.shear);
+    }
+    fmt::print("crack.peak_speed={:.1f}\n", k.peak_speed);
+    fmt::print("crack.intersonic_time={:.6e}\n", k.intersonic_time);
+    fmt::print("crack.daughter_crack_time={:.6e}\n", k.daughter_time);
+    fmt::print("crack.final_tip={:.6e}\n", k.final_tip);
+    fmt::print("crack.final_cohesive_zone_length={:.6e}\n", k.final_cohesive_zone);
+    fmt::print("crack.final_traction_zone_length={:.6e}\n", k.final_traction_zone);
+    fmt::print("crack.cohesive_zone_definition={}\n", CrackTracker::kCohesiveZoneDefinition);
+    fmt::print("crack.traction_zone_definition={}\n", CrackTracker::kTractionZoneDefinition);
+    fmt::print("crack.end_reached_time={:.6e}\n", k.end_reached_time);
+    fmt::print("crack.regime={}\n", k.regime);
+    fmt::print("crack.steady_begin={:.6e}\n", k.steady_begin);
+    fmt::print("crack.steady_end={:.6e}\n", k.steady_end);
+    fmt::print("crack.last_window_speed={:.1f}\n", k.last_window_speed);
+    fmt::print("crack.arrested={}\n", k.arrested);
+    fmt::print("crack.arrest_time={:.6e}\n", k.arrest_time);
+    fmt::print("crack.arrest_s={:.6e}\n", k.arrest_s);
+    // SPEC E12: the shear Mach angle read at the snapshot times (-1: not measured).
+    fmt::print("crack.mach_readings={}\n", k.mach_readings);
+    fmt::print("crack.mach_angle={:.2f}\n", k.mach_angle);
+    fmt::print("crack.mach_angle_spread={:.2f}\n", k.mach_angle_spread);
+    fmt::print("crack.mach_angle_left={:.2f}\n", k.mach_angle_left);
+    fmt::print("crack.mach_angle_right={:.2f}\n", k.mach_angle_right);
+    fmt::print("crack.mach_speed={:.1f}\n", k.mach_speed);
+    // Every interface by name, in input order (the first also under crack.* above).
+    for (std::size_t i = 0; i < r.cracks.size(); ++i) {
+      const CrackSummary& q = r.cracks[i];
+      const std::string& n = c.interface_names[i];
+      fmt::print("crack.{}.initiation_time={:.6e}\n", n, q.initiation_time);
+      fmt::print("crack.{}.initiation_s={:.6e}\n", n, q.initiation_s);
+      fmt::print("crack.{}.sustained_speed={:.1f}\n", n, q.sustained_speed);
+      fmt::print("crack.{}.back_speed={:.1f}\n", n, q.back_speed);
+      fmt::print("crack.{}.final_tip_s={:.6e}\n", n, q.final_tip_s);
+      fmt::print("crack.{}.regime={}\n", n, q.regime);
+      fmt::print("crack.{}.last_window_speed={:.1f}\n", n, q.last_window_speed);
+      fmt::print("crack.{}.arrested={}\n", n, q.arrested);
+      fmt::print("crack.{}.mach_angle={:.2f}\n", n, q.mach_angle);
+      fmt::print("crack.{}.mach_speed={:.1f}\n", n, q.mach_speed);
+    }
+  }
+  fmt::print("output={}\n", out_dir);
+}
+
+}  // namespace rupture
