@@ -202,10 +202,8 @@ State make_nested_run_state(const Case& c, const LevelShare* share) {
   auto n = std::make_shared<NestedState>(make_nested_state(c, share));
   // The interfaces in input order (each level kept its own in that order).
   std::vector<std::size_t> next(n->levels.size(), 0);
-  for (const int l : n->interface_levels) {
+  for (const int l : n->interface_levels)
     s.interfaces.push_back(std::move(n->levels[std::size_t(l)].interfaces[next[std::size_t(l)]++]));
-    n->interface_level = n->interface_level == -1 || n->interface_level == l ? l : NestedState::kSeveralLevels;
-  }
   for (State& l : n->levels) l.interfaces.clear();
   const State& first = n->levels[0];
   // The finest level holding an interface (without: the finest), for what reads one grid.

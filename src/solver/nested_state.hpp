@@ -76,12 +76,9 @@ struct NestedState {
   double dt = 0.0;    // the last step's, s
   long step = 0;
   long migrations = 0;  // particles moved between levels so far
-  // The level holding every interface: -1 none, kSeveralLevels when they lie on more than one;
-  // interface_levels[k]: the level of the run's interface k (input order). A level holds its
-  // interfaces during a step only (step_nested_run lends them); between steps they are the run
-  // State's.
-  static constexpr int kSeveralLevels = -2;
-  int interface_level = -1;
+  // interface_levels[k]: the level of the run's interface k (input order; holds_interfaces).
+  // A level holds its interfaces during a step only (step_nested_run lends them); between
+  // steps they are the run State's.
   std::vector<int> interface_levels;
   // Per-level time steps (time.subcycling = "levels"): level l takes one step every period[l]
   // finest steps (all 1 without them). substep: finest steps since every level last ended a

@@ -326,7 +326,7 @@ TEST(NestedSolver, interfaces_on_two_levels_step_each_on_its_own) {
                             "grid.refine.b={min=[0.0,-0.06],max=[0.075,0.004],level=2}"});
   State s = make_state(c);
   ASSERT_TRUE(s.nested);
-  EXPECT_EQ(s.nested->interface_level, NestedState::kSeveralLevels);
+  EXPECT_TRUE(s.nested->holds_interfaces(1) && s.nested->holds_interfaces(2) && !s.nested->holds_interfaces(0));
   EXPECT_EQ(s.nested->interface_levels, (std::vector<int>{2, 1}));
   ASSERT_EQ(s.interfaces.size(), 2u);
   const double y_lower = s.interfaces[0].y0[0], y_upper = s.interfaces[1].y0[0];
