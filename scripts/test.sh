@@ -10,5 +10,5 @@ ctest --preset release
 if [ "${RUPTURE_SANITIZE:-0}" = "1" ]; then
   cmake --preset sanitize
   cmake --build --preset sanitize
-  ASAN_OPTIONS=detect_leaks=0 ctest --preset sanitize -E 'e2e_' -LE 'benchmark|long'
+  ASAN_OPTIONS=detect_leaks=0 ctest --preset sanitize -E 'e2e_' -LE 'benchmark|long|release_only'
 fi
