@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "core/fp_mode.hpp"
-#include "io/case_toml.hpp"
+#include "input/case_toml.hpp"
 #include "solver/state.hpp"
 #include "solver/step.hpp"
 

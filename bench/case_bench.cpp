@@ -15,7 +15,7 @@
 
 #include "core/fp_mode.hpp"
 #include "cohesive/crack_tip.hpp"
-#include "io/case_toml.hpp"
+#include "input/case_toml.hpp"
 #include "solver/nested_state.hpp"
 #include "solver/step.hpp"
 #include "solver/summary.hpp"

@@ -10,7 +10,7 @@
 
 #include "cohesive/mach_angle.hpp"
 #include "core/errors.hpp"
-#include "io/case_toml.hpp"
+#include "input/case_toml.hpp"
 #include "run/checkpoint.hpp"
 #include "run/checkpoint_checks.hpp"
 #include "run/run_context.hpp"
@@ -129,7 +129,7 @@ void continue_run(RunContext& r, const Prepared& p) {
     r.crack.advance(s.time, r.eps);
     r.checkpoint.advance(s.time, r.eps);
   }
-  gather_particles(s);
+  merge_level_particles(s);
   (void)r.history.max_relative_error(0.0);
   (void)r.history.samples.back().relative_error();
   for (std::size_t i = 0; i < r.cracks.size(); ++i) {

@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <string>
 
-#include "io/case.hpp"
+#include "input/case.hpp"
 #include "run/run_context.hpp"
 
 namespace rupture::fuzz {
@@ -36,7 +36,7 @@ void reseal(std::string& bytes);
 // into the state's checks).
 Outcome checkpoint_one(const std::uint8_t* data, std::size_t size);
 
-// `text` as a case file (io/case_toml.hpp: parse_case).
+// `text` as a case file (input/case_toml.hpp: parse_case).
 Outcome case_toml_one(const std::uint8_t* data, std::size_t size);
 
 }  // namespace rupture::fuzz

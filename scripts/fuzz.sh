@@ -27,7 +27,7 @@ for target in checkpoint case_toml; do
   if [ "$target" = case_toml ]; then
     seeds=(examples tests/inputs)
     # Inputs up to 64 KiB: deep nesting and long dotted keys are refused before the parser
-    # (io/text_limits.hpp), and longer ones only slow the run.
+    # (input/text_limits.hpp), and longer ones only slow the run.
     limit=(-max_len=65536)
   fi
   build/fuzz/bin/fuzz_$target -max_total_time="$seconds" "${limit[@]}" -detect_leaks=0 -print_final_stats=1 \

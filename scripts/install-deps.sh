@@ -8,7 +8,7 @@ packages=(
   libtomlplusplus-dev libcli11-dev libfmt-dev libspdlog-dev
   libhdf5-openmpi-dev libopenmpi-dev openmpi-bin
   libgtest-dev libgmock-dev libbenchmark-dev
-  python3 python3-numpy python3-matplotlib python3-h5py
+  python3 python3-numpy python3-matplotlib python3-h5py python3-pytest
   python3-paraview xvfb xauth  # pvpython and a virtual display: the ParaView tests of particles.xdmf
   clang-14 libclang-rt-14-dev libomp-14-dev  # the fuzzers (scripts/fuzz.sh: libFuzzer and the
                                              # sanitizer runtimes, only recommended by clang; OpenMP)

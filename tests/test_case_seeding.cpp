@@ -1,6 +1,6 @@
 // Tests of solver/case_seeding.hpp (a case's particles at t = 0 without storing them, and a
-// State holding some of them), the snapshots' rows (io/snapshot.hpp: SnapshotRows) and the
-// stations' choice of particle (io/stations.hpp: NearestParticle): what a distributed run's
+// State holding some of them), the snapshots' rows (output/snapshot.hpp: SnapshotRows) and the
+// stations' choice of particle (output/stations.hpp: NearestParticle): what a distributed run's
 // ranks compute alone must be what one process computes from every particle.
 #include <gtest/gtest.h>
 
@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "io/case_toml.hpp"
-#include "io/snapshot.hpp"
-#include "io/stations.hpp"
+#include "input/case_toml.hpp"
+#include "output/snapshot.hpp"
+#include "output/stations.hpp"
 #include "solver/case_seeding.hpp"
 #include "solver/state.hpp"
 

@@ -1,4 +1,4 @@
-// Tests of io/case_toml: a valid case parses; every bad input stops with a message naming the
+// Tests of input/case_toml: a valid case parses; every bad input stops with a message naming the
 // key, the value and the allowed range.
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <string>
 
 #include "core/errors.hpp"
-#include "io/case_toml.hpp"
+#include "input/case_toml.hpp"
 #include "solver/state.hpp"
 #include "solver/summary.hpp"
 #include "support.hpp"

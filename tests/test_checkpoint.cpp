@@ -6,7 +6,7 @@
 #include <filesystem>
 
 #include "core/errors.hpp"
-#include "io/case_toml.hpp"
+#include "input/case_toml.hpp"
 #include "run/checkpoint.hpp"
 #include "solver/energy.hpp"
 #include "solver/step.hpp"

@@ -14,7 +14,7 @@
 
 #include "core/errors.hpp"
 #include "fuzz_entry.hpp"
-#include "io/case_toml.hpp"
+#include "input/case_toml.hpp"
 #include "run/checkpoint.hpp"
 #include "run/checkpoint_checks.hpp"
 #include "solver/energy.hpp"

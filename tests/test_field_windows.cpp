@@ -7,7 +7,7 @@
 #include <set>
 #include <string>
 
-#include "io/case_toml.hpp"
+#include "input/case_toml.hpp"
 #include "solver/field_windows.hpp"
 #include "solver/state.hpp"
 #include "solver/step.hpp"

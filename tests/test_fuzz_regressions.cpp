@@ -11,7 +11,7 @@
 #include <sstream>
 
 #include "fuzz_entry.hpp"
-#include "io/case_toml.hpp"
+#include "input/case_toml.hpp"
 #include "run/checkpoint.hpp"
 #include "solver/energy.hpp"
 #include "solver/step.hpp"

@@ -12,7 +12,7 @@
 #include <utility>
 
 #include "geometry/shape.hpp"
-#include "io/case_toml.hpp"
+#include "input/case_toml.hpp"
 #include "material/elastic.hpp"
 #include "particles/seed.hpp"
 #include "solver/energy.hpp"

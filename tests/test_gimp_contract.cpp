@@ -9,7 +9,7 @@
 #include <string>
 
 #include "core/errors.hpp"
-#include "io/case_toml.hpp"
+#include "input/case_toml.hpp"
 #include "solver/field_windows.hpp"
 #include "solver/state.hpp"
 #include "solver/transfer.hpp"

@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-#include "io/case_toml.hpp"
+#include "input/case_toml.hpp"
 #include "parallel/halo.hpp"
 #include "solver/energy.hpp"
 #include "solver/step.hpp"
@@ -68,7 +68,7 @@ TEST(Halo, one_rank_keeps_everything_and_steps_as_the_plain_solver) {
   State one = make_state(c);
   distribute(one, Comm::single());
   ASSERT_TRUE(one.halo);
-  EXPECT_TRUE(one.halo->peers.empty());
+  EXPECT_TRUE(halo_of(one).peers.empty());
   EXPECT_EQ(one.particles.size(), plain.particles.size());
   EXPECT_EQ(one.strain_work, strain_energy(one.particles, one.stiffness));
   for (std::size_t n = 0; n < one.grid.num_nodes(); ++n) ASSERT_TRUE(counts_node(one, 0, n));
@@ -79,7 +79,7 @@ TEST(Halo, one_rank_keeps_everything_and_steps_as_the_plain_solver) {
   }
   // No peers: the halo sums change nothing; only the migration check's re-sort may reorder
   // sums, and none is due in 20 steps of a slow push.
-  EXPECT_EQ(one.halo->migrations, 0);
+  EXPECT_EQ(halo_of(one).migrations, 0);
   ASSERT_EQ(one.particles.size(), plain.particles.size());
   for (std::size_t p = 0; p < plain.particles.size(); ++p) {
     ASSERT_EQ(one.particles.id[p], plain.particles.id[p]);

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "io/case_toml.hpp"
+#include "input/case_toml.hpp"
 #include "parallel/halo.hpp"
 #include "parallel/halo_nested.hpp"
 #include "solver/step.hpp"

@@ -1,4 +1,4 @@
-// Tests of io/names and io/text_limits: every name a user gives is checked against one rule
+// Tests of input/names and input/text_limits: every name a user gives is checked against one rule
 // (no name can reach a path outside the run directory), and no text can exhaust the parser's
 // stack or the memory before it is parsed.
 #include <gtest/gtest.h>
@@ -10,9 +10,9 @@
 #include <string>
 
 #include "core/errors.hpp"
-#include "io/case_toml.hpp"
-#include "io/names.hpp"
-#include "io/text_limits.hpp"
+#include "input/case_toml.hpp"
+#include "input/names.hpp"
+#include "input/text_limits.hpp"
 #include "support.hpp"
 
 using namespace rupture;
@@ -142,7 +142,7 @@ TEST(TextLimits, only_regular_files_of_bounded_size_are_read) {
   fs::remove_all(dir);
 }
 
-// Finite but absurd inputs (io/case_checks check_run_limits): refused at input, naming the key,
+// Finite but absurd inputs (input/case_checks check_run_limits): refused at input, naming the key,
 // before any allocation or step.
 TEST(RunLimits, absurd_materials_times_and_sizes_are_refused_before_any_work) {
   const std::string base = test::strip_case_toml();

@@ -1,4 +1,4 @@
-// Tests of io/input_schema: the key table is the validator's (every documented key is accepted
+// Tests of input/input_schema: the key table is the validator's (every documented key is accepted
 // by its table, every table rejects an undocumented key), the examples and test inputs use only
 // documented keys, range texts say what the validator's messages say, and lookups of concrete
 // keys (--explain) find their entries.
@@ -10,8 +10,8 @@
 #include <string>
 
 #include "core/errors.hpp"
-#include "io/case_toml.hpp"
-#include "io/input_schema.hpp"
+#include "input/case_toml.hpp"
+#include "input/input_schema.hpp"
 #include "support.hpp"
 
 using namespace rupture;

@@ -1,4 +1,4 @@
-// Tests of interfaces inside one body (interface.NAME.body, io/parse_body_split.cpp): the body
+// Tests of interfaces inside one body (interface.NAME.body, input/parse_body_split.cpp): the body
 // is split along the line into two bodies in two fields, each end inside the body is tied to
 // the body's edge, particles are those of the unsplit body, names that meant the body mean
 // all its parts, earlier interfaces follow their faces, and bad input stops with a message
@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "core/errors.hpp"
-#include "io/case_toml.hpp"
+#include "input/case_toml.hpp"
 #include "solver/cohesive_step.hpp"
 #include "solver/state.hpp"
 #include "support.hpp"

@@ -26,7 +26,7 @@
 #include <string>
 #include <vector>
 
-#include "io/case_toml.hpp"
+#include "input/case_toml.hpp"
 #include "solver/cohesive_step.hpp"
 #include "solver/field_windows.hpp"
 #include "solver/state.hpp"

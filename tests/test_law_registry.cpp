@@ -1,7 +1,7 @@
-// Tests of the table of traction laws (io/law_registry.hpp): every law has one entry of
+// Tests of the table of traction laws (input/law_registry.hpp): every law has one entry of
 // its own name, in the order and with the default that the input reference gives law = ...;
 // every alternative of CohesiveLaw has exactly one entry (law_name is its name); each entry's
-// keys are exactly those io/input_schema.cpp documents for that law; its parser accepts a
+// keys are exactly those input/input_schema.cpp documents for that law; its parser accepts a
 // table of its documented examples (with the keys its law requires besides, as the schema
 // says) and refuses every key of another law by name; and its hooks answer (`rupture check`'s
 // words, the node traction). Why: the generic code asks the table instead of comparing names,
@@ -16,11 +16,11 @@
 #include <vector>
 
 #include "cohesive/interface.hpp"
-#include "io/law_registry.hpp"
+#include "input/law_registry.hpp"
 #include "core/errors.hpp"
-#include "io/case_toml.hpp"
-#include "io/input_schema.hpp"
-#include "io/interface_csv.hpp"
+#include "input/case_toml.hpp"
+#include "input/input_schema.hpp"
+#include "output/interface_csv.hpp"
 #include "support.hpp"
 
 using namespace rupture;

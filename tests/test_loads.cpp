@@ -17,7 +17,7 @@
 #include "geometry/shape.hpp"
 #include "grid/grid.hpp"
 #include "particles/seed.hpp"
-#include "io/case_toml.hpp"
+#include "input/case_toml.hpp"
 #include "solver/energy.hpp"
 #include "solver/state.hpp"
 #include "solver/step.hpp"

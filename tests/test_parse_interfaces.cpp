@@ -1,4 +1,4 @@
-// Tests of the [interface.*] tables (io/parse_interfaces.cpp, io/parse_fault.cpp for law =
+// Tests of the [interface.*] tables (input/parse_interfaces.cpp, input/parse_fault.cpp for law =
 // "slip_weakening"): each law's keys reach the right fields of InterfaceSpec and of the law
 // (values in SI units as docs/input.md lists them: Pa, m, Pa/m, m/s; nothing converted),
 // the documented defaults are applied (tau_max = sigma_max, delta_t from q, delta_tc =
@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "core/errors.hpp"
-#include "io/case_toml.hpp"
+#include "input/case_toml.hpp"
 #include "support.hpp"
 
 using namespace rupture;

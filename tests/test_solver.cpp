@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "core/errors.hpp"
-#include "io/case_toml.hpp"
+#include "input/case_toml.hpp"
 #include "run/driver.hpp"
 #include "solver/state.hpp"
 #include "solver/step.hpp"

@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <string>
 
-#include "io/case_toml.hpp"
+#include "input/case_toml.hpp"
 #include "run/driver.hpp"
 #include "run/step_cost.hpp"
 

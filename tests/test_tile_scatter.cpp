@@ -30,7 +30,7 @@
 #include <string>
 #include <vector>
 
-#include "io/case_toml.hpp"
+#include "input/case_toml.hpp"
 #include "shape/gimp.hpp"
 #include "solver/field_windows.hpp"
 #include "solver/state.hpp"

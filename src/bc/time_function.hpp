@@ -31,7 +31,7 @@ struct TimeFunction {
   std::vector<double> table_t{}, table_v{};  // table points (set_table), s and value units
   std::vector<double> table_integral{};     // integral of the interpolant from t_0 to t_k
 
-  // Makes this a table function through (t[k], v[k]); t strictly increasing (validated by io/).
+  // Makes this a table function through (t[k], v[k]); t strictly increasing (validated by input/).
   void set_table(std::vector<double> t, std::vector<double> v, double scale = 1.0) {
     kind = Kind::table;
     value = scale;

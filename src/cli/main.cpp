@@ -30,15 +30,16 @@
 
 #include "cli/print_check.hpp"
 #include "cli/print_result.hpp"
+#include "core/build_info.hpp"
 #include "core/errors.hpp"
 #include "core/fp_mode.hpp"
-#include "io/case_toml.hpp"
+#include "input/case_toml.hpp"
 #include "run/checkpoint.hpp"
 #include "core/fault_injection.hpp"
 #include "parallel/agreement.hpp"
 #include "parallel/comm.hpp"
-#include "io/input_schema.hpp"
-#include "io/text_limits.hpp"
+#include "input/input_schema.hpp"
+#include "input/text_limits.hpp"
 #include "run/driver.hpp"
 #include "run/sweep.hpp"
 
@@ -91,7 +92,7 @@ CaseSource read_case_source(const std::string& path, const std::vector<std::stri
   return CaseSource{read_bounded_file(path, kMaxCaseBytes, "case file"), path, overrides};
 }
 
-// rupture check --explain KEY: the schema entry (io/input_schema.hpp), or exit code 1 with the
+// rupture check --explain KEY: the schema entry (input/input_schema.hpp), or exit code 1 with the
 // documented keys that come close.
 int explain(const std::string& key) {
   if (const KeyDoc* e = find_key(key)) {
@@ -135,6 +136,7 @@ int main(int argc, char** argv) {
     return 1;
   }
   CLI::App app{"rupture: dynamic fracture with GIMP and cohesive zones"};
+  app.set_version_flag("--version", version_line(), "print the version, the commit it was built from, the compiler");
   app.require_subcommand(1);
   std::string case_path, out_dir;
   std::vector<std::string> overrides;

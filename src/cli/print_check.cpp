@@ -8,7 +8,7 @@
 #include <fmt/ranges.h>
 #include <vector>
 
-#include "io/law_registry.hpp"
+#include "input/law_registry.hpp"
 #include "parallel/rank_plan.hpp"
 #include "run/step_cost.hpp"
 #include "solver/state.hpp"
@@ -52,7 +52,7 @@ void print_check(const std::string& path, const Case& c) {
     const InterfaceSpec& is = c.interfaces[k];
     const Polyline line = is.geometry();
     const double length = line.length();
-    const std::string law_text = law_entry(is).describe(is);  // io/law_registry.hpp
+    const std::string law_text = law_entry(is).describe(is);  // input/law_registry.hpp
     const std::string where =
         line.num_vertices() == 2 && line.y[0] == line.y[1]
             ? fmt::format("on y = {:g} m, x in [{:g}, {:g}] m", line.y[0], line.x[0], line.x[1])

@@ -6,7 +6,7 @@
 #pragma once
 #include <string>
 
-#include "io/case.hpp"
+#include "input/case.hpp"
 #include "run/driver.hpp"
 
 namespace rupture {

@@ -8,7 +8,7 @@
 namespace rupture {
 
 namespace {
-// "name = value: rule", the shape of the input layer's messages (io/case_toml.cpp).
+// "name = value: rule", the shape of the input layer's messages (input/case_toml.cpp).
 std::string out_of_range(const char* name, double value, const char* rule) {
   return fmt::format("{} = {:g}: {}", name, value, rule);
 }

@@ -58,7 +58,7 @@ struct InterfaceSpec {
   bool contact = false;
   ContactLaw contact_law;
   // Where the two fields are bonded (tied): any number of lines (bonded_points gives one; a
-  // line inside one body that ends inside it gets one beyond each such end, io/). None and
+  // line inside one body that ends inside it gets one beyond each such end, input/). None and
   // `bonded`: the horizontal form, along y from bonded_from to bonded_to.
   std::vector<Polyline> bonded_lines;
   bool bonded = false;

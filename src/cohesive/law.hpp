@@ -47,7 +47,7 @@
 //
 // To add a law: one header (+ .cpp for validate()) with a struct keeping the contract, its
 // test file, one more alternative in CohesiveLaw, and its entry in the table of laws the
-// input may name (io/law_registry.hpp: its keys, parser, words in `rupture check`, node
+// input may name (input/law_registry.hpp: its keys, parser, words in `rupture check`, node
 // traction; docs/cohesive_laws.md).
 #pragma once
 #include <concepts>

@@ -2,9 +2,9 @@
 // Plane regions that bodies are made of (units: m, angles in rad): axis-aligned rectangles,
 // simple polygons (either orientation), circles and rotated ellipses, and a Region = one outer
 // shape minus any number of cut-outs, on one side of any number of cuts (a body split along a
-// line: io/parse_body_split.cpp). contains() answers whether a point lies inside; points
+// line: input/parse_body_split.cpp). contains() answers whether a point lies inside; points
 // within round-off of a boundary may go either way (seeding never asks about them for shapes
-// on grid lines: sub-cell centres sit half a sub-cell inside). Shapes are validated by io/
+// on grid lines: sub-cell centres sit half a sub-cell inside). Shapes are validated by input/
 // (polygon_self_intersection, signed_area), not here.
 #pragma once
 #include <optional>

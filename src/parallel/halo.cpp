@@ -107,7 +107,7 @@ void check_distributable(const State&, int) {
 }
 
 void set_blocks(State& s, std::vector<CellBlock> blocks) {
-  Halo& h = *s.halo;
+  Halo& h = halo_of(s);
   h.blocks = std::move(blocks);
   h.peers.clear(), h.node_i.clear(), h.node_j.clear(), h.terms.clear(), h.box_node.clear();
   build_peers(h, s.grid);
@@ -126,8 +126,8 @@ ExchangeCost exchange_cost(const State& s) {
   ExchangeCost cost;
   const auto add = [&](const State& l) {
     if (!l.halo) return;
-    cost.bytes_sent += l.halo->bytes_sent;
-    cost.seconds += l.halo->exchange_seconds;
+    cost.bytes_sent += halo_of(l).bytes_sent;
+    cost.seconds += halo_of(l).exchange_seconds;
   };
   if (s.nested)
     for (const State& l : s.nested->levels) add(l);
@@ -168,15 +168,14 @@ void keep_own_particles(State& s) {
   for (std::size_t p = 0; p < P.size(); ++p) {
     const int c = std::clamp(s.grid.x.cell_of(P.x[p]), 0, s.grid.x.cells - 1);
     const int r = std::clamp(s.grid.y.cell_of(P.y[p]), 0, s.grid.y.cells - 1);
-    away[p] = !s.halo->owns_cell(c, r);
+    away[p] = !halo_of(s).owns_cell(c, r);
   }
   Particles others;
   P.move_marked(away, others);
 }
 
-void halo_sum(State& s, std::initializer_list<NodalArray> arrays) {
-  if (!s.halo) return;
-  Halo& h = *s.halo;
+void Halo::sum(State& s, std::initializer_list<NodalArray> arrays) {
+  Halo& h = *this;
   GridFields& G = s.fields;
   const std::size_t A = arrays.size(), F = std::size_t(G.num_fields);
   // Pack: per peer, field-major, the box's nodes row by row, the arrays per node (0 where the
@@ -230,9 +229,8 @@ void halo_sum(State& s, std::initializer_list<NodalArray> arrays) {
     }
 }
 
-void halo_save(State& s, std::initializer_list<NodalArray> arrays) {
-  if (!s.halo) return;
-  Halo& h = *s.halo;
+void Halo::save(const State& s, std::initializer_list<NodalArray> arrays) {
+  Halo& h = *this;
   const GridFields& G = s.fields;
   const std::size_t A = arrays.size(), N = h.node_i.size();
   h.saved.assign(std::size_t(G.num_fields) * N * A, 0.0);
@@ -245,9 +243,8 @@ void halo_save(State& s, std::initializer_list<NodalArray> arrays) {
     }
 }
 
-void halo_sum_added(State& s, std::initializer_list<NodalArray> arrays) {
-  if (!s.halo) return;
-  Halo& h = *s.halo;
+void Halo::sum_added(State& s, std::initializer_list<NodalArray> arrays) {
+  Halo& h = *this;
   GridFields& G = s.fields;
   const std::size_t A = arrays.size(), F = std::size_t(G.num_fields), N = h.node_i.size();
   auto added = [&](std::size_t f, std::size_t n, std::size_t a, const NodalArray arr) {
@@ -289,10 +286,9 @@ void halo_sum_added(State& s, std::initializer_list<NodalArray> arrays) {
     }
 }
 
-void halo_lowest_region(State& s, std::vector<int>& mark, std::vector<std::size_t>& changed) {
+void Halo::lowest_region(const State& s, std::vector<int>& mark, std::vector<std::size_t>& changed) {
   changed.clear();
-  if (!s.halo) return;
-  Halo& h = *s.halo;
+  Halo& h = *this;
   const GridFields& G = s.fields;
   const std::size_t F = std::size_t(G.num_fields);
   constexpr double kNone = 1e9;  // no region (region indices are small)
@@ -328,9 +324,8 @@ void halo_lowest_region(State& s, std::vector<int>& mark, std::vector<std::size_
     }
 }
 
-bool counts_node(const State& s, int field, std::size_t node) {
-  if (!s.halo) return true;
-  const Halo& h = *s.halo;
+bool Halo::counts_node(const State& s, int field, std::size_t node) const {
+  const Halo& h = *this;
   const std::size_t nx = std::size_t(s.grid.nodes_x());
   const int i = int(node % nx), j = int(node / nx);
   if (h.count_by_block) {  // the rank whose block holds the node (the last cell's far nodes too)
@@ -347,9 +342,8 @@ bool counts_node(const State& s, int field, std::size_t node) {
          h.counts_here[std::size_t(field) * h.node_i.size() + std::size_t(n)];
 }
 
-void migrate_if_due(State& s) {
-  if (!s.halo) return;
-  Halo& h = *s.halo;
+void Halo::migrate_if_due(State& s) {
+  Halo& h = *this;
   h.step_start = std::chrono::steady_clock::now();
   if (h.comm.max(h.drift) < kMigrateCells * h.cell) {
     if (s.step % s.plan.sort_interval == 0) rebalance_if_needed(s);  // a crack's load moves too
@@ -360,7 +354,7 @@ void migrate_if_due(State& s) {
 }
 
 void migrate_particles(State& s) {
-  Halo& h = *s.halo;
+  Halo& h = halo_of(s);
   Particles& P = s.particles;
   // Destination of each particle that left the block: the peer whose block holds its cell.
   std::vector<unsigned char> leaving(P.size(), 0);
@@ -415,9 +409,8 @@ void migrate_particles(State& s) {
   s.plan.valid = false;  // re-sort (and re-measure the windows) before the scatter
 }
 
-void finish_distributed_step(State& s, double drift_at_start) {
-  if (!s.halo) return;
-  Halo& h = *s.halo;
+void Halo::finish_step(State& s, double drift_at_start) {
+  Halo& h = *this;
   h.drift += s.plan.drift - drift_at_start;
   h.step_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - h.step_start).count();
   h.particle_steps += double(s.particles.size());
@@ -429,14 +422,7 @@ void finish_distributed_step(State& s, double drift_at_start) {
   throw SimulationError(h.comm.size() > 1 ? fmt::format("{} (rank {})", what, failed) : what);
 }
 
-void fail_in_step(State& s, const std::string& what) {
-  if (!s.halo) throw SimulationError(what);
-  if (s.halo->failure.empty()) s.halo->failure = what;
-}
-
-bool failed_in_step(const State& s) { return s.halo && !s.halo->failure.empty(); }
-
-double sum_over_ranks(const State& s, double v) { return s.halo ? s.halo->comm.sum(v) : v; }
-long sum_over_ranks(const State& s, long v) { return s.halo ? s.halo->comm.sum(v) : v; }
+double sum_over_ranks(const State& s, double v) { return s.halo ? halo_of(s).comm.sum(v) : v; }
+long sum_over_ranks(const State& s, long v) { return s.halo ? halo_of(s).comm.sum(v) : v; }
 
 }  // namespace rupture

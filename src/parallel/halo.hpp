@@ -31,6 +31,7 @@
 
 #include "parallel/comm.hpp"
 #include "parallel/decomposition.hpp"
+#include "solver/rank_exchange.hpp"
 #include "solver/state.hpp"
 #include "solver/transfer.hpp"
 
@@ -53,7 +54,7 @@ struct NodeBox {
 NodeBox reach_box(const CellBlock& b, const Grid& g, int width);
 NodeBox overlap(const NodeBox& a, const NodeBox& b);
 
-struct Halo {
+struct Halo final : RankExchange {
   Comm comm = Comm::single();
   std::vector<CellBlock> blocks;  // every rank's block, cells (ghost cells included)
   NodeBox reach;                  // this rank's reach
@@ -102,10 +103,10 @@ struct Halo {
   double step_seconds = 0.0, particle_steps = 0.0, node_steps = 0.0, owned_nodes = 0.0;
   std::chrono::steady_clock::time_point step_start;
   std::string last_rebalance;         // what the last one did (the driver prints it)
-  std::string failure;               // a SimulationError caught on this rank this step
-  // What the exchanges cost so far: bytes this rank sent to its peers, and the wall time
-  // inside them (the transfer and the wait for the slowest peer), s.
-  double bytes_sent = 0.0, exchange_seconds = 0.0;
+  // What the exchanges cost so far: bytes this rank sent to its peers (and, in
+  // RankExchange::exchange_seconds, the wall time inside them: the transfer and the wait for
+  // the slowest peer, s). RankExchange::failure: a SimulationError caught on this rank this step.
+  double bytes_sent = 0.0;
   // The neighbour exchange of `buffers` (sized: every recv already has the size that arrives),
   // timed and counted.
   void exchange(bool sized);
@@ -115,7 +116,27 @@ struct Halo {
     const CellBlock& b = block();
     return c >= b.c0 && c < b.c1 && r >= b.r0 && r < b.r1;
   }
+
+  // The step's exchanges (solver/rank_exchange.hpp; each documented below by the name the
+  // solver calls it by): this file and parallel/halo_interface.cpp, halo_nested.cpp.
+  void sum(State& s, std::initializer_list<NodalArray> arrays) override;
+  void save(const State& s, std::initializer_list<NodalArray> arrays) override;
+  void sum_added(State& s, std::initializer_list<NodalArray> arrays) override;
+  void lowest_region(const State& s, std::vector<int>& mark, std::vector<std::size_t>& changed) override;
+  bool counts_node(const State& s, int field, std::size_t node) const override;
+  void sync_interface_nodes(State& s, CohesiveInterface& c, std::initializer_list<InterfaceArray> arrays) override;
+  void check_faces_in_reach(State& s) override;
+  void migrate_if_due(State& s) override;
+  void finish_step(State& s, double drift_at_start) override;
+  void send_to_level_owners(NestedState& n) override;
+  void migrate_levels_if_due(NestedState& n) override;
+  void finish_nested_step(NestedState& n, const NestedDrift& before) override;
+  double min_over_ranks(double v) const override { return comm.min(v); }
+  bool fixes_windows() const override { return !reaches.empty(); }
 };
+
+// This rank's halo of a distributed State (s.halo, which only a Halo implements).
+inline Halo& halo_of(const State& s) { return static_cast<Halo&>(*s.halo); }
 
 // Splits s (the same State on every rank: made by make_state, or restored from a checkpoint;
 // uniform or graded grid, one lattice) among comm's ranks by its particles now, and keeps this rank's
@@ -183,7 +204,10 @@ ExchangeCost exchange_cost(const State& s);
 // The distributed run's checks of a case, before any work starts (InputError naming the key).
 void check_distributable(const State& s, int ranks);
 
-// Sums the given nodal arrays over the ranks that reach each shared node (collective among
+// The step's exchanges, called by the solver through solver/rank_exchange.hpp (the names it
+// calls them by, then Halo's):
+//
+// halo_sum (Halo::sum): sums the given nodal arrays over the ranks that reach each shared node (collective among
 // neighbours; nothing when s is not distributed): at every halo node each copy gets the
 // holders' values added in increasing rank order from 0.0 (a rank whose field window does not
 // hold the node adds 0), so every copy holds the same bits; nodes of no other rank's reach are
@@ -194,13 +218,10 @@ void check_distributable(const State& s, int ranks);
 // mass is counted by none. It resets those counts on every such call, and leaves them alone in
 // a call whose first array is any other (forces, re-mapped momentum): pass the mass first in
 // the scatter's sum, and sum it again before any node-counted sum of a new step.
-void halo_sum(State& s, std::initializer_list<NodalArray> arrays);
-
-// The same for what a phase adds to arrays that were summed already (the owners' cohesive
+//
+// halo_save, halo_sum_added (Halo::save, sum_added): the same for what a phase adds to arrays that were summed already (the owners' cohesive
 // forces): halo_save keeps their values at the halo nodes, halo_sum_added sums what each rank
 // added since, in rank order, onto the kept values.
-void halo_save(State& s, std::initializer_list<NodalArray> arrays);
-void halo_sum_added(State& s, std::initializer_list<NodalArray> arrays);
 
 // Interfaces (parallel/halo_interface.cpp). A node is owned by the rank whose block holds the
 // cell of its reference point; a rank knows the nodes whose reference cell lies within 2 cells
@@ -212,11 +233,9 @@ void distribute_interfaces(State& s);
 // How many (node, rank) pairs `rank` sends in each sync of the interfaces' nodes, with the
 // split `blocks` (the exchange volume rupture check --ranks predicts).
 long interface_nodes_sent(const State& s, const std::vector<CellBlock>& blocks, int rank);
-// Owners send the listed per-node arrays to the ranks that know the nodes.
-using InterfaceArray = std::vector<double> CohesiveInterface::*;
-void sync_interface_nodes(State& s, CohesiveInterface& c, std::initializer_list<InterfaceArray> arrays);
-// Every known face's stencil lies in the reach (else a diagnosis for the end of the step).
-void check_faces_in_reach(State& s);
+// sync_interface_nodes (Halo::): owners send the listed per-node arrays to the ranks that know
+// the nodes. check_faces_in_reach (Halo::): every known face's stencil lies in the reach (else
+// a diagnosis for the end of the step).
 // Every rank gets every node's and Gauss point's state from its owner (outputs: the interface
 // profiles, crack summaries, stored energy); gather_crack_times: the nodes' crack and rupture
 // times, peak slip rates and faces only (the crack tip samples and crack files).
@@ -225,37 +244,31 @@ void gather_crack_times(State& s);
 // The run's work on interface k (the ranks' parts summed), J/m.
 double interface_work(const State& s, std::size_t k);
 
-// [loads] velocity regions (solver/load_step.cpp): every copy of a halo node must be prescribed
+// halo_lowest_region (Halo::lowest_region): [loads] velocity regions (solver/load_step.cpp): every copy of a halo node must be prescribed
 // alike. `mark`, per element of s.fields: the lowest region whose particles on this rank touch
 // the node, or -1; after the call, at every halo node, the lowest over the ranks holding it.
 // `changed`: the elements whose mark changed (collective among neighbours).
-void halo_lowest_region(State& s, std::vector<int>& mark, std::vector<std::size_t>& changed);
-
-// Whether a node-counted sum (external work of prescribed and absorbing edges) counts grid
+//
+// counts_node (Halo::): whether a node-counted sum (external work of prescribed and absorbing edges) counts grid
 // node `node` of `field` on this rank: every copy holds the same values, and the lowest rank
 // that gave the node mass in this step's scatter counts it (a fixed owner may hold no particle
 // of that field near it).
-bool counts_node(const State& s, int field, std::size_t node);
-
-// At the start of a step: once a particle anywhere may have moved kMigrateCells since the last
+//
+// migrate_if_due (Halo::): at the start of a step: once a particle anywhere may have moved kMigrateCells since the last
 // migration, every rank sends the particles that left its block to the block's rank, and
-// marks its particles for a re-sort (collective).
-void migrate_if_due(State& s);
-// The move itself (collective among neighbours): particles that left the block go to their
+// marks its particles for a re-sort (collective), then rebalances when due (rebalance_if_needed).
+// migrate_particles: the move itself (collective among neighbours): particles that left the block go to their
 // block's rank; the drift bound restarts.
 void migrate_particles(State& s);
 
-// At the end of a step: adds the step's particle drift to the migration bound, and stops every
+// finish_distributed_step (Halo::finish_step): at the end of a step: adds the step's particle drift to the migration bound, and stops every
 // rank together when one failed (its diagnosis, thrown as SimulationError on all ranks).
-void finish_distributed_step(State& s, double drift_at_start);
-
-// A failure a phase of the step found on this rank (what, where, when): one process throws it
+//
+// fail_in_step, failed_in_step (solver/rank_exchange.hpp): a failure a phase of the step found on this rank (what, where, when): one process throws it
 // at once as SimulationError; distributed, the step's first is kept, and the rank goes on
 // taking part in the step's exchanges, skipping the work the failure makes unsafe
 // (failed_in_step: the cohesive forces and face moves), until finish_distributed_step (or
-// nested_finish_step) stops every rank together with it.
-void fail_in_step(State& s, const std::string& what);
-bool failed_in_step(const State& s);
+// Halo::finish_nested_step) stops every rank together with it.
 
 // Sum over ranks of a per-rank quantity (identity when not distributed).
 double sum_over_ranks(const State& s, double v);

@@ -69,7 +69,7 @@ long interface_nodes_sent(const State& s, const std::vector<CellBlock>& blocks, 
 }
 
 void distribute_interfaces(State& s) {
-  Halo& h = *s.halo;
+  Halo& h = halo_of(s);
   const int me = h.comm.rank();
   h.links.assign(s.interfaces.size(), {});
   h.owned_nodes = 0.0;
@@ -118,9 +118,8 @@ void distribute_interfaces(State& s) {
     });
 }
 
-void sync_interface_nodes(State& s, CohesiveInterface& c, std::initializer_list<InterfaceArray> arrays) {
-  if (!s.halo) return;
-  Halo& h = *s.halo;
+void Halo::sync_interface_nodes(State& s, CohesiveInterface& c, std::initializer_list<InterfaceArray> arrays) {
+  Halo& h = *this;
   const std::size_t ic = std::size_t(&c - s.interfaces.data());
   const Halo::InterfaceLinks& L = h.links[ic];
   const std::size_t A = arrays.size();
@@ -145,7 +144,7 @@ void sync_interface_nodes(State& s, CohesiveInterface& c, std::initializer_list<
 
 void gather_interface_state(State& s) {
   if (!s.halo) return;
-  const Comm& comm = s.halo->comm;
+  const Comm& comm = halo_of(s).comm;
   for (CohesiveInterface& c : s.interfaces) {
     const std::vector<unsigned char>& o = c.rank_owned;
     for (auto* v : {&c.ux_up, &c.uy_up, &c.ux_lo, &c.uy_lo, &c.fx_node, &c.fy_node,
@@ -160,9 +159,8 @@ void gather_interface_state(State& s) {
   }
 }
 
-void check_faces_in_reach(State& s) {
-  if (!s.halo) return;
-  Halo& h = *s.halo;
+void Halo::check_faces_in_reach(State& s) {
+  Halo& h = *this;
   for (std::size_t ic = 0; ic < s.interfaces.size(); ++ic) {
     const CohesiveInterface& c = s.interfaces[ic];
     for (std::size_t k = 0; k < c.num_nodes(); ++k) {
@@ -190,7 +188,7 @@ void gather_crack_times(State& s) {
   for (CohesiveInterface& c : s.interfaces)
     for (auto* v : {&c.node_crack_time, &c.node_rupture_time, &c.node_peak_slip_rate, &c.ux_up,
                     &c.uy_up, &c.ux_lo, &c.uy_lo})
-      whole(s.halo->comm, c.rank_owned, *v, 1);
+      whole(halo_of(s).comm, c.rank_owned, *v, 1);
 }
 
 double interface_work(const State& s, std::size_t k) {

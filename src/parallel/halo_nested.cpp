@@ -257,7 +257,7 @@ void window_levels(NestedState& n) {
   std::vector<std::size_t> whole(levels);        // the lattice's nodes (the old layout's field size)
   for (std::size_t l = 0; l < levels; ++l) {
     State& s = n.levels[l];
-    const NodeBox b = s.halo->reach.empty() ? NodeBox{0, 0, 0, 0} : s.halo->reach;
+    const NodeBox b = halo_of(s).reach.empty() ? NodeBox{0, 0, 0, 0} : halo_of(s).reach;
     const int F = s.fields.num_fields, nx = s.grid.nodes_x(), ny = s.grid.nodes_y(), w = b.i1 - b.i0 + 1;
     whole[l] = s.grid.num_nodes();
     s.fields.set_windows(std::size_t(nx), std::size_t(ny), std::vector<int>(std::size_t(F), b.i0),
@@ -357,17 +357,16 @@ void distribute_nested(State& s, const Comm& comm, bool fresh, const NestedSplit
   s.strain_work = s.external_work = 0.0;
   for (const State& L : n.levels) s.strain_work += L.strain_work, s.external_work += L.external_work;
   s.particles_step = -1;  // re-merge this rank's particles
-  gather_particles(s);
+  merge_level_particles(s);
 }
 
-void nested_send_to_owners(NestedState& n) {
-  if (!n.levels[0].halo) return;
-  const Comm& comm = n.levels[0].halo->comm;
+void Halo::send_to_level_owners(NestedState& n) {
+  const Comm& comm = halo_of(n.levels[0]).comm;
   constexpr std::size_t kRecord = (Particles::kPacked + 1) * sizeof(double);  // level, particle
   std::vector<std::vector<unsigned char>> send(std::size_t(comm.size())), recv;
   for (std::size_t l = 0; l < n.levels.size(); ++l) {
     State& s = n.levels[l];
-    Halo& h = *s.halo;
+    Halo& h = halo_of(s);
     Particles& P = s.particles;
     std::vector<unsigned char> leaving(P.size(), 0);
     bool any = false;
@@ -401,9 +400,8 @@ void nested_send_to_owners(NestedState& n) {
     }
 }
 
-void nested_migrate_ranks_if_due(NestedState& n) {
-  if (!n.levels[0].halo) return;
-  const Halo& h = *n.levels[0].halo;
+void Halo::migrate_levels_if_due(NestedState& n) {
+  const Halo& h = halo_of(n.levels[0]);
   // Per-level time steps: only when every level begins a step (no scatter held), and at half
   // the bound: until the next such step the particles move at most the levels' sync drift
   // (kSubcycleDrift x kMigrateDrift of a finest cell) and one level step more.
@@ -413,18 +411,8 @@ void nested_migrate_ranks_if_due(NestedState& n) {
   for (State& s : n.levels) migrate_particles(s);
 }
 
-NestedDrift nested_drift_before(NestedState& n) {
-  NestedDrift d;
-  for (State& s : n.levels) {
-    d.window_drift.push_back(s.window_drift);
-    s.last_move = 0.0;  // a level whose step goes on does not move its particles
-  }
-  return d;
-}
-
-void nested_finish_step(NestedState& n, const NestedDrift& before) {
-  if (!n.levels[0].halo) return;
-  const Comm& comm = n.levels[0].halo->comm;
+void Halo::finish_nested_step(NestedState& n, const NestedDrift& before) {
+  const Comm& comm = halo_of(n.levels[0]).comm;
   std::vector<double> move;
   for (const State& s : n.levels) move.push_back(s.last_move);
   comm.max(move.data(), int(move.size()));
@@ -435,15 +423,15 @@ void nested_finish_step(NestedState& n, const NestedDrift& before) {
   }
   std::string failure;
   for (State& s : n.levels) {
-    s.halo->drift += largest;
-    if (failure.empty()) failure = s.halo->failure;
-    s.halo->failure.clear();
+    halo_of(s).drift += largest;
+    if (failure.empty()) failure = halo_of(s).failure;
+    halo_of(s).failure.clear();
   }
   // The reaches hold a particle's stencil while it stays within a cell of its block; with
   // per-level time steps rank moves wait for the levels to begin a step together (above), so
   // the bound is checked: past it a scatter would miss the halo. (One dt for every level: the
   // next step begins with the move, as on one grid.)
-  const Halo& h = *n.levels[0].halo;
+  const Halo& h = halo_of(n.levels[0]);
   if (failure.empty() && n.subcycled() && h.drift > kMigrateCells * h.cell)
     failure = fmt::format("step {}, t = {:.6g} s: particles may have moved {:.3g} finest cells since they last "
                           "changed rank (the halo holds 1): the per-level time steps kept the levels "

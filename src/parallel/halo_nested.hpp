@@ -90,22 +90,17 @@ void distribute_held_nested(State& s, const Comm& comm, const std::vector<std::v
 // rank's block made with the ids one process gives them; no rank holds the case's particles.
 State make_nested_rank_state(const Case& c, const Comm& comm);
 
-// In the nested step (solver/nested_state.cpp), distributed runs only (no-ops otherwise):
-// at the start, once due, every level's particles that left the block go to its rank;
-struct NestedDrift {
-  std::vector<double> window_drift;  // per level, before the particle move
-};
-void nested_migrate_ranks_if_due(NestedState& n);
-// after particles changed level: each one whose cell on its new level is another rank's goes
-// there (on levels coarser than the cut level a block's sides move down to the level's lines,
-// so the owner may differ; collective: all ranks);
-void nested_send_to_owners(NestedState& n);
-// before the step's particle move, the levels' drift bounds (the move adds to them; a level
-// whose step goes on adds nothing);
-NestedDrift nested_drift_before(NestedState& n);
-// at the end: each level's drift bound grows by the largest move over the ranks (so the next
-// level change comes on the step one process would take it), the rank-move bound by the
-// largest of them; a failure on any rank (kept in its level 0 halo's `failure`) stops all.
-void nested_finish_step(NestedState& n, const NestedDrift& before);
+
+// The nested step's exchanges (solver/nested_state.cpp's step calls them through
+// solver/rank_exchange.hpp on level 0's halo; distributed runs only):
+// Halo::migrate_levels_if_due: at the start, once due, every level's particles that left the
+// block go to its rank;
+// Halo::send_to_level_owners: after particles changed level, each one whose cell on its new
+// level is another rank's goes there (on levels coarser than the cut level a block's sides move
+// down to the level's lines, so the owner may differ; collective: all ranks);
+// Halo::finish_nested_step: at the end, each level's drift bound (from nested_drift_before,
+// solver/nested_state.hpp) grows by the largest move over the ranks (so the next level change
+// comes on the step one process would take it), the rank-move bound by the largest of them; a
+// failure on any rank (kept in its level 0 halo's `failure`) stops all.
 
 }  // namespace rupture

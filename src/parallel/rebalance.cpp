@@ -29,7 +29,7 @@ namespace {
 
 // Interface node-update cost over particle-update cost, measured on all ranks (0: no data yet).
 double node_weight(const State& s) {
-  const Halo& h = *s.halo;
+  const Halo& h = halo_of(s);
   double m[4] = {s.cohesive_seconds, h.step_seconds - h.exchange_seconds, h.particle_steps, h.node_steps};
   h.comm.sum(m, 4);
   const double particle_seconds = m[1] - m[0];
@@ -43,7 +43,7 @@ constexpr double kUnits = 16.0;
 }  // namespace
 
 void rebalance_if_needed(State& s) {
-  Halo& h = *s.halo;
+  Halo& h = halo_of(s);
   const Comm& comm = h.comm;
   if (!comm.distributed() || !h.rebalance) return;
   Particles& P = s.particles;
@@ -112,7 +112,7 @@ void rebalance_if_needed(State& s) {
 }
 
 void enable_rebalance(State& s, bool on) {
-  if (s.halo && !s.nested) s.halo->rebalance = on;  // nested levels: one split (halo_nested.cpp)
+  if (s.halo && !s.nested) halo_of(s).rebalance = on;  // nested levels: one split (halo_nested.cpp)
 }
 
 std::string kept_split_drift(const State& s, const Comm& comm, const std::vector<long>& start,

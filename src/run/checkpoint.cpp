@@ -168,7 +168,7 @@ void fields(A& a, CohesiveInterface& c) {
 // A nested run (solver/nested_state.hpp): every level's State as above (its particle count
 // changes as particles move between levels, and its window_drift decides the next move), the
 // levels' clock and the migration count. The run's own State keeps the interfaces, which live
-// there between steps; its merged particles are not stored (gather_particles re-merges them).
+// there between steps; its merged particles are not stored (merge_level_particles re-merges them).
 template <class A>
 void fields(A& a, NestedState& n) {
   a.same("levels.count", n.levels.size());

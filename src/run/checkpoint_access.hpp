@@ -4,7 +4,7 @@
 // reading and checking.
 #pragma once
 #include "cohesive/crack_tip.hpp"
-#include "io/snapshot.hpp"
+#include "output/snapshot.hpp"
 
 namespace rupture {
 

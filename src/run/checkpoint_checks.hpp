@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "io/snapshot.hpp"
+#include "output/snapshot.hpp"
 #include "run/run_context.hpp"
 
 namespace rupture {

@@ -144,7 +144,7 @@ void read_checkpoint_particles(const std::string& dir, RunContext& ctx) {
   for (std::size_t l = 0; l < held.size(); ++l) take_particles(*held[l], std::move(read[l]));
   s.particle_parts = 0;
   s.particles_step = -1;  // nested: the levels' particles merged anew
-  gather_particles(s);
+  merge_level_particles(s);
 }
 
 std::vector<std::vector<double>> read_checkpoint_share(const std::string& dir, RunContext& ctx, const Comm& comm) {

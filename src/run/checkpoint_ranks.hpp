@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "io/case.hpp"
+#include "input/case.hpp"
 #include "parallel/comm.hpp"
 #include "run/run_context.hpp"
 

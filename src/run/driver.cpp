@@ -40,9 +40,9 @@ void step_forward(State& s) {
 
 // Distributed: says so when the split followed the load in this step.
 void note_rebalance(const State& s, RunResult& result, bool writer) {
-  if (!s.halo || s.halo->rebalances == result.rebalances) return;
-  result.rebalances = s.halo->rebalances;
-  if (writer) fmt::print("{}\n", s.halo->last_rebalance);
+  if (!s.halo || halo_of(s).rebalances == result.rebalances) return;
+  result.rebalances = halo_of(s).rebalances;
+  if (writer) fmt::print("{}\n", halo_of(s).last_rebalance);
 }
 
 // The step's agreement: a signal on any rank and a write that failed on rank 0 reach every rank

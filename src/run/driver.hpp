@@ -1,10 +1,10 @@
 // rupture/run/driver.hpp
 // Runs a validated case to its end time and writes the run directory:
-//   DIR/run.json       input echo, version, sizes, dt, timing, status (see io/run_json.hpp)
-//   DIR/history.csv    energy history (io/history.hpp)
-//   DIR/particles.xdmf + DIR/snapshots/*.h5   particle snapshots (io/snapshot.hpp)
+//   DIR/run.json       input echo, version, sizes, dt, timing, status (see output/run_json.hpp)
+//   DIR/history.csv    energy history (output/history.hpp)
+//   DIR/particles.xdmf + DIR/snapshots/*.h5   particle snapshots (output/snapshot.hpp)
 //   DIR/crack_tip.csv, DIR/crack_stretches.csv crack tip and separated stretches (E10, E11)
-//   DIR/interface/*.csv                       interface profiles (io/interface_csv.hpp)
+//   DIR/interface/*.csv                       interface profiles (output/interface_csv.hpp)
 //   DIR/checkpoint/checkpoint.bin              last checkpoint (run/checkpoint.hpp)
 // An unstable run stops with status "failed" and a diagnosis; what was written stays valid.
 // While running, history.csv, the crack files and run.json (status "running", heartbeat) are
@@ -24,7 +24,7 @@
 #include <vector>
 
 #include "cohesive/crack_tip.hpp"
-#include "io/case.hpp"
+#include "input/case.hpp"
 #include "parallel/comm.hpp"
 #include "run/run_context.hpp"
 

@@ -5,7 +5,7 @@
 // throws SimulationError, naming the step, the fastest particle and time.cfl, once the bodies
 // hold more than twice the energy supplied to them.
 #pragma once
-#include "io/history.hpp"
+#include "output/history.hpp"
 #include "solver/state.hpp"
 
 namespace rupture {

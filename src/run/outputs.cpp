@@ -57,7 +57,7 @@ class ClosingRecord final : public Output {
     RunContext& ctx = io_.ctx;
     for (std::size_t k = 0; k < ctx.cracks.size(); ++k)
       if (ctx.cracks[k].samples().back().time < t) ctx.cracks[k].sample(s.interfaces[k], t);
-    gather_particles(s);  // for the energy sample and the snapshot
+    merge_level_particles(s);  // for the energy sample and the snapshot
     record_energy(io_, true);
     if (ctx.prof.interval > 0) write_interfaces(io_);
     if (ctx.snapshots) ctx.snapshots->write(s.particles, s.stiffness, s.time, s.step);
@@ -169,7 +169,7 @@ RunOutputs choose_outputs(RunIo& io) {
   if (io.c.time.stop_at_interface_end) add(std::make_unique<ClosingRecord>(io));
   add(std::make_unique<StationSamples>(io));
   add(std::make_unique<ScheduledOutput>(ctx.hist, true, [&io] {
-    gather_particles(io.s);
+    merge_level_particles(io.s);
     record_energy(io, true);
   }));
   if (ctx.prof.interval > 0)  // profiles read the interfaces only
@@ -179,7 +179,7 @@ RunOutputs choose_outputs(RunIo& io) {
   if (ctx.snapshots)
     add(std::make_unique<ScheduledOutput>(ctx.snap, true, [&io] {
       State& s = io.s;
-      gather_particles(s);
+      merge_level_particles(s);
       flush_record(io);  // the small record files first: they say what happened if the disk fills
       io.ctx.snapshots->write(s.particles, s.stiffness, s.time, s.step);
     }));

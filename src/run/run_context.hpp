@@ -10,9 +10,9 @@
 
 #include "cohesive/crack_tip.hpp"
 #include "cohesive/mach_angle.hpp"
-#include "io/history.hpp"
-#include "io/snapshot.hpp"
-#include "io/stations.hpp"
+#include "output/history.hpp"
+#include "output/snapshot.hpp"
+#include "output/stations.hpp"
 #include "solver/state.hpp"
 
 namespace rupture {

@@ -14,8 +14,8 @@
 #include "core/atomic_file.hpp"
 #include "core/errors.hpp"
 #include "core/fault_injection.hpp"
-#include "io/csv_units.hpp"
-#include "io/interface_csv.hpp"
+#include "output/csv_units.hpp"
+#include "output/interface_csv.hpp"
 #include "parallel/halo.hpp"
 #include "run/checkpoint.hpp"
 #include "run/checkpoint_ranks.hpp"
@@ -153,7 +153,7 @@ void read_mach_angles(RunIo& io) {
   const Comm& comm = io.comm;
   const SumOverRanks sum_bins = [&comm](double* v, int n) { comm.sum(v, n); };
   State& s = io.s;
-  gather_particles(s);
+  merge_level_particles(s);
   for (std::size_t k = 0; k < io.ctx.cracks.size(); ++k) {
     MachReading m;
     if (read_mach_angle(io.ctx.cracks[k], io.crack_speeds[k].shear, s.particles, s.grid, io.shear_speed, s.time,
@@ -183,7 +183,7 @@ void write_cracks(RunIo& io) {
 }
 
 void sample_stations_now(RunIo& io) {
-  gather_particles(io.s);
+  merge_level_particles(io.s);
   sample_stations(io.s, io.probes, io.ctx.stations);
 }
 

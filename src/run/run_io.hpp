@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "io/case.hpp"
-#include "io/run_json.hpp"
-#include "io/stations.hpp"
+#include "input/case.hpp"
+#include "output/run_json.hpp"
+#include "output/stations.hpp"
 #include "material/elastic.hpp"
 #include "run/driver.hpp"
 #include "run/progress.hpp"

@@ -82,7 +82,7 @@ void add_totals(RunIo& io, RunResult& result, long first_step) {
   result.energy_balance_error_final = record.energy_balance_error_final;
   result.cohesive_seconds = s.cohesive_seconds;
   if (s.halo) {
-    result.migrations = s.halo->migrations;
+    result.migrations = halo_of(s).migrations;
     const long steps = std::max(1L, s.step - first_step);  // this process's steps
     const ExchangeCost cost = exchange_cost(s);
     result.exchange_bytes_per_step = comm.sum(cost.bytes_sent) / double(comm.size()) / double(steps);

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "io/case.hpp"
-#include "io/stations.hpp"
+#include "input/case.hpp"
+#include "output/stations.hpp"
 #include "run/driver.hpp"
 #include "run/run_context.hpp"
 #include "solver/summary.hpp"

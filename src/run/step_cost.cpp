@@ -10,8 +10,8 @@
 #include <cmath>
 #include <filesystem>
 
-#include "io/interface_csv.hpp"
-#include "io/snapshot.hpp"
+#include "output/interface_csv.hpp"
+#include "output/snapshot.hpp"
 #include "solver/nested_state.hpp"
 #include "solver/state.hpp"
 #include "solver/step.hpp"

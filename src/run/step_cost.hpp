@@ -10,7 +10,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "io/case.hpp"
+#include "input/case.hpp"
 
 namespace rupture {
 

@@ -19,7 +19,7 @@
 
 #include "core/errors.hpp"
 #include "core/atomic_file.hpp"
-#include "io/case_toml.hpp"
+#include "input/case_toml.hpp"
 
 namespace rupture {
 namespace fs = std::filesystem;

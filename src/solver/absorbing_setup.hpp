@@ -10,7 +10,7 @@
 
 #include "bc/absorbing.hpp"
 #include "grid/grid.hpp"
-#include "io/case.hpp"
+#include "input/case.hpp"
 
 namespace rupture {
 

@@ -12,7 +12,7 @@
 #include <functional>
 #include <vector>
 
-#include "io/case.hpp"
+#include "input/case.hpp"
 #include "particles/seed.hpp"
 #include "solver/state.hpp"
 

@@ -9,7 +9,7 @@
 
 #include "core/errors.hpp"
 #include "core/fault_injection.hpp"
-#include "parallel/halo.hpp"
+#include "solver/rank_exchange.hpp"
 
 namespace rupture {
 namespace {

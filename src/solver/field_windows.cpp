@@ -1,7 +1,7 @@
 // rupture/solver/field_windows.cpp
 #include "solver/field_windows.hpp"
 
-#include "parallel/halo.hpp"
+#include "solver/rank_exchange.hpp"
 
 #include <algorithm>
 #include <climits>
@@ -94,7 +94,7 @@ void fit_field_windows(State& s) {
   const int n[2] = {s.grid.nodes_x(), s.grid.nodes_y()};
   if (s.whole_grid_fields) {
     // A distributed nested level keeps the window of its reach (parallel/halo_nested.hpp).
-    if (s.halo && !s.halo->reaches.empty()) return;
+    if (s.halo && s.halo->fixes_windows()) return;
     if (s.fields.size() != std::size_t(fields) * s.grid.num_nodes())
       s.fields.resize(fields, std::size_t(n[0]), std::size_t(n[1]));
     return;

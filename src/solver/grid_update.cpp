@@ -5,7 +5,7 @@
 
 #include <stdexcept>
 
-#include "parallel/halo.hpp"
+#include "solver/rank_exchange.hpp"
 
 namespace rupture {
 namespace {

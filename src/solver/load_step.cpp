@@ -7,7 +7,7 @@
 #include <algorithm>
 
 #include "core/errors.hpp"
-#include "parallel/halo.hpp"
+#include "solver/rank_exchange.hpp"
 
 namespace rupture {
 namespace {

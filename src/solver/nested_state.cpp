@@ -9,8 +9,6 @@
 #include <stdexcept>
 
 #include "core/errors.hpp"
-#include "parallel/halo.hpp"
-#include "parallel/halo_nested.hpp"
 #include "particles/seed.hpp"
 #include "solver/absorbing_setup.hpp"
 #include "solver/case_seeding.hpp"
@@ -20,6 +18,7 @@
 #include "solver/load_step.hpp"
 #include "solver/time_step.hpp"
 #include "solver/nested_phases.hpp"
+#include "solver/rank_exchange.hpp"
 #include "solver/transfer.hpp"
 
 namespace rupture {
@@ -220,7 +219,7 @@ State make_nested_run_state(const Case& c, const LevelShare* share) {
   s.mass_floor = first.mass_floor;
   for (const State& l : n->levels) s.initial_energy += l.initial_energy, s.strain_work += l.strain_work;
   s.nested = std::move(n);
-  gather_particles(s);
+  merge_level_particles(s);
   return s;
 }
 
@@ -267,7 +266,7 @@ void step_nested_run(State& s) {
   return_interfaces(s);
 }
 
-void gather_particles(State& s) {
+void merge_level_particles(State& s) {
   if (!s.nested || s.particles_step == s.step) return;
   s.particles.resize(0);
   for (const State& l : s.nested->levels) s.particles.append_copy(l.particles);
@@ -625,6 +624,16 @@ NestedState make_nested_state(const Case& c, const LevelShare* share) {
   return n;
 }
 
+NestedDrift nested_drift_before(NestedState& n) {
+  NestedDrift d;
+  for (State& s : n.levels) {
+    d.window_drift.push_back(s.window_drift);
+    s.last_move = 0.0;  // a level whose step goes on does not move its particles
+  }
+  return d;
+}
+
+
 void step(NestedState& n) {
   // Every particle onto the level owning its centre, once any may have moved kMigrateDrift
   // finest cells since the last time (the particle move sums max |v| dt into window_drift,
@@ -642,10 +651,12 @@ void step(NestedState& n) {
   const double due = (subcycled ? kSubcycleDrift : 1.0) * kMigrateDrift * n.levels.back().grid.x.h;
   if (all_begin && (n.step == 0 || drift >= due)) {
     migrate_levels(n);
-    nested_send_to_owners(n);  // distributed: each to the rank owning its cell on its level
+    if (RankExchange* x = n.levels[0].halo.get()) x->send_to_level_owners(n);  // distributed: each to
+    // the rank owning its cell on its level
     for (State& s : n.levels) s.window_drift = 0.0;
   }
-  nested_migrate_ranks_if_due(n);  // distributed: particles that left the rank's block
+  if (RankExchange* x = n.levels[0].halo.get()) x->migrate_levels_if_due(n);  // distributed: particles
+  // that left the rank's block
   for (std::size_t l = 0; l < n.levels.size(); ++l) {
     State& s = n.levels[l];
     if (!subcycled || n.substep % n.period[l] == 0) {  // the particles have moved since
@@ -667,7 +678,8 @@ void step(NestedState& n) {
   }
   n.time += n.dt;
   ++n.step;
-  nested_finish_step(n, before);  // distributed: drift bounds over the ranks; a failure stops all
+  if (RankExchange* x = n.levels[0].halo.get()) x->finish_nested_step(n, before);  // distributed: drift
+  // bounds over the ranks; a failure on any rank stops all
 }
 
 }  // namespace rupture

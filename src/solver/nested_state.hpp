@@ -134,7 +134,7 @@ void lend_interfaces(State& s);
 void return_interfaces(State& s);
 
 // InputError naming grid.refinement when the case holds what nested levels do not support yet
-// (rupture check and rupture run refuse it at input: io/case_checks).
+// (rupture check and rupture run refuse it at input: input/case_checks).
 void check_nested_support(const Case& c);
 
 // The levels of c.grid's boxes and their states (with `share`, each level's share of its
@@ -151,6 +151,14 @@ void for_each_level_point(const Case& c, const NestedState& n, int l,
 // One time step (c.solver.scheme) on every level.
 void step(NestedState& n);
 
+// Before the step's particle move, the levels' drift bounds (the move adds to them; a level
+// whose step goes on adds nothing): what a distributed step's end grows by the largest move
+// over the ranks (RankExchange::finish_nested_step).
+struct NestedDrift {
+  std::vector<double> window_drift;  // per level, before the particle move, m
+};
+NestedDrift nested_drift_before(NestedState& n);
+
 // The run's State for grid.refinement = "nested" (make_state calls it): levels in s.nested,
 // the interfaces (each on the level that holds it whole) in s.interfaces, particles gathered.
 State make_nested_run_state(const Case& c, const LevelShare* share = nullptr);
@@ -160,7 +168,7 @@ void step_nested_run(State& s);
 // of a coarser level's step with per-level time steps): outputs and checkpoints wait for it.
 bool synchronized(const State& s);
 // Merges every level's particles into s.particles, once per step (a no-op for other runs).
-void gather_particles(State& s);
+void merge_level_particles(State& s);
 // This process's particles (a nested run's: on every level, whether gathered or not).
 std::size_t held_particles(const State& s);
 

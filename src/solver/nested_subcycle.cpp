@@ -31,7 +31,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "parallel/halo.hpp"
+#include "solver/rank_exchange.hpp"
 #include "solver/cohesive_step.hpp"
 #include "solver/grid_update.hpp"
 #include "solver/nested_phases.hpp"
@@ -223,7 +223,7 @@ void subcycled_time_step(NestedState& n) {
     s.dt_cap = cap;
     h = std::min(h, s.dt / double(n.period[l]));
   }
-  if (n.levels[0].halo) h = n.levels[0].halo->comm.min(h);  // distributed: one h for all ranks
+  h = min_over_ranks(n.levels[0], h);  // distributed: one h for all ranks
   if (forced > 0.0) h = forced;
   h = std::min(h, cap);
   for (State& s : n.levels) s.dt = h;

@@ -10,7 +10,7 @@
 
 #include "core/errors.hpp"
 #include "core/fault_injection.hpp"
-#include "parallel/halo.hpp"
+#include "solver/rank_exchange.hpp"
 #include "solver/stencil_batch.hpp"
 #include "solver/transfer.hpp"
 

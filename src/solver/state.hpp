@@ -14,14 +14,14 @@
 #include "bc/velocity_bc.hpp"
 #include "cohesive/interface.hpp"
 #include "grid/grid.hpp"
-#include "io/case.hpp"
+#include "input/case.hpp"
 #include "material/elastic.hpp"
 #include "particles/particles.hpp"
 
 namespace rupture {
 
 struct NestedState;  // solver/nested_state.hpp
-struct Halo;         // parallel/halo.hpp
+class RankExchange;  // solver/rank_exchange.hpp (parallel/halo.hpp implements it)
 
 // Race-free scatter without locks: particles are kept physically sorted by vertical strips
 // of `strip_cells` cell columns, and inside a strip by the first node of their stencil, row
@@ -152,15 +152,16 @@ struct State {
   // State keeps the run's clock, energies and step limits, holds the interfaces (lent to their
   // level during a step), `grid` is that level's (the finest without interfaces), and
   // `particles` is every level's particles merged, as of step `particles_step`
-  // (gather_particles). run/checkpoint.cpp stores the levels.
+  // (merge_level_particles). run/checkpoint.cpp stores the levels.
   std::shared_ptr<NestedState> nested;
   long particles_step = -1;
   bool nested_level = false;  // one level of a nested run (checkpointed as such)
 
-  // A distributed run (MPI, parallel/halo.hpp): this rank's block, its neighbours and their
-  // exchanges; null on one process. `particles` are then this rank's, and strain_work and
-  // external_work this rank's parts of the run's sums.
-  std::shared_ptr<Halo> halo;
+  // A distributed run (MPI): the exchanges with the other ranks the step makes
+  // (solver/rank_exchange.hpp; this rank's block and neighbours: parallel/halo.hpp, halo_of);
+  // null on one process. `particles` are then this rank's, and strain_work and external_work
+  // this rank's parts of the run's sums.
+  std::shared_ptr<RankExchange> halo;
   // Checkpoints (run/checkpoint.hpp): 0 when the particles are in the file, N when a
   // distributed run wrote them in N part files beside it (run/checkpoint_ranks.hpp).
   int particle_parts = 0;

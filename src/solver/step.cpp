@@ -14,7 +14,7 @@
 #include <cmath>
 
 #include "core/errors.hpp"
-#include "parallel/halo.hpp"
+#include "solver/rank_exchange.hpp"
 #include "solver/cohesive_step.hpp"
 #include "solver/field_windows.hpp"
 #include "solver/levels.hpp"
@@ -72,7 +72,7 @@ void common_time_step(const Levels& L) {
     choose_time_step(s);
     dt = std::min(dt, s.dt);
   });
-  if (L.first().halo) dt = L.first().halo->comm.min(dt);
+  dt = min_over_ranks(L.first(), dt);
   each(L, [&](State& s) { s.dt = dt; });
 }
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "io/case.hpp"
+#include "input/case.hpp"
 #include "material/elastic.hpp"
 
 namespace rupture {

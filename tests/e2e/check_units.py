@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Every column of every CSV file in a run directory is listed, with a unit, in DIR/units.csv
-(io/csv_units.cpp), and units.csv lists nothing the files do not hold for the files present.
+(output/csv_units.cpp), and units.csv lists nothing the files do not hold for the files present.
 
 Usage: check_units.py RUN_DIR [RUN_DIR ...]
 """

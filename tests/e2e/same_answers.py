@@ -46,7 +46,7 @@ ROSAKIS = [os.path.join(EX, "rosakis1999.toml")] + CROP
 UNIFORM = ROSAKIS + ["--set", "grid.coarse_cell_size=0", "--set", "grid.cell_size=1e-3",
                      "--set", "time.end=13e-6"]
 # Each realization named, and the example's boxes as they were recorded: refined grids default
-# to nested levels with per-level steps where verified (io/case_toml.cpp set_default_subcycling),
+# to nested levels with per-level steps where verified (input/case_toml.cpp set_default_subcycling),
 # and the example's level-2 box now reaches down the impacted edge; these references predate both.
 BOXES = ["--set", "grid.cell_size=0.5e-3", "--set", "time.end=11e-6", "--set", "grid.refine.level2.min=[0.0,-0.03]"]
 REFINED = ROSAKIS + BOXES + ["--set", 'grid.refinement="graded"']

@@ -28,7 +28,7 @@
 #include <string>
 #include <vector>
 
-#include "io/case_toml.hpp"
+#include "input/case_toml.hpp"
 #include "parallel/comm.hpp"
 #include "parallel/halo.hpp"
 #include "parallel/halo_nested.hpp"
@@ -43,7 +43,7 @@ namespace {
 void advance(State& s, long steps) {
   s.dt_cap = INFINITY;
   for (long k = 0; k < steps; ++k) step(s);
-  gather_particles(s);  // nested levels: every level's particles, merged
+  merge_level_particles(s);  // nested levels: every level's particles, merged
 }
 
 // Every rank's particles, packed, on rank 0 (empty elsewhere). A test helper: a run never
@@ -102,9 +102,9 @@ int main(int argc, char** argv) {
                 A.volume0 == B.volume0 && A.half_x == B.half_x && A.half_y == B.half_y && A.sxx == B.sxx &&
                 A.syy == B.syy && A.sxy == B.sxy && A.field == B.field && A.material == B.material && A.id == B.id;
     same = same && w.mass_floor == d.mass_floor && w.strain_work == d.strain_work && !w.halo == !d.halo &&
-           (!w.halo || w.halo->blocks.size() == d.halo->blocks.size());
-    for (std::size_t r = 0; same && w.halo && r < w.halo->blocks.size(); ++r) {
-      const CellBlock &a = w.halo->blocks[r], &b = d.halo->blocks[r];
+           (!w.halo || halo_of(w).blocks.size() == halo_of(d).blocks.size());
+    for (std::size_t r = 0; same && w.halo && r < halo_of(w).blocks.size(); ++r) {
+      const CellBlock &a = halo_of(w).blocks[r], &b = halo_of(d).blocks[r];
       same = a.c0 == b.c0 && a.c1 == b.c1 && a.r0 == b.r0 && a.r1 == b.r1;
     }
     // A resumed run's split (distribute_held): the particles dealt to the ranks in turn, keyed
@@ -133,8 +133,8 @@ int main(int argc, char** argv) {
       const Particles& H = h.particles;
       same = same && A.x == H.x && A.y == H.y && A.vx == H.vx && A.sxy == H.sxy && A.id == H.id &&
              A.mass == H.mass && A.half_x == H.half_x && A.field == H.field;
-      for (std::size_t r = 0; same && r < w.halo->blocks.size(); ++r) {
-        const CellBlock &a = w.halo->blocks[r], &b = h.halo->blocks[r];
+      for (std::size_t r = 0; same && r < halo_of(w).blocks.size(); ++r) {
+        const CellBlock &a = halo_of(w).blocks[r], &b = halo_of(h).blocks[r];
         same = a.c0 == b.c0 && a.c1 == b.c1 && a.r0 == b.r0 && a.r1 == b.r1;
       }
     }
@@ -143,7 +143,7 @@ int main(int argc, char** argv) {
                                                         : std::fabs(d.initial_energy);
   }
   advance(d, steps);
-  const long migrations = d.halo->migrations, rebalances = d.halo->rebalances;
+  const long migrations = halo_of(d).migrations, rebalances = halo_of(d).rebalances;
   gather_interface_state(d);  // every interface node from its owner (collective)
   // Interface nodes per rank: the test must split an interface between ranks.
   std::vector<double> owned(std::size_t(world.size()), 0.0);

@@ -38,7 +38,7 @@
 #include <numeric>
 #include <vector>
 
-#include "io/case_toml.hpp"
+#include "input/case_toml.hpp"
 #include "parallel/comm.hpp"
 #include "parallel/halo.hpp"
 #include "solver/state.hpp"
@@ -165,7 +165,7 @@ int main(int argc, char** argv) {
     std::vector<CellBlock> blocks(static_cast<std::size_t>(n));
     for (int r = 0; r < n; ++r) blocks[std::size_t(r)] = slots[std::size_t(perm[std::size_t(r)])];
     set_blocks(s, blocks);
-    const Halo& h = *s.halo;
+    const Halo& h = halo_of(s);
     std::vector<NodeBox> reach(static_cast<std::size_t>(n));
     for (int r = 0; r < n; ++r) reach[std::size_t(r)] = reach_of(blocks[std::size_t(r)], nx, ny);
     const NodeBox& mine = reach[std::size_t(me)];

@@ -17,7 +17,7 @@
 #include <utility>
 #include <vector>
 
-#include "io/case_toml.hpp"
+#include "input/case_toml.hpp"
 #include "solver/energy.hpp"
 #include "solver/state.hpp"
 #include "solver/step.hpp"

@@ -27,7 +27,7 @@
 #include <cmath>
 #include <string>
 
-#include "io/case_toml.hpp"
+#include "input/case_toml.hpp"
 #include "material/elastic.hpp"
 #include "solver/state.hpp"
 #include "solver/step.hpp"

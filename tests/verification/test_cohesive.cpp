@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "io/case_toml.hpp"
+#include "input/case_toml.hpp"
 #include "support.hpp"
 #include "solver/state.hpp"
 #include "solver/step.hpp"

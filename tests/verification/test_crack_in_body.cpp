@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-#include "io/case_toml.hpp"
+#include "input/case_toml.hpp"
 #include "run/driver.hpp"
 
 using namespace rupture;

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "io/case_toml.hpp"
+#include "input/case_toml.hpp"
 #include "material/elastic.hpp"
 #include "solver/energy.hpp"
 #include "wave_helpers.hpp"

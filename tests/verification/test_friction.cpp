@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-#include "io/case_toml.hpp"
+#include "input/case_toml.hpp"
 #include "solver/state.hpp"
 #include "solver/step.hpp"
 #include "support.hpp"

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "cohesive/crack_tip.hpp"
-#include "io/case_toml.hpp"
+#include "input/case_toml.hpp"
 #include "solver/energy.hpp"
 #include "solver/state.hpp"
 #include "solver/step.hpp"

@@ -37,7 +37,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "io/case_toml.hpp"
+#include "input/case_toml.hpp"
 #include "material/elastic.hpp"
 #include "solver/state.hpp"
 #include "solver/step.hpp"

@@ -11,7 +11,7 @@
 #include <set>
 
 #include "core/errors.hpp"
-#include "io/case_toml.hpp"
+#include "input/case_toml.hpp"
 #include "run/checkpoint.hpp"
 #include "material/elastic.hpp"
 #include "solver/energy.hpp"
@@ -486,8 +486,8 @@ void check_nested_checkpoint(const Case& c, int before, int after, bool expect_m
   restore_checkpoint_bytes(bytes, "test", b);
   EXPECT_EQ(checkpoint_bytes(source, b), bytes) << "re-written checkpoint differs";
   for (int k = 0; k < after; ++k) step(a.s), step(b.s);
-  gather_particles(a.s);
-  gather_particles(b.s);
+  merge_level_particles(a.s);
+  merge_level_particles(b.s);
   const Particles &pa = a.s.particles, &pb = b.s.particles;
   ASSERT_EQ(pa.size(), pb.size());
   const auto same = [](const auto& u, const auto& v) {

@@ -11,7 +11,7 @@
 #include <filesystem>
 #include <string>
 
-#include "io/case_toml.hpp"
+#include "input/case_toml.hpp"
 #include "run/driver.hpp"
 
 using namespace rupture;

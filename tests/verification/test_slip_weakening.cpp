@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "io/case_toml.hpp"
+#include "input/case_toml.hpp"
 #include "solver/state.hpp"
 #include "solver/step.hpp"
 

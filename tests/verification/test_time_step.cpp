@@ -7,7 +7,7 @@
 #include <cmath>
 #include <random>
 
-#include "io/case_toml.hpp"
+#include "input/case_toml.hpp"
 #include "solver/cohesive_step.hpp"
 #include "solver/state.hpp"
 #include "solver/step.hpp"

@@ -7,7 +7,7 @@
 #include <functional>
 #include <string>
 
-#include "io/case_toml.hpp"
+#include "input/case_toml.hpp"
 #include "support.hpp"
 #include "solver/state.hpp"
 #include "solver/step.hpp"

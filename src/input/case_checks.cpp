@@ -1,0 +1,278 @@
+// rupture/input/case_checks.cpp
+#include "input/case_checks.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include <unistd.h>
+
+#include "bc/absorbing.hpp"  // edge_name
+#include "core/errors.hpp"
+#include "input/toml_section.hpp"
+#include "particles/seed.hpp"
+#include "solver/nested_state.hpp"  // the one upward include (docs/architecture.md, The layers)
+#include "solver/summary.hpp"
+
+namespace rupture {
+namespace {
+
+
+// The time function as the input states it, e.g. "velocity = 10 (trapezoid: rise_time = 1e-07,
+// plateau_time = 1.5e-05, fall_time = 1e-06)".
+std::string describe(const VelocityBC& bc) {
+  const TimeFunction& f = bc.velocity;
+  if (f.kind == TimeFunction::Kind::constant)
+    return fmt::format("velocity = {:g} (constant)", f.value);
+  if (f.kind == TimeFunction::Kind::smooth_ramp)
+    return fmt::format("velocity = {:g} (smooth_ramp: rise_time = {:g})", f.value, f.rise_time);
+  if (f.kind == TimeFunction::Kind::table)
+    return fmt::format("velocity from a table of {} points ({:g} m/s at t = {:g} s ... {:g} m/s at "
+                       "t = {:g} s)",
+                       f.table_t.size(), f.table_v.front(), f.table_t.front(), f.table_v.back(),
+                       f.table_t.back());
+  return fmt::format(
+      "velocity = {:g} (trapezoid: rise_time = {:g}, plateau_time = {:g}, fall_time = {:g})",
+      f.value, f.rise_time, f.plateau_time, f.fall_time);
+}
+
+bool same_function(const TimeFunction& a, const TimeFunction& b) {
+  if (a.kind == TimeFunction::Kind::table || b.kind == TimeFunction::Kind::table)
+    return a.kind == b.kind && a.value == b.value && a.table_t == b.table_t &&
+           a.table_v == b.table_v;
+  return a.kind == b.kind && a.value == b.value &&
+         (a.kind == TimeFunction::Kind::constant ||
+          (a.rise_time == b.rise_time && a.plateau_time == b.plateau_time &&
+           a.fall_time == b.fall_time));
+}
+
+// Bodies (by name) both conditions act on; an empty field list means every body.
+std::vector<std::string> shared_bodies(const Case& c, const VelocityBC& a, const VelocityBC& b) {
+  std::vector<std::string> names;
+  for (const BodySpec& body : c.bodies) {
+    auto acts = [&](const VelocityBC& bc) {
+      return bc.fields.empty() || std::count(bc.fields.begin(), bc.fields.end(), body.field) > 0;
+    };
+    if (acts(a) && acts(b)) names.push_back(body.name);
+  }
+  return names;
+}
+
+// SPEC E2: a node takes one prescribed value per component. resolve_nodes() applies the
+// conditions in input order, so of two that disagree the later one would silently win.
+void check_boundary_conflicts(Case& c) {
+  const Grid grid = build_grid(c.grid);
+  for (std::size_t i = 0; i < c.boundary.size(); ++i)
+    for (std::size_t j = i + 1; j < c.boundary.size(); ++j) {
+      const VelocityBC &a = c.boundary[i], &b = c.boundary[j];
+      if (a.edge != b.edge || a.component != b.component) continue;
+      const bool vertical = a.edge == Edge::left || a.edge == Edge::right;
+      const Axis& along = vertical ? grid.y : grid.x;
+      const double lo = std::max(a.from, b.from), hi = std::min(a.to, b.to), tol = 1e-9 * along.h;
+      if (hi < lo - tol) continue;
+      if (hi - lo <= tol) {  // ranges meet at a point: shared only if a node lies there
+        const int k = along.cell_of(lo);
+        if (std::fabs(along.node(k) - lo) > tol && std::fabs(along.node(k + 1) - lo) > tol)
+          continue;
+      }
+      const std::vector<std::string> bodies = shared_bodies(c, a, b);
+      if (bodies.empty()) continue;
+      std::string names;
+      for (const std::string& n : bodies) names += (names.empty() ? "" : ", ") + n;
+      const std::string where =
+          fmt::format("v_{} on the {} edge for {} {}, {} in [{:g}, {:g}] m",
+                      a.component == 0 ? "x" : "y", edge_name(a.edge),
+                      bodies.size() > 1 ? "bodies" : "body", names, vertical ? "y" : "x", lo, hi);
+      if (same_function(a.velocity, b.velocity)) {
+        c.warnings.push_back(
+            fmt::format("boundary.{} and boundary.{} both prescribe {} with the same {}: "
+                        "redundant (one of them is enough)",
+                        a.name, b.name, where, describe(a)));
+        continue;
+      }
+      throw InputError(fmt::format(
+          "input keys 'boundary.{}' and 'boundary.{}' both prescribe {}, with different values: "
+          "boundary.{}: {}; boundary.{}: {}. A node takes one prescribed velocity per component: "
+          "give both the same function and values, or make their from/to ranges, edges or bodies "
+          "disjoint",
+          a.name, b.name, where, a.name, describe(a), b.name, describe(b)));
+    }
+}
+
+constexpr const char* kPassThrough =
+    "they are two velocity fields, so they would pass through each other. Join them with an "
+    "[interface.NAME] (upper_body, lower_body): a cohesive law, law = \"contact\" for faces "
+    "that only press and rub (friction), bonded_points / bonded_to to tie a stretch; or give "
+    "them the same bodies.NAME.field to make them one continuum";
+
+// Two plain rectangles touch along a segment of a line x = const or y = const.
+void check_touching_rectangles(const Case& c, const BodySpec& a, const BodySpec& b) {
+  const double tol = 1e-9 * c.grid.cell_size;
+  for (int d = 0; d < 2; ++d) {  // contact across a line of constant coordinate d
+    const int e = 1 - d;
+    const double lo = std::max(a.min[e], b.min[e]), hi = std::min(a.max[e], b.max[e]);
+    if (hi - lo <= tol) continue;
+    const bool a_below = std::fabs(a.max[d] - b.min[d]) <= tol;
+    if (a_below || std::fabs(b.max[d] - a.min[d]) <= tol) {
+      const double line = a_below ? a.max[d] : a.min[d];
+      throw InputError(fmt::format(
+          "bodies.{} and bodies.{} touch along {} = {:g} m, {} in [{:g}, {:g}] m, but no "
+          "[interface] joins them: {}",
+          a.name, b.name, d == 0 ? "x" : "y", line, e == 0 ? "x" : "y", lo, hi, kPassThrough));
+    }
+  }
+}
+
+// Any other shapes touch where a particle box of one shares a stretch of edge with (or
+// overlaps) a particle box of the other. Boxes are bucketed by grid cell: a box touching
+// another has its centre in the same or a neighbouring cell.
+void check_touching_shapes(const Case& c, const Grid& grid, const BodySpec& a, const BodySpec& b) {
+  const int ppc = c.grid.particles_per_cell;
+  const double gap = c.grid.refined() ? c.grid.coarse_cell_size : c.grid.cell_size;
+  if (!boxes_overlap(bounding_box(a.region), bounding_box(b.region), gap)) return;
+  std::map<std::pair<int, int>, std::vector<SeedPoint>> cells;
+  for_each_seed_point(grid, b.region, ppc, [&](const SeedPoint& p) {
+    cells[{grid.x.cell_of(p.x), grid.y.cell_of(p.y)}].push_back(p);
+  });
+  const double tol = 1e-9 * grid.cell_size();
+  std::vector<Point> contacts;
+  for_each_seed_point(grid, a.region, ppc, [&](const SeedPoint& p) {
+    const int ci = grid.x.cell_of(p.x), cj = grid.y.cell_of(p.y);
+    for (int j = cj - 1; j <= cj + 1; ++j)
+      for (int i = ci - 1; i <= ci + 1; ++i) {
+        const auto it = cells.find({i, j});
+        if (it == cells.end()) continue;
+        for (const SeedPoint& q : it->second) {
+          const double gx = std::fabs(p.x - q.x) - 0.5 * (p.lx + q.lx);
+          const double gy = std::fabs(p.y - q.y) - 0.5 * (p.ly + q.ly);
+          // Sharing a stretch of edge: touching in one direction, overlapping in the other.
+          if (std::max(gx, gy) <= tol && std::min(gx, gy) < -tol)
+            contacts.push_back({0.5 * (p.x + q.x), 0.5 * (p.y + q.y)});
+        }
+      }
+  });
+  if (contacts.empty()) return;
+  // Report the contact point nearest the mean of all of them.
+  Point mean;
+  for (const Point& q : contacts) mean.x += q.x / double(contacts.size()), mean.y += q.y / double(contacts.size());
+  const Point near = *std::min_element(contacts.begin(), contacts.end(), [&](const Point& u, const Point& v) {
+    return std::hypot(u.x - mean.x, u.y - mean.y) < std::hypot(v.x - mean.x, v.y - mean.y);
+  });
+  throw InputError(fmt::format(
+      "bodies.{} and bodies.{} touch near ({:g}, {:g}) m ({} particle faces in contact), but no "
+      "[interface] joins them: {}",
+      a.name, b.name, near.x, near.y, contacts.size(), kPassThrough));
+}
+
+// Bodies of two velocity fields (SPEC §3) interact only through an interface between their
+// fields. Touching without one, they would pass through each other: an input error (the user
+// asks for contact with an interface of law = "contact"). Bodies of one field are one
+// continuum: touching is what they are for.
+void check_touching_bodies(const Case& c) {
+  std::optional<Grid> grid;  // built only if a shape other than a plain rectangle needs it
+  for (std::size_t i = 0; i < c.bodies.size(); ++i)
+    for (std::size_t j = i + 1; j < c.bodies.size(); ++j) {
+      const BodySpec &a = c.bodies[i], &b = c.bodies[j];
+      if (a.field == b.field) continue;
+      const bool joined =
+          std::any_of(c.interfaces.begin(), c.interfaces.end(), [&](const InterfaceSpec& s) {
+            return (s.upper_field == a.field && s.lower_field == b.field) ||
+                   (s.upper_field == b.field && s.lower_field == a.field);
+          });
+      if (joined) continue;
+      if (a.plain_rectangle() && b.plain_rectangle()) {
+        check_touching_rectangles(c, a, b);
+        continue;
+      }
+      if (!grid) grid = build_grid(c.grid);
+      check_touching_shapes(c, *grid, a, b);
+    }
+}
+
+}  // namespace
+
+
+namespace {
+
+constexpr double kManySteps = 1e7;
+// Above this many steps the schedules' tolerance, 1e-6 dt (run/run_setup.cpp), is below the
+// round-off of the time itself (2^-52 time.end): outputs and the end time could be missed or
+// repeated, and near the bound t + dt rounds back to t. 2^52 x 1e-6 = 4.5e9 steps.
+constexpr double kMostSteps = 4503599627.370496;
+
+void warn_long_run(Case& c, const CaseSummary& s) {
+  if (s.steps_exact <= kManySteps) return;
+  c.warnings.push_back(fmt::format(
+      "the run takes {:.0f} time steps (more than 1e7): time.end = {:g} s at dt = {:.4g} s ({}); "
+      "check time.end and grid.cell_size",
+      s.steps_exact, c.time.end, s.dt,
+      s.dt < s.dt_cfl ? "the cohesive stability limit x time.cohesive_safety, SPEC E6"
+                      : "time.cfl x the smallest cell / c_D, SPEC E6"));
+}
+
+// The machine's physical memory, bytes (0 when unknown).
+double machine_memory_bytes() {
+  const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
+  return pages > 0 && page > 0 ? double(pages) * double(page) : 0.0;
+}
+
+// Finite but absurd inputs: what the run derives from them must be finite and in range
+// before any allocation or step (wave speeds, the step, the step count, memory, 32-bit ids).
+void check_run_limits(const Case& c, const CaseSummary& s) {
+  for (std::size_t k = 0; k < c.materials.size(); ++k) {
+    const ElasticMaterial& m = c.materials[k];
+    const WaveSpeeds& w = s.speeds[k];
+    if (std::isfinite(w.dilatational) && std::isfinite(w.shear) && w.dilatational > 0 && w.shear > 0)
+      continue;
+    fail("materials." + m.name, fmt::format("{{youngs_modulus = {:g} Pa, density = {:g} kg/m^3}}",
+                                            m.youngs_modulus, m.density),
+         fmt::format("the wave speeds (c_D = {:g} m/s, c_S = {:g} m/s, SPEC E1) must be finite and "
+                     "positive: the modulus over the density is out of range of a double",
+                     w.dilatational, w.shear));
+  }
+  if (!(std::isfinite(s.dt) && s.dt > 0))
+    fail("time.cfl", c.time.cfl,
+         fmt::format("the time step dt = {:g} s (SPEC E6, from grid.cell_size = {:g} m) must be finite "
+                     "and positive", s.dt, c.grid.cell_size));
+  if (!(s.steps_exact <= kMostSteps))
+    fail("time.end", c.time.end,
+         fmt::format("at dt = {:.4g} s (time.cfl x the smallest cell {:g} m / c_D, or the cohesive "
+                     "limit, SPEC E6) the run takes {:.4g} steps; at most {:.4g} (2^52 x 1e-6: beyond, "
+                     "the time's round-off exceeds the output schedules' tolerance of 1e-6 dt)",
+                     s.dt, s.min_cell_size, s.steps_exact, kMostSteps));
+  constexpr double kIds = 4294967295.0;  // particle ids and node indices are 32-bit
+  if (double(s.particles) > kIds)
+    fail("grid.cell_size", c.grid.cell_size,
+         fmt::format("the case seeds {} particles; at most 2^32 - 1 (32-bit particle ids)", s.particles));
+  if (double(s.nodes) * 3.0 >= 4294967296.0)
+    fail("grid.cell_size", c.grid.cell_size,
+         fmt::format("the grid has {} nodes; the particle sort numbers 3 per node in 32 bits (at most "
+                     "{:.0f}): use a coarser grid or nested levels", s.nodes, 4294967296.0 / 3.0));
+  const double estimate = double(s.memory_bytes) / (1024.0 * 1024.0);
+  const double machine = machine_memory_bytes() / (1024.0 * 1024.0);
+  const double limit = c.solver.memory_limit_mib > 0 ? c.solver.memory_limit_mib : machine;
+  if (limit > 0 && estimate > limit)
+    fail("solver.memory_limit_mib", limit,
+         fmt::format("the case needs about {:.0f} MiB (memory_estimate_mib: particles, grid fields, "
+                     "interfaces) and this machine has {:.0f} MiB; use a coarser grid.cell_size, "
+                     "nested levels, more ranks, or set solver.memory_limit_mib above the estimate "
+                     "to run anyway", estimate, machine));
+}
+
+}  // namespace
+
+void check_case_consistency(Case& c) {
+  check_boundary_conflicts(c);
+  check_touching_bodies(c);
+  if (c.grid.nested) check_nested_support(c);  // what the set-up would refuse, refused here
+  const CaseSummary s = summarize(c);
+  check_run_limits(c, s);
+  warn_long_run(c, s);
+}
+
+}  // namespace rupture

@@ -1,0 +1,60 @@
+// rupture/output/stations.hpp
+// Stations: named points whose time series the run records (the SCEC benchmarks' receivers).
+// A fault station (`interface` given) lies on that interface's line and records, interpolated
+// between the two nodes around it: slip (tangential jump, m), slip rate (m/s, the last step's
+// jump increment over dt), opening (normal jump, m), and the total shear and normal tractions
+// (Pa, prestress included; normal tension positive). A body station records the velocity of the
+// particle nearest its point at t = 0 (and where that particle is). Written to
+// DIR/stations/NAME.csv atomically at every flush and at the end; the samples are checkpointed.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "input/case.hpp"
+
+namespace rupture {
+
+struct State;
+
+// One station's recorded rows (checkpointed), kFaultColumns or kBodyColumns per row.
+struct StationSeries {
+  std::vector<double> rows;
+};
+
+// Where each station reads, derived once from the case and the state at t = 0 (not state).
+struct StationProbe {
+  int interface = -1;
+  std::size_t a = 0, b = 0;  // fault: the nodes around the station
+  double f = 0.0;            //        weight of node b (linear in arc length)
+  std::uint32_t particle_id = 0;  // body: the particle read
+  std::size_t slot = 0;           //       its index at the last read (re-found after sorts)
+};
+
+inline constexpr std::size_t kFaultColumns = 6;  // time, slip, slip_rate, opening, shear, normal
+inline constexpr std::size_t kBodyColumns = 5;   // time, x, y, vx, vy
+
+// A body station reads the particle nearest its point at t = 0, the lowest id among equally
+// near ones (so the choice does not depend on the particles' order): among s's particles, or
+// when `nearest` is given, its entry for the station (a distributed run's choice among every
+// particle the case seeds, solver/case_seeding.hpp; entries of fault stations unused).
+std::vector<StationProbe> make_probes(const std::vector<StationSpec>& specs, const State& s,
+                                      const std::vector<std::uint32_t>* nearest = nullptr);
+// The id of the particle nearest (x, y) in a sequence visited one by one: the lowest among
+// equally near ones.
+struct NearestParticle {
+  double x = 0.0, y = 0.0;
+  double best = std::numeric_limits<double>::infinity();
+  std::uint32_t id = 0;
+  void visit(double px, double py, std::uint32_t pid);
+};
+// Appends one row per station at the state's time.
+void sample_stations(const State& s, std::vector<StationProbe>& probes,
+                     std::vector<StationSeries>& series);
+void write_stations(const std::string& dir, const std::vector<StationSpec>& specs,
+                    const std::vector<StationProbe>& probes,
+                    const std::vector<StationSeries>& series);
+
+}  // namespace rupture
