@@ -1,5 +1,6 @@
 // Tests of input/case_toml: a valid case parses; every bad input stops with a message naming the
 // key, the value and the allowed range.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -452,4 +453,45 @@ TEST(CaseToml, every_bad_shape_is_reported_with_key_value_and_rule) {
     for (const std::string& s : b.expect)
       EXPECT_NE(msg.find(s), std::string::npos) << b.name << ": '" << s << "' not in: " << msg;
   }
+}
+
+// Materials as seismologists give them, (c_P, c_S, rho): mu = rho c_S^2, lambda + 2 mu = rho c_P^2.
+// Round trip through the independent wave-speed formulas of material/elastic: Homalite's (E, nu)
+// -> its plane-strain c_D, c_S -> a material given by those speeds -> the same E and nu, and the
+// same speeds back. The speeds are the 3D ones, so under plane stress E and nu are the same and
+// the printed c_D is the plate's, sqrt(E / (rho (1 - nu^2))).
+TEST(CaseToml, materials_from_wave_speeds_round_trip) {
+  const ElasticMaterial homalite{"homalite", 5.2e9, 0.34, 1246.0};
+  const WaveSpeeds w = wave_speeds(homalite, PlaneMode::strain);
+  const std::string speeds = fmt::format("p_wave_speed = {:.17g}\ns_wave_speed = {:.17g}\ndensity = 1246.0",
+                                         w.dilatational, w.shear);
+  const std::string text = replace(test::strip_case_toml(), "youngs_modulus = 5.2e9\npoisson_ratio = 0.34\ndensity = 1246.0", speeds);
+  for (const PlaneMode mode : {PlaneMode::strain, PlaneMode::stress}) {
+    const Case c = parse_case(text, {mode == PlaneMode::strain ? "model.plane=\"strain\"" : "model.plane=\"stress\""});
+    const ElasticMaterial& m = c.materials.at(0);
+    EXPECT_NEAR(m.youngs_modulus, 5.2e9, 1e-12 * 5.2e9);
+    EXPECT_NEAR(m.poisson_ratio, 0.34, 1e-12);
+    const WaveSpeeds back = wave_speeds(m, mode);
+    EXPECT_NEAR(back.shear, w.shear, 1e-12 * w.shear);
+    const double cd = mode == PlaneMode::strain ? w.dilatational
+                                                : std::sqrt(5.2e9 / (1246.0 * (1.0 - 0.34 * 0.34)));
+    EXPECT_NEAR(back.dilatational, cd, 1e-12 * cd);
+  }
+  // A Poisson solid (c_P = sqrt 3 c_S): nu = 1/4, E = 2.5 mu.
+  const Case p = parse_case(replace(test::strip_case_toml(), "youngs_modulus = 5.2e9\npoisson_ratio = 0.34\ndensity = 1246.0",
+                                    "p_wave_speed = 6000.0\ns_wave_speed = 3464.1016151377544\ndensity = 2670.0"));
+  EXPECT_NEAR(p.materials[0].poisson_ratio, 0.25, 1e-12);
+  EXPECT_NEAR(p.materials[0].youngs_modulus, 2.5 * 2670.0 * 12e6, 1e-9 * 2.5 * 2670.0 * 12e6);
+  // One pair or the other, and a positive bulk modulus.
+  const std::string both = replace(test::strip_case_toml(), "density = 1246.0", "density = 1246.0\np_wave_speed = 2500.0\ns_wave_speed = 1300.0");
+  const std::string mixed = error_of(both);
+  EXPECT_NE(mixed.find("'materials.homalite.youngs_modulus' = 5200000000"), std::string::npos) << mixed;
+  EXPECT_NE(mixed.find("not with p_wave_speed and s_wave_speed"), std::string::npos) << mixed;
+  const std::string slow = error_of(replace(test::strip_case_toml(), "youngs_modulus = 5.2e9\npoisson_ratio = 0.34",
+                                            "p_wave_speed = 1400.0\ns_wave_speed = 1300.0"));
+  EXPECT_NE(slow.find("'materials.homalite.p_wave_speed' = 1400"), std::string::npos) << slow;
+  EXPECT_NE(slow.find("must exceed 2/sqrt(3) s_wave_speed = 1501.1"), std::string::npos) << slow;
+  const std::string alone = error_of(replace(test::strip_case_toml(), "youngs_modulus = 5.2e9\npoisson_ratio = 0.34",
+                                             "p_wave_speed = 2500.0"));
+  EXPECT_NE(alone.find("s_wave_speed"), std::string::npos) << alone;
 }

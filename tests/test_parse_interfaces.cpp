@@ -188,6 +188,14 @@ TEST(ParseInterfaces, contact_keys_and_defaults) {
   EXPECT_EQ(pc.contact_law.stiffness, 1e15);  // Pa/m
   EXPECT_EQ(pc.contact_law.friction, 0.4);
   EXPECT_EQ(pc.contact_law.tangential_stiffness, 2e14);
+  // law = "contact" without contact_stiffness: one cell of the stiffer body, M / h (as a fault's
+  // penalties; M = lambda + 2 mu, plane strain), so the penetration under a pressure p is
+  // p h / M, the compression of one cell.
+  const InterfaceSpec pd = parse_one(kGeometry + "law = \"contact\"");
+  const double E = 5.2e9, nu = 0.34;
+  const double M = E * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu));
+  EXPECT_TRUE(pd.precracked && pd.contact);
+  EXPECT_NEAR(pd.contact_law.stiffness, M / 1e-3, 1e-12 * M / 1e-3);
 }
 
 TEST(ParseInterfaces, slip_weakening_keys_and_defaults) {
@@ -296,8 +304,8 @@ TEST(ParseInterfaces, every_bad_table_names_the_key_the_value_and_what_is_allowe
        {"'interface.w.sigma_max' = 2.5", "not a parameter of law = \"slip_weakening\""}},
       {"contact keys without contact", xn + "friction = 0.3",
        {"'interface.w.contact' = false", "friction and contact_stiffness need contact = true"}},
-      {"law contact without its stiffness", kGeometry + "law = \"contact\"",
-       {"'interface.w.contact_stiffness' = (missing)", "required with law = \"contact\""}},
+      {"law contact with a zero stiffness", kGeometry + "law = \"contact\"\ncontact_stiffness = 0.0",
+       {"'interface.w.contact_stiffness' = 0", "> 0"}},
       {"law contact with contact off", kGeometry + "law = \"contact\"\ncontact = false\ncontact_stiffness = 1e15",
        {"'interface.w.contact' = false", "needs contact = true"}},
       {"contact on a fault", sw + "contact = true", {"'interface.w.contact' = true", "not with law = \"slip_weakening\""}},

@@ -41,7 +41,8 @@ class Summary(dict):
 
 class Snapshot:
     """One snapshot file: time (s), step, and its datasets read on first use (position [N,3] m,
-    velocity [N,3] m/s, sxx, syy, sxy, szz, tau_max [N] Pa, body, id)."""
+    velocity [N,3] m/s, half_size [N,2] m (GIMP half-widths; files written before 0.1.0's
+    figures lack it), sxx, syy, sxy, szz, tau_max [N] Pa, body, id)."""
 
     def __init__(self, path):
         self.path = path

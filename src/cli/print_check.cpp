@@ -36,9 +36,10 @@ void print_check(const std::string& path, const Case& c) {
     const WaveSpeeds& w = s.speeds[k];
     fmt::print(
         "material {}: c_D = {:.1f} m/s, c_S = {:.1f} m/s, c_R = {:.1f} m/s (approx. {:.1f}), "
-        "sqrt(2) c_S = {:.1f} m/s\n",
+        "sqrt(2) c_S = {:.1f} m/s; E = {:.6g} Pa, nu = {:.6g}, rho = {:g} kg/m^3\n",
         c.materials[k].name, w.dilatational, w.shear, w.rayleigh, w.rayleigh_approx,
-        std::sqrt(2.0) * w.shear);
+        std::sqrt(2.0) * w.shear, c.materials[k].youngs_modulus, c.materials[k].poisson_ratio,
+        c.materials[k].density);
   }
   for (std::size_t b = 0; b < c.bodies.size(); ++b)
     fmt::print("body {} (field {} \"{}\"): {} particles\n", c.bodies[b].name, c.bodies[b].field,
@@ -62,7 +63,7 @@ void print_check(const std::string& path, const Case& c) {
     for (const Polyline& tie : is.tie_geometries())
       ties += fmt::format("; bonded along {:g} m from ({:g}, {:g}) m", tie.length(), tie.x[0], tie.y[0]);
     fmt::print("interface {}: {} segments of {} {}; {}, {}{}{}; bodies {} (upper) and {}\n",
-               c.interface_names[k], is.segments, show_length(length / is.segments), where, law_name(is.law),
+               c.interface_names[k], is.segments, show_length(length / is.segments), where, law_entry(is).name,
                law_text, is.contact ? fmt::format("; contact, friction {:g}", is.contact_law.friction) : "",
                ties, c.bodies[std::size_t(is.upper_body)].name, c.bodies[std::size_t(is.lower_body)].name);
   }

@@ -48,6 +48,13 @@ void parse_fault_law(Section& f, const Case& c, InterfaceSpec& is);
 // pre-crack: contact defaults to true and must be, and contact_stiffness is required.
 void parse_separated_contact(Section& f, InterfaceSpec& is, double default_stiffness,
                              bool contact_only);
+// The penalties' default where a law has none of its own (faults' normal_stiffness and
+// stick_stiffness, law = "contact"'s contact_stiffness): the stiffness of one cell of the stiffer
+// adjoining body, M / h (M = lambda + 2 mu, the P-wave modulus; h the smallest cell), Pa/m.
+// The penalty's spurious compliance is then that of a layer one cell thick: an O(h) error that
+// vanishes with the grid, and the interface's stability limit stays near the bulk's
+// (docs/cohesive_laws.md). is: its bodies set.
+double cell_penalty_stiffness(const Case& c, const InterfaceSpec& is);
 // A law's validate() message "name = value: rule" as the input error of its key (`keys` maps a
 // parameter name to its input key where they differ); nothing if `problem` is empty.
 void fail_on_invalid(Section& f, const std::string& problem,

@@ -27,6 +27,43 @@ void parse_model(Section& top, Case& c) {
   c.plane = plane == "strain" ? PlaneMode::strain : PlaneMode::stress;
 }
 
+namespace {
+
+// (E, nu): the engineers' pair.
+void elastic_from_moduli(Section& m, ElasticMaterial& em) {
+  em.youngs_modulus = m.number("youngs_modulus");
+  if (!(em.youngs_modulus > 0))
+    fail(m.key("youngs_modulus"), em.youngs_modulus, "must be > 0 (Pa)");
+  em.poisson_ratio = m.number("poisson_ratio");
+  if (!(em.poisson_ratio > -1.0 && em.poisson_ratio < 0.5))
+    fail(m.key("poisson_ratio"), em.poisson_ratio, "must lie in (-1, 0.5)");
+}
+
+// (c_P, c_S), the seismologists' pair: the 3D body-wave speeds (plane strain's c_D and c_S),
+// so mu = rho c_S^2 and lambda + 2 mu = rho c_P^2, hence (docs/theory.md, E1)
+//   nu = (c_P^2 - 2 c_S^2) / (2 (c_P^2 - c_S^2)),  E = 2 mu (1 + nu).
+// nu > -1 (a positive bulk modulus) needs c_P > (2/sqrt 3) c_S; nu < 0.5 holds for any finite
+// c_P. Not together with E or nu: one pair describes the material.
+void elastic_from_wave_speeds(Section& m, ElasticMaterial& em) {
+  for (const char* k : {"youngs_modulus", "poisson_ratio"})
+    if (m.has(k))
+      fail(m.key(k), show(*m.node(k)),
+           "not with p_wave_speed and s_wave_speed: give (youngs_modulus, poisson_ratio) or "
+           "(p_wave_speed, s_wave_speed), with density");
+  const double cp = m.number("p_wave_speed"), cs = m.number("s_wave_speed");
+  if (!(cs > 0 && std::isfinite(cs))) fail(m.key("s_wave_speed"), cs, "must be > 0 and finite (m/s)");
+  if (!(cp > 2.0 / std::sqrt(3.0) * cs && std::isfinite(cp)))
+    fail(m.key("p_wave_speed"), cp,
+         fmt::format("must exceed 2/sqrt(3) s_wave_speed = {:g} m/s (a positive bulk modulus: "
+                     "Poisson's ratio above -1) and be finite",
+                     2.0 / std::sqrt(3.0) * cs));
+  const double cp2 = cp * cp, cs2 = cs * cs;
+  em.poisson_ratio = (cp2 - 2.0 * cs2) / (2.0 * (cp2 - cs2));
+  em.youngs_modulus = 2.0 * em.density * cs2 * (1.0 + em.poisson_ratio);
+}
+
+}  // namespace
+
 void parse_materials(Section& top, Case& c, ParseContext& ctx) {
   auto& material_index = ctx.material_index;
   Section mats = top.table("materials", true);
@@ -35,14 +72,12 @@ void parse_materials(Section& top, Case& c, ParseContext& ctx) {
     Section m = mats.table(name, true, allowed_keys("materials.*"));
     ElasticMaterial em;
     em.name = name;
-    em.youngs_modulus = m.number("youngs_modulus");
-    if (em.youngs_modulus <= 0)
-      fail(m.key("youngs_modulus"), em.youngs_modulus, "must be > 0 (Pa)");
-    em.poisson_ratio = m.number("poisson_ratio");
-    if (!(em.poisson_ratio > -1.0 && em.poisson_ratio < 0.5))
-      fail(m.key("poisson_ratio"), em.poisson_ratio, "must lie in (-1, 0.5)");
     em.density = m.number("density");
-    if (em.density <= 0) fail(m.key("density"), em.density, "must be > 0 (kg/m^3)");
+    if (!(em.density > 0)) fail(m.key("density"), em.density, "must be > 0 (kg/m^3)");
+    if (m.has("p_wave_speed") || m.has("s_wave_speed"))
+      elastic_from_wave_speeds(m, em);
+    else
+      elastic_from_moduli(m, em);
     material_index[name] = int(c.materials.size());
     c.materials.push_back(em);
   }

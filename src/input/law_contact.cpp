@@ -1,6 +1,7 @@
 // rupture/input/law_contact.cpp: the entry of law = "contact" in the table of laws
 // (input/law_registry.hpp): a pre-crack, no cohesion, whose faces only touch (the contact law of
-// cohesive/contact.hpp alone on every point; its stiffness, Pa/m, must be given).
+// cohesive/contact.hpp alone on every point; its stiffness, Pa/m, by default one cell of the
+// stiffer adjoining body: input/case_parse.hpp cell_penalty_stiffness).
 #include "cohesive/interface.hpp"
 #include "input/case_parse.hpp"
 #include "input/law_registry.hpp"
@@ -9,10 +10,10 @@ namespace rupture {
 
 namespace {
 
-// Every point starts separated; contact is on and its stiffness must be given.
-void parse(Section& f, InterfaceSpec& is, const Case& /*c*/) {
+// Every point starts separated; contact is on, its stiffness M / h unless given.
+void parse(Section& f, InterfaceSpec& is, const Case& c) {
   is.precracked = true;
-  parse_separated_contact(f, is, 0.0, true);
+  parse_separated_contact(f, is, cell_penalty_stiffness(c, is), true);
 }
 
 std::string describe(const InterfaceSpec& /*is*/) { return "no cohesion (pre-crack)"; }

@@ -19,17 +19,6 @@ namespace rupture {
 
 namespace {
 
-// The penalties' default: the compliance of one cell of the stiffer body, kn = kt = M / h
-// (M = lambda + 2 mu, the P-wave modulus; h the smallest cell). The penalty's spurious
-// compliance is then that of a layer one cell thick: an O(h) error that vanishes with the grid,
-// and the fault's stability limit stays near the bulk's (docs/cohesive_laws.md).
-double default_fault_stiffness(const Case& c, const InterfaceSpec& is) {
-  double m = 0.0;
-  for (int b : {is.upper_body, is.lower_body})
-    m = std::max(m, stiffness(c.materials[std::size_t(c.bodies[std::size_t(b)].material)], c.plane).c11);
-  return m / c.grid.cell_size;
-}
-
 // The slip-weakening keys of table f on top of `law` (an interface, or a stretch overriding
 // its interface's values).
 void read_slip_weakening(Section& f, SlipWeakening& law) {
@@ -118,7 +107,7 @@ void parse_fault_law(Section& f, const Case& c, InterfaceSpec& is) {
   SlipWeakening law;
   for (const char* k : {"static_friction", "dynamic_friction", "dc"})
     if (!f.has(k)) fail(f.key(k), "(missing)", "required with law = \"slip_weakening\"");
-  law.normal_stiffness = law.stick_stiffness = default_fault_stiffness(c, is);
+  law.normal_stiffness = law.stick_stiffness = cell_penalty_stiffness(c, is);  // kn = kt = M / h
   read_slip_weakening(f, law);
   is.law = law;
   parse_stretches(f, is, c);

@@ -292,6 +292,13 @@ void check_no_crossing(Section& f, const InterfaceSpec& is, const Case& c) {
 
 }  // namespace
 
+double cell_penalty_stiffness(const Case& c, const InterfaceSpec& is) {
+  double m = 0.0;
+  for (int b : {is.upper_body, is.lower_body})
+    m = std::max(m, stiffness(c.materials[std::size_t(c.bodies[std::size_t(b)].material)], c.plane).c11);
+  return m / c.grid.cell_size;
+}
+
 void parse_separated_contact(Section& f, InterfaceSpec& is, double default_stiffness,
                              bool contact_only) {
   is.contact = f.boolean("contact", contact_only);
@@ -303,9 +310,6 @@ void parse_separated_contact(Section& f, InterfaceSpec& is, double default_stiff
     fail(f.key("contact"), "false", "friction and contact_stiffness need contact = true");
   if (!is.contact) return;
   ContactLaw& k = is.contact_law;
-  if (contact_only && !f.has("contact_stiffness"))
-    fail(f.key("contact_stiffness"), "(missing)",
-         "required with law = \"contact\": the normal penalty, Pa/m, > 0");
   k.stiffness = f.number("contact_stiffness", default_stiffness);
   k.friction = f.number("friction", 0.0);
   k.tangential_stiffness = f.number("contact_tangential_stiffness", 0.0);

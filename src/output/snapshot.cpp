@@ -133,7 +133,7 @@ void SnapshotWriter::write(const Particles& p, const std::vector<ElasticStiffnes
     return;
   }
   const std::size_t n = selected_;
-  std::vector<double> pos(3 * n), vel(3 * n), tau(n), sxx(n), syy(n), sxy(n), szz(n);
+  std::vector<double> pos(3 * n), vel(3 * n), half(2 * n), tau(n), sxx(n), syy(n), sxy(n), szz(n);
   std::vector<int> body(n), id(n), vertex(n);
   for (std::size_t i = 0; i < p.size(); ++i) {
     const std::int64_t slot = rows_.row(p.id[i]);
@@ -146,6 +146,8 @@ void SnapshotWriter::write(const Particles& p, const std::vector<ElasticStiffnes
     vel[3 * k] = p.vx[i];
     vel[3 * k + 1] = p.vy[i];
     vel[3 * k + 2] = 0.0;
+    half[2 * k] = p.half_x[i];
+    half[2 * k + 1] = p.half_y[i];
     sxx[k] = p.sxx[i], syy[k] = p.syy[i], sxy[k] = p.sxy[i], szz[k] = stress_zz(stiffness[p.material[i]], p.sxx[i], p.syy[i]);
     const double a = 0.5 * (p.sxx[i] - p.syy[i]);
     tau[k] = std::sqrt(a * a + p.sxy[i] * p.sxy[i]);  // (sigma_1 - sigma_2)/2, SPEC E13
@@ -161,6 +163,7 @@ void SnapshotWriter::write(const Particles& p, const std::vector<ElasticStiffnes
   OpenSnapshot guard{file, tmp};
   write_dataset(file, "position", H5T_NATIVE_DOUBLE, pos.data(), n, 3, tmp);
   write_dataset(file, "velocity", H5T_NATIVE_DOUBLE, vel.data(), n, 3, tmp);
+  write_dataset(file, "half_size", H5T_NATIVE_DOUBLE, half.data(), n, 2, tmp);
   write_dataset(file, "sxx", H5T_NATIVE_DOUBLE, sxx.data(), n, 1, tmp);
   write_dataset(file, "syy", H5T_NATIVE_DOUBLE, syy.data(), n, 1, tmp);
   write_dataset(file, "sxy", H5T_NATIVE_DOUBLE, sxy.data(), n, 1, tmp);
@@ -190,7 +193,7 @@ void SnapshotWriter::write(const Particles& p, const std::vector<ElasticStiffnes
 void SnapshotWriter::write_collective(const Particles& p, const std::vector<ElasticStiffness>& stiffness,
                                       double time, long step, const std::string& tmp) {
   std::vector<hsize_t> rows;
-  std::vector<double> pos, vel, tau, sxx, syy, sxy, szz;
+  std::vector<double> pos, vel, half, tau, sxx, syy, sxy, szz;
   std::vector<int> body, id, vertex;
   for (std::size_t i = 0; i < p.size(); ++i) {
     const std::int64_t slot = rows_.row(p.id[i]);
@@ -199,6 +202,7 @@ void SnapshotWriter::write_collective(const Particles& p, const std::vector<Elas
     id.push_back(int(p.id[i]));
     pos.insert(pos.end(), {p.x[i], p.y[i], 0.0});
     vel.insert(vel.end(), {p.vx[i], p.vy[i], 0.0});
+    half.insert(half.end(), {p.half_x[i], p.half_y[i]});
     sxx.push_back(p.sxx[i]), syy.push_back(p.syy[i]), sxy.push_back(p.sxy[i]);
     szz.push_back(stress_zz(stiffness[p.material[i]], p.sxx[i], p.syy[i]));
     const double a = 0.5 * (p.sxx[i] - p.syy[i]);
@@ -242,6 +246,7 @@ void SnapshotWriter::write_collective(const Particles& p, const std::vector<Elas
   };
   put("position", H5T_NATIVE_DOUBLE, pos.data(), 3);
   put("velocity", H5T_NATIVE_DOUBLE, vel.data(), 3);
+  put("half_size", H5T_NATIVE_DOUBLE, half.data(), 2);
   put("sxx", H5T_NATIVE_DOUBLE, sxx.data(), 1);
   put("syy", H5T_NATIVE_DOUBLE, syy.data(), 1);
   put("sxy", H5T_NATIVE_DOUBLE, sxy.data(), 1);

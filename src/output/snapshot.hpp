@@ -1,7 +1,8 @@
 // rupture/output/snapshot.hpp
 // Particle snapshots: one HDF5 file per output time under DIR/snapshots/, plus DIR/particles.xdmf,
 // an XDMF 3 temporal collection that ParaView opens as a time series (Polyvertex topology).
-// Datasets (SI): position [N,3] m (z = 0), velocity [N,3] m/s, sxx syy sxy szz tau_max [N] Pa,
+// Datasets (SI): position [N,3] m (z = 0), velocity [N,3] m/s, half_size [N,2] m (the GIMP
+// half-widths l_x, l_y: each particle's own extent, for drawing), sxx syy sxy szz tau_max [N] Pa,
 // body [N] (velocity field id), id [N] (particle creation index; rows are in id order, the
 // same particles in the same rows in every file), connectivity [N] (0..N-1: one vertex cell
 // per particle; without it ParaView's Xdmf3 readers load the points but no cells, and the
