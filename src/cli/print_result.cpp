@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+#include <utility>
 
 #include "cohesive/crack_tip.hpp"
 #include "material/elastic.hpp"
@@ -80,6 +81,18 @@ void print_run_result(const Case& c, const RunResult& r, const std::string& out_
       fmt::print("crack.{}.arrested={}\n", n, q.arrested);
       fmt::print("crack.{}.mach_angle={:.2f}\n", n, q.mach_angle);
       fmt::print("crack.{}.mach_speed={:.1f}\n", n, q.mach_speed);
+      if (q.fault) {  // the rupture front outside the nucleation patch (cohesive/rupture_front.hpp)
+        const FrontSummary& f = q.front;
+        fmt::print("crack.{}.nucleation_time={:.6e}\n", n, f.nucleation_time);
+        fmt::print("crack.{}.front_speed={:.1f}\n", n, f.speed);
+        fmt::print("crack.{}.front_peak_speed={:.1f}\n", n, f.peak_speed);
+        fmt::print("crack.{}.front_regime={}\n", n, f.regime);
+        for (const auto& [side, fs] : {std::pair{"forward", &f.forward}, std::pair{"backward", &f.backward}}) {
+          fmt::print("crack.{}.front_{}_speed={:.1f}\n", n, side, fs->speed);
+          fmt::print("crack.{}.front_{}_reach_s={:.6e}\n", n, side, fs->reach_s);
+          fmt::print("crack.{}.front_{}_supershear_s={:.6e}\n", n, side, fs->supershear_s);
+        }
+      }
     }
   }
   fmt::print("output={}\n", out_dir);

@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "cohesive/interface.hpp"
+#include "cohesive/rupture_front.hpp"
 #include "material/elastic.hpp"
 
 namespace rupture {
@@ -83,6 +84,10 @@ struct CrackSummary {
   // none | sub-Rayleigh (v < c_R) | Rayleigh-to-shear (c_R <= v < c_S: SPEC §6 says no crack
   // sustains it, so a run showing it says so) | intersonic (c_S <= v < c_D) | supersonic
   std::string regime = "none";
+  // A fault's rupture front outside its nucleation patch, from the rupture-time profile
+  // (cohesive/rupture_front.hpp; filled by the driver for slip-weakening interfaces only).
+  bool fault = false;
+  FrontSummary front;
 };
 
 class CrackTracker {

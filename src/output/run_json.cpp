@@ -12,6 +12,33 @@ namespace rupture {
 namespace {
 // JSON has no NaN/Inf; a failed run may carry them.
 double finite(double v) { return std::isfinite(v) ? v : 0.0; }
+// A fault's rupture front (cohesive/rupture_front.hpp): one table per side of the patch.
+toml::table side_table(const FrontSide& f) {
+  return toml::table{{"nodes", f.nodes},
+                     {"leave_time", f.leave_time},
+                     {"reach_s", f.reach_s},
+                     {"speed", finite(f.speed)},
+                     {"peak_speed", finite(f.peak_speed)},
+                     {"triggered_windows", f.triggered},
+                     {"supershear_s", f.supershear_s},
+                     {"supershear_time", f.supershear_time},
+                     {"regime", f.regime}};
+}
+
+toml::table front_table(const FrontSummary& f) {
+  return toml::table{{"ruptured", f.ruptured},
+                     {"nucleation_begin_s", f.nucleation_begin_s},
+                     {"nucleation_end_s", f.nucleation_end_s},
+                     {"nucleation_overstressed", f.nucleation_overstressed},
+                     {"nucleation_time", f.nucleation_time},
+                     {"speed", finite(f.speed)},
+                     {"peak_speed", finite(f.peak_speed)},
+                     {"regime", f.regime},
+                     {"window_cells", kFrontWindowCells},
+                     {"definition", kFrontDefinition},
+                     {"forward", side_table(f.forward)},
+                     {"backward", side_table(f.backward)}};
+}
 }  // namespace
 
 std::string run_json(const Case& c, const CaseSummary& s, const RunRecord& r) {
@@ -119,7 +146,15 @@ std::string run_json(const Case& c, const CaseSummary& s, const RunRecord& r) {
         ct.insert(p + "cR_" + side, finite(cs.sustained_speed / w.rayleigh));
         ct.insert(p + "cS_" + side, finite(cs.sustained_speed / w.shear));
         ct.insert(p + "cD_" + side, finite(cs.sustained_speed / w.dilatational));
+        if (cs.fault) {  // the front's speed against both sides too
+          ct.insert(std::string("front_speed_over_cS_") + side, finite(cs.front.speed / w.shear));
+          ct.insert(std::string("front_speed_over_cR_") + side, finite(cs.front.speed / w.rayleigh));
+        }
       }
+      // Which material the single ratios and the regimes are against (the lower body's).
+      ct.insert("speed_ratio_material",
+                c.materials[std::size_t(c.bodies[std::size_t(c.interfaces[k].lower_body)].material)].name);
+      if (cs.fault) ct.insert("front", front_table(cs.front));
       if (k == 0) {
         t.insert("crack", ct);
         for (auto&& [key, value] : ct) t.insert("crack." + std::string(key.str()), value);

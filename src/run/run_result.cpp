@@ -112,6 +112,15 @@ void add_crack_summaries(RunIo& io, RunResult& result) {
     cs.mach_angle_left = m.angle_left;
     cs.mach_angle_right = m.angle_right;
     cs.mach_speed = m.speed;
+    if (is_fault(s.interfaces[k])) {  // the front outside the nucleation patch (faults)
+      cs.fault = true;
+      const InterfaceSpec& is = io.c.interfaces[k];
+      double c_max = 0.0;  // the fastest wave of the two sides
+      for (const int b : {is.upper_body, is.lower_body})
+        c_max = std::max(c_max, io.summary.speeds[std::size_t(io.c.bodies[std::size_t(b)].material)].dilatational);
+      cs.front = summarize_front(s.interfaces[k], io.c.grid.cell_size, io.summary.dt, c_max,
+                                 io.crack_speeds[k]);
+    }
     result.cracks.push_back(cs);
   }
 }
