@@ -29,7 +29,7 @@ def row(run_dir):
     v = np.array([float(r["speed"]) for r in tips])
     zone = np.array([float(r["cohesive_zone_length"]) for r in tips])
     t0 = run["crack"]["initiation_time"]
-    if t0 < 0:
+    if t0 is None or t0 < 0:  # null (before: -1): never initiated
         return f"| {1e6 * h:g} | {v_imp:g} | - | | | | | | |"
     finite = np.isfinite(v)
 

@@ -7,7 +7,9 @@ and key=value results) are echoed as they come.
 """
 import os
 import shutil
+import re
 import subprocess
+import threading
 import sys
 
 from .runs import Run, Sweep
@@ -66,21 +68,65 @@ def _sets(set):
     return args
 
 
+_PROGRESS = re.compile(r"^step (\d+)/(\d+) .*\(\s*([0-9.]+) %\)")
+
+
+def _progress_bar():
+    """In a Jupyter notebook with ipywidgets (Debian's python3-ipywidgets): a callable that shows
+    the run's progress line as a bar, update(percent, line). Elsewhere None: lines are printed."""
+    try:
+        from IPython import get_ipython
+
+        shell = get_ipython()
+        if shell is None or "IPKernelApp" not in shell.config:
+            return None
+        import ipywidgets
+        from IPython.display import display
+    except Exception:  # no IPython, no kernel, no widgets
+        return None
+    bar = ipywidgets.FloatProgress(min=0.0, max=100.0, description="rupture")
+    label = ipywidgets.Label()
+    display(ipywidgets.HBox([bar, label]))
+
+    def update(percent, line):
+        bar.value = percent
+        label.value = line
+
+    return update
+
+
 def _execute(args, quiet):
     """Runs rupture with args; returns (returncode, stdout, stderr). Unless quiet, the run's
-    own lines (progress, key=value results) are echoed as they come."""
+    own lines are shown as they come: the key=value results printed, the progress line
+    (rupture writes it to stderr) as a progress bar in a notebook where one is available
+    (_progress_bar), as lines elsewhere."""
     if quiet:
         proc = subprocess.run(args, capture_output=True, text=True)
         return proc.returncode, proc.stdout, proc.stderr
     proc = subprocess.Popen(args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, bufsize=1)
+    bar = _progress_bar()
+    err_lines = []
+
+    def follow_stderr():  # a thread: stderr and stdout both fill as the run goes
+        for line in proc.stderr:
+            err_lines.append(line)
+            m = _PROGRESS.match(line.strip())
+            if m and bar is not None:
+                bar(float(m.group(3)), line.strip())
+            else:
+                sys.stderr.write(line)
+                sys.stderr.flush()
+
+    reader = threading.Thread(target=follow_stderr, daemon=True)
+    reader.start()
     lines = []
     for line in proc.stdout:
         lines.append(line)
         sys.stdout.write(line)
         sys.stdout.flush()
-    err = proc.stderr.read()
     proc.wait()
-    return proc.returncode, "".join(lines), err
+    reader.join()
+    return proc.returncode, "".join(lines), "".join(err_lines)
 
 
 def _fail(code, err, out_dir):

@@ -53,6 +53,10 @@ def test_completed_run_history_and_units(snapshots_run):
     assert r["particles"] == r.record["particles"] > 0
     assert r.case["time"]["end"] == pytest.approx(2e-6)
     assert r.version == rupture.__version__
+    # What has not happened is null in run.json (None here), not -1: the crack has not
+    # initiated by 2 us, no checkpoint was written.
+    assert r.summary.initiated is False and r.summary.initiation_time is None
+    assert r.summary.mach_angle is None and r.record["checkpoint_time"] is None
 
 
 def test_snapshots_are_lazy_and_match_run_json(snapshots_run):
@@ -91,6 +95,27 @@ def test_crack_tip_profiles_and_summary(crack_run):
     # a DataFrame where pandas is installed, a structured array everywhere
     arr = tip.array()
     assert arr.dtype.names[0] == tip.names()[0] and len(arr) == len(tip)
+
+
+def test_a_run_on_two_ranks_reads_as_one(work):
+    """The plate impact on one process and on two MPI ranks (rank 0 writes every file; the
+    snapshots are written collectively): the same tables and snapshot rows, to the distributed
+    runs' agreement bound (tests/mpi: 1e-12 of each quantity's scale)."""
+    opts = {"time.end": 1e-6, "output.snapshot_interval": 0.5e-6}
+    one = rupture.run(IMPACT, work / "one_rank", set=opts)
+    two = rupture.run(IMPACT, work / "two_ranks", set=opts, ranks=2)
+    assert two.status == "completed" and two["ranks"] == 2 and one["ranks"] == 1
+    h1, h2 = one.history, two.history
+    assert h1.names() == h2.names() and len(h1) == len(h2)
+    for col in ("kinetic_energy", "strain_energy", "external_work"):
+        scale = np.abs(h1[col]).max()
+        assert np.abs(h2[col] - h1[col]).max() <= 1e-12 * scale + 1e-300, col
+    assert len(one.snapshots) == len(two.snapshots) == 3
+    s1, s2 = one.snapshots[-1], two.snapshots[-1]
+    assert np.array_equal(s1["id"], s2["id"]) and s1.time == s2.time
+    assert np.abs(s2["position"] - s1["position"]).max() <= 1e-12 * np.abs(s1["position"]).max()
+    assert np.abs(s2["velocity"] - s1["velocity"]).max() <= 1e-12 * np.abs(s1["velocity"]).max()
+    assert np.array_equal(s1["half_size"], s2["half_size"])
 
 
 def test_failed_run_raises_with_the_message(work):
@@ -132,3 +157,17 @@ def test_sweep(work):
     for (v,), run in runs.items():
         assert run.case["loads"]["impact"]["normal"] == pytest.approx(v)
     assert isinstance(rupture.open_run(work / "sweep"), rupture.Sweep)
+
+
+def test_progress_lines_outside_a_notebook(work, capfd):
+    """Not quiet: the key=value results on stdout and the progress line on stderr as lines (no
+    notebook here, so no progress bar); the progress line is the one the bar would parse."""
+    from rupture import execute
+
+    assert execute._progress_bar() is None
+    rupture.run(IMPACT, work / "progress", set={"time.end": 0.2e-6, "output.snapshot_interval": 0}, quiet=False)
+    out, err = capfd.readouterr()
+    assert "status=completed" in out
+    last = [line for line in err.splitlines() if line.startswith("step ")][-1]
+    m = execute._PROGRESS.match(last)
+    assert m and float(m.group(3)) == pytest.approx(100.0) and m.group(1) == m.group(2), last

@@ -2,6 +2,7 @@
 #include "cli/print_result.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 #include <utility>
@@ -10,6 +11,65 @@
 #include "material/elastic.hpp"
 
 namespace rupture {
+namespace {
+
+// Units that fit the case's scale, for the lines people read (the key=value lines stay SI):
+// lengths from the domain's size, times from a shear wave's crossing of it (python/rupture/
+// plot.py Scale chooses the same), km/s where lengths are km.
+struct ReadableUnits {
+  double lf = 1.0, tf = 1.0, vf = 1.0;
+  const char *l = "m", *t = "s", *v = "m/s";
+};
+
+ReadableUnits readable_units(const Case& c) {
+  ReadableUnits u;
+  const double size = std::max(c.grid.max[0] - c.grid.min[0], c.grid.max[1] - c.grid.min[1]);
+  double c_s = INFINITY;
+  for (const ElasticMaterial& m : c.materials) c_s = std::min(c_s, wave_speeds(m, c.plane).shear);
+  const double crossing = size / c_s;
+  if (size >= 1e3) u.lf = 1e-3, u.l = "km", u.vf = 1e-3, u.v = "km/s";
+  else if (size < 1.0) u.lf = 1e3, u.l = "mm";
+  if (crossing < 1e-3) u.tf = 1e6, u.t = "us";
+  else if (crossing < 0.1) u.tf = 1e3, u.t = "ms";
+  return u;
+}
+
+// One line per interface in those units, after the key=value lines ("# ...": no key).
+void print_readable_summary(const Case& c, const RunResult& r) {
+  const ReadableUnits u = readable_units(c);
+  for (std::size_t i = 0; i < r.cracks.size(); ++i) {
+    const CrackSummary& q = r.cracks[i];
+    const InterfaceSpec& is = c.interfaces[i];
+    const ElasticMaterial& lower = c.materials[std::size_t(c.bodies[std::size_t(is.lower_body)].material)];
+    const WaveSpeeds w = wave_speeds(lower, c.plane);
+    std::string line = fmt::format("# {} {}: ", q.fault ? "fault" : "crack", c.interface_names[i]);
+    if (!q.initiated && !(q.fault && q.front.ruptured)) {
+      fmt::print("{}did not initiate\n", line);
+      continue;
+    }
+    if (q.fault) {
+      const FrontSummary& f = q.front;
+      line += fmt::format("nucleated at {:.4g} {} on s in [{:.4g}, {:.4g}] {}", u.tf * f.nucleation_time, u.t,
+                          u.lf * f.nucleation_begin_s, u.lf * f.nucleation_end_s, u.l);
+      for (const auto& [side, fs] : {std::pair{"forward", &f.forward}, std::pair{"backward", &f.backward}}) {
+        if (fs->nodes == 0) continue;
+        line += fmt::format("; {} {:.4g} {} ({:.2f} c_S {}, {}) to s {:.4g} {}", side, u.vf * fs->speed, u.v,
+                            fs->speed / w.shear, lower.name, fs->regime, u.lf * fs->reach_s, u.l);
+        if (fs->supershear_s >= 0.0)
+          line += fmt::format(", supershear from s {:.4g} {} at {:.4g} {}", u.lf * fs->supershear_s, u.l,
+                              u.tf * fs->supershear_time, u.t);
+      }
+    } else {
+      line += fmt::format("initiated at {:.4g} {} at s {:.4g} {}; sustained {:.4g} {} ({:.2f} c_R {}, {})",
+                          u.tf * q.initiation_time, u.t, u.lf * q.initiation_s, u.l, u.vf * q.sustained_speed,
+                          u.v, q.sustained_speed / w.rayleigh, lower.name, q.regime);
+      if (q.arrested) line += fmt::format("; arrested at s {:.4g} {}", u.lf * q.arrest_s, u.l);
+    }
+    fmt::print("{}\n", line);
+  }
+}
+
+}  // namespace
 
 void print_run_result(const Case& c, const RunResult& r, const std::string& out_dir) {
   fmt::print("status={}\n", r.status);
@@ -95,6 +155,7 @@ void print_run_result(const Case& c, const RunResult& r, const std::string& out_
       }
     }
   }
+  print_readable_summary(c, r);
   fmt::print("output={}\n", out_dir);
 }
 

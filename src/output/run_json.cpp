@@ -12,32 +12,52 @@ namespace rupture {
 namespace {
 // JSON has no NaN/Inf; a failed run may carry them.
 double finite(double v) { return std::isfinite(v) ? v : 0.0; }
+
+// A quantity that may be absent ("none": never happened, not measured), which the summaries
+// hold as -1 (the CLI lines keep that form): JSON null in run.json. TOML, whose tables build the
+// record, has no null, so a marker string stands for it and becomes null after formatting.
+constexpr const char* kNullMarker = "\x01null";
+constexpr const char* kNullJson = "\"\\u0001null\"";  // the marker as the formatter writes it
+template <class T>
+void insert_or_null(toml::table& t, const std::string& key, T v) {
+  if (!(v >= T(0)))  // negative (none) or NaN (not measured)
+    t.insert(key, kNullMarker);
+  else
+    t.insert(key, v);
+}
+std::string with_nulls(std::string json) {
+  for (std::size_t at = json.find(kNullJson); at != std::string::npos; at = json.find(kNullJson, at))
+    json.replace(at, std::string(kNullJson).size(), "null");
+  return json;
+}
 // A fault's rupture front (cohesive/rupture_front.hpp): one table per side of the patch.
 toml::table side_table(const FrontSide& f) {
-  return toml::table{{"nodes", f.nodes},
-                     {"leave_time", f.leave_time},
-                     {"reach_s", f.reach_s},
-                     {"speed", finite(f.speed)},
-                     {"peak_speed", finite(f.peak_speed)},
-                     {"triggered_windows", f.triggered},
-                     {"supershear_s", f.supershear_s},
-                     {"supershear_time", f.supershear_time},
-                     {"regime", f.regime}};
+  toml::table t{{"nodes", f.nodes},
+                {"speed", finite(f.speed)},
+                {"peak_speed", finite(f.peak_speed)},
+                {"triggered_windows", f.triggered},
+                {"regime", f.regime}};
+  insert_or_null(t, "leave_time", f.leave_time);
+  insert_or_null(t, "reach_s", f.reach_s);
+  insert_or_null(t, "supershear_s", f.supershear_s);
+  insert_or_null(t, "supershear_time", f.supershear_time);
+  return t;
 }
 
 toml::table front_table(const FrontSummary& f) {
-  return toml::table{{"ruptured", f.ruptured},
-                     {"nucleation_begin_s", f.nucleation_begin_s},
-                     {"nucleation_end_s", f.nucleation_end_s},
-                     {"nucleation_overstressed", f.nucleation_overstressed},
-                     {"nucleation_time", f.nucleation_time},
-                     {"speed", finite(f.speed)},
-                     {"peak_speed", finite(f.peak_speed)},
-                     {"regime", f.regime},
-                     {"window_cells", kFrontWindowCells},
-                     {"definition", kFrontDefinition},
-                     {"forward", side_table(f.forward)},
-                     {"backward", side_table(f.backward)}};
+  toml::table t{{"ruptured", f.ruptured},
+                {"nucleation_overstressed", f.nucleation_overstressed},
+                {"speed", finite(f.speed)},
+                {"peak_speed", finite(f.peak_speed)},
+                {"regime", f.regime},
+                {"window_cells", kFrontWindowCells},
+                {"definition", kFrontDefinition},
+                {"forward", side_table(f.forward)},
+                {"backward", side_table(f.backward)}};
+  insert_or_null(t, "nucleation_begin_s", f.nucleation_begin_s);
+  insert_or_null(t, "nucleation_end_s", f.nucleation_end_s);
+  insert_or_null(t, "nucleation_time", f.nucleation_time);
+  return t;
 }
 }  // namespace
 
@@ -60,8 +80,8 @@ std::string run_json(const Case& c, const CaseSummary& s, const RunRecord& r) {
   t.insert("warnings", warnings);
   t.insert("heartbeat", r.heartbeat);
   t.insert("heartbeat_unix", r.heartbeat_unix);
-  t.insert("checkpoint_time", r.checkpoint_time);
-  t.insert("checkpoint_step", r.checkpoint_step);
+  insert_or_null(t, "checkpoint_time", r.checkpoint_time);
+  insert_or_null(t, "checkpoint_step", r.checkpoint_step);
   t.insert("segments", r.segments);
   t.insert("dt", s.dt);
   t.insert("dt_cfl_limit", s.dt_cfl);
@@ -107,36 +127,37 @@ std::string run_json(const Case& c, const CaseSummary& s, const RunRecord& r) {
       const CrackSummary& cs = r.cracks[k];
       toml::table ct{{"interface", c.interface_names[k]},
                      {"initiated", cs.initiated},
-                     {"initiation_time", cs.initiation_time},
                      {"sustained_speed", finite(cs.sustained_speed)},
                      {"peak_speed", finite(cs.peak_speed)},
-                     {"intersonic_time", cs.intersonic_time},
-                     {"daughter_crack_time", cs.daughter_time},
                      {"final_tip", cs.final_tip},
                      {"final_cohesive_zone_length", cs.final_cohesive_zone},
                      {"final_traction_zone_length", cs.final_traction_zone},
                      {"cohesive_zone_definition", CrackTracker::kCohesiveZoneDefinition},
                      {"traction_zone_definition", CrackTracker::kTractionZoneDefinition},
-                     {"end_reached_time", cs.end_reached_time},
                      {"final_tip_y", cs.final_tip_y},
                      {"final_tip_s", cs.final_tip_s},
-                     {"initiation_s", cs.initiation_s},
                      {"back_speed", finite(cs.back_speed)},
-                     {"steady_begin", cs.steady_begin},
-                     {"steady_end", cs.steady_end},
                      {"last_window_speed", finite(cs.last_window_speed)},
                      {"arrested", cs.arrested},
-                     {"arrest_time", cs.arrest_time},
-                     {"arrest_s", cs.arrest_s},
                      {"mach_readings", cs.mach_readings},
-                     {"mach_angle", finite(cs.mach_angle)},
-                     {"mach_angle_spread", finite(cs.mach_angle_spread)},
-                     {"mach_angle_left", finite(cs.mach_angle_left)},
-                     {"mach_angle_right", finite(cs.mach_angle_right)},
-                     {"mach_speed", finite(cs.mach_speed)},
                      {"upper_body", c.bodies[std::size_t(c.interfaces[k].upper_body)].name},
                      {"lower_body", c.bodies[std::size_t(c.interfaces[k].lower_body)].name},
                      {"regime", cs.regime}};
+      // Absent values (-1 in the summaries: never, not measured) as null.
+      insert_or_null(ct, "initiation_time", cs.initiation_time);
+      insert_or_null(ct, "intersonic_time", cs.intersonic_time);
+      insert_or_null(ct, "daughter_crack_time", cs.daughter_time);
+      insert_or_null(ct, "end_reached_time", cs.end_reached_time);
+      insert_or_null(ct, "initiation_s", cs.initiation_s);
+      insert_or_null(ct, "steady_begin", cs.steady_begin);
+      insert_or_null(ct, "steady_end", cs.steady_end);
+      insert_or_null(ct, "arrest_time", cs.arrest_time);
+      insert_or_null(ct, "arrest_s", cs.arrest_s);
+      insert_or_null(ct, "mach_angle", cs.mach_angle);
+      insert_or_null(ct, "mach_angle_spread", cs.mach_angle_spread);
+      insert_or_null(ct, "mach_angle_left", cs.mach_angle_left);
+      insert_or_null(ct, "mach_angle_right", cs.mach_angle_right);
+      insert_or_null(ct, "mach_speed", cs.mach_speed);
       // Speeds against the wave speeds of both adjoining materials (a bimaterial interface has two).
       for (const char* side : {"upper", "lower"}) {
         const InterfaceSpec& is = c.interfaces[k];
@@ -174,7 +195,7 @@ std::string run_json(const Case& c, const CaseSummary& s, const RunRecord& r) {
   t.insert("input", input);
   std::ostringstream os;
   os << toml::json_formatter{t} << "\n";
-  return os.str();
+  return with_nulls(os.str());
 }
 
 std::string recorded_run_id(const std::string& dir) {

@@ -7,8 +7,10 @@
 // plus version, git_commit, git_dirty, compiler, build_type (core/build_info.hpp), status ("running" | "completed" | "failed" | "interrupted"), message, input (the
 // merged input echo), and derived quantities. While running it is rewritten every few seconds
 // with `heartbeat` (UTC, ISO 8601) and `heartbeat_unix` (s): a "running" record whose heartbeat
-// is old belongs to a run that was killed. `checkpoint_time`/`checkpoint_step` (-1: none) name
-// the last checkpoint, `segments` counts 1 + resumptions. Rewritten atomically.
+// is old belongs to a run that was killed. `checkpoint_time`/`checkpoint_step` name the last
+// checkpoint, `segments` counts 1 + resumptions. A value that may be absent (no checkpoint yet,
+// a crack that never initiated, a Mach angle not measured: -1 in the structs and the CLI lines)
+// is null. Rewritten atomically.
 #pragma once
 #include <cmath>
 #include <string>
