@@ -5,11 +5,17 @@ the nucleation point, and the supershear transition distance, the first distance
 hypocentre past which the front runs faster than c_S over a whole window.
 The nucleation patch breaks at once: distances within `skip` metres (default 2000, the TPV205
 patch's half-length 1500 m and one window half) of the hypocentre are left out.
+The run's own summary of the front (run.json cracks[].front, cohesive/rupture_front.hpp) uses
+5-cell windows from the overstressed patch's edge and places the transition where the front
+turns supershear for good; this script's transition is the first window past c_S.
 Usage: front_speed.py RUN_DIR [interface name] [c_S m/s] [window m] [skip m] [c_P m/s]"""
-import csv
+import os
 import sys
 
 import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "python"))
+import rupture  # noqa: E402  (the package's readers: one reader per file, python/rupture)
 
 run = sys.argv[1]
 name = sys.argv[2] if len(sys.argv) > 2 else "fault"
@@ -17,9 +23,8 @@ cs = float(sys.argv[3]) if len(sys.argv) > 3 else 3464.0
 window = float(sys.argv[4]) if len(sys.argv) > 4 else 1000.0
 skip = float(sys.argv[5]) if len(sys.argv) > 5 else 2000.0
 cp = float(sys.argv[6]) if len(sys.argv) > 6 else 6000.0
-rows = list(csv.DictReader(open(f"{run}/rupture_time_{name}.csv")))
-x = np.array([float(r["x"]) for r in rows])
-t = np.array([float(r["rupture_time"]) for r in rows])
+profile = rupture.open_run(run).rupture_time(name)
+x, t = profile["x"], profile["rupture_time"]
 ok = t >= 0
 # The hypocentre: the middle of the nodes that ruptured first (a nucleation patch breaks at once).
 first = ok & (t <= t[ok].min() + 1e-12)

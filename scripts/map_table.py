@@ -11,12 +11,9 @@ the Mach angle with the speed it implies (SPEC E12), arrest, and the run's statu
 with the summary's rule (a second stretch beyond an intact ligament of one grid cell), so runs
 summarised before that rule read the same.
 """
-import csv
-import json
-import os
 import sys
 
-from stretches import daughter_time
+from stretches import daughter_time, rupture  # stretches puts the package on the path
 
 
 def us(value):
@@ -27,10 +24,12 @@ def us(value):
 def main(dirs):
     rows = []
     for d in dirs:
-        for r in csv.DictReader(open(f"{d}/summary.csv")):
+        sweep = rupture.open_run(d)
+        for k in range(len(sweep)):
+            r = sweep.row(k)
             h = float("nan")
             try:
-                h = json.load(open(f"{d}/{r['run']}/run.json"))["input"]["grid"]["cell_size"]
+                h = rupture.open_run(f"{d}/{r['run']}").case["grid"]["cell_size"]
                 r["daughter_crack_time_s"] = str(daughter_time(f"{d}/{r['run']}", h))
             except (OSError, KeyError):
                 pass

@@ -17,8 +17,6 @@ The speeds are least-squares slopes of the tip's arc length over fixed windows (
 as tests/e2e/check_inclined.py, and 11.5-19.2 us), with their standard errors.
 """
 import argparse
-import csv
-import json
 import math
 import os
 import re
@@ -26,6 +24,9 @@ import subprocess
 import sys
 
 import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "python"))
+import rupture  # noqa: E402  (the package's readers: one reader per file, python/rupture)
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 UPPER = [(0, 0), (0.07, 0), (0.07, 0.03), (0, 0.03)]  # m, unrotated
@@ -95,10 +96,10 @@ def main():
         if not os.path.exists(os.path.join(run, "run.json")):
             subprocess.run([a.rupture, "run", case, "-o", run, "--overwrite", "--quiet"], check=True,
                            stdout=subprocess.DEVNULL)
-        r = json.load(open(os.path.join(run, "run.json")))
-        tip = list(csv.DictReader(open(os.path.join(run, "crack_tip.csv"))))
-        t = np.array([float(x["time"]) for x in tip])
-        s = np.array([float(x["tip_s"]) for x in tip])
+        opened = rupture.open_run(run)
+        r = opened.record
+        tip = opened.crack_tip()
+        t, s = tip["time"], tip["tip_s"]
         end = t[-1]
         rows[ang] = dict(init=r["crack"]["initiation_time"], last=slope(t, s, end - 4e-6, end),
                          whole=slope(t, s, 11.5e-6, end), energy=r["energy_balance_error"],

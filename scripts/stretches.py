@@ -1,16 +1,20 @@
 """Separated stretches of a run (crack_stretches.csv), grouped as the summary groups them: two
 stretches are apart (a daughter crack ahead of the main one) only across an intact ligament of
 at least one grid cell (cohesive/crack_tip.hpp); closer ones are one front."""
-import csv
+import os
+import sys
 from collections import defaultdict
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "python"))
+import rupture  # noqa: E402  (the package's readers: one reader per file, python/rupture)
 
 
 def fronts_by_time(run_dir, ligament, name=""):
     """{time: number of fronts}, fronts = stretches merged across ligaments shorter than `ligament`."""
     spans = defaultdict(list)
-    with open(f"{run_dir}/crack_stretches{name}.csv") as f:
-        for r in csv.DictReader(f):
-            spans[float(r["time"])].append((float(r["s_begin"]), float(r["s_end"])))
+    table = rupture.open_run(run_dir).table(f"crack_stretches{name}.csv")
+    for t, a, b in zip(table["time"], table["s_begin"], table["s_end"]):
+        spans[float(t)].append((float(a), float(b)))
     fronts = {}
     for t, s in spans.items():
         s.sort()

@@ -10,24 +10,24 @@ end), the softening (cohesive) zone over the same phase in mm and in cells of h,
 the E11 speed passes c_R and c_S, and the tip's x then. A crack that jumps to intersonic
 does so from this phase; the swing is the noise that can carry a tip near c_R past it.
 """
-import csv
-import json
+import os
 import sys
 
 import numpy as np
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "python"))
+import rupture  # noqa: E402  (the package's readers: one reader per file, python/rupture)
+
 
 def row(run_dir):
-    run = json.load(open(f"{run_dir}/run.json"))
+    opened = rupture.open_run(run_dir)
+    run = opened.record
     speeds = next(iter(run["wave_speeds"].values()))
     c_r, c_s = speeds["rayleigh"], speeds["shear"]
     h = run["input"]["grid"]["cell_size"]
     v_imp = run["input"]["boundary"]["impact"]["velocity"]
-    tips = list(csv.DictReader(open(f"{run_dir}/crack_tip.csv")))
-    t = np.array([float(r["time"]) for r in tips])
-    x = np.array([float(r["tip_x"]) for r in tips])
-    v = np.array([float(r["speed"]) for r in tips])
-    zone = np.array([float(r["cohesive_zone_length"]) for r in tips])
+    tips = opened.crack_tip()
+    t, x, v, zone = tips["time"], tips["tip_x"], tips["speed"], tips["cohesive_zone_length"]
     t0 = run["crack"]["initiation_time"]
     if t0 is None or t0 < 0:  # null (before: -1): never initiated
         return f"| {1e6 * h:g} | {v_imp:g} | - | | | | | | |"
@@ -59,7 +59,9 @@ def main(dirs):
     print("|---|---|---|---|---|---|---|---|")
     runs = []
     for d in dirs:
-        for r in csv.DictReader(open(f"{d}/summary.csv")):
+        sweep = rupture.open_run(d)
+        for k in range(len(sweep)):
+            r = sweep.row(k)
             if r["status"] == "completed":
                 runs.append((float(r["boundary.impact.velocity"]), f"{d}/{r['run']}"))
     for _, run_dir in sorted(runs):

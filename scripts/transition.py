@@ -15,15 +15,13 @@ shear strength, so the largest second maximum seen (its traction, time and dista
 tip) is printed too: on coarse grids the node-to-node kinks of the profile give small ones. With --profiles, every profile's tip, peak
 traction and its distance ahead of the tip, and |T_t| at 0.5, 1, 2 and 3 mm ahead.
 """
-import csv
 import glob
-import json
 import sys
 
 import numpy as np
 from scipy.signal import find_peaks
 
-from stretches import fronts_by_time
+from stretches import fronts_by_time, rupture  # stretches puts the package on the path
 
 HEIGHT = 2e6       # Pa: a maximum to count
 PROMINENCE = 1e6   # Pa: how far it must stand above the dips either side
@@ -36,11 +34,11 @@ def first_time_above(t, v, level):
 
 def profile_maxima(path):
     """(time, tip s, [(s ahead of tip, |T_t|) of each maximum], |T_t| ahead(s) function)."""
-    rows = list(csv.DictReader(open(path)))
-    t = float(rows[0]["time"])
-    s = np.array([float(r["s"]) for r in rows])
-    tt = np.abs(np.array([float(r["traction_t"]) for r in rows]))
-    cracked = np.array([int(r["cracked"]) for r in rows])
+    rows = rupture.read_table(path)
+    t = float(rows["time"][0])
+    s = rows["s"]
+    tt = np.abs(rows["traction_t"])
+    cracked = rows["cracked"].astype(int)
     idx = np.flatnonzero(cracked)
     tip = s[idx[-1]] if idx.size else s[0]
     ahead = s > tip
@@ -69,15 +67,14 @@ def main(argv):
     details = []
     for d in dirs:
         try:
-            run = json.load(open(f"{d}/run.json"))
+            run = rupture.open_run(d).record
         except OSError:
             print(f"| {d} | (no run.json) |")
             continue
         speeds = next(iter(run["wave_speeds"].values()))
-        tips = list(csv.DictReader(open(f"{d}/crack_tip.csv")))
-        t = np.array([float(r["time"]) for r in tips])
-        v = np.array([float(r["speed"]) for r in tips])
-        stretches = max(int(r["stretches"]) for r in tips)
+        tips = rupture.open_run(d).crack_tip()
+        t, v = tips["time"], tips["speed"]
+        stretches = int(tips["stretches"].max())
         fronts = max(fronts_by_time(d, run["input"]["grid"]["cell_size"]).values(), default=0)
         most, count, second = 0, 0, (0.0, float("nan"), float("nan"))
         for path in sorted(glob.glob(f"{d}/interface/interface_*.csv")):
