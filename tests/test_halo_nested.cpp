@@ -44,8 +44,8 @@ long mismatches(const NestedState& n, const NestedSplit& sp, const std::vector<s
   std::vector<double> v(N);
   for (std::size_t g = 0; g < N; ++g) v[g] = inactive[g] ? 0.0 : u(rng);
   std::vector<double> ref = v;
-  condense(n.grid, ref.data());
-  distribute(n.grid, ref.data());
+  condense_to_dofs(n.grid, ref.data());
+  spread_to_slaves(n.grid, ref.data());
   long bad = 0;
   for (std::size_t r = 0; r < sp.cut.block.size(); ++r) {
     std::vector<double> mine(N, 0.0);
@@ -54,8 +54,8 @@ long mismatches(const NestedState& n, const NestedSplit& sp, const std::vector<s
       for (int j = b.j0; j <= b.j1; ++j)
         for (int i = b.i0; i <= b.i1; ++i) mine[global_id(n, l, i, j)] = v[global_id(n, l, i, j)];
     }
-    condense(n.grid, mine.data());
-    distribute(n.grid, mine.data());
+    condense_to_dofs(n.grid, mine.data());
+    spread_to_slaves(n.grid, mine.data());
     for (std::size_t l = 0; l < levels; ++l) {
       if (sp.blocks[l][r].cells() == 0) continue;
       const NodeBox t = reach_box(sp.blocks[l][r], n.levels[l].grid, nested_touched_width(n, int(l)));

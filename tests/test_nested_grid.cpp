@@ -193,8 +193,8 @@ TEST(NestedGrid, condense_conserves_totals_and_is_the_transpose_of_distribute) {
   double total = 0;
   for (double v : a) total += v;
   std::vector<double> ca = a, db = b;
-  condense(g, ca.data());
-  distribute(g, db.data());
+  condense_to_dofs(g, ca.data());
+  spread_to_slaves(g, db.data());
   double total_after = 0, lhs = 0, rhs = 0, scale = 0;
   for (std::size_t i = 0; i < n; ++i) {
     total_after += ca[i];

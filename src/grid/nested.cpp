@@ -200,7 +200,7 @@ NestedGrid make_nested_grid(const double min[2], const double max[2], double coa
   return g;
 }
 
-void condense(const NestedGrid& g, double* values) {
+void condense_to_dofs(const NestedGrid& g, double* values) {
   for (std::size_t k = 0; k < g.slaves.size(); ++k) {
     const double v = values[g.slaves[k]];
     for (std::uint32_t t = g.term_start[k]; t < g.term_start[k + 1]; ++t) values[g.terms[t].dof] += g.terms[t].c * v;
@@ -208,7 +208,7 @@ void condense(const NestedGrid& g, double* values) {
   }
 }
 
-void distribute(const NestedGrid& g, double* values) {
+void spread_to_slaves(const NestedGrid& g, double* values) {
   for (std::size_t k = 0; k < g.slaves.size(); ++k) {
     double v = 0.0;
     for (std::uint32_t t = g.term_start[k]; t < g.term_start[k + 1]; ++t) v += g.terms[t].c * values[g.terms[t].dof];

@@ -14,8 +14,8 @@
 // Chains (a slave whose master is a slave) are resolved once, so every slave's terms name DOFs.
 // Each slave's coefficients sum to one and reproduce linear fields, so a particle's weights,
 // mapped to DOFs, keep the partition of unity and linear completeness at every transition (the
-// GIMP contract); the scatter's condense (slaves' mass, momentum and force added to their DOFs
-// with the coefficients) is the transpose of the gather's distribute (slaves' velocity from
+// GIMP contract); the scatter's condense_to_dofs (slaves' mass, momentum and force added to their DOFs
+// with the coefficients) is the transpose of the gather's spread_to_slaves (slaves' velocity from
 // their DOFs), so mass and momentum are conserved and the transfers do no work.
 //
 // Geometry is kept in integer units of the finest cell size from the domain's lower corner,
@@ -89,10 +89,10 @@ NestedGrid make_nested_grid(const double min[2], const double max[2], double coa
 
 // Extensive nodal values (mass, momentum, force) over all global nodes: every slave's value is
 // added to its DOFs times the coefficients, then set to zero. Total mass and momentum unchanged.
-void condense(const NestedGrid& g, double* values);
+void condense_to_dofs(const NestedGrid& g, double* values);
 // Intensive nodal values (velocity): every slave takes the combination of its DOFs. The
-// transpose of condense: sum a . distribute(b) = sum condense(a) . b over DOFs.
-void distribute(const NestedGrid& g, double* values);
+// transpose of condense_to_dofs: sum a . spread_to_slaves(b) = sum condense_to_dofs(a) . b over DOFs.
+void spread_to_slaves(const NestedGrid& g, double* values);
 
 // Cells of each level that no finer level covers (its share of the plate), and the particles
 // ppc x ppc per such cell inside [bmin, bmax] (m) would hold: for estimates and reports.

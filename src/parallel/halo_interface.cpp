@@ -142,7 +142,7 @@ void Halo::sync_interface_nodes(State& s, CohesiveInterface& c, std::initializer
   }
 }
 
-void gather_interface_state(State& s) {
+void collect_interface_state(State& s) {
   if (!s.halo) return;
   const Comm& comm = halo_of(s).comm;
   for (CohesiveInterface& c : s.interfaces) {

@@ -73,7 +73,7 @@ void rebalance_if_needed(State& s) {
   // Only a split that gains: load concentrated in one row of cells (an interface along a cut
   // direction) may not be divisible further by whole cells.
   if (before - d.imbalance() <= kRebalanceImbalance) return;
-  gather_interface_state(s);  // the new owners of interface nodes need their whole state
+  collect_interface_state(s);  // the new owners of interface nodes need their whole state
   // Each particle to the rank of the block holding its cell.
   const BlockLocator locate(d.block, rows);
   std::vector<std::vector<unsigned char>> send(std::size_t(comm.size())), recv;

@@ -68,7 +68,7 @@ void take_particles(State& p, Particles&& read) {
 void write_checkpoint_ranks(const std::string& dir, const CaseSource& source, RunContext& ctx,
                             const Comm& comm) {
   State& s = ctx.s;
-  gather_interface_state(s);  // every node from its owner
+  collect_interface_state(s);  // every node from its owner
   const std::vector<State*> held = parts_of(s);
   const int n = comm.size(), parts = int(held.size()) * n;
   std::vector<double> sums{s.strain_work, s.external_work};

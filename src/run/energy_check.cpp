@@ -16,7 +16,7 @@ EnergySample sample_energy(State& s) {
   // interface node's state from its owner.
   double part[3] = {kinetic_energy(s.particles), s.strain_work, s.external_work};
   if (s.halo) halo_of(s).comm.sum(part, 3);
-  gather_interface_state(s);
+  collect_interface_state(s);
   EnergySample e{s.time, part[0], part[1], part[2], s.initial_energy};
   for (std::size_t k = 0; k < s.interfaces.size(); ++k) {
     const double stored = s.interfaces[k].stored_energy();

@@ -122,7 +122,7 @@ void write_interfaces(RunIo& io) {
   namespace fs = std::filesystem;
   State& s = io.s;
   if (s.interfaces.empty()) return;
-  gather_interface_state(s);  // distributed: every node from its owner
+  collect_interface_state(s);  // distributed: every node from its owner
   writer_only(io, [&] {
     const std::string& dir = io.dir;
     const std::vector<std::string>& names = io.c.interface_names;

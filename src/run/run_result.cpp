@@ -101,7 +101,7 @@ void add_totals(RunIo& io, RunResult& result, long first_step) {
 // its owner first).
 void add_crack_summaries(RunIo& io, RunResult& result) {
   State& s = io.s;
-  gather_interface_state(s);
+  collect_interface_state(s);
   const std::vector<CrackTracker>& cracks = io.ctx.cracks;
   for (std::size_t k = 0; k < cracks.size(); ++k) {
     CrackSummary cs = cracks[k].summarize(s.interfaces[k], io.crack_speeds[k]);

@@ -44,7 +44,7 @@ std::size_t column_bases(NestedState& n, std::initializer_list<Array> arrays, st
 static void condense_columns(NestedState& n, double* const* base, std::size_t columns);
 static void spread_columns(NestedState& n, double* const* base, std::size_t columns);
 
-// grid/nested.hpp's condense over the levels' arrays: every DOF adds c * (slave's value) of
+// grid/nested.hpp's condense_to_dofs over the levels' arrays: every DOF adds c * (slave's value) of
 // the slaves it serves, in slave order (the transposed terms: NestedState::dof_start), so the
 // threads split the DOFs without sharing one and the sums are those of a loop over the
 // slaves; then the slaves are cleared.
@@ -87,7 +87,7 @@ void condense_columns(NestedState& n, double* const* base, std::size_t columns) 
   }
 }
 
-// grid/nested.hpp's distribute: every slave from its DOFs (slaves only read DOFs: no race).
+// grid/nested.hpp's spread_to_slaves: every slave from its DOFs (slaves only read DOFs: no race).
 void spread_to_slaves(NestedState& n, std::initializer_list<NodalArray> arrays) {
   thread_local std::vector<double*> base_store;
   const std::size_t all = column_bases(n, arrays, base_store), levels = n.levels.size();

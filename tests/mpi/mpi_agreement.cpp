@@ -144,7 +144,7 @@ int main(int argc, char** argv) {
   }
   advance(d, steps);
   const long migrations = halo_of(d).migrations, rebalances = halo_of(d).rebalances;
-  gather_interface_state(d);  // every interface node from its owner (collective)
+  collect_interface_state(d);  // every interface node from its owner (collective)
   // Interface nodes per rank: the test must split an interface between ranks.
   std::vector<double> owned(std::size_t(world.size()), 0.0);
   for (const CohesiveInterface& ci : d.interfaces)

@@ -132,7 +132,7 @@ PulseRun pulse(const std::vector<RefineBox>& boxes, double rise, double dt, doub
         G.fy[n] -= p.vol[i] * (p.sxy[i] * w[i].gx[k] + p.syy[i] * w[i].gy[k]);
       }
     }
-    for (auto* v : {&G.m, &G.px, &G.py, &G.fx, &G.fy}) condense(g, v->data());
+    for (auto* v : {&G.m, &G.px, &G.py, &G.fx, &G.fy}) condense_to_dofs(g, v->data());
     // Momentum update and BCs on the DOFs; the drive's work from its reaction impulse.
     for (std::size_t n = 0; n < nn; ++n) {
       if (!g.is_dof[n] || G.m[n] < floor) continue;
@@ -143,8 +143,8 @@ PulseRun pulse(const std::vector<RefineBox>& boxes, double rise, double dt, doub
       G.vx[n] = vx, G.vy[n] = vy;
       G.ax[n] = vx - G.px[n] / G.m[n], G.ay[n] = vy - G.py[n] / G.m[n];  // dt * a
     }
-    distribute(g, G.ax.data());
-    distribute(g, G.ay.data());
+    spread_to_slaves(g, G.ax.data());
+    spread_to_slaves(g, G.ay.data());
     // FLIP velocity, then the MUSL re-map.
     std::fill(G.px.begin(), G.px.end(), 0.0);
     std::fill(G.py.begin(), G.py.end(), 0.0);
@@ -158,8 +158,8 @@ PulseRun pulse(const std::vector<RefineBox>& boxes, double rise, double dt, doub
         G.py[w[i].id[k]] += w[i].s[k] * p.m[i] * p.vy[i];
       }
     }
-    condense(g, G.px.data());
-    condense(g, G.py.data());
+    condense_to_dofs(g, G.px.data());
+    condense_to_dofs(g, G.py.data());
     for (std::size_t n = 0; n < nn; ++n) {
       G.vx[n] = G.vy[n] = 0.0;
       if (!g.is_dof[n] || G.m[n] < floor) continue;
@@ -167,8 +167,8 @@ PulseRun pulse(const std::vector<RefineBox>& boxes, double rise, double dt, doub
       bcs(n, t + dt, vx, vy);
       G.vx[n] = vx, G.vy[n] = vy;
     }
-    distribute(g, G.vx.data());
-    distribute(g, G.vy.data());
+    spread_to_slaves(g, G.vx.data());
+    spread_to_slaves(g, G.vy.data());
     // Stress update (E5) and move.
     for (std::size_t i = 0; i < p.size(); ++i) {
       double lxx = 0, lxy = 0, lyx = 0, lyy = 0, ux = 0, uy = 0;
