@@ -237,10 +237,10 @@ long interface_nodes_sent(const State& s, const std::vector<CellBlock>& blocks, 
 // the nodes. check_faces_in_reach (Halo::): every known face's stencil lies in the reach (else
 // a diagnosis for the end of the step).
 // Every rank gets every node's and Gauss point's state from its owner (outputs: the interface
-// profiles, crack summaries, stored energy); gather_crack_times: the nodes' crack and rupture
+// profiles, crack summaries, stored energy); collect_crack_times: the nodes' crack and rupture
 // times, peak slip rates and faces only (the crack tip samples and crack files).
 void collect_interface_state(State& s);
-void gather_crack_times(State& s);
+void collect_crack_times(State& s);
 // The run's work on interface k (the ranks' parts summed), J/m.
 double interface_work(const State& s, std::size_t k);
 

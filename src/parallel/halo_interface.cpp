@@ -183,7 +183,7 @@ void Halo::check_faces_in_reach(State& s) {
   }
 }
 
-void gather_crack_times(State& s) {
+void collect_crack_times(State& s) {
   if (!s.halo) return;
   for (CohesiveInterface& c : s.interfaces)
     for (auto* v : {&c.node_crack_time, &c.node_rupture_time, &c.node_peak_slip_rate, &c.ux_up,

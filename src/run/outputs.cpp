@@ -26,7 +26,7 @@ class CrackSamples final : public Output {
     State& s = io_.s;
     Schedule& crack = io_.ctx.crack;
     std::vector<CrackTracker>& cracks = io_.ctx.cracks;
-    gather_crack_times(s);
+    collect_crack_times(s);
     while (crack.due(t, eps)) {
       for (std::size_t k = 0; k < cracks.size(); ++k) cracks[k].sample(s.interfaces[k], crack.next);
       crack.advance(crack.next, eps);
