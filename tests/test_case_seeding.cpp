@@ -88,9 +88,11 @@ TEST(CaseSeeding, owned_parts_make_every_particle_once_bit_for_bit) {
     std::vector<int> seen(W.size(), 0);
     const int cols = whole.grid.x.cells;
     for (int part = 0; part < 4; ++part) {
-      const State s = make_state_owning(c, [&](double x, double y) {
+      ParticleShare share;
+      share.own = [&](double x, double y) {
         return part < 3 && (cell_index(whole.grid, x, y) % cols) * 3 / cols == part;
-      });
+      };
+      const State s = make_state(c, &share);
       const Particles& P = s.particles;
       if (part == 3) EXPECT_EQ(P.size(), 0u) << c.title;
       for (std::size_t p = 0; p < P.size(); ++p) {

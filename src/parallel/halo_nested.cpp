@@ -445,12 +445,12 @@ void Halo::finish_nested_step(NestedState& n, const NestedDrift& before) {
 
 State make_nested_rank_state(const Case& c, const Comm& comm) {
   // The levels without particles: the lattices, transitions and periods the split needs.
-  const LevelShare none{[](int, double, double) { return false; }, {}};
+  const ParticleShare none = ParticleShare::none();
   std::vector<Grid> lattices;
   NestedSplit sp;
   NestedTally tally;
   {
-    const State bare = make_nested_run_state(c, &none);
+    const State bare = make_state(c, &none);
     const NestedState& n = *bare.nested;
     for (const State& l : n.levels) lattices.push_back(l.grid);
     const int k = nested_cut_level(n);
@@ -459,8 +459,8 @@ State make_nested_rank_state(const Case& c, const Comm& comm) {
   }
   // This rank's particles: on each level, those whose cell is in its block there.
   const std::size_t me = std::size_t(comm.rank());
-  LevelShare share;
-  share.own = [&](int l, double x, double y) {
+  ParticleShare share;
+  share.own_level = [&](int l, double x, double y) {
     const Grid& g = lattices[std::size_t(l)];
     const CellBlock& b = sp.blocks[std::size_t(l)][me];
     const int i = std::clamp(g.x.cell_of(x), 0, g.x.cells - 1), j = std::clamp(g.y.cell_of(y), 0, g.y.cells - 1);
@@ -468,7 +468,7 @@ State make_nested_rank_state(const Case& c, const Comm& comm) {
   };
   std::uint32_t first = 0;
   for (const std::uint32_t count : tally.per_level) share.first_id.push_back(first), first += count;
-  State s = make_nested_run_state(c, &share);
+  State s = make_state(c, &share);
   check_distributable(s, comm.size());
   distribute_nested(s, comm, true, &sp);
   // The case's sums: one mass floor from its lightest particle (solver/setup.cpp), the initial

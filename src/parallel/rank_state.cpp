@@ -53,16 +53,18 @@ State make_rank_state(const Case& c, const Comm& comm) {
     throw InputError(fmt::format("mpirun -n {}: {}", comm.size(), e.what()));
   }
   const CellBlock mine = d.block[std::size_t(comm.rank())];
-  State s = make_state_owning(c, [&](double x, double y) {
+  ParticleShare share;
+  share.own = [&](double x, double y) {
     const int i = std::clamp(g.x.cell_of(x), 0, cols - 1), j = std::clamp(g.y.cell_of(y), 0, rows - 1);
     return i >= mine.c0 && i < mine.c1 && j >= mine.r0 && j < mine.r1;
-  });
+  };
+  State s = make_state(c, &share);
   check_distributable(s, comm.size());
   attach_halo(s, comm);
   set_blocks(s, d.block);
   s.mass_floor = 1e-20 * comm.min(lightest);  // solver/setup.cpp: the case's lightest particle
-  // E14: the strain work starts from this rank's part of the elastic energy (make_state_owning
-  // measured it on this rank's particles); the initial energy is the run's.
+  // E14: the strain work starts from this rank's part of the elastic energy (make_state measured
+  // it on this rank's particles); the initial energy is the run's.
   s.initial_energy = comm.sum(kinetic_energy(s.particles) + s.strain_work);
   return s;
 }

@@ -37,7 +37,8 @@ std::vector<StationProbe> set_up(RunContext& r, const Case& c, const std::string
                                  double checkpoint_interval, const Comm& comm, bool resume) {
   const bool by_rank = comm.distributed();
   // A distributed resume builds no particle: the checkpoint brings them and their sums.
-  r.s = !by_rank ? make_state(c) : resume ? make_state_without_particles(c) : make_rank_state(c, comm);
+  const ParticleShare none = ParticleShare::none();
+  r.s = !by_rank ? make_state(c) : resume ? make_state(c, &none) : make_rank_state(c, comm);
   const double* region = c.output.has_snapshot_region ? c.output.snapshot_region : nullptr;
   std::vector<StationProbe> probes;
   if (by_rank) {

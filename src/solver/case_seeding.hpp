@@ -3,7 +3,7 @@
 // in the order make_state appends them, each with the id it gets there (0, 1, ... over the
 // bodies). A distributed run's ranks walk them to split the grid by particle count, to choose
 // the snapshots' rows, the stations' particles and the traction loads' particles as one process
-// does, and keep only their own (make_state_owning): memory per rank is its particles, never
+// does, and keep only their own (make_state with a ParticleShare): memory per rank is its particles, never
 // the case's; time is one visit of every point per rank.
 // Units: m, kg.
 #pragma once
@@ -46,15 +46,9 @@ struct CaseTally {
 };
 CaseTally tally_case_points(const Case& c, const Grid& g);
 
-// make_state (solver/state.hpp) for a uniform or graded grid holding only the particles whose
-// centre `own` accepts, with the ids one process gives them. Everything else is the whole
-// case's (grid, boundary, interfaces, loads: a traction patch is found among every particle
-// near its segment, as one process finds it). Sums over particles (mass floor, initial and
-// strain energy) are this process's: a distributed caller reduces them.
-State make_state_owning(const Case& c, const PointFilter& own);
-
-// make_state with no particle at all (uniform, graded or nested): what a resumed distributed run
-// builds before its checkpoint brings the particles and the sums over them.
-State make_state_without_particles(const Case& c);
+// make_state (solver/state.hpp) with a ParticleShare: only the particles the share accepts,
+// with the ids one process gives them. Everything else is the whole case's (grid, boundary,
+// interfaces, loads: a traction patch is found among every particle near its segment, as one
+// process finds it).
 
 }  // namespace rupture

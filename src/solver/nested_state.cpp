@@ -196,33 +196,6 @@ double NestedState::external_work() const {
   return w;
 }
 
-State make_nested_run_state(const Case& c, const LevelShare* share) {
-  State s;
-  auto n = std::make_shared<NestedState>(make_nested_state(c, share));
-  // The interfaces in input order (each level kept its own in that order).
-  std::vector<std::size_t> next(n->levels.size(), 0);
-  for (const int l : n->interface_levels)
-    s.interfaces.push_back(std::move(n->levels[std::size_t(l)].interfaces[next[std::size_t(l)]++]));
-  for (State& l : n->levels) l.interfaces.clear();
-  const State& first = n->levels[0];
-  // The finest level holding an interface (without: the finest), for what reads one grid.
-  int grid_level = int(n->levels.size()) - 1;
-  if (!n->interface_levels.empty())
-    grid_level = *std::max_element(n->interface_levels.begin(), n->interface_levels.end());
-  s.grid = n->levels[std::size_t(grid_level)].grid;
-  s.scheme = first.scheme;
-  s.flip = first.flip;
-  s.stiffness = first.stiffness;  // the gathered particles' derived state (material/elastic.hpp)
-  s.limits = first.limits;
-  s.dt = first.dt;
-  s.cohesive_safety = first.cohesive_safety;
-  s.mass_floor = first.mass_floor;
-  for (const State& l : n->levels) s.initial_energy += l.initial_energy, s.strain_work += l.strain_work;
-  s.nested = std::move(n);
-  merge_level_particles(s);
-  return s;
-}
-
 bool NestedState::holds_interfaces(int level) const {
   return std::find(interface_levels.begin(), interface_levels.end(), level) != interface_levels.end();
 }
@@ -467,7 +440,7 @@ void check_nested_support(const Case& c) {
   }
 }
 
-NestedState make_nested_state(const Case& c, const LevelShare* share) {
+NestedState make_nested_state(const Case& c, const ParticleShare* share) {
   check_nested_support(c);
   NestedState n;
   n.grid = make_nested_grid(c.grid.min, c.grid.max, c.grid.coarse_cell_size, c.grid.cell_size,
@@ -480,7 +453,7 @@ NestedState make_nested_state(const Case& c, const LevelShare* share) {
   for (int l = 0; l < levels; ++l) {
     const Level& L = n.grid.levels[std::size_t(l)];
     const NestedGrid& g = n.grid;
-    const std::function<bool(double, double)> own = [share, l](double x, double y) { return share->own(l, x, y); };
+    const std::function<bool(double, double)> own = [share, l](double x, double y) { return share->own_level(l, x, y); };
     n.levels.push_back(make_level_state(c, level_grid(n.grid, l),
                                         [&g, l](double x, double y) { return g.level_of(x, y) == l; },
                                         share ? &own : nullptr));

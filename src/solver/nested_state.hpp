@@ -16,7 +16,7 @@
 // reaching them, their slaves' dashpots moved to their DOFs (as their mass). Not yet supported
 // here (make_nested_state throws InputError naming them): per-level steps with [loads],
 // [absorbing], USL/USF or interfaces on more than one level, a grid without boxes (and, under
-// mpirun, interfaces on more than one level: parallel/halo_nested.cpp). The run's State wraps the levels (make_nested_run_state), so the driver and writers
+// mpirun, interfaces on more than one level: parallel/halo_nested.cpp). The run's State wraps the levels (make_state), so the driver and writers
 // run unchanged.
 #pragma once
 #include <cmath>
@@ -120,14 +120,6 @@ struct NestedState {
 State make_level_state(const Case& c, Grid lattice, const std::function<bool(double, double)>& keep,
                        const std::function<bool(double, double)>* own = nullptr);
 
-// A distributed rank's share of the levels' particles (parallel/halo_nested.hpp): level l makes
-// the particles whose centre own(l, x, y) accepts, with the ids one process gives them
-// (first_id[l] + the particle's index among level l's).
-struct LevelShare {
-  std::function<bool(int, double, double)> own;
-  std::vector<std::uint32_t> first_id;  // per level
-};
-
 // The run's interfaces (s.interfaces, input order) to the levels holding them, each level's in
 // input order, and back: a level's step and its share of a split see its own interfaces only.
 void lend_interfaces(State& s);
@@ -138,10 +130,10 @@ void return_interfaces(State& s);
 void check_nested_support(const Case& c);
 
 // The levels of c.grid's boxes and their states (with `share`, each level's share of its
-// particles; the sums over particles, mass floor included, are then this process's). Throws
+// particles, ParticleShare::own_level; the sums over particles, mass floor included, are then this process's). Throws
 // InputError for what the nested step does not support yet, and for a velocity condition on an
 // edge that is not on a lattice line of a level reaching it.
-NestedState make_nested_state(const Case& c, const LevelShare* share = nullptr);
+NestedState make_nested_state(const Case& c, const ParticleShare* share = nullptr);
 
 // Visits level l's particles at t = 0 as make_nested_state seeds them, in their order (their
 // centres, m, and masses, kg per unit thickness), without making them.
@@ -159,9 +151,6 @@ struct NestedDrift {
 };
 NestedDrift nested_drift_before(NestedState& n);
 
-// The run's State for grid.refinement = "nested" (make_state calls it): levels in s.nested,
-// the interfaces (each on the level that holds it whole) in s.interfaces, particles gathered.
-State make_nested_run_state(const Case& c, const LevelShare* share = nullptr);
 // One step of s.nested (step(State&) calls it), then the clock, energies and limits of s.
 void step_nested_run(State& s);
 // Whether every particle of the run is at the run's time (always, but between the finest steps

@@ -173,6 +173,35 @@ State make_state_on(const Case& c, Grid grid, const PointFilter* keep, const Poi
   return s;
 }
 
+// The run's State on nested levels: the levels in s.nested, the interfaces (each on the level
+// that holds it whole) in s.interfaces, the particles merged.
+State make_state_on_levels(const Case& c, const ParticleShare* share) {
+  State s;
+  auto n = std::make_shared<NestedState>(make_nested_state(c, share));
+  // The interfaces in input order (each level kept its own in that order).
+  std::vector<std::size_t> next(n->levels.size(), 0);
+  for (const int l : n->interface_levels)
+    s.interfaces.push_back(std::move(n->levels[std::size_t(l)].interfaces[next[std::size_t(l)]++]));
+  for (State& l : n->levels) l.interfaces.clear();
+  const State& first = n->levels[0];
+  // The finest level holding an interface (without: the finest), for what reads one grid.
+  int grid_level = int(n->levels.size()) - 1;
+  if (!n->interface_levels.empty())
+    grid_level = *std::max_element(n->interface_levels.begin(), n->interface_levels.end());
+  s.grid = n->levels[std::size_t(grid_level)].grid;
+  s.scheme = first.scheme;
+  s.flip = first.flip;
+  s.stiffness = first.stiffness;  // the gathered particles' derived state (material/elastic.hpp)
+  s.limits = first.limits;
+  s.dt = first.dt;
+  s.cohesive_safety = first.cohesive_safety;
+  s.mass_floor = first.mass_floor;
+  for (const State& l : n->levels) s.initial_energy += l.initial_energy, s.strain_work += l.strain_work;
+  s.nested = std::move(n);
+  merge_level_particles(s);
+  return s;
+}
+
 }  // namespace
 
 void for_each_case_point(const Case& c, const Grid& g, const CasePointVisit& visit) {
@@ -207,20 +236,18 @@ CaseTally tally_case_points(const Case& c, const Grid& g) {
   return t;
 }
 
-State make_state(const Case& c) {
-  if (c.grid.nested) return make_nested_run_state(c);  // solver/nested_state.hpp
-  return make_state_on(c, build_grid(c.grid), nullptr, nullptr);
+ParticleShare ParticleShare::none() {
+  ParticleShare s;
+  s.own = [](double, double) { return false; };
+  s.own_level = [](int, double, double) { return false; };
+  s.from_checkpoint = true;
+  return s;
 }
 
-State make_state_owning(const Case& c, const PointFilter& own) {
-  return make_state_on(c, build_grid(c.grid), nullptr, &own);
-}
-
-State make_state_without_particles(const Case& c) {
-  const PointFilter none = [](double, double) { return false; };
-  const LevelShare no_level{[](int, double, double) { return false; }, {}};
-  State s = c.grid.nested ? make_nested_run_state(c, &no_level) : make_state_owning(c, none);
-  s.particles_from_checkpoint = true;
+State make_state(const Case& c, const ParticleShare* share) {
+  State s = c.grid.nested ? make_state_on_levels(c, share)
+                          : make_state_on(c, build_grid(c.grid), nullptr, share ? &share->own : nullptr);
+  s.particles_from_checkpoint = share && share->from_checkpoint;
   return s;
 }
 

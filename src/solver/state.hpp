@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -165,7 +166,7 @@ struct State {
   // Checkpoints (run/checkpoint.hpp): 0 when the particles are in the file, N when a
   // distributed run wrote them in N part files beside it (run/checkpoint_ranks.hpp).
   int particle_parts = 0;
-  // Made without particles for a distributed resume (make_state_without_particles): the
+  // Made without particles for a distributed resume (ParticleShare::none()): the
   // checkpoint brings them, so their count is the file's, not this state's (derived, not
   // written).
   bool particles_from_checkpoint = false;
@@ -178,8 +179,25 @@ struct State {
   double strain_work = 0.0;
 };
 
-// Builds grid, particles (one velocity field per body), stiffnesses, boundary nodes and the
-// time step from a validated case.
-State make_state(const Case& c);
+// Which of the case's particles a State made from it holds. One process holds every one (no
+// share); a rank of a distributed run its share (parallel/halo.hpp: make_rank_state finds it);
+// a resumed distributed run none (ParticleShare::none(): its checkpoint brings them). Ids are
+// always the ones one process gives. With a share, the sums over particles (mass floor, initial
+// and strain energy) are this process's: the distributed caller reduces them.
+struct ParticleShare {
+  // A uniform or graded grid: the particle centres (x, y in m) this process makes.
+  std::function<bool(double, double)> own;
+  // Nested levels: level l makes the centres own_level(l, x, y) accepts, with the ids
+  // first_id[l] + the particle's index among level l's (empty: as one process numbers them).
+  std::function<bool(int, double, double)> own_level;
+  std::vector<std::uint32_t> first_id;
+  bool from_checkpoint = false;  // none(): State::particles_from_checkpoint
+  static ParticleShare none();
+};
+
+// The set-up, for every grid (uniform, graded, nested levels): grid or levels, particles (one
+// velocity field per body; every one, or `share`'s), stiffnesses, boundary nodes, interfaces,
+// loads and the time step, from a validated case.
+State make_state(const Case& c, const ParticleShare* share = nullptr);
 
 }  // namespace rupture
