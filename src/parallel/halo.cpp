@@ -117,9 +117,10 @@ void set_blocks(State& s, std::vector<CellBlock> blocks) {
   s.windows_checked_step = -2;  // re-fit the windows to this rank's particles
 }
 
-void split_held_particles(State& s, const Comm& comm, const std::vector<std::vector<double>>& keys) {
-  if (s.nested) return distribute_held_nested(s, comm, keys);  // parallel/halo_nested.hpp
-  distribute_held(s, comm, keys.at(0));
+void split_over_ranks(State& s, const Comm& comm, const SplitFrom& from) {
+  if (!from.held) return distribute(s, comm, from.fresh);  // nested: distribute_nested
+  if (s.nested) return distribute_held_nested(s, comm, *from.held);  // parallel/halo_nested.hpp
+  distribute_held(s, comm, from.held->at(0));
 }
 
 ExchangeCost exchange_cost(const State& s) {

@@ -138,9 +138,22 @@ struct Halo final : RankExchange {
 // This rank's halo of a distributed State (s.halo, which only a Halo implements).
 inline Halo& halo_of(const State& s) { return static_cast<Halo&>(*s.halo); }
 
-// Splits s (the same State on every rank: made by make_state, or restored from a checkpoint;
-// uniform or graded grid, one lattice) among comm's ranks by its particles now, and keeps this rank's
-// particles. The run's sums become this rank's parts: fresh (t = 0), the strain work starts
+// The one split of a run over comm's ranks, by where its particles are now (bisect_over_ranks;
+// every grid: nested levels are split level by level, parallel/halo_nested.hpp), each rank
+// keeping its own. From what the ranks hold (SplitFrom): the same State on every rank (made by
+// make_state, or restored from a one-process checkpoint; `fresh`: at t = 0), or each rank some
+// of the run's particles (a resume that read some of a distributed checkpoint's parts, with
+// their keys: the order one process reading every part would hold them in). The variants
+// below (distribute, distribute_held and their nested forms) are its parts; outside parallel/
+// call this.
+struct SplitFrom {
+  bool fresh = true;                                      // the same State: at t = 0, or restored
+  const std::vector<std::vector<double>>* held = nullptr;  // per level, the held particles' keys
+};
+void split_over_ranks(State& s, const Comm& comm, const SplitFrom& from = {});
+
+// split_over_ranks of the same State on every rank: splits s (uniform or graded grid, one
+// lattice) among comm's ranks by its particles now, and keeps this rank's particles. The run's sums become this rank's parts: fresh (t = 0), the strain work starts
 // from the rank's elastic energy; restored, rank 0 keeps the run's sums (strain and external
 // work, interface work) and the others start from 0. Throws InputError for what distributed
 // runs do not support yet (the message names the key).
@@ -161,10 +174,6 @@ State make_rank_state(const Case& c, const Comm& comm);
 // kept on rank 0. No rank holds more than the particles it read and its own.
 void distribute_held(State& s, const Comm& comm, const std::vector<double>& key);
 
-// The split of a resumed run whose ranks each hold some of the checkpoint's particles, with
-// their keys per level (run/checkpoint_ranks.hpp: read_checkpoint_share): distribute_held, or
-// for nested levels distribute_held_nested (parallel/halo_nested.hpp).
-void split_held_particles(State& s, const Comm& comm, const std::vector<std::vector<double>>& keys);
 
 // Gives s a halo on `comm` (no blocks yet: set_blocks follows).
 void attach_halo(State& s, const Comm& comm);

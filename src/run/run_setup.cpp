@@ -136,9 +136,9 @@ void resume_from_checkpoint(RunContext& ctx, const RunOptions& options) {
   });
   // Split by where the particles are now (any number of ranks, whatever wrote it).
   if (comm.distributed() && !keys.empty()) {
-    split_held_particles(ctx.s, comm, keys);  // sends each particle to its rank
+    split_over_ranks(ctx.s, comm, {false, &keys});  // sends each particle to its rank
   } else if (comm.distributed()) {
-    distribute(ctx.s, comm, false);  // one process's checkpoint: its particles split
+    split_over_ranks(ctx.s, comm, {false, nullptr});  // one process's checkpoint: its particles split
   }
   ++ctx.segments;
   if (ctx.snapshots) {  // snapshot files deleted since: particles.xdmf names only what exists

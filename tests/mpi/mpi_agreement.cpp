@@ -96,7 +96,7 @@ int main(int argc, char** argv) {
   double setup_same = 1.0, initial_energy_difference = 0.0;
   {
     State w = make_state(c);
-    distribute(w, world);
+    split_over_ranks(w, world);
     const Particles &A = w.particles, &B = d.particles;
     bool same = A.x == B.x && A.y == B.y && A.vx == B.vx && A.vy == B.vy && A.mass == B.mass &&
                 A.volume0 == B.volume0 && A.half_x == B.half_x && A.half_y == B.half_y && A.sxx == B.sxx &&
@@ -124,11 +124,11 @@ int main(int argc, char** argv) {
       if (c.grid.nested) {
         std::vector<std::vector<double>> keys(h.nested->levels.size());
         for (std::size_t l = 0; l < keys.size(); ++l) deal(h.nested->levels[l].particles, keys[l]);
-        distribute_held_nested(h, world, keys);
+        split_over_ranks(h, world, {false, &keys});
       } else {
-        std::vector<double> key;
-        deal(h.particles, key);
-        distribute_held(h, world, key);
+        std::vector<std::vector<double>> keys(1);
+        deal(h.particles, keys[0]);
+        split_over_ranks(h, world, {false, &keys});
       }
       const Particles& H = h.particles;
       same = same && A.x == H.x && A.y == H.y && A.vx == H.vx && A.sxy == H.sxy && A.id == H.id &&
