@@ -79,8 +79,8 @@ Outcome run_graded(const Case& c, const WaveSpeeds& w) {
 Outcome run_nested(const Case& c, const WaveSpeeds& w) {
   Outcome o;
   const auto t0 = std::chrono::steady_clock::now();
-  NestedState n = make_nested_state(c);
-  o.particles = n.num_particles();
+  RunState n = make_nested_state(c);
+  o.particles = held_particles(n);
   const CohesiveInterface* ci = nullptr;
   double h = 0;
   for (const State& s : n.levels)
@@ -90,9 +90,9 @@ Outcome run_nested(const Case& c, const WaveSpeeds& w) {
   CrackClock clock(c, ci, h);
   const double eps = 1e-6 * n.dt;
   while (n.time < c.time.end - eps) {
-    for (State& s : n.levels) s.dt_cap = c.time.end - n.time;
+    n.dt_cap = c.time.end - n.time;
     step(n);
-    o.updates += double(n.num_particles());
+    o.updates += double(held_particles(n));
     clock.after_step(ci, n.time, eps);
   }
   o.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -103,9 +103,9 @@ void reseal(std::string& bytes) {
 }
 
 void set_up_like_driver(RunContext& r, const Case& c, const std::string& dir) {
-  r.s = make_state(c);
-  if (c.output.snapshot_interval > 0) r.snapshots = std::make_unique<SnapshotWriter>(dir, r.s.particles);
-  for (const CohesiveInterface& ci : r.s.interfaces) r.cracks.emplace_back(ci, 2.0 * r.s.grid.x.h, r.s.grid.x.h);
+  r.s = make_run_state(c);
+  if (c.output.snapshot_interval > 0) r.snapshots = std::make_unique<SnapshotWriter>(dir, r.s.levels[0].particles);
+  for (const CohesiveInterface& ci : r.s.levels[0].interfaces) r.cracks.emplace_back(ci, 2.0 * r.s.levels[0].grid.x.h, r.s.levels[0].grid.x.h);
   r.eps = 1e-6 * r.s.dt;
   r.hist = Schedule(c.output.history_interval > 0 ? c.output.history_interval : r.s.dt);
   r.snap = Schedule(c.output.snapshot_interval);
@@ -119,22 +119,22 @@ namespace {
 
 // What a resumed run does next with the restored context, on a small scale.
 void continue_run(RunContext& r, const Prepared& p) {
-  State& s = r.s;
+  RunState& s = r.s;
   for (int k = 0; k < 2 && s.time < p.c.time.end; ++k) {
     s.dt_cap = p.c.time.end - s.time;
     s.sync_by = p.c.time.end;
     step(s);
-    for (std::size_t i = 0; i < r.cracks.size(); ++i) r.cracks[i].sample(s.interfaces[i], s.time);
+    for (std::size_t i = 0; i < r.cracks.size(); ++i) r.cracks[i].sample(s.interface(i), s.time);
     r.hist.advance(s.time, r.eps);
     r.crack.advance(s.time, r.eps);
     r.checkpoint.advance(s.time, r.eps);
   }
-  merge_level_particles(s);
+  (void)all_particles(s);
   (void)r.history.max_relative_error(0.0);
   (void)r.history.samples.back().relative_error();
   for (std::size_t i = 0; i < r.cracks.size(); ++i) {
     (void)r.cracks[i].samples().back();
-    (void)r.cracks[i].summarize(s.interfaces[i], p.summary.speeds[0]);
+    (void)r.cracks[i].summarize(s.interface(i), p.summary.speeds[0]);
     (void)summarize_mach(r.mach, int(i), 0.0, 1.0);
   }
   (void)checkpoint_bytes(CaseSource{}, r);

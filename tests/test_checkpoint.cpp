@@ -34,20 +34,20 @@ std::string scratch_dir(const char* name) {
 
 // A context as the driver sets it up (trackers, snapshot writer), before any step.
 void set_up(RunContext& r, const Case& c, const std::string& dir) {
-  r.s = make_state(c);
-  for (std::size_t k = 0; k < r.s.interfaces.size(); ++k) r.cracks.emplace_back(r.s.interfaces[k], 2e-3);
-  r.snapshots = std::make_unique<SnapshotWriter>(dir, r.s.particles);
+  r.s = make_run_state(c);
+  for (std::size_t k = 0; k < r.s.levels[0].interfaces.size(); ++k) r.cracks.emplace_back(r.s.levels[0].interfaces[k], 2e-3);
+  r.snapshots = std::make_unique<SnapshotWriter>(dir, r.s.levels[0].particles);
 }
 
 void advance(RunContext& r, int steps) {
   for (int k = 0; k < steps; ++k) {
     r.s.dt = r.s.limits.dt;
     step(r.s);
-    r.history.samples.push_back(EnergySample{r.s.time, kinetic_energy(r.s.particles),
-                                             strain_energy(r.s.particles, r.s.stiffness), r.s.external_work,
+    r.history.samples.push_back(EnergySample{r.s.time, kinetic_energy(r.s.levels[0].particles),
+                                             strain_energy(r.s.levels[0].particles, r.s.levels[0].stiffness), r.s.external_work,
                                              r.s.initial_energy});
     for (std::size_t i = 0; i < r.cracks.size(); ++i)
-      r.cracks[i].sample(r.s.interfaces[i], r.s.time);
+      r.cracks[i].sample(r.s.levels[0].interfaces[i], r.s.time);
   }
 }
 
@@ -87,22 +87,22 @@ TEST(Checkpoint, round_trip_is_bitwise_and_the_run_continues_bitwise) {
   a.checkpoint = Schedule(2e-6);
   a.interface_files = 7;
   a.eps = 1e-6 * a.s.limits.dt;
-  a.s.interfaces[0].gp_separated[5] = 1;  // a separated Gauss point survives the trip
-  a.s.interfaces[0].node_crack_time[3] = 1.5e-6;
+  a.s.levels[0].interfaces[0].gp_separated[5] = 1;  // a separated Gauss point survives the trip
+  a.s.levels[0].interfaces[0].node_crack_time[3] = 1.5e-6;
   const std::string bytes = checkpoint_bytes(kSource, a);
 
   RunContext b;
   set_up(b, c, dir);
   restore_checkpoint_bytes(bytes, "test", b);
   EXPECT_EQ(checkpoint_bytes(kSource, b), bytes) << "re-written checkpoint differs";
-  const Particles &pa = a.s.particles, &pb = b.s.particles;
+  const Particles &pa = a.s.levels[0].particles, &pb = b.s.levels[0].particles;
   EXPECT_TRUE(bitwise_equal(pa.id, pb.id)) << "particle order";
   EXPECT_TRUE(bitwise_equal(pa.x, pb.x) && bitwise_equal(pa.vy, pb.vy) &&
               bitwise_equal(pa.sxy, pb.sxy) && bitwise_equal(pa.sxx, pb.sxx) &&
               bitwise_equal(pa.volume0, pb.volume0));
-  EXPECT_TRUE(bitwise_equal(a.s.plan.strip_begin, b.s.plan.strip_begin));
-  EXPECT_EQ(a.s.plan.sorted_step, b.s.plan.sorted_step);
-  const CohesiveInterface &ia = a.s.interfaces[0], &ib = b.s.interfaces[0];
+  EXPECT_TRUE(bitwise_equal(a.s.levels[0].plan.strip_begin, b.s.levels[0].plan.strip_begin));
+  EXPECT_EQ(a.s.levels[0].plan.sorted_step, b.s.levels[0].plan.sorted_step);
+  const CohesiveInterface &ia = a.s.levels[0].interfaces[0], &ib = b.s.levels[0].interfaces[0];
   EXPECT_TRUE(bitwise_equal(ia.gp_dn, ib.gp_dn) && bitwise_equal(ia.gp_tt, ib.gp_tt) &&
               bitwise_equal(ia.gp_separated, ib.gp_separated) &&
               bitwise_equal(ia.ux_up, ib.ux_up) &&
@@ -131,11 +131,11 @@ TEST(Checkpoint, round_trip_is_bitwise_and_the_run_continues_bitwise) {
   // Both go on 40 steps (another re-sort, the BC lines may move): still bitwise the same.
   advance(a, 40);
   advance(b, 40);
-  EXPECT_TRUE(bitwise_equal(a.s.particles.x, b.s.particles.x));
-  EXPECT_TRUE(bitwise_equal(a.s.particles.vx, b.s.particles.vx));
-  EXPECT_TRUE(bitwise_equal(a.s.particles.sxx, b.s.particles.sxx));
-  EXPECT_TRUE(bitwise_equal(a.s.interfaces[0].gp_tt, b.s.interfaces[0].gp_tt));
-  a.s.cohesive_seconds = b.s.cohesive_seconds = 0.0;  // wall time, not a result
+  EXPECT_TRUE(bitwise_equal(a.s.levels[0].particles.x, b.s.levels[0].particles.x));
+  EXPECT_TRUE(bitwise_equal(a.s.levels[0].particles.vx, b.s.levels[0].particles.vx));
+  EXPECT_TRUE(bitwise_equal(a.s.levels[0].particles.sxx, b.s.levels[0].particles.sxx));
+  EXPECT_TRUE(bitwise_equal(a.s.levels[0].interfaces[0].gp_tt, b.s.levels[0].interfaces[0].gp_tt));
+  a.s.levels[0].cohesive_seconds = b.s.levels[0].cohesive_seconds = 0.0;  // wall time, not a result
   EXPECT_EQ(checkpoint_bytes(kSource, a), checkpoint_bytes(kSource, b));
 }
 
@@ -176,9 +176,9 @@ velocity = 2.0
     restore_checkpoint_bytes(bytes, "test", b);
     advance(a, 40);
     advance(b, 40);
-    EXPECT_TRUE(bitwise_equal(a.s.particles.x, b.s.particles.x)) << scheme;
-    EXPECT_TRUE(bitwise_equal(a.s.particles.vy, b.s.particles.vy)) << scheme;
-    EXPECT_TRUE(bitwise_equal(a.s.particles.sxy, b.s.particles.sxy)) << scheme;
+    EXPECT_TRUE(bitwise_equal(a.s.levels[0].particles.x, b.s.levels[0].particles.x)) << scheme;
+    EXPECT_TRUE(bitwise_equal(a.s.levels[0].particles.vy, b.s.levels[0].particles.vy)) << scheme;
+    EXPECT_TRUE(bitwise_equal(a.s.levels[0].particles.sxy, b.s.levels[0].particles.sxy)) << scheme;
     EXPECT_EQ(a.s.external_work, b.s.external_work) << scheme;
     EXPECT_GT(a.s.external_work, 0.0) << scheme;
     EXPECT_EQ(checkpoint_bytes(kSource, a), checkpoint_bytes(kSource, b)) << scheme;

@@ -41,10 +41,10 @@ const Case& plate() {
 void run_plate(RunContext& r, int steps) {
   fuzz::set_up_like_driver(r, plate(), scratch_dir("rupture_test_ckpt_checks"));
   auto record = [&]() {
-    r.history.samples.push_back(EnergySample{r.s.time, kinetic_energy(r.s.particles),
-                                             strain_energy(r.s.particles, r.s.stiffness), r.s.external_work,
+    r.history.samples.push_back(EnergySample{r.s.time, kinetic_energy(r.s.levels[0].particles),
+                                             strain_energy(r.s.levels[0].particles, r.s.levels[0].stiffness), r.s.external_work,
                                              r.s.initial_energy});
-    for (std::size_t i = 0; i < r.cracks.size(); ++i) r.cracks[i].sample(r.s.interfaces[i], r.s.time);
+    for (std::size_t i = 0; i < r.cracks.size(); ++i) r.cracks[i].sample(r.s.levels[0].interfaces[i], r.s.time);
   };
   record();
   for (int k = 0; k < steps; ++k) {
@@ -133,7 +133,7 @@ void expect_refused(const std::string& bytes, const std::vector<std::string>& wo
 TEST(CheckpointChecks, the_plate_restores_and_continues) {
   RunContext a;
   run_plate(a, 30);
-  EXPECT_GE(a.s.plan.num_strips, 2) << "the plate spans two scatter strips";
+  EXPECT_GE(a.s.levels[0].plan.num_strips, 2) << "the plate spans two scatter strips";
   EXPECT_EQ(refusal(checkpoint_bytes(kSource, a)), "no error");
   const std::string bytes = checkpoint_bytes(kSource, a);
   EXPECT_EQ(fuzz::checkpoint_one(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()),
@@ -141,53 +141,53 @@ TEST(CheckpointChecks, the_plate_restores_and_continues) {
 }
 
 TEST(CheckpointChecks, particle_invariants_are_refused_naming_the_entry) {
-  expect_refused(edited([](RunContext& a) { a.s.particles.vx.pop_back(); }),
+  expect_refused(edited([](RunContext& a) { a.s.levels[0].particles.vx.pop_back(); }),
                  {"run.state.particles.vx.length = 639", "must be 640"});
-  expect_refused(edited([](RunContext& a) { a.s.particles.field[3] = 2; }),
+  expect_refused(edited([](RunContext& a) { a.s.levels[0].particles.field[3] = 2; }),
                  {"run.state.particles.field[3] = 2", "below the case's 2 velocity fields"});
-  expect_refused(edited([](RunContext& a) { a.s.particles.material[5] = 1; }),
+  expect_refused(edited([](RunContext& a) { a.s.levels[0].particles.material[5] = 1; }),
                  {"run.state.particles.material[5] = 1", "below the case's 1 materials"});
-  expect_refused(edited([](RunContext& a) { a.s.particles.x[2] = NAN; }), {"run.state.particles.x[2] = nan", "finite"});
-  expect_refused(edited([](RunContext& a) { a.s.particles.y[4] = 1.0; }),
+  expect_refused(edited([](RunContext& a) { a.s.levels[0].particles.x[2] = NAN; }), {"run.state.particles.x[2] = nan", "finite"});
+  expect_refused(edited([](RunContext& a) { a.s.levels[0].particles.y[4] = 1.0; }),
                  {"run.state.particles.y[4] = 1", "inside the lattice"});
-  expect_refused(edited([](RunContext& a) { a.s.particles.half_x[1] = 0.0; }), {"run.state.particles.half_x[1] = 0"});
-  expect_refused(edited([](RunContext& a) { a.s.particles.mass[1] = -1.0; }), {"run.state.particles.mass[1] = -1", "positive"});
-  expect_refused(edited([](RunContext& a) { a.s.particles.id[0] = a.s.particles.id[1]; }),
+  expect_refused(edited([](RunContext& a) { a.s.levels[0].particles.half_x[1] = 0.0; }), {"run.state.particles.half_x[1] = 0"});
+  expect_refused(edited([](RunContext& a) { a.s.levels[0].particles.mass[1] = -1.0; }), {"run.state.particles.mass[1] = -1", "positive"});
+  expect_refused(edited([](RunContext& a) { a.s.levels[0].particles.id[0] = a.s.levels[0].particles.id[1]; }),
                  {"run.state.particles.id", "the case's particle ids, each once"});
-  expect_refused(edited([](RunContext& a) { a.s.particles.id[7] = 0xffffffffu; }), {"run.state.particles.id"});
+  expect_refused(edited([](RunContext& a) { a.s.levels[0].particles.id[7] = 0xffffffffu; }), {"run.state.particles.id"});
 }
 
 TEST(CheckpointChecks, plan_boundary_and_interface_invariants_are_refused_naming_the_entry) {
-  expect_refused(edited([](RunContext& a) { a.s.plan.sort_interval = 0; }),
+  expect_refused(edited([](RunContext& a) { a.s.levels[0].plan.sort_interval = 0; }),
                  {"run.state.plan.sort_interval = 0", "at least 1"});
-  expect_refused(edited([](RunContext& a) { a.s.plan.strip_begin[1] = a.s.particles.size() + 5; }),
+  expect_refused(edited([](RunContext& a) { a.s.levels[0].plan.strip_begin[1] = a.s.levels[0].particles.size() + 5; }),
                  {"run.state.plan.strip_begin[1] = 645", "must lie in"});
-  expect_refused(edited([](RunContext& a) { a.s.plan.num_strips = 7; }), {"run.state.plan.num_strips = 7"});
-  expect_refused(edited([](RunContext& a) { a.s.plan.strip_cells = 3; }), {"run.state.plan.strip_cells = 3", "must be 32"});
+  expect_refused(edited([](RunContext& a) { a.s.levels[0].plan.num_strips = 7; }), {"run.state.plan.num_strips = 7"});
+  expect_refused(edited([](RunContext& a) { a.s.levels[0].plan.strip_cells = 3; }), {"run.state.plan.strip_cells = 3", "must be 32"});
   expect_refused(edited([](RunContext& a) {  // a particle of strip 0 moved into strip 1's columns
-                   ASSERT_TRUE(a.s.plan.valid);
-                   a.s.particles.x[0] = 0.019;
+                   ASSERT_TRUE(a.s.levels[0].plan.valid);
+                   a.s.levels[0].particles.x[0] = 0.019;
                  }),
                  {"run.state.particles.x[0]", "drift tolerance of its strip 0"});
-  expect_refused(edited([](RunContext& a) { a.s.bc_nodes[2].node = 1u << 30; }), {"run.state.bc_nodes[2].node = 1073741824"});
-  expect_refused(edited([](RunContext& a) { a.s.bc_nodes[0].component = 2; }), {"run.state.bc_nodes[0].component = 2"});
-  expect_refused(edited([](RunContext& a) { a.s.bc_nodes[0].condition = 1; }), {"run.state.bc_nodes[0].condition = 1"});
-  expect_refused(edited([](RunContext& a) { a.s.bc_nodes[0].field = -1; }), {"run.state.bc_nodes[0].field = -1"});
-  expect_refused(edited([](RunContext& a) { a.s.bc_lines[0] = 1000; }), {"run.state.bc_lines[0] = 1000"});
-  expect_refused(edited([](RunContext& a) { a.s.particle_parts = -1; }), {"run.state.particle_parts = -1"});
-  expect_refused(edited([](RunContext& a) { a.s.interfaces[0].gp_dn.push_back(0.0); }),
+  expect_refused(edited([](RunContext& a) { a.s.levels[0].bc_nodes[2].node = 1u << 30; }), {"run.state.bc_nodes[2].node = 1073741824"});
+  expect_refused(edited([](RunContext& a) { a.s.levels[0].bc_nodes[0].component = 2; }), {"run.state.bc_nodes[0].component = 2"});
+  expect_refused(edited([](RunContext& a) { a.s.levels[0].bc_nodes[0].condition = 1; }), {"run.state.bc_nodes[0].condition = 1"});
+  expect_refused(edited([](RunContext& a) { a.s.levels[0].bc_nodes[0].field = -1; }), {"run.state.bc_nodes[0].field = -1"});
+  expect_refused(edited([](RunContext& a) { a.s.levels[0].bc_lines[0] = 1000; }), {"run.state.bc_lines[0] = 1000"});
+  expect_refused(edited([](RunContext& a) { a.s.levels[0].particle_parts = -1; }), {"run.state.particle_parts = -1"});
+  expect_refused(edited([](RunContext& a) { a.s.levels[0].interfaces[0].gp_dn.push_back(0.0); }),
                  {"run.state.interfaces[0].gp_dn.length = 241", "must be 240"});
-  expect_refused(edited([](RunContext& a) { a.s.interfaces[0].x0.pop_back(); }),
+  expect_refused(edited([](RunContext& a) { a.s.levels[0].interfaces[0].x0.pop_back(); }),
                  {"run.state.interfaces[0].x0.length = 60", "must be 61"});
-  expect_refused(edited([](RunContext& a) { a.s.interfaces[0].uy_lo[3] = 5.0; }),
+  expect_refused(edited([](RunContext& a) { a.s.levels[0].interfaces[0].uy_lo[3] = 5.0; }),
                  {"run.state.interfaces[0].uy_lo[3] = 5", "outside the lattice"});
-  expect_refused(edited([](RunContext& a) { a.s.interfaces[0].gp_separated[9] = 7; }),
+  expect_refused(edited([](RunContext& a) { a.s.levels[0].interfaces[0].gp_separated[9] = 7; }),
                  {"run.state.interfaces[0].gp_separated[9] = 7", "0 or 1"});
-  expect_refused(edited([](RunContext& a) { a.s.interfaces[0].reversal_streak[2] = -4; }),
+  expect_refused(edited([](RunContext& a) { a.s.levels[0].interfaces[0].reversal_streak[2] = -4; }),
                  {"run.state.interfaces[0].reversal_streak[2] = -4"});
-  expect_refused(edited([](RunContext& a) { a.s.limits.dt = 0.0; }), {"run.state.limits.dt = 0", "positive"});
-  expect_refused(edited([](RunContext& a) { a.s.step = -3; }), {"run.state.step = -3"});
-  expect_refused(edited([](RunContext& a) { a.s.flip = 2.0; }), {"run.state.flip = 2"});
+  expect_refused(edited([](RunContext& a) { a.s.levels[0].limits.dt = 0.0; }), {"run.state.limits.dt = 0", "positive"});
+  expect_refused(edited([](RunContext& a) { a.s.levels[0].step = -3; }), {"run.state.step = -3"});
+  expect_refused(edited([](RunContext& a) { a.s.levels[0].flip = 2.0; }), {"run.state.flip = 2"});
 }
 
 TEST(CheckpointChecks, records_and_schedules_are_refused_naming_the_entry) {
@@ -206,7 +206,7 @@ TEST(CheckpointChecks, records_and_schedules_are_refused_naming_the_entry) {
                    a.mach.push_back(m);
                  }),
                  {"run.mach[0].interface = 3"});
-  expect_refused(edited([](RunContext& a) { a.s.limits.min_cohesive_dt = -INFINITY; }),
+  expect_refused(edited([](RunContext& a) { a.s.levels[0].limits.min_cohesive_dt = -INFINITY; }),
                  {"run.state.limits.min_cohesive_dt = -inf", "finite or +inf"});
 }
 
@@ -235,7 +235,7 @@ TEST(CheckpointChecks, a_part_file_with_arrays_of_different_lengths_is_refused) 
   RunContext a;
   run_plate(a, 3);
   const std::string dir = scratch_dir("rupture_test_ckpt_part");
-  Particles p = a.s.particles;
+  Particles p = a.s.levels[0].particles;
   p.sxy.pop_back();
   write_checkpoint_part(dir, 3, 0, 1, p);
   Particles out;
@@ -246,9 +246,9 @@ TEST(CheckpointChecks, a_part_file_with_arrays_of_different_lengths_is_refused) 
     EXPECT_NE(std::string(e.what()).find("part.particles.sxy.length"), std::string::npos) << e.what();
   }
   // Arrays of one length, but a particle outside the lattice: the state's check refuses it.
-  p = a.s.particles;
+  p = a.s.levels[0].particles;
   p.x[0] = -1.0;
-  EXPECT_THROW(check_particles(p, a.s, "part.particles", "x"), InputError);
+  EXPECT_THROW(check_particles(p, a.s.levels[0], "part.particles", "x"), InputError);
 }
 
 TEST(CheckpointChecks, only_a_regular_file_is_read) {

@@ -51,17 +51,17 @@ void write_seeds() {
   RunContext r;
   fuzz::set_up_like_driver(r, c, dir);
   auto record = [&]() {
-    r.history.samples.push_back(EnergySample{r.s.time, kinetic_energy(r.s.particles),
-                                             strain_energy(r.s.particles, r.s.stiffness), r.s.external_work,
+    r.history.samples.push_back(EnergySample{r.s.time, kinetic_energy(r.s.levels[0].particles),
+                                             strain_energy(r.s.levels[0].particles, r.s.levels[0].stiffness), r.s.external_work,
                                              r.s.initial_energy});
-    for (std::size_t i = 0; i < r.cracks.size(); ++i) r.cracks[i].sample(r.s.interfaces[i], r.s.time);
+    for (std::size_t i = 0; i < r.cracks.size(); ++i) r.cracks[i].sample(r.s.levels[0].interfaces[i], r.s.time);
   };
   record();
   for (int k = 0; k < 30; ++k) step(r.s), record();
-  r.s.cohesive_seconds = 0.0;  // wall time: the seed is the same on every machine
+  r.s.levels[0].cohesive_seconds = 0.0;  // wall time: the seed is the same on every machine
   const CaseSource source{fuzz::checkpoint_case_toml(), "fuzz case", {"time.end=2e-6"}};
   write(kFuzz / "corpus/checkpoint/plate_30_steps.bin", checkpoint_bytes(source, r));
-  write_checkpoint_part(dir, 0, 0, 1, r.s.particles);
+  write_checkpoint_part(dir, 0, 0, 1, r.s.levels[0].particles);
   write(kFuzz / "corpus/checkpoint/plate_part.bin", read(checkpoint_part_path(dir, 0, 0)));
 }
 

@@ -66,7 +66,7 @@ TEST(Halo, one_rank_keeps_everything_and_steps_as_the_plain_solver) {
   const Case c = strip();
   State plain = make_state(c);
   State one = make_state(c);
-  split_over_ranks(one, Comm::single());
+  distribute(one, Comm::single());
   ASSERT_TRUE(one.halo);
   EXPECT_TRUE(halo_of(one).peers.empty());
   EXPECT_EQ(one.particles.size(), plain.particles.size());

@@ -21,20 +21,20 @@ namespace {
 
 // The reference problem on nested levels 0-2 (finest 0.5 mm), the plate cropped as the mpi
 // agreement test's.
-State nested_reference() {
-  return make_state(load_case(std::string(RUPTURE_SOURCE_DIR) + "/examples/rosakis1999.toml",
+RunState nested_reference() {
+  return make_run_state(load_case(std::string(RUPTURE_SOURCE_DIR) + "/examples/rosakis1999.toml",
                               {"grid.refinement=\"nested\"", "grid.min=[0.0,-0.06]", "grid.max=[0.125,0.04]",
                                "bodies.upper.max=[0.125,0.04]", "bodies.lower.min=[0.0,-0.06]"}));
 }
 
 // Node (i, j) of level l as a global node id of the nested grid.
-std::size_t global_id(const NestedState& n, std::size_t l, int i, int j) {
+std::size_t global_id(const RunState& n, std::size_t l, int i, int j) {
   return n.grid.level_start[l] + n.grid.levels[l].node_index(i, j);
 }
 
 // Every (level, rank): nodes of the touched box (block and nested_touched_width) where the
 // one-process condense + distribute and the rank's (holding `reaches` only) differ.
-long mismatches(const NestedState& n, const NestedSplit& sp, const std::vector<std::vector<NodeBox>>& reaches) {
+long mismatches(const RunState& n, const NestedSplit& sp, const std::vector<std::vector<NodeBox>>& reaches) {
   const std::size_t levels = n.levels.size(), N = n.grid.num_nodes();
   std::vector<unsigned char> inactive(N, 0);  // covered slaves no particle reaches: zero
   for (const std::uint32_t s : n.grid.slaves) inactive[s] = 1;
@@ -72,8 +72,7 @@ long mismatches(const NestedState& n, const NestedSplit& sp, const std::vector<s
 }  // namespace
 
 TEST(HaloNested, every_level_is_tiled_by_the_same_rectangles_of_the_plate) {
-  const State s = nested_reference();
-  const NestedState& n = *s.nested;
+  const RunState n = nested_reference();
   ASSERT_EQ(n.levels.size(), 3u);
   for (int ranks : {1, 2, 3, 4, 7, 40}) {
     const NestedSplit sp = split_nested(n, ranks);
@@ -110,8 +109,7 @@ TEST(HaloNested, every_level_is_tiled_by_the_same_rectangles_of_the_plate) {
 }
 
 TEST(HaloNested, the_reaches_give_the_one_process_transitions_at_every_touched_node) {
-  const State s = nested_reference();
-  const NestedState& n = *s.nested;
+  const RunState n = nested_reference();
   for (int ranks : {2, 3, 4, 16}) {
     const NestedSplit sp = split_nested(n, ranks);
     EXPECT_EQ(mismatches(n, sp, sp.reaches), 0) << ranks << " ranks";

@@ -11,7 +11,7 @@
 #include "input/law_registry.hpp"
 #include "parallel/rank_plan.hpp"
 #include "run/step_cost.hpp"
-#include "solver/state.hpp"
+#include "solver/run_state.hpp"
 #include "solver/summary.hpp"
 
 namespace rupture {
@@ -96,7 +96,7 @@ void print_check(const std::string& path, const Case& c) {
 }
 
 void print_rank_plan(const Case& c, int ranks) {
-  const State s = make_state(c);
+  const RunState s = make_run_state(c);
   const RankPlan plan = plan_ranks(s, ranks);
   if (plan.levels.size() > 1)
     fmt::print("ranks={} (level {}'s cells over the plate bisected by the work of every level's "

@@ -10,7 +10,7 @@
 #include "core/atomic_file.hpp"
 #include "output/interface_csv.hpp"
 #include "parallel/halo.hpp"
-#include "solver/state.hpp"
+#include "solver/run_state.hpp"
 
 namespace rupture {
 
@@ -19,7 +19,7 @@ void NearestParticle::visit(double px, double py, std::uint32_t pid) {
   if (d < best || (d == best && pid < id)) best = d, id = pid;
 }
 
-std::vector<StationProbe> make_probes(const std::vector<StationSpec>& specs, const State& s,
+std::vector<StationProbe> make_probes(const std::vector<StationSpec>& specs, RunState& s,
                                       const std::vector<std::uint32_t>* nearest) {
   std::vector<StationProbe> out;
   for (std::size_t k = 0; k < specs.size(); ++k) {
@@ -27,7 +27,7 @@ std::vector<StationProbe> make_probes(const std::vector<StationSpec>& specs, con
     StationProbe p;
     p.interface = st.interface;
     if (st.interface >= 0) {
-      const CohesiveInterface& c = s.interfaces[std::size_t(st.interface)];
+      const CohesiveInterface& c = s.interface(std::size_t(st.interface));
       const double arc = project(c.spec.geometry(), st.x, st.y).s;
       // The node pair around the arc length (open line; a closed one ends on node 0).
       const std::size_t n = c.num_nodes();
@@ -41,7 +41,7 @@ std::vector<StationProbe> make_probes(const std::vector<StationSpec>& specs, con
       p.particle_id = (*nearest)[k];
       p.slot = 0;  // found at the first read
     } else {
-      const Particles& P = s.particles;
+      const Particles& P = all_particles(s);
       NearestParticle n{st.x, st.y};
       for (std::size_t q = 0; q < P.size(); ++q) n.visit(P.x[q], P.y[q], P.id[q]);
       p.particle_id = n.id;
@@ -57,7 +57,7 @@ namespace {
 // A distributed run (parallel/halo.hpp): each node's values from the rank owning it, each body
 // station's particle from the rank holding it, added over the ranks (zeros elsewhere), so every
 // rank records the one-process rows.
-void sample_distributed(const State& s, std::vector<StationProbe>& probes,
+void sample_distributed(RunState& s, std::vector<StationProbe>& probes,
                         std::vector<StationSeries>& series) {
   constexpr std::size_t kV = 5;  // per node: slip, slip rate, opening, shear, normal traction
   std::vector<double> v(probes.size() * 2 * kV, 0.0);
@@ -65,7 +65,7 @@ void sample_distributed(const State& s, std::vector<StationProbe>& probes,
     StationProbe& p = probes[i];
     double* out = v.data() + i * 2 * kV;
     if (p.interface >= 0) {
-      const CohesiveInterface& c = s.interfaces[std::size_t(p.interface)];
+      const CohesiveInterface& c = s.interface(std::size_t(p.interface));
       const std::size_t nodes[2] = {p.a, p.b};
       for (int e = 0; e < 2; ++e) {
         const std::size_t k = nodes[e];
@@ -77,7 +77,7 @@ void sample_distributed(const State& s, std::vector<StationProbe>& probes,
       }
       continue;
     }
-    const Particles& P = s.particles;
+    const Particles& P = all_particles(s);
     if (p.slot >= P.size() || P.id[p.slot] != p.particle_id)  // moved by a sort, or away
       p.slot = std::size_t(std::find(P.id.begin(), P.id.end(), p.particle_id) - P.id.begin());
     if (p.slot >= P.size()) continue;  // another rank's
@@ -103,7 +103,7 @@ void sample_distributed(const State& s, std::vector<StationProbe>& probes,
 
 }  // namespace
 
-void sample_stations(const State& s, std::vector<StationProbe>& probes,
+void sample_stations(RunState& s, std::vector<StationProbe>& probes,
                      std::vector<StationSeries>& series) {
   if (s.halo && halo_of(s).comm.distributed()) return sample_distributed(s, probes, series);
   series.resize(probes.size());
@@ -111,7 +111,7 @@ void sample_stations(const State& s, std::vector<StationProbe>& probes,
     StationProbe& p = probes[i];
     std::vector<double>& r = series[i].rows;
     if (p.interface >= 0) {
-      const CohesiveInterface& c = s.interfaces[std::size_t(p.interface)];
+      const CohesiveInterface& c = s.interface(std::size_t(p.interface));
       auto mix = [&](double va, double vb) { return (1.0 - p.f) * va + p.f * vb; };
       const double rate_a = s.dt > 0 ? c.last_increment_t[p.a] / s.dt : 0.0;
       const double rate_b = s.dt > 0 ? c.last_increment_t[p.b] / s.dt : 0.0;
@@ -124,7 +124,7 @@ void sample_stations(const State& s, std::vector<StationProbe>& probes,
                                          mix(ta.normal, tb.normal)};
       r.insert(r.end(), row, row + kFaultColumns);
     } else {
-      const Particles& P = s.particles;
+      const Particles& P = all_particles(s);
       if (p.slot >= P.size() || P.id[p.slot] != p.particle_id)  // moved by a sort
         p.slot = std::size_t(std::find(P.id.begin(), P.id.end(), p.particle_id) - P.id.begin());
       const std::size_t q = p.slot;

@@ -17,7 +17,7 @@
 
 namespace rupture {
 
-struct State;
+struct RunState;
 
 // One station's recorded rows (checkpointed), kFaultColumns or kBodyColumns per row.
 struct StationSeries {
@@ -40,7 +40,7 @@ inline constexpr std::size_t kBodyColumns = 5;   // time, x, y, vx, vy
 // near ones (so the choice does not depend on the particles' order): among s's particles, or
 // when `nearest` is given, its entry for the station (a distributed run's choice among every
 // particle the case seeds, solver/case_seeding.hpp; entries of fault stations unused).
-std::vector<StationProbe> make_probes(const std::vector<StationSpec>& specs, const State& s,
+std::vector<StationProbe> make_probes(const std::vector<StationSpec>& specs, RunState& s,
                                       const std::vector<std::uint32_t>* nearest = nullptr);
 // The id of the particle nearest (x, y) in a sequence visited one by one: the lowest among
 // equally near ones.
@@ -51,7 +51,7 @@ struct NearestParticle {
   void visit(double px, double py, std::uint32_t pid);
 };
 // Appends one row per station at the state's time.
-void sample_stations(const State& s, std::vector<StationProbe>& probes,
+void sample_stations(RunState& s, std::vector<StationProbe>& probes,
                      std::vector<StationSeries>& series);
 void write_stations(const std::string& dir, const std::vector<StationSpec>& specs,
                     const std::vector<StationProbe>& probes,

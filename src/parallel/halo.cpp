@@ -117,29 +117,31 @@ void set_blocks(State& s, std::vector<CellBlock> blocks) {
   s.windows_checked_step = -2;  // re-fit the windows to this rank's particles
 }
 
-void split_over_ranks(State& s, const Comm& comm, const SplitFrom& from) {
-  if (!from.held) return distribute(s, comm, from.fresh);  // nested: distribute_nested
-  if (s.nested) return distribute_held_nested(s, comm, *from.held);  // parallel/halo_nested.hpp
-  distribute_held(s, comm, from.held->at(0));
+void split_over_ranks(RunState& r, const Comm& comm, const SplitFrom& from) {
+  if (r.joined()) {  // nested levels: one split for every level (parallel/halo_nested.hpp)
+    if (from.held) distribute_held_nested(r, comm, *from.held);
+    else distribute_nested(r, comm, from.fresh);
+  } else {
+    State& s = r.levels[0];
+    if (from.held) distribute_held(s, comm, from.held->at(0));
+    else distribute(s, comm, from.fresh);
+    r.halo = s.halo;
+  }
+  collect_run_sums(r);  // this rank's parts of the run's sums
 }
 
-ExchangeCost exchange_cost(const State& s) {
+ExchangeCost exchange_cost(const RunState& r) {
   ExchangeCost cost;
-  const auto add = [&](const State& l) {
-    if (!l.halo) return;
+  for (const State& l : r.levels) {
+    if (!l.halo) continue;
     cost.bytes_sent += halo_of(l).bytes_sent;
     cost.seconds += halo_of(l).exchange_seconds;
-  };
-  if (s.nested)
-    for (const State& l : s.nested->levels) add(l);
-  else
-    add(s);
+  }
   return cost;
 }
 
 void distribute(State& s, const Comm& comm, bool fresh) {
   check_distributable(s, comm.size());
-  if (s.nested) return distribute_nested(s, comm, fresh);  // parallel/halo_nested.hpp
   attach_halo(s, comm);
   set_blocks(s, plan_ranks(s, comm.size()).levels.at(0).split.block);
   keep_own_particles(s);  // every rank made the same State: the same particles, the same split
@@ -425,5 +427,7 @@ void Halo::finish_step(State& s, double drift_at_start) {
 
 double sum_over_ranks(const State& s, double v) { return s.halo ? halo_of(s).comm.sum(v) : v; }
 long sum_over_ranks(const State& s, long v) { return s.halo ? halo_of(s).comm.sum(v) : v; }
+double sum_over_ranks(const RunState& r, double v) { return r.halo ? halo_of(r).comm.sum(v) : v; }
+long sum_over_ranks(const RunState& r, long v) { return r.halo ? halo_of(r).comm.sum(v) : v; }
 
 }  // namespace rupture

@@ -32,6 +32,7 @@
 #include "parallel/comm.hpp"
 #include "parallel/decomposition.hpp"
 #include "solver/rank_exchange.hpp"
+#include "solver/run_state.hpp"
 #include "solver/state.hpp"
 #include "solver/transfer.hpp"
 
@@ -128,20 +129,22 @@ struct Halo final : RankExchange {
   void check_faces_in_reach(State& s) override;
   void migrate_if_due(State& s) override;
   void finish_step(State& s, double drift_at_start) override;
-  void send_to_level_owners(NestedState& n) override;
-  void migrate_levels_if_due(NestedState& n) override;
-  void finish_nested_step(NestedState& n, const NestedDrift& before) override;
+  void send_to_level_owners(RunState& n) override;
+  void migrate_levels_if_due(RunState& n) override;
+  void finish_nested_step(RunState& n, const NestedDrift& before) override;
   double min_over_ranks(double v) const override { return comm.min(v); }
   bool fixes_windows() const override { return !reaches.empty(); }
 };
 
 // This rank's halo of a distributed State (s.halo, which only a Halo implements).
 inline Halo& halo_of(const State& s) { return static_cast<Halo&>(*s.halo); }
+// The run's: its grid level's (RunState::halo).
+inline Halo& halo_of(const RunState& r) { return static_cast<Halo&>(*r.halo); }
 
 // The one split of a run over comm's ranks, by where its particles are now (bisect_over_ranks;
 // every grid: nested levels are split level by level, parallel/halo_nested.hpp), each rank
-// keeping its own. From what the ranks hold (SplitFrom): the same State on every rank (made by
-// make_state, or restored from a one-process checkpoint; `fresh`: at t = 0), or each rank some
+// keeping its own. From what the ranks hold (SplitFrom): the same RunState on every rank (made by
+// make_run_state, or restored from a one-process checkpoint; `fresh`: at t = 0), or each rank some
 // of the run's particles (a resume that read some of a distributed checkpoint's parts, with
 // their keys: the order one process reading every part would hold them in). The variants
 // below (distribute, distribute_held and their nested forms) are its parts; outside parallel/
@@ -150,7 +153,7 @@ struct SplitFrom {
   bool fresh = true;                                      // the same State: at t = 0, or restored
   const std::vector<std::vector<double>>* held = nullptr;  // per level, the held particles' keys
 };
-void split_over_ranks(State& s, const Comm& comm, const SplitFrom& from = {});
+void split_over_ranks(RunState& r, const Comm& comm, const SplitFrom& from = {});
 
 // split_over_ranks of the same State on every rank: splits s (uniform or graded grid, one
 // lattice) among comm's ranks by its particles now, and keeps this rank's particles. The run's sums become this rank's parts: fresh (t = 0), the strain work starts
@@ -164,7 +167,7 @@ void distribute(State& s, const Comm& comm, bool fresh = true);
 // only this rank's particles made (parallel/rank_state.cpp; nested levels:
 // parallel/halo_nested.hpp): no rank ever holds the case's particles. On one rank too (a halo
 // with no peers, as distribute gives).
-State make_rank_state(const Case& c, const Comm& comm);
+RunState make_rank_state(const Case& c, const Comm& comm);
 
 // Splits s among comm's ranks when each holds some of the run's particles (a resumed run: each
 // rank read some of the checkpoint's parts), as distribute splits a restored State: the
@@ -195,12 +198,12 @@ void rebalance_if_needed(State& s);
 
 // Lets the split follow the load (`on`) or keeps it (--no-rebalance), where the run's split can
 // move at all: nested levels share one split and always keep it (parallel/halo_nested.hpp).
-void enable_rebalance(State& s, bool on);
+void enable_rebalance(RunState& r, bool on);
 
 // A run whose split cannot follow the load (nested levels) says so when its particles drifted
 // from the split by more than a rebalance would tolerate: the line to print, from the
 // particles per rank at the start and at the end of the run; empty otherwise.
-std::string kept_split_drift(const State& s, const Comm& comm, const std::vector<long>& start,
+std::string kept_split_drift(const RunState& r, const Comm& comm, const std::vector<long>& start,
                              const std::vector<long>& end);
 
 // What the exchanges cost so far, summed over every halo the run steps with (one per nested
@@ -208,7 +211,7 @@ std::string kept_split_drift(const State& s, const Comm& comm, const std::vector
 struct ExchangeCost {
   double bytes_sent = 0.0, seconds = 0.0;
 };
-ExchangeCost exchange_cost(const State& s);
+ExchangeCost exchange_cost(const RunState& r);
 
 // The distributed run's checks of a case, before any work starts (InputError naming the key).
 void check_distributable(const State& s, int ranks);
@@ -248,10 +251,13 @@ long interface_nodes_sent(const State& s, const std::vector<CellBlock>& blocks, 
 // Every rank gets every node's and Gauss point's state from its owner (outputs: the interface
 // profiles, crack summaries, stored energy); collect_crack_times: the nodes' crack and rupture
 // times, peak slip rates and faces only (the crack tip samples and crack files).
+// On a run: on every level holding interfaces.
 void collect_interface_state(State& s);
 void collect_crack_times(State& s);
+void collect_interface_state(RunState& r);
+void collect_crack_times(RunState& r);
 // The run's work on interface k (the ranks' parts summed), J/m.
-double interface_work(const State& s, std::size_t k);
+double interface_work(const RunState& r, std::size_t k);
 
 // halo_lowest_region (Halo::lowest_region): [loads] velocity regions (solver/load_step.cpp): every copy of a halo node must be prescribed
 // alike. `mark`, per element of s.fields: the lowest region whose particles on this rank touch
@@ -282,5 +288,7 @@ void migrate_particles(State& s);
 // Sum over ranks of a per-rank quantity (identity when not distributed).
 double sum_over_ranks(const State& s, double v);
 long sum_over_ranks(const State& s, long v);
+double sum_over_ranks(const RunState& r, double v);
+long sum_over_ranks(const RunState& r, long v);
 
 }  // namespace rupture

@@ -191,8 +191,16 @@ void collect_crack_times(State& s) {
       whole(halo_of(s).comm, c.rank_owned, *v, 1);
 }
 
-double interface_work(const State& s, std::size_t k) {
-  return sum_over_ranks(s, s.interfaces[k].work);
+void collect_interface_state(RunState& r) {
+  for (State& l : r.levels)
+    if (!l.interfaces.empty()) collect_interface_state(l);
 }
+
+void collect_crack_times(RunState& r) {
+  for (State& l : r.levels)
+    if (!l.interfaces.empty()) collect_crack_times(l);
+}
+
+double interface_work(const RunState& r, std::size_t k) { return sum_over_ranks(r, r.interface(k).work); }
 
 }  // namespace rupture

@@ -18,7 +18,7 @@
 
 namespace rupture {
 
-int nested_cut_level(const NestedState& n) {
+int nested_cut_level(const RunState& n) {
   const Grid& g0 = n.levels[0].grid;
   int k = 0;
   while (std::size_t(k) + 1 < n.levels.size() &&
@@ -31,11 +31,11 @@ namespace {
 
 // Adds a particle of level l at (x, y) to the cut lattice's count (nested_cut_count).
 struct CutCounter {
-  const NestedState& n;
+  const RunState& n;
   int cols, rows, longest = 1;
   double h;
   std::vector<std::uint32_t> count;
-  CutCounter(const NestedState& nested, int k, bool dense = true)
+  CutCounter(const RunState& nested, int k, bool dense = true)
       : n(nested), cols(nested.levels[0].grid.x.cells << k), rows(nested.levels[0].grid.y.cells << k),
         h(nested.levels[0].grid.x.h / double(1 << k)) {
     if (dense) count.assign(std::size_t(cols) * std::size_t(rows), 0);
@@ -54,7 +54,7 @@ struct CutCounter {
 
 }  // namespace
 
-std::vector<std::uint32_t> nested_cut_count(const NestedState& n, int k) {
+std::vector<std::uint32_t> nested_cut_count(const RunState& n, int k) {
   CutCounter cc(n, k);
   for (std::size_t l = 0; l < n.levels.size(); ++l) {
     const Particles& P = n.levels[l].particles;
@@ -64,7 +64,7 @@ std::vector<std::uint32_t> nested_cut_count(const NestedState& n, int k) {
   return cc.count;
 }
 
-NestedTally nested_seed_tally(const Case& c, const NestedState& n, int k) {
+NestedTally nested_seed_tally(const Case& c, const RunState& n, int k) {
   CutCounter cc(n, k);
   NestedTally t;
   t.min_mass = std::numeric_limits<double>::max();
@@ -97,10 +97,10 @@ CellBlock level_block(const NestedGrid& g, int l, const CellBlock& cut, int k) {
                    map(cut.r1, 1, L.y.cells)};
 }
 
-std::vector<std::vector<NodeBox>> nested_reaches(const NestedState& n,
+std::vector<std::vector<NodeBox>> nested_reaches(const RunState& n,
                                                  const std::vector<std::vector<CellBlock>>& blocks) {
   const std::size_t levels = n.levels.size(), ranks = blocks[0].size();
-  // The DOF index (into NestedState::dof_level) of each (level, node) with condensed terms.
+  // The DOF index (into RunState::dof_level) of each (level, node) with condensed terms.
   std::vector<std::vector<int>> dof_of(levels);
   for (std::size_t l = 0; l < levels; ++l) dof_of[l].assign(n.levels[l].grid.num_nodes(), -1);
   for (std::size_t d = 0; d < n.dof_level.size(); ++d) dof_of[n.dof_level[d]][n.dof_node[d]] = int(d);
@@ -143,7 +143,7 @@ std::vector<std::vector<NodeBox>> nested_reaches(const NestedState& n,
   return out;
 }
 
-int nested_touched_width(const NestedState& n, int l) {
+int nested_touched_width(const RunState& n, int l) {
   if (n.holds_interfaces(l)) return kInterfaceHaloNodes;  // the faces' stencils, as on one grid
   // A particle is less than kMigrateCells finest cells out of its block (rank moves) and
   // touches nodes closer than h + lp <= 1.5 h: node d of the rim when d < 1.5 + finest / h.
@@ -151,7 +151,7 @@ int nested_touched_width(const NestedState& n, int l) {
   return kMigrateCells * finest <= 0.5 * h ? 1 : kHaloNodes;
 }
 
-NestedSplit split_nested(const NestedState& n, int ranks) {
+NestedSplit split_nested(const RunState& n, int ranks) {
   const int k = nested_cut_level(n);
   return split_nested(n, nested_cut_count(n, k), k, ranks);
 }
@@ -159,7 +159,7 @@ NestedSplit split_nested(const NestedState& n, int ranks) {
 namespace {
 
 // The split's blocks and reaches on every level from the cut lattice's.
-NestedSplit split_of(const NestedState& n, Decomposition cut, int cut_level) {
+NestedSplit split_of(const RunState& n, Decomposition cut, int cut_level) {
   NestedSplit sp;
   sp.cut_level = cut_level;
   sp.cut = std::move(cut);
@@ -177,7 +177,7 @@ NestedSplit split_of(const NestedState& n, Decomposition cut, int cut_level) {
 
 }  // namespace
 
-NestedSplit split_nested(const NestedState& n, const std::vector<std::uint32_t>& count, int cut_level, int ranks) {
+NestedSplit split_nested(const RunState& n, const std::vector<std::uint32_t>& count, int cut_level, int ranks) {
   const Grid& g0 = n.levels[0].grid;
   try {
     return split_of(n, bisect_by_particles(count, g0.x.cells << cut_level, g0.y.cells << cut_level, ranks), cut_level);
@@ -186,9 +186,8 @@ NestedSplit split_nested(const NestedState& n, const std::vector<std::uint32_t>&
   }
 }
 
-void distribute_held_nested(State& s, const Comm& comm, const std::vector<std::vector<double>>& keys) {
-  NestedState& n = *s.nested;
-  check_distributable(s, comm.size());
+void distribute_held_nested(RunState& n, const Comm& comm, const std::vector<std::vector<double>>& keys) {
+  check_distributable(n.levels[0], comm.size());
   const int k = nested_cut_level(n);
   // Every rank's particles of every level on the cut lattice (weighted as at t = 0), bisected
   // over the ranks (parallel/decomposition.hpp: no rank holds the lattice's count).
@@ -243,7 +242,7 @@ void distribute_held_nested(State& s, const Comm& comm, const std::vector<std::v
       n.levels[l].particles.push_packed(rec);
     }
   }
-  distribute_nested(s, comm, false, &sp);
+  distribute_nested(n, comm, false, &sp);
 }
 
 namespace {
@@ -251,7 +250,7 @@ namespace {
 // Each level's fields over this rank's reach only, every field the same window (a level it
 // does not reach: one node), so its grid work and memory are its reach's; the transitions'
 // lists keep the elements in the windows, by their place in the window.
-void window_levels(NestedState& n) {
+void window_levels(RunState& n) {
   const std::size_t levels = n.levels.size();
   std::vector<std::vector<long>> local(levels);  // per level, lattice node -> its place, or -1
   std::vector<std::size_t> whole(levels);        // the lattice's nodes (the old layout's field size)
@@ -319,12 +318,9 @@ void window_levels(NestedState& n) {
 
 }  // namespace
 
-void distribute_nested(State& s, const Comm& comm, bool fresh, const NestedSplit* given) {
-  NestedState& n = *s.nested;
+void distribute_nested(RunState& n, const Comm& comm, bool fresh, const NestedSplit* given) {
   const NestedSplit sp = given ? *given : split_nested(n, comm.size());
-  // Each level's split sees its own interfaces (their faces' owners and links, in the order a
-  // step lends them: solver/nested_state.hpp lend_interfaces).
-  lend_interfaces(s);
+  // Each level's split sees its own interfaces (their faces' owners and links).
   const double finest = n.levels.back().grid.x.h;
   for (std::size_t l = 0; l < n.levels.size(); ++l) {
     State& L = n.levels[l];
@@ -344,23 +340,16 @@ void distribute_nested(State& s, const Comm& comm, bool fresh, const NestedSplit
       L.strain_work = strain_energy(P, L.stiffness);
     else if (comm.rank() > 0)
       L.strain_work = L.external_work = 0.0;
+    if (!fresh && comm.rank() > 0)  // the run's sums stay on rank 0
+      for (CohesiveInterface& c : L.interfaces) c.work = 0.0;
   }
-  return_interfaces(s);
   window_levels(n);
-  if (!fresh && comm.rank() > 0)
-    for (CohesiveInterface& c : s.interfaces) c.work = 0.0;
-  // The run's gathers of interface state need the communicator only; the finest level holding
-  // an interface (as the run State's grid, solver/nested_state.cpp), else the finest.
-  int il = int(n.levels.size()) - 1;
-  if (!n.interface_levels.empty()) il = *std::max_element(n.interface_levels.begin(), n.interface_levels.end());
-  s.halo = n.levels[std::size_t(il)].halo;
-  s.strain_work = s.external_work = 0.0;
-  for (const State& L : n.levels) s.strain_work += L.strain_work, s.external_work += L.external_work;
-  s.particles_step = -1;  // re-merge this rank's particles
-  merge_level_particles(s);
+  // The run's sums over the ranks need the communicator only: the grid level's exchange.
+  n.halo = n.levels[n.grid_level].halo;
+  collect_run_sums(n);  // this rank's parts
 }
 
-void Halo::send_to_level_owners(NestedState& n) {
+void Halo::send_to_level_owners(RunState& n) {
   const Comm& comm = halo_of(n.levels[0]).comm;
   constexpr std::size_t kRecord = (Particles::kPacked + 1) * sizeof(double);  // level, particle
   std::vector<std::vector<unsigned char>> send(std::size_t(comm.size())), recv;
@@ -400,7 +389,7 @@ void Halo::send_to_level_owners(NestedState& n) {
     }
 }
 
-void Halo::migrate_levels_if_due(NestedState& n) {
+void Halo::migrate_levels_if_due(RunState& n) {
   const Halo& h = halo_of(n.levels[0]);
   // Per-level time steps: only when every level begins a step (no scatter held), and at half
   // the bound: until the next such step the particles move at most the levels' sync drift
@@ -411,7 +400,7 @@ void Halo::migrate_levels_if_due(NestedState& n) {
   for (State& s : n.levels) migrate_particles(s);
 }
 
-void Halo::finish_nested_step(NestedState& n, const NestedDrift& before) {
+void Halo::finish_nested_step(RunState& n, const NestedDrift& before) {
   const Comm& comm = halo_of(n.levels[0]).comm;
   std::vector<double> move;
   for (const State& s : n.levels) move.push_back(s.last_move);
@@ -443,15 +432,14 @@ void Halo::finish_nested_step(NestedState& n, const NestedDrift& before) {
   throw SimulationError(comm.size() > 1 ? fmt::format("{} (rank {})", what, failed) : what);
 }
 
-State make_nested_rank_state(const Case& c, const Comm& comm) {
+RunState make_nested_rank_state(const Case& c, const Comm& comm) {
   // The levels without particles: the lattices, transitions and periods the split needs.
   const ParticleShare none = ParticleShare::none();
   std::vector<Grid> lattices;
   NestedSplit sp;
   NestedTally tally;
   {
-    const State bare = make_state(c, &none);
-    const NestedState& n = *bare.nested;
+    const RunState n = make_run_state(c, &none);
     for (const State& l : n.levels) lattices.push_back(l.grid);
     const int k = nested_cut_level(n);
     tally = nested_seed_tally(c, n, k);
@@ -468,15 +456,14 @@ State make_nested_rank_state(const Case& c, const Comm& comm) {
   };
   std::uint32_t first = 0;
   for (const std::uint32_t count : tally.per_level) share.first_id.push_back(first), first += count;
-  State s = make_state(c, &share);
-  check_distributable(s, comm.size());
-  distribute_nested(s, comm, true, &sp);
+  RunState r = make_run_state(c, &share);
+  check_distributable(r.levels[0], comm.size());
+  distribute_nested(r, comm, true, &sp);
   // The case's sums: one mass floor from its lightest particle (solver/setup.cpp), the initial
   // energy the ranks' parts added.
-  s.mass_floor = 1e-20 * tally.min_mass;
-  for (State& l : s.nested->levels) l.mass_floor = s.mass_floor;
-  s.initial_energy = comm.sum(s.initial_energy);
-  return s;
+  for (State& l : r.levels) l.mass_floor = 1e-20 * tally.min_mass;
+  r.initial_energy = comm.sum(r.initial_energy);
+  return r;
 }
 
 }  // namespace rupture

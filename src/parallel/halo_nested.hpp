@@ -45,8 +45,8 @@ struct NestedSplit {
 // The cut level (above), and the particles of every level per cell of its lattice over the
 // plate (c + r cols, level 0's extent), by their centres; with per-level time steps each
 // weighted by its level's steps per longest period (its work).
-int nested_cut_level(const NestedState& n);
-std::vector<std::uint32_t> nested_cut_count(const NestedState& n, int cut_level);
+int nested_cut_level(const RunState& n);
+std::vector<std::uint32_t> nested_cut_count(const RunState& n, int cut_level);
 // The same count from the particles the case seeds (solver/nested_state.hpp:
 // for_each_level_point), without making them; with each level's particle count (one process's)
 // and the lightest particle's mass, kg per unit thickness.
@@ -54,41 +54,40 @@ struct NestedTally {
   std::vector<std::uint32_t> cut_count, per_level;
   double min_mass = 0.0;
 };
-NestedTally nested_seed_tally(const Case& c, const NestedState& n, int cut_level);
+NestedTally nested_seed_tally(const Case& c, const RunState& n, int cut_level);
 // The split of this process's particles (at set-up: all of them) among `ranks`, each level's
 // blocks and reaches. Throws InputError when the cut lattice has fewer cells than ranks.
-NestedSplit split_nested(const NestedState& n, int ranks);
+NestedSplit split_nested(const RunState& n, int ranks);
 // The same from a count on the cut lattice (nested_cut_count, nested_seed_tally).
-NestedSplit split_nested(const NestedState& n, const std::vector<std::uint32_t>& count, int cut_level, int ranks);
+NestedSplit split_nested(const RunState& n, const std::vector<std::uint32_t>& count, int cut_level, int ranks);
 // Level l's cells of a block of the cut lattice: exact on levels at least as fine; on coarser
 // ones each cut moves down to the level's line below it (empty where the level does not reach).
 CellBlock level_block(const NestedGrid& g, int l, const CellBlock& cut, int cut_level);
 // The nodes beyond its block a rank's particles of level l may touch: kHaloNodes on the finest
 // level, 1 on coarser ones (a particle strays at most one finest cell, half of their cell),
 // kInterfaceHaloNodes on the interfaces' level.
-int nested_touched_width(const NestedState& n, int l);
+int nested_touched_width(const RunState& n, int l);
 // Per level, per rank: the smallest box of nodes that holds what the rank's particles may touch
 // (its block and nested_touched_width; nothing on a level without a cell in the block) and
 // closes the transitions over it (`blocks`: per level, per rank).
-std::vector<std::vector<NodeBox>> nested_reaches(const NestedState& n,
+std::vector<std::vector<NodeBox>> nested_reaches(const RunState& n,
                                                  const std::vector<std::vector<CellBlock>>& blocks);
 
-// parallel/halo.hpp's distribute for a nested run State (s.nested): every level split as
-// above and this rank's particles kept on each; s.halo is the interfaces' level's halo (the
-// finest level's without interfaces).
-void distribute_nested(State& s, const Comm& comm, bool fresh, const NestedSplit* split = nullptr);
+// parallel/halo.hpp's distribute for nested levels: every level split as above and this
+// rank's particles kept on each; n.halo is the grid level's halo (RunState::grid_level).
+void distribute_nested(RunState& n, const Comm& comm, bool fresh, const NestedSplit* split = nullptr);
 
 // distribute_held (parallel/halo.hpp) for nested levels: each rank holds some of every level's
 // particles (a resume: some of the checkpoint's parts) with their keys per level; the cut
 // lattice's counts bisected over the ranks, each particle sent to its level's block's rank,
 // received ones in key order per level, then distribute_nested with that split.
-void distribute_held_nested(State& s, const Comm& comm, const std::vector<std::vector<double>>& keys);
+void distribute_held_nested(RunState& n, const Comm& comm, const std::vector<std::vector<double>>& keys);
 
 // make_rank_state (parallel/halo.hpp) for nested levels: the levels made once without particles
 // (the split's lattices and transitions), the case's seed points counted on the cut lattice
 // (nested_seed_tally), the split made from that count, and each level's particles in this
 // rank's block made with the ids one process gives them; no rank holds the case's particles.
-State make_nested_rank_state(const Case& c, const Comm& comm);
+RunState make_nested_rank_state(const Case& c, const Comm& comm);
 
 
 // The nested step's exchanges (solver/nested_state.cpp's step calls them through

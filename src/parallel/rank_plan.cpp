@@ -61,15 +61,21 @@ double RankPlan::imbalance() const {
   return *std::max_element(work.begin(), work.end()) / (sum / double(work.size())) - 1.0;
 }
 
-RankPlan plan_ranks(const State& s, int ranks) {
+namespace {
+
+// The plan of one grid s (levels null), or of nested levels (s: its grid level, whose interfaces
+// are the run's: distributed interfaces lie on one level).
+RankPlan plan_of(const RunState* levels, const State& s, int ranks) {
   if (ranks < 1) throw InputError(fmt::format("--ranks {}: at least 1", ranks));
   RankPlan plan;
   plan.ranks = ranks;
-  const bool cohesive = !s.interfaces.empty();
+  const bool cohesive = levels ? levels->num_interfaces() > 0 : !s.interfaces.empty();
   std::vector<bool> interface_levels;  // per lattice: it holds interfaces (one grid: the grid)
-  if (s.nested) {
+  // [loads] forces are summed after each scatter (every level lists the loads: its first's).
+  const bool loads_forces = (levels ? levels->levels[0] : s).loads.has_forces();
+  if (levels) {
+    const RunState& n = *levels;
     // One split for every level (parallel/halo_nested.hpp).
-    const NestedState& n = *s.nested;
     const NestedSplit sp = split_nested(n, ranks);
     plan.cut_level = sp.cut_level;
     for (std::size_t l = 0; l < n.levels.size(); ++l) {
@@ -95,7 +101,7 @@ RankPlan plan_ranks(const State& s, int ranks) {
     const bool here = cohesive && (l < interface_levels.size() ? bool(interface_levels[l]) : l == 0);  // the cohesive forces' sum
     // Per finest step: the scatter's sums once per level step (mass, momentum, force; [loads]
     // forces), the re-mapped momentum every finest step, the cohesive forces on their level.
-    const double values = double(kExchangedValues - 2 + (s.loads.has_forces() ? 2 : 0)) / double(L.period) +
+    const double values = double(kExchangedValues - 2 + (loads_forces ? 2 : 0)) / double(L.period) +
                           2.0 + (here ? 2.0 : 0.0);
     for (std::size_t r = 0; r < std::size_t(ranks); ++r) {
       plan.work[r] += double(L.split.particles[r]) / double(L.period);
@@ -110,6 +116,14 @@ RankPlan plan_ranks(const State& s, int ranks) {
     }
   }
   return plan;
+}
+
+}  // namespace
+
+RankPlan plan_ranks(const State& s, int ranks) { return plan_of(nullptr, s, ranks); }
+
+RankPlan plan_ranks(const RunState& r, int ranks) {
+  return r.joined() ? plan_of(&r, r.levels[r.grid_level], ranks) : plan_of(nullptr, r.levels[0], ranks);
 }
 
 }  // namespace rupture

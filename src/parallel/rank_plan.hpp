@@ -43,6 +43,7 @@ struct RankPlan {
 };
 
 // Throws InputError when a lattice has fewer cells than ranks.
-RankPlan plan_ranks(const State& s, int ranks);
+RankPlan plan_ranks(const State& s, int ranks);  // one grid
+RankPlan plan_ranks(const RunState& r, int ranks);
 
 }  // namespace rupture

@@ -23,7 +23,7 @@
 
 namespace rupture {
 
-State make_rank_state(const Case& c, const Comm& comm) {
+RunState make_rank_state(const Case& c, const Comm& comm) {
   if (c.grid.nested) return make_nested_rank_state(c, comm);  // parallel/halo_nested.hpp
   const Grid g = build_grid(c.grid);
   const int cols = g.x.cells, rows = g.y.cells;
@@ -58,15 +58,18 @@ State make_rank_state(const Case& c, const Comm& comm) {
     const int i = std::clamp(g.x.cell_of(x), 0, cols - 1), j = std::clamp(g.y.cell_of(y), 0, rows - 1);
     return i >= mine.c0 && i < mine.c1 && j >= mine.r0 && j < mine.r1;
   };
-  State s = make_state(c, &share);
+  RunState r = make_run_state(c, &share);
+  State& s = r.levels[0];
   check_distributable(s, comm.size());
   attach_halo(s, comm);
   set_blocks(s, d.block);
+  r.halo = s.halo;
   s.mass_floor = 1e-20 * comm.min(lightest);  // solver/setup.cpp: the case's lightest particle
-  // E14: the strain work starts from this rank's part of the elastic energy (make_state measured
-  // it on this rank's particles); the initial energy is the run's.
-  s.initial_energy = comm.sum(kinetic_energy(s.particles) + s.strain_work);
-  return s;
+  // E14: the strain work starts from this rank's part of the elastic energy (make_run_state
+  // measured it on this rank's particles); the initial energy is the run's.
+  r.initial_energy = s.initial_energy = comm.sum(kinetic_energy(s.particles) + s.strain_work);
+  collect_run_sums(r);
+  return r;
 }
 
 }  // namespace rupture

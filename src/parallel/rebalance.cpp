@@ -111,13 +111,13 @@ void rebalance_if_needed(State& s) {
       s.step, s.time, largest, mean, 100.0 * before, w, 100.0 * d.imbalance(), moved_all, seconds);
 }
 
-void enable_rebalance(State& s, bool on) {
-  if (s.halo && !s.nested) halo_of(s).rebalance = on;  // nested levels: one split (halo_nested.cpp)
+void enable_rebalance(RunState& r, bool on) {
+  if (r.halo && !r.joined()) halo_of(r.levels[0]).rebalance = on;  // nested levels: one split (halo_nested.cpp)
 }
 
-std::string kept_split_drift(const State& s, const Comm& comm, const std::vector<long>& start,
+std::string kept_split_drift(const RunState& r, const Comm& comm, const std::vector<long>& start,
                              const std::vector<long>& end) {
-  if (!s.nested || !comm.distributed()) return {};  // other splits follow the load, or none is made
+  if (!r.joined() || !comm.distributed()) return {};  // other splits follow the load, or none is made
   // The most particles on a rank over the mean, minus 1.
   const auto over = [](const std::vector<long>& v) {
     double most = 0.0, all = 0.0;

@@ -23,7 +23,7 @@
 #include "run/checkpoint_access.hpp"
 #include "run/checkpoint_archive.hpp"
 #include "run/checkpoint_checks.hpp"
-#include "solver/nested_state.hpp"
+#include "solver/run_state.hpp"
 
 namespace rupture {
 
@@ -162,31 +162,44 @@ void fields(A& a, CohesiveInterface& c) {
 // nodes and forces are rebuilt after the restored sort and in every step; the loads' work is
 // in external_work). Set by the driver before every step: dt_cap; tests only: forced_dt.
 // Not stored, per-step scratch: fields (every grid array is recomputed in each step).
-// Nested per-level time steps (NestedState::period, mixed: from the case; hold, substep: 0 at
+// Nested per-level time steps (RunState::period, mixed: from the case; hold, substep: 0 at
 // every checkpoint, which waits for the levels to end their steps together; sync_by: set by
 // the driver before every step).
-// A nested run (solver/nested_state.hpp): every level's State as above (its particle count
-// changes as particles move between levels, and its window_drift decides the next move), the
-// levels' clock and the migration count. The run's own State keeps the interfaces, which live
-// there between steps; its merged particles are not stored (merge_level_particles re-merges them).
-template <class A>
-void fields(A& a, NestedState& n) {
-  a.same("levels.count", n.levels.size());
-  a("levels", n.levels);
-  a("time", n.time);
-  a("dt", n.dt);
-  a("step", n.step);
-  a("migrations", n.migrations);
+// A run (solver/run_state.hpp), format 11. On one grid: its level's State as above, entries
+// at the run's level. On nested levels: the run's entries (the grid level's lattice size, the
+// particle count, the interfaces in input order, the clock, sums and limits; the one-grid
+// entries bc_nodes, bc_lines and plan are stored empty, as format 11 has them), then
+// "nested": every level's State as above (its particle count changes as particles move
+// between levels, and its window_drift decides the next move; its interfaces are the run's
+// entry), the levels' clock and the migration count. Every level's particles are merged anew
+// for the writers (all_particles).
+
+// Lists whose items are another struct's members (read in place: the Reader keeps the items
+// there, and the counts are checked before).
+struct LevelEntry {
+  State* s = nullptr;
+};
+struct InterfaceEntry {
+  CohesiveInterface* c = nullptr;
+};
+struct NestedEntry {
+  RunState* r = nullptr;
+};
+
+// A list item past the case's count (the list's own count is checked against it only after).
+[[noreturn]] inline void refuse_extra_item(const char* what) {
+  throw InputError(fmt::format("checkpoint: its list of {} holds more items than this case has", what));
 }
 
+// One State's entries; `level`: one of nested levels.
 template <class A>
-void fields(A& a, State& s) {
+void state_fields(A& a, State& s, bool level) {
   a.same("grid.nodes_x", s.grid.nodes_x());
   a.same("grid.nodes_y", s.grid.nodes_y());
   a.same("fields", s.fields.num_fields);
   // A distributed run's particles are in part files (run/checkpoint_ranks.hpp).
   a("particle_parts", s.particle_parts);
-  if (!s.nested_level && s.particle_parts == 0) {
+  if (!level && s.particle_parts == 0) {
     if (s.particles_from_checkpoint) {  // a distributed resume of one process's checkpoint
       std::size_t count = s.particles.size();
       a("particles.count", count);  // read: the file's (its ids are checked after decoding)
@@ -194,13 +207,18 @@ void fields(A& a, State& s) {
       a.same("particles.count", s.particles.size());
     }
   }
-  a.same("interfaces.count", s.interfaces.size());
-  // nested: the levels hold them (merged on demand)
-  if (!s.nested && s.particle_parts == 0) a("particles", s.particles);
+  // A nested level's interfaces are stored with the run (fields of RunState).
+  a.same("interfaces.count", level ? std::size_t(0) : s.interfaces.size());
+  if (s.particle_parts == 0) a("particles", s.particles);
   a("bc_nodes", s.bc_nodes);
   a("bc_lines", s.bc_lines);
   a("plan", s.plan);
-  a("interfaces", s.interfaces);
+  if (level) {
+    std::vector<CohesiveInterface> none;
+    a("interfaces", none);
+  } else {
+    a("interfaces", s.interfaces);
+  }
   a("scheme", s.scheme);
   a("flip", s.flip);
   a("limits", s.limits);
@@ -212,10 +230,102 @@ void fields(A& a, State& s) {
   a("external_work", s.external_work);
   a("strain_work", s.strain_work);
   a("initial_energy", s.initial_energy);
-  if (s.nested_level) a("window_drift", s.window_drift);
-  a.same("nested", s.nested != nullptr);
-  if (s.nested) a("nested", *s.nested);
-  if constexpr (A::reading) s.particles_step = -1;  // nested: the levels' particles merged anew
+  if (level) a("window_drift", s.window_drift);
+  a.same("nested", false);
+}
+
+template <class A>
+void fields(A& a, State& s) {
+  state_fields(a, s, false);
+}
+
+template <class A>
+void fields(A& a, LevelEntry& l) {
+  if (!l.s) refuse_extra_item("nested levels");
+  state_fields(a, *l.s, true);
+}
+
+template <class A>
+void fields(A& a, InterfaceEntry& i) {
+  if (!i.c) refuse_extra_item("interfaces");
+  fields(a, *i.c);
+}
+
+template <class A>
+void fields(A& a, NestedEntry& e) {
+  RunState& r = *e.r;
+  std::vector<LevelEntry> levels;
+  for (State& l : r.levels) levels.push_back({&l});
+  a.same("levels.count", r.levels.size());
+  a("levels", levels);
+  a("time", r.time);
+  a("dt", r.dt);
+  a("step", r.step);
+  a("migrations", r.migrations);
+}
+
+template <class A>
+void fields(A& a, RunState& r) {
+  if (!r.joined()) {  // one grid: its level's entries
+    State& s = r.levels[0];
+    s.initial_energy = r.initial_energy;  // the run's (distributed: the ranks' sum)
+    state_fields(a, s, false);
+    if constexpr (A::reading) {
+      r.initial_energy = s.initial_energy;
+      collect_run_sums(r);
+    }
+    return;
+  }
+  const State& g = r.levels[r.grid_level];
+  a.same("grid.nodes_x", g.grid.nodes_x());
+  a.same("grid.nodes_y", g.grid.nodes_y());
+  a.same("fields", 0);  // the run has no fields of its own
+  int parts = r.levels[0].particle_parts;
+  a("particle_parts", parts);  // every level's (theirs are read below)
+  if (parts == 0) {
+    if (r.particles_from_checkpoint) {
+      std::size_t count = held_particles(r);
+      a("particles.count", count);  // read: the file's (its ids are checked after decoding)
+    } else {
+      a.same("particles.count", held_particles(r));
+    }
+  }
+  a.same("interfaces.count", r.num_interfaces());
+  std::vector<NodeBC> no_bc_nodes;  // one grid's entries: empty here
+  std::vector<int> no_bc_lines;
+  ScatterPlan no_plan;
+  a("bc_nodes", no_bc_nodes);
+  a("bc_lines", no_bc_lines);
+  a("plan", no_plan);
+  std::vector<InterfaceEntry> interfaces;
+  for (std::size_t k = 0; k < r.num_interfaces(); ++k) interfaces.push_back({&r.interface(k)});
+  a("interfaces", interfaces);
+  Scheme scheme = r.scheme();
+  double flip = r.levels[0].flip, mass_floor = r.levels[0].mass_floor;
+  a("scheme", scheme);
+  a("flip", flip);
+  a("limits", r.limits);
+  a("dt", r.dt);
+  a("time", r.time);
+  a("step", r.step);
+  a("mass_floor", mass_floor);
+  a("cohesive_seconds", r.cohesive_seconds);
+  a("external_work", r.external_work);
+  a("strain_work", r.strain_work);
+  a("initial_energy", r.initial_energy);
+  a.same("nested", true);
+  NestedEntry nested{&r};
+  a("nested", nested);
+  // Read: the run's scheme, flip and mass floor are the levels' copies (each level's own are
+  // what steps and are checked), and every level's particles are where the run's are.
+  if constexpr (A::reading) {
+    for (std::size_t l = 0; l < r.levels.size(); ++l)
+      if (r.levels[l].particle_parts != parts)
+        throw InputError(fmt::format("checkpoint: run.state.nested.levels[{}].particle_parts = {}: must be the "
+                                     "run's, {}",
+                                     l, r.levels[l].particle_parts, parts));
+    r.merged_step = -1;  // the writers' merged particles anew
+  }
 }
 
 template <class A>

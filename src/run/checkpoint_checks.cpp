@@ -10,7 +10,7 @@
 
 #include "core/errors.hpp"
 #include "run/checkpoint_access.hpp"
-#include "solver/nested_state.hpp"
+#include "solver/run_state.hpp"
 
 namespace rupture {
 namespace {
@@ -128,13 +128,17 @@ void check_boundary(const Checker& ck, const State& s, const std::string& entry)
   }
 }
 
-void check_interfaces(const Checker& ck, const State& s, const std::string& entry) {
-  for (std::size_t i = 0; i < s.interfaces.size(); ++i) {
-    // The lattice of the interface's level (nested: the level holding it), else the grid.
-    const bool on_level = s.nested && i < s.nested->interface_levels.size();
-    const Grid& g = on_level ? s.nested->levels[std::size_t(s.nested->interface_levels[i])].grid : s.grid;
+// Interfaces (input order, as stored) and the lattice each lies on.
+struct InterfaceOnGrid {
+  const CohesiveInterface* c;
+  const Grid* g;
+};
+
+void check_interfaces(const Checker& ck, const std::vector<InterfaceOnGrid>& all, const std::string& entry) {
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    const Grid& g = *all[i].g;
     const double xlo = g.x.node(0), xhi = g.x.node(g.x.cells), ylo = g.y.node(0), yhi = g.y.node(g.y.cells);
-    const CohesiveInterface& c = s.interfaces[i];
+    const CohesiveInterface& c = *all[i].c;
     const std::string e = item(entry + ".interfaces", i);
     const std::size_t n = c.y0.size(), segs = c.seg_length.size(), gauss = segs * CohesiveInterface::kGauss;
     const auto nodes = [&](const char* name, std::size_t size) { ck.length(e + "." + name, size, n, "the case's nodes of the interface"); };
@@ -174,38 +178,51 @@ void check_interfaces(const Checker& ck, const State& s, const std::string& entr
   }
 }
 
-void check_state(const Checker& ck, const State& s, const std::string& entry, const State* run) {
+// The limits and clock a State or the run holds.
+void check_clock(const Checker& ck, const StepLimits& limits, double dt, double time, long step, double cohesive_seconds,
+                 const std::string& entry) {
+  ck.count(entry + ".step", step, 0, kMaxCount, "time steps");
+  ck.positive(entry + ".limits.cfl_dt", limits.cfl_dt);
+  ck.at_least(entry + ".limits.bulk_eigen_bound", limits.bulk_eigen_bound, 0.0);
+  ck.positive(entry + ".limits.cohesive_dt", limits.cohesive_dt, true);
+  ck.positive(entry + ".limits.min_cohesive_dt", limits.min_cohesive_dt, true);
+  ck.positive(entry + ".limits.dt", limits.dt);
+  ck.at_least(entry + ".dt", dt, 0.0);
+  ck.at_least(entry + ".time", time, 0.0);
+  ck.at_least(entry + ".cohesive_seconds", cohesive_seconds, 0.0);
+}
+
+// One State: a run's one grid (`level` false: its interfaces are stored with it), or one of
+// nested levels (the run's interfaces are checked with the run).
+void check_state(const Checker& ck, const State& s, const std::string& entry, bool level) {
   ck.count(entry + ".particle_parts", s.particle_parts, 0, kMaxParts, "0: particles in this file, N: in N part files");
-  if (run && s.particle_parts != run->particle_parts)
-    refuse(ck.origin, entry + ".particle_parts", std::to_string(s.particle_parts),
-           fmt::format("must be the run's, {}", run->particle_parts));
-  ck.count(entry + ".step", s.step, 0, kMaxCount, "time steps");
-  const bool holds_particles = s.particle_parts == 0 && !s.nested;
+  check_clock(ck, s.limits, s.dt, s.time, s.step, s.cohesive_seconds, entry);  // the plan's bound first
+  const bool holds_particles = s.particle_parts == 0;
   if (holds_particles) check_particles(s.particles, s, entry + ".particles", ck.origin);
   check_boundary(ck, s, entry);
   check_plan(ck, s, entry + ".plan", holds_particles);
-  check_interfaces(ck, s, entry);
+  if (!level) {
+    std::vector<InterfaceOnGrid> all;
+    for (const CohesiveInterface& c : s.interfaces) all.push_back({&c, &s.grid});
+    check_interfaces(ck, all, entry);
+  }
   ck.within(entry + ".flip", s.flip, 0.0, 1.0);
-  ck.positive(entry + ".limits.cfl_dt", s.limits.cfl_dt);
-  ck.at_least(entry + ".limits.bulk_eigen_bound", s.limits.bulk_eigen_bound, 0.0);
-  ck.positive(entry + ".limits.cohesive_dt", s.limits.cohesive_dt, true);
-  ck.positive(entry + ".limits.min_cohesive_dt", s.limits.min_cohesive_dt, true);
-  ck.positive(entry + ".limits.dt", s.limits.dt);
-  ck.at_least(entry + ".dt", s.dt, 0.0);
-  ck.at_least(entry + ".time", s.time, 0.0);
   ck.at_least(entry + ".mass_floor", s.mass_floor, 0.0);
-  ck.at_least(entry + ".cohesive_seconds", s.cohesive_seconds, 0.0);
-  if (s.nested_level) ck.within(entry + ".window_drift", s.window_drift, 0.0, lattice_extent(s.grid));
-  if (!s.nested) return;
-  const NestedState& n = *s.nested;
-  for (std::size_t l = 0; l < n.levels.size(); ++l) check_state(ck, n.levels[l], item(entry + ".nested.levels", l), &s);
-  ck.at_least(entry + ".nested.time", n.time, 0.0);
-  ck.at_least(entry + ".nested.dt", n.dt, 0.0);
-  ck.count(entry + ".nested.step", n.step, 0, kMaxCount, "time steps");
-  ck.count(entry + ".nested.migrations", n.migrations, 0, kMaxCount, "particles moved");
+  if (level) ck.within(entry + ".window_drift", s.window_drift, 0.0, lattice_extent(s.grid));
 }
 
-void check_schedule(const Checker& ck, const Schedule& sc, const std::string& entry, const State& s) {
+void check_run_state(const Checker& ck, const RunState& r, const std::string& entry) {
+  if (!r.joined()) return check_state(ck, r.levels[0], entry, false);
+  check_clock(ck, r.limits, r.dt, r.time, r.step, r.cohesive_seconds, entry);
+  std::vector<InterfaceOnGrid> all;  // each on the lattice of its level
+  for (std::size_t k = 0; k < r.num_interfaces(); ++k)
+    all.push_back({&r.interface(k), &r.levels[std::size_t(r.interface_levels[k])].grid});
+  check_interfaces(ck, all, entry);
+  for (std::size_t l = 0; l < r.levels.size(); ++l) check_state(ck, r.levels[l], item(entry + ".nested.levels", l), true);
+  ck.count(entry + ".nested.migrations", r.migrations, 0, kMaxCount, "particles moved");
+}
+
+void check_schedule(const Checker& ck, const Schedule& sc, const std::string& entry, const RunState& s) {
   ck.at_least(entry + ".interval", sc.interval, 0.0);
   ck.within(entry + ".next", sc.next, -DBL_MAX, DBL_MAX);
   ck.count(entry + ".count", sc.count, 0, kMaxCount, "firings");
@@ -240,7 +257,7 @@ void check_snapshots(const Checker& ck, const SnapshotWriter& w, const Checkpoin
 
 CheckpointBaseline checkpoint_baseline(const RunContext& fresh) {
   CheckpointBaseline b;
-  b.ids = fresh.s.particles.id;
+  for (const State& l : fresh.s.levels) b.ids.insert(b.ids.end(), l.particles.id.begin(), l.particles.id.end());
   std::sort(b.ids.begin(), b.ids.end());
   if (fresh.snapshots) b.has_rows = true, b.rows = CheckpointAccess::rows(*fresh.snapshots);
   return b;
@@ -311,14 +328,11 @@ void check_ids_below(const Particles& p, std::uint64_t count, const std::string&
 
 void check_restored(const RunContext& ctx, const CheckpointBaseline& fresh, const std::string& origin) {
   const Checker ck{origin};
-  const State& s = ctx.s;
-  check_state(ck, s, "run.state", nullptr);
-  if (s.particle_parts == 0) {  // the particles are in this file: exactly the case's
-    std::vector<std::uint32_t> ids = s.particles.id;
-    if (s.nested) {
-      ids.clear();
-      for (const State& l : s.nested->levels) ids.insert(ids.end(), l.particles.id.begin(), l.particles.id.end());
-    }
+  const RunState& s = ctx.s;
+  check_run_state(ck, s, "run.state");
+  if (s.levels[0].particle_parts == 0) {  // the particles are in this file: exactly the case's
+    std::vector<std::uint32_t> ids;
+    for (const State& l : s.levels) ids.insert(ids.end(), l.particles.id.begin(), l.particles.id.end());
     // A distributed resume of one process's checkpoint made no particle to compare with: the
     // ids must be 0 .. n - 1, each once, as one process numbers the case's particles.
     std::vector<std::uint32_t> expected = fresh.ids;
@@ -327,7 +341,7 @@ void check_restored(const RunContext& ctx, const CheckpointBaseline& fresh, cons
       std::iota(expected.begin(), expected.end(), 0u);
     }
     check_particle_ids(std::move(ids), expected,
-                       s.nested ? "run.state.nested.levels[*].particles.id" : "run.state.particles.id", origin);
+                       s.joined() ? "run.state.nested.levels[*].particles.id" : "run.state.particles.id", origin);
   }
   for (std::size_t k = 0; k < ctx.cracks.size(); ++k) {
     const CrackTracker& t = ctx.cracks[k];
@@ -342,7 +356,7 @@ void check_restored(const RunContext& ctx, const CheckpointBaseline& fresh, cons
   for (std::size_t k = 0; k < ctx.mach.size(); ++k) {
     const MachReading& m = ctx.mach[k];
     const std::string e = item("run.mach", k);
-    ck.count(e + ".interface", m.interface, 0, long(s.interfaces.size()) - 1, "an interface of the case");
+    ck.count(e + ".interface", m.interface, 0, long(s.num_interfaces()) - 1, "an interface of the case");
     for (const auto& [side, line] : {std::pair{".left", &m.left}, {".right", &m.right}}) {
       ck.count(e + side + ".rows", line->rows, 0, 1L << 30, "bin rows");
       ck.count(e + side + ".material", line->material, -1, 255, "-1 (none) or a material id");

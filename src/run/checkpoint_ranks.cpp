@@ -13,7 +13,7 @@
 #include "run/checkpoint.hpp"
 #include "run/checkpoint_checks.hpp"
 #include "parallel/halo.hpp"
-#include "solver/nested_state.hpp"
+#include "solver/run_state.hpp"
 
 namespace rupture {
 namespace {
@@ -26,13 +26,10 @@ void agree(const Comm& comm, const std::string& failure) {
   throw IoError(comm.broadcast(failure, failed));
 }
 
-// The States whose particles and sums a checkpoint stores: the nested levels, or s itself.
-std::vector<State*> parts_of(State& s) {
+// The States whose particles and sums a checkpoint stores: the run's levels (one grid: one).
+std::vector<State*> parts_of(RunState& s) {
   std::vector<State*> out;
-  if (s.nested)
-    for (State& l : s.nested->levels) out.push_back(&l);
-  else
-    out.push_back(&s);
+  for (State& l : s.levels) out.push_back(&l);
   return out;
 }
 
@@ -48,7 +45,7 @@ void agree_read(const Comm& comm, const std::string& failure, bool input_error) 
 
 // Part `part` of the checkpoint at s.step appended to `out`, checked against `level` (the
 // State it goes into: fields, materials, lattice).
-void read_part(const std::string& dir, const State& s, const State& level, int part, int parts, Particles& out) {
+void read_part(const std::string& dir, const RunState& s, const State& level, int part, int parts, Particles& out) {
   Particles one;
   read_checkpoint_parts(dir, s.step, part, 1, parts, one);
   check_particles(one, level, "part.particles", checkpoint_part_path(dir, s.step, part));
@@ -67,13 +64,15 @@ void take_particles(State& p, Particles&& read) {
 
 void write_checkpoint_ranks(const std::string& dir, const CaseSource& source, RunContext& ctx,
                             const Comm& comm) {
-  State& s = ctx.s;
+  RunState& s = ctx.s;
   collect_interface_state(s);  // every node from its owner
   const std::vector<State*> held = parts_of(s);
   const int n = comm.size(), parts = int(held.size()) * n;
+  std::vector<CohesiveInterface*> interfaces;
+  for (std::size_t k = 0; k < s.num_interfaces(); ++k) interfaces.push_back(&s.interface(k));
   std::vector<double> sums{s.strain_work, s.external_work};
   for (const State* l : held) sums.push_back(l->strain_work), sums.push_back(l->external_work);
-  for (const CohesiveInterface& c : s.interfaces) sums.push_back(c.work);
+  for (const CohesiveInterface* c : interfaces) sums.push_back(c->work);
   comm.sum(sums.data(), int(sums.size()));
   std::string failure;
   try {  // part l N + r: level l's particles of rank r (one level but for nested runs)
@@ -95,26 +94,24 @@ void write_checkpoint_ranks(const std::string& dir, const CaseSource& source, Ru
       held[l]->particle_parts = n;
     }
     std::vector<double> work;
-    for (CohesiveInterface& c : s.interfaces) work.push_back(c.work);
+    for (const CohesiveInterface* c : interfaces) work.push_back(c->work);
     const auto set = [&](const std::vector<double>& v) {  // run's and each part's sums
       s.strain_work = v[0], s.external_work = v[1];
       for (std::size_t l = 0; l < L; ++l) held[l]->strain_work = v[2 + 2 * l], held[l]->external_work = v[3 + 2 * l];
     };
     set(sums);
-    for (std::size_t k = 0; k < s.interfaces.size(); ++k) s.interfaces[k].work = sums[2 + 2 * L + k];
-    if (s.nested) s.particle_parts = n;
+    for (std::size_t k = 0; k < interfaces.size(); ++k) interfaces[k]->work = sums[2 + 2 * L + k];
     try {
       write_checkpoint(dir, source, ctx);
     } catch (const std::exception& e) {
       failure = e.what();
     }
-    s.particle_parts = 0;
     for (std::size_t l = 0; l < L; ++l) {
       held[l]->particle_parts = 0;
       std::swap(mine[l], held[l]->particles);
     }
     set(own);
-    for (std::size_t k = 0; k < s.interfaces.size(); ++k) s.interfaces[k].work = work[k];
+    for (std::size_t k = 0; k < interfaces.size(); ++k) interfaces[k]->work = work[k];
     if (failure.empty()) {  // the parts of earlier checkpoints are no longer referred to
       const std::string keep = fmt::format("particles_{}_", s.step);
       std::error_code ec;
@@ -128,12 +125,13 @@ void write_checkpoint_ranks(const std::string& dir, const CaseSource& source, Ru
 }
 
 void read_checkpoint_particles(const std::string& dir, RunContext& ctx) {
-  State& s = ctx.s;
-  if (s.particle_parts == 0) return;
+  RunState& s = ctx.s;
+  if (s.levels[0].particle_parts == 0) return;
   const std::vector<State*> held = parts_of(s);
-  const int n = s.particle_parts, parts = int(held.size()) * n;
-  // The set-up state holds the case's particles (nested: merged): the parts hold the same ids.
-  std::vector<std::uint32_t> expected = s.particles.id, ids;
+  const int n = s.levels[0].particle_parts, parts = int(held.size()) * n;
+  // The set-up state holds the case's particles: the parts hold the same ids.
+  std::vector<std::uint32_t> expected, ids;
+  for (const State* l : held) expected.insert(expected.end(), l->particles.id.begin(), l->particles.id.end());
   std::sort(expected.begin(), expected.end());
   std::vector<Particles> read(held.size());
   for (std::size_t l = 0; l < held.size(); ++l) {
@@ -142,15 +140,13 @@ void read_checkpoint_particles(const std::string& dir, RunContext& ctx) {
   }
   check_particle_ids(std::move(ids), expected, "part.particles.id (every part)", checkpoint_part_path(dir, s.step, 0));
   for (std::size_t l = 0; l < held.size(); ++l) take_particles(*held[l], std::move(read[l]));
-  s.particle_parts = 0;
-  s.particles_step = -1;  // nested: the levels' particles merged anew
-  merge_level_particles(s);
+  s.merged_step = -1;  // the writers' merged particles anew
 }
 
 std::vector<std::vector<double>> read_checkpoint_share(const std::string& dir, RunContext& ctx, const Comm& comm) {
-  State& s = ctx.s;
+  RunState& s = ctx.s;
   const std::vector<State*> held = parts_of(s);
-  const int n = s.particle_parts, parts = int(held.size()) * n;
+  const int n = s.levels[0].particle_parts, parts = int(held.size()) * n;
   std::vector<std::vector<double>> keys(held.size());
   std::vector<Particles> mine(held.size());
   std::string failure;
@@ -183,8 +179,7 @@ std::vector<std::vector<double>> read_checkpoint_share(const std::string& dir, R
   }
   agree_read(comm, failure, true);
   for (std::size_t l = 0; l < held.size(); ++l) take_particles(*held[l], std::move(mine[l]));
-  s.particle_parts = 0;
-  s.particles_step = -1;  // nested: the levels' particles merged anew
+  s.merged_step = -1;  // the writers' merged particles anew
   return keys;
 }
 

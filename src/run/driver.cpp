@@ -16,7 +16,6 @@
 #include "run/run_io.hpp"
 #include "run/run_result.hpp"
 #include "run/run_setup.hpp"
-#include "solver/nested_state.hpp"
 #include "solver/step.hpp"
 #include "solver/summary.hpp"
 
@@ -28,7 +27,7 @@ constexpr double kWriteFailed = 1024.0;
 
 // One time step; throws SimulationError when the time did not move (the same on every rank:
 // one dt for all).
-void step_forward(State& s) {
+void step_forward(RunState& s) {
   const double t_before = s.time;
   step(s);
   if (!(s.time > t_before))
@@ -39,10 +38,12 @@ void step_forward(State& s) {
 }
 
 // Distributed: says so when the split followed the load in this step.
-void note_rebalance(const State& s, RunResult& result, bool writer) {
-  if (!s.halo || halo_of(s).rebalances == result.rebalances) return;
-  result.rebalances = halo_of(s).rebalances;
-  if (writer) fmt::print("{}\n", halo_of(s).last_rebalance);
+void note_rebalance(const RunState& r, RunResult& result, bool writer) {
+  if (!r.halo || r.joined()) return;  // nested levels keep their first split
+  const Halo& h = halo_of(r.levels[0]);
+  if (h.rebalances == result.rebalances) return;
+  result.rebalances = h.rebalances;
+  if (writer) fmt::print("{}\n", h.last_rebalance);
 }
 
 // The step's agreement: a signal on any rank and a write that failed on rank 0 reach every rank
@@ -66,7 +67,7 @@ RunResult run_case(const Case& c, const RunOptions& options) {
   const CaseSummary summary = summarize(c);
   RunContext ctx;
   std::vector<StationProbe> probes = start_run(ctx, c, summary, options);  // fresh or resumed
-  State& s = ctx.s;
+  RunState& s = ctx.s;
   enable_rebalance(s, options.rebalance);
   RunIo io(c, summary, options, ctx, std::move(probes));
   RunResult result = starting_result(s, options.comm);

@@ -11,15 +11,15 @@
 
 namespace rupture {
 
-EnergySample sample_energy(State& s) {
+EnergySample sample_energy(RunState& s) {
   // Distributed: the sums over particles and owned nodes, added over the ranks; every
   // interface node's state from its owner.
-  double part[3] = {kinetic_energy(s.particles), s.strain_work, s.external_work};
+  double part[3] = {kinetic_energy(all_particles(s)), s.strain_work, s.external_work};
   if (s.halo) halo_of(s).comm.sum(part, 3);
   collect_interface_state(s);
   EnergySample e{s.time, part[0], part[1], part[2], s.initial_energy};
-  for (std::size_t k = 0; k < s.interfaces.size(); ++k) {
-    const double stored = s.interfaces[k].stored_energy();
+  for (std::size_t k = 0; k < s.num_interfaces(); ++k) {
+    const double stored = s.interface(k).stored_energy();
     e.cohesive_stored += stored;
     e.cohesive_dissipated += interface_work(s, k) - stored;  // work not stored in it (E14)
   }
@@ -31,16 +31,16 @@ EnergySample sample_energy(State& s) {
 // put in by the loads is the most their work has been so far (`peak_work`, J/m, updated
 // here): absorbing edges take it out again (negative work), and what is left in the bodies
 // (a reflection's worth) must not read as a blow-up.
-void check_energy(const State& s, const EnergySample& e, double& peak_work) {
+void check_energy(RunState& s, const EnergySample& e, double& peak_work) {
   // A prestressed fault (traction-offset form) releases energy into the bulk: its work on the
   // bodies, -work > 0, is supplied too.
   double released = 0.0;
-  for (std::size_t k = 0; k < s.interfaces.size(); ++k) released += std::max(0.0, -interface_work(s, k));
+  for (std::size_t k = 0; k < s.num_interfaces(); ++k) released += std::max(0.0, -interface_work(s, k));
   peak_work = std::max(peak_work, std::fabs(e.external_work));
   const double supplied = e.initial + peak_work + released;
   const double mechanical = e.kinetic + e.strain;
   if (mechanical <= 2.0 * supplied || mechanical <= 0.0) return;
-  const Particles& P = s.particles;
+  const Particles& P = all_particles(s);
   std::size_t fastest = 0;
   double vmax = -1.0;
   for (std::size_t p = 0; p < P.size(); ++p) {

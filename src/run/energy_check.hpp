@@ -6,16 +6,16 @@
 // hold more than twice the energy supplied to them.
 #pragma once
 #include "output/history.hpp"
-#include "solver/state.hpp"
+#include "solver/run_state.hpp"
 
 namespace rupture {
 
 // The run's energies at its current time (distributed: every interface node from its owner).
-EnergySample sample_energy(State& s);
+EnergySample sample_energy(RunState& s);
 
 // Throws SimulationError when the kinetic + strain energy of sample e exceeds twice the energy
 // supplied: the initial energy, the most the loads' work has been (`peak_work`, J/m, updated
 // here) and the energy the interfaces released into the bulk.
-void check_energy(const State& s, const EnergySample& e, double& peak_work);
+void check_energy(RunState& s, const EnergySample& e, double& peak_work);
 
 }  // namespace rupture

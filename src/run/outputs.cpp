@@ -7,7 +7,6 @@
 
 #include "parallel/halo.hpp"
 #include "run/run_io.hpp"
-#include "solver/nested_state.hpp"
 
 namespace rupture {
 namespace {
@@ -23,17 +22,17 @@ class CrackSamples final : public Output {
   }
   bool needs_synchronized_state() const override { return false; }
   void write(double t, double eps, bool last) override {
-    State& s = io_.s;
+    RunState& s = io_.s;
     Schedule& crack = io_.ctx.crack;
     std::vector<CrackTracker>& cracks = io_.ctx.cracks;
     collect_crack_times(s);
     while (crack.due(t, eps)) {
-      for (std::size_t k = 0; k < cracks.size(); ++k) cracks[k].sample(s.interfaces[k], crack.next);
+      for (std::size_t k = 0; k < cracks.size(); ++k) cracks[k].sample(s.interface(k), crack.next);
       crack.advance(crack.next, eps);
     }
     if (last)
       for (std::size_t k = 0; k < cracks.size(); ++k)
-        if (cracks[k].samples().back().time < t - eps) cracks[k].sample(s.interfaces[k], t);
+        if (cracks[k].samples().back().time < t - eps) cracks[k].sample(s.interface(k), t);
   }
 
  private:
@@ -53,14 +52,13 @@ class ClosingRecord final : public Output {
   }
   bool needs_synchronized_state() const override { return true; }
   void write(double t, double, bool) override {
-    State& s = io_.s;
+    RunState& s = io_.s;
     RunContext& ctx = io_.ctx;
     for (std::size_t k = 0; k < ctx.cracks.size(); ++k)
-      if (ctx.cracks[k].samples().back().time < t) ctx.cracks[k].sample(s.interfaces[k], t);
-    merge_level_particles(s);  // for the energy sample and the snapshot
+      if (ctx.cracks[k].samples().back().time < t) ctx.cracks[k].sample(s.interface(k), t);
     record_energy(io_, true);
     if (ctx.prof.interval > 0) write_interfaces(io_);
-    if (ctx.snapshots) ctx.snapshots->write(s.particles, s.stiffness, s.time, s.step);
+    if (ctx.snapshots) ctx.snapshots->write(all_particles(s), s.stiffness(), s.time, s.step);
     if (ctx.mach_schedule.interval > 0) read_mach_angles(io_);
     io_.record.stop_reason = "crack_reached_interface_end";
     io_.closed = true;
@@ -168,20 +166,16 @@ RunOutputs choose_outputs(RunIo& io) {
   add(std::make_unique<CrackSamples>(io));
   if (io.c.time.stop_at_interface_end) add(std::make_unique<ClosingRecord>(io));
   add(std::make_unique<StationSamples>(io));
-  add(std::make_unique<ScheduledOutput>(ctx.hist, true, [&io] {
-    merge_level_particles(io.s);
-    record_energy(io, true);
-  }));
+  add(std::make_unique<ScheduledOutput>(ctx.hist, true, [&io] { record_energy(io, true); }));
   if (ctx.prof.interval > 0)  // profiles read the interfaces only
     add(std::make_unique<ScheduledOutput>(ctx.prof, false, [&io] { write_interfaces(io); }));
   if (ctx.mach_schedule.interval > 0)
     add(std::make_unique<ScheduledOutput>(ctx.mach_schedule, true, [&io] { read_mach_angles(io); }));
   if (ctx.snapshots)
     add(std::make_unique<ScheduledOutput>(ctx.snap, true, [&io] {
-      State& s = io.s;
-      merge_level_particles(s);
+      RunState& s = io.s;
       flush_record(io);  // the small record files first: they say what happened if the disk fills
-      io.ctx.snapshots->write(s.particles, s.stiffness, s.time, s.step);
+      io.ctx.snapshots->write(all_particles(s), s.stiffness(), s.time, s.step);
     }));
   add(std::make_unique<ProgressLine>(io));
   add(std::make_unique<RecordFlush>(io));
@@ -197,13 +191,13 @@ double sync_by(const RunOutputs& outputs, double end, double eps) {
 }
 
 void write_first_record(RunIo& io) {
-  State& s = io.s;
+  RunState& s = io.s;
   RunContext& ctx = io.ctx;
   if (!io.c.stations.empty()) sample_stations_now(io);
   record_energy(io, false);
-  if (ctx.snapshots) ctx.snapshots->write(s.particles, s.stiffness, s.time, s.step);
+  if (ctx.snapshots) ctx.snapshots->write(all_particles(s), s.stiffness(), s.time, s.step);
   if (io.c.output.interface_interval > 0) write_interfaces(io);
-  for (std::size_t k = 0; k < ctx.cracks.size(); ++k) ctx.cracks[k].sample(s.interfaces[k], s.time);
+  for (std::size_t k = 0; k < ctx.cracks.size(); ++k) ctx.cracks[k].sample(s.interface(k), s.time);
 }
 
 }  // namespace rupture

@@ -13,7 +13,7 @@
 #include "output/history.hpp"
 #include "output/snapshot.hpp"
 #include "output/stations.hpp"
-#include "solver/state.hpp"
+#include "solver/run_state.hpp"
 
 namespace rupture {
 
@@ -40,7 +40,7 @@ struct CaseSource {
 
 // Every member must also be written in run/checkpoint.cpp (restart is bitwise).
 struct RunContext {
-  State s;
+  RunState s;  // the levels, the clock and the sums (solver/run_state.hpp)
   History history;
   std::vector<CrackTracker> cracks;           // one per interface
   std::vector<MachReading> mach;              // Mach-angle readings (SPEC E12), all interfaces

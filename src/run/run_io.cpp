@@ -20,7 +20,6 @@
 #include "run/checkpoint.hpp"
 #include "run/checkpoint_ranks.hpp"
 #include "run/energy_check.hpp"
-#include "solver/nested_state.hpp"
 
 namespace rupture {
 namespace {
@@ -71,7 +70,7 @@ RunIo::RunIo(const Case& c_, const CaseSummary& summary_, const RunOptions& opti
       probes(std::move(probes_)),
       crack_speeds(lower_body_speeds(c_, summary_)),
       shear_speed(shear_speeds(summary_)),
-      total_particles(sum_over_ranks(ctx_.s, long(ctx_.s.particles.size()))),
+      total_particles(sum_over_ranks(ctx_.s, long(held_particles(ctx_.s)))),
       progress(make_progress(*this)) {}
 
 void stamp_heartbeat(RunRecord& r) {
@@ -120,24 +119,24 @@ void writer_only(RunIo& io, const std::function<void()>& write) {
 
 void write_interfaces(RunIo& io) {
   namespace fs = std::filesystem;
-  State& s = io.s;
-  if (s.interfaces.empty()) return;
+  RunState& s = io.s;
+  if (s.num_interfaces() == 0) return;
   collect_interface_state(s);  // distributed: every node from its owner
   writer_only(io, [&] {
     const std::string& dir = io.dir;
     const std::vector<std::string>& names = io.c.interface_names;
     const int number = io.ctx.interface_files;
     fs::create_directories(dir + "/interface");
-    for (std::size_t k = 0; k < s.interfaces.size(); ++k) {
+    for (std::size_t k = 0; k < s.num_interfaces(); ++k) {
       const std::string named = fmt::format("{}/interface/{}_{:06d}.csv", dir, names[k], number);
       if (k > 0 || names[0] == "interface") {
-        write_interface_csv(named, s.interfaces[k], s.time);
+        write_interface_csv(named, s.interface(k), s.time);
         continue;
       }
       // The first interface keeps its original name, interface_NNNNNN.csv; the file named after
       // it is a hard link to the same data (a copy where links are not possible).
       const std::string first = fmt::format("{}/interface/interface_{:06d}.csv", dir, number);
-      write_interface_csv(first, s.interfaces[0], s.time);
+      write_interface_csv(first, s.interface(0), s.time);
       std::error_code ec;
       fs::remove(named, ec);
       fs::create_hard_link(first, named, ec);
@@ -152,11 +151,11 @@ void read_mach_angles(RunIo& io) {
   // Distributed: each rank bins its particles, the bins summed over the ranks (collective).
   const Comm& comm = io.comm;
   const SumOverRanks sum_bins = [&comm](double* v, int n) { comm.sum(v, n); };
-  State& s = io.s;
-  merge_level_particles(s);
+  RunState& s = io.s;
+  const Particles& particles = all_particles(s);
   for (std::size_t k = 0; k < io.ctx.cracks.size(); ++k) {
     MachReading m;
-    if (read_mach_angle(io.ctx.cracks[k], io.crack_speeds[k].shear, s.particles, s.grid, io.shear_speed, s.time,
+    if (read_mach_angle(io.ctx.cracks[k], io.crack_speeds[k].shear, particles, s.run_grid(), io.shear_speed, s.time,
                         m, comm.distributed() ? &sum_bins : nullptr)) {
       m.interface = int(k);
       io.ctx.mach.push_back(m);
@@ -174,7 +173,7 @@ void write_cracks(RunIo& io) {
     const std::string suffix = "_" + io.c.interface_names[k];
     if (k == 0) cracks[0].write(dir, "", speeds[0].rayleigh, speeds[0].shear);
     cracks[k].write(dir, suffix, speeds[k].rayleigh, speeds[k].shear);
-    write_rupture_times(dir, suffix, io.s.interfaces[k]);
+    write_rupture_times(dir, suffix, io.s.interface(k));
     if (io.c.output.mach_interval > 0) {
       if (k == 0) write_mach_angles(dir, "", io.ctx.mach, 0);
       write_mach_angles(dir, suffix, io.ctx.mach, int(k));
@@ -183,7 +182,6 @@ void write_cracks(RunIo& io) {
 }
 
 void sample_stations_now(RunIo& io) {
-  merge_level_particles(io.s);
   sample_stations(io.s, io.probes, io.ctx.stations);
 }
 
@@ -195,7 +193,7 @@ void record_energy(RunIo& io, bool check) {
 
 void fill_record(RunIo& io) {
   RunRecord& r = io.record;
-  const State& s = io.s;
+  const RunState& s = io.s;
   const History& history = io.ctx.history;
   const EnergySample& e = history.samples.back();
   r.steps = s.step;

@@ -33,7 +33,7 @@ struct RunIo {
   const Comm& comm;
   const bool writer;      // rank 0: writes the run directory
   RunContext& ctx;
-  State& s;               // ctx.s
+  RunState& s;            // ctx.s
   std::vector<StationProbe> probes;     // per [stations] entry
   std::vector<WaveSpeeds> crack_speeds;  // per interface: its lower body's material's
   std::vector<double> shear_speed;       // per material, m/s (Mach readings)

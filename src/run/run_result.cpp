@@ -12,7 +12,6 @@
 #include "core/atomic_file.hpp"
 #include "core/errors.hpp"
 #include "parallel/halo.hpp"
-#include "solver/nested_state.hpp"
 
 namespace rupture {
 namespace {
@@ -69,7 +68,7 @@ void write_last_files(RunIo& io, RunResult& result, std::string io_failure) {
 
 // Steps, times and rates (as run.json's record has them), and the distributed run's sums.
 void add_totals(RunIo& io, RunResult& result, long first_step) {
-  const State& s = io.s;
+  const RunState& s = io.s;
   const Comm& comm = io.comm;
   const RunRecord& record = io.record;
   result.status = record.status;
@@ -100,11 +99,11 @@ void add_totals(RunIo& io, RunResult& result, long first_step) {
 // Each interface's crack summary with its Mach-angle readings (distributed: every node from
 // its owner first).
 void add_crack_summaries(RunIo& io, RunResult& result) {
-  State& s = io.s;
+  RunState& s = io.s;
   collect_interface_state(s);
   const std::vector<CrackTracker>& cracks = io.ctx.cracks;
   for (std::size_t k = 0; k < cracks.size(); ++k) {
-    CrackSummary cs = cracks[k].summarize(s.interfaces[k], io.crack_speeds[k]);
+    CrackSummary cs = cracks[k].summarize(s.interface(k), io.crack_speeds[k]);
     const MachSummary m = summarize_mach(io.ctx.mach, int(k), cs.steady_begin, cs.steady_end);
     cs.mach_readings = m.readings;
     cs.mach_angle = m.angle;
@@ -112,13 +111,13 @@ void add_crack_summaries(RunIo& io, RunResult& result) {
     cs.mach_angle_left = m.angle_left;
     cs.mach_angle_right = m.angle_right;
     cs.mach_speed = m.speed;
-    if (is_fault(s.interfaces[k])) {  // the front outside the nucleation patch (faults)
+    if (is_fault(s.interface(k))) {  // the front outside the nucleation patch (faults)
       cs.fault = true;
       const InterfaceSpec& is = io.c.interfaces[k];
       double c_max = 0.0;  // the fastest wave of the two sides
       for (const int b : {is.upper_body, is.lower_body})
         c_max = std::max(c_max, io.summary.speeds[std::size_t(io.c.bodies[std::size_t(b)].material)].dilatational);
-      cs.front = summarize_front(s.interfaces[k], io.c.grid.cell_size, io.summary.dt, c_max,
+      cs.front = summarize_front(s.interface(k), io.c.grid.cell_size, io.summary.dt, c_max,
                                  io.crack_speeds[k]);
     }
     result.cracks.push_back(cs);
@@ -144,10 +143,10 @@ void write_final_run_json(RunIo& io, RunResult& result) {
 
 }  // namespace
 
-RunResult starting_result(const State& s, const Comm& comm) {
+RunResult starting_result(const RunState& s, const Comm& comm) {
   RunResult result;
   result.ranks = comm.size();
-  for (const double n : per_rank(comm, double(s.particles.size()))) result.particles_per_rank.push_back(long(n));
+  for (const double n : per_rank(comm, double(held_particles(s)))) result.particles_per_rank.push_back(long(n));
   return result;
 }
 

@@ -20,7 +20,7 @@ struct RunEnd {
 };
 
 // The result's first part, known before the first step: the ranks and their particles.
-RunResult starting_result(const State& s, const Comm& comm);
+RunResult starting_result(const RunState& s, const Comm& comm);
 
 // The result of the run in io, given how its loop ended; its first step was first_step (0, or
 // a resume's). Writes the last record files and run.json.

@@ -22,7 +22,7 @@
 #include "run/output_dir.hpp"
 #include "run/run_io.hpp"
 #include "solver/case_seeding.hpp"
-#include "solver/state.hpp"
+#include "solver/run_state.hpp"
 
 namespace rupture {
 namespace {
@@ -38,7 +38,7 @@ std::vector<StationProbe> set_up(RunContext& r, const Case& c, const std::string
   const bool by_rank = comm.distributed();
   // A distributed resume builds no particle: the checkpoint brings them and their sums.
   const ParticleShare none = ParticleShare::none();
-  r.s = !by_rank ? make_state(c) : resume ? make_state(c, &none) : make_rank_state(c, comm);
+  r.s = !by_rank ? make_run_state(c) : resume ? make_run_state(c, &none) : make_rank_state(c, comm);
   const double* region = c.output.has_snapshot_region ? c.output.snapshot_region : nullptr;
   std::vector<StationProbe> probes;
   if (by_rank) {
@@ -56,16 +56,18 @@ std::vector<StationProbe> set_up(RunContext& r, const Case& c, const std::string
     probes = make_probes(c.stations, r.s, &ids);
   } else {
     // Which particles the snapshots hold and the stations read (every particle at t = 0).
-    if (c.output.snapshot_interval > 0) r.snapshots = std::make_unique<SnapshotWriter>(dir, r.s.particles, region, comm);
+    if (c.output.snapshot_interval > 0) r.snapshots = std::make_unique<SnapshotWriter>(dir, all_particles(r.s), region, comm);
     probes = make_probes(c.stations, r.s);
   }
-  const State& s = r.s;
-  for (const CohesiveInterface& ci : s.interfaces) {
+  const RunState& s = r.s;
+  const Grid& g = s.run_grid();
+  for (std::size_t k = 0; k < s.num_interfaces(); ++k) {
+    const CohesiveInterface& ci = s.interface(k);
     // The cell width along the line at node k (the width in the line's direction).
     auto cell_along = [&](std::size_t k) {
-      const int i = std::clamp(s.grid.x.cell_of(ci.x0[k]), 0, s.grid.x.cells - 1);
-      const int j = std::clamp(s.grid.y.cell_of(ci.y0[k]), 0, s.grid.y.cells - 1);
-      return std::fabs(ci.node_ny[k]) * s.grid.x.width(i) + std::fabs(ci.node_nx[k]) * s.grid.y.width(j);
+      const int i = std::clamp(g.x.cell_of(ci.x0[k]), 0, g.x.cells - 1);
+      const int j = std::clamp(g.y.cell_of(ci.y0[k]), 0, g.y.cells - 1);
+      return std::fabs(ci.node_ny[k]) * g.x.width(i) + std::fabs(ci.node_nx[k]) * g.y.width(j);
     };
     // Two cells at the end of the cohesive line; a daughter crack needs an intact ligament of
     // one cell (the smaller at the line's two ends) between it and the main crack.
@@ -131,7 +133,7 @@ void resume_from_checkpoint(RunContext& ctx, const RunOptions& options) {
           checkpoint_path(dir), ctx.run_id.empty() ? "(none recorded)" : ctx.run_id, here));
     // Distributed: each rank reads some of the parts (a distributed run's checkpoint), or
     // every particle from checkpoint.bin (one process wrote it).
-    if (comm.distributed() && ctx.s.particle_parts > 0) keys = read_checkpoint_share(dir, ctx, comm);
+    if (comm.distributed() && ctx.s.levels[0].particle_parts > 0) keys = read_checkpoint_share(dir, ctx, comm);
     if (!comm.distributed()) read_checkpoint_particles(dir, ctx);  // every part, if any
   });
   // Split by where the particles are now (any number of ranks, whatever wrote it).

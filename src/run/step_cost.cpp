@@ -12,8 +12,7 @@
 
 #include "output/interface_csv.hpp"
 #include "output/snapshot.hpp"
-#include "solver/nested_state.hpp"
-#include "solver/state.hpp"
+#include "solver/run_state.hpp"
 #include "solver/step.hpp"
 
 namespace rupture {
@@ -26,18 +25,18 @@ StepCost measure_step_cost(const Case& c, double budget_seconds, int min_steps, 
   if (c.solver.threads > 0) omp_set_num_threads(c.solver.threads);
   StepCost cost;
   const auto t0 = clock::now();
-  State s = make_state(c);
+  RunState s = make_run_state(c);
   const auto t1 = clock::now();
   cost.setup_seconds = seconds(t0, t1);
-  cost.particles = s.particles.size();
+  cost.particles = held_particles(s);
   // Per-level time steps (nested levels): a level does its particles' work once per period, so
   // the timed steps are whole cycles of the longest period.
   int cycle = 1;
-  if (s.nested && s.nested->subcycled()) {
-    cost.level_periods = s.nested->period;
-    for (std::size_t l = 0; l < s.nested->levels.size(); ++l) {
-      cycle = std::max(cycle, s.nested->period[l]);
-      cost.updates_per_finest_step += double(s.nested->levels[l].particles.size()) / double(s.nested->period[l]);
+  if (s.subcycled()) {
+    cost.level_periods = s.period;
+    for (std::size_t l = 0; l < s.levels.size(); ++l) {
+      cycle = std::max(cycle, s.period[l]);
+      cost.updates_per_finest_step += double(s.levels[l].particles.size()) / double(s.period[l]);
     }
   }
   min_steps = std::max(min_steps, cycle);
@@ -66,16 +65,16 @@ StepCost measure_step_cost(const Case& c, double budget_seconds, int min_steps, 
   try {
     if (c.output.snapshot_interval > 0) {
       const auto a = clock::now();
-      SnapshotWriter w(tmp.string(), s.particles,
-                       c.output.has_snapshot_region ? c.output.snapshot_region : nullptr);
-      w.write(s.particles, s.stiffness, s.time, s.step);
+      const Particles& all = all_particles(s);
+      SnapshotWriter w(tmp.string(), all, c.output.has_snapshot_region ? c.output.snapshot_region : nullptr);
+      w.write(all, s.stiffness(), s.time, s.step);
       cost.snapshot_seconds = seconds(a, clock::now());
     }
     if (c.output.interface_interval > 0) {
       const auto a = clock::now();
-      for (std::size_t k = 0; k < s.interfaces.size(); ++k)
+      for (std::size_t k = 0; k < s.num_interfaces(); ++k)
         write_interface_csv((tmp / "interface" / fmt::format("i{}.csv", k)).string(),
-                            s.interfaces[k], s.time);
+                            s.interface(k), s.time);
       cost.interface_seconds = seconds(a, clock::now());
     }
   } catch (...) {

@@ -14,7 +14,7 @@
 
 #include "input/case.hpp"
 #include "particles/seed.hpp"
-#include "solver/state.hpp"
+#include "solver/run_state.hpp"
 
 namespace rupture {
 
@@ -22,10 +22,10 @@ namespace rupture {
 using CasePointVisit = std::function<void(const SeedPoint&, std::size_t body, std::uint32_t id)>;
 void for_each_case_point(const Case& c, const Grid& g, const CasePointVisit& visit);
 
-// The particles at t = 0 of the run State s was made for (make_state: a uniform or graded grid,
-// or nested levels, whatever particles s holds), in id order: centre (m) and id.
+// The particles at t = 0 of the run r was made for (make_run_state: a uniform or graded grid,
+// or nested levels, whatever particles r holds), in id order: centre (m) and id.
 using RunPointVisit = std::function<void(double, double, std::uint32_t id)>;
-void for_each_run_point(const Case& c, const State& s, const RunPointVisit& visit);
+void for_each_run_point(const Case& c, const RunState& r, const RunPointVisit& visit);
 
 // A particle centre's test (x, y in m).
 using PointFilter = std::function<bool(double, double)>;

@@ -19,12 +19,12 @@
 
 namespace rupture {
 
-struct NestedState;  // solver/nested_state.hpp
+struct RunState;  // solver/run_state.hpp
 
 struct Levels {
   State* const* level = nullptr;  // coarsest first
   std::size_t count = 0;
-  NestedState* nested = nullptr;  // the transitions; null: one grid
+  RunState* nested = nullptr;  // the transitions; null: one grid
   State& operator[](std::size_t l) const { return *level[l]; }
   State& first() const { return *level[0]; }
   State* const* begin() const { return level; }

@@ -1,6 +1,6 @@
 // rupture/solver/nested_phases.hpp
 // What the nested levels' steps share with the update schemes of solver/step.cpp: the
-// transitions on a NestedState (solver/transitions.cpp), the phases of the schemes that the
+// transitions on a RunState (solver/transitions.cpp), the phases of the schemes that the
 // per-level time steps (solver/nested_subcycle.cpp) reuse, and the schemes themselves over a
 // Levels view. Internal to solver/.
 #pragma once
@@ -15,12 +15,12 @@ namespace rupture::detail {
 using rupture::NodalArray;
 
 // solver/levels.hpp's transitions over every level of n.
-void condense_to_dofs(NestedState& n, std::initializer_list<NodalArray> arrays);
-void condense_to_dofs(NestedState& n, std::initializer_list<LoadArray> arrays);
-void spread_to_slaves(NestedState& n, std::initializer_list<NodalArray> arrays);
+void condense_to_dofs(RunState& n, std::initializer_list<NodalArray> arrays);
+void condense_to_dofs(RunState& n, std::initializer_list<LoadArray> arrays);
+void spread_to_slaves(RunState& n, std::initializer_list<NodalArray> arrays);
 
 // The view over every level of n (levels_of keeps its pointers until n's levels change).
-Levels levels_of(NestedState& n);
+Levels levels_of(RunState& n);
 
 // solver/step.cpp's phases (each level in turn):
 // after the condensed mass scatter, the bonded stretches tied and the face stencils updated;
@@ -38,6 +38,6 @@ void step_levels(const Levels& L, Scheme scheme);
 // interfaces advanced with the velocity the scheme strained the bodies with.
 void end_step(const Levels& L, Scheme scheme);
 // One finest step of the levels stepping at their own dt (time.subcycling = "levels"), MUSL.
-void step_subcycled(NestedState& n);
+void step_subcycled(RunState& n);
 
 }  // namespace rupture::detail

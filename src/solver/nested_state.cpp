@@ -103,7 +103,7 @@ int owning_level(const NestedGrid& g, const std::vector<double>& x0, const std::
 
 // Every particle onto the finest level that owns its centre; a particle more than one level
 // finer than where it was made breaks the GIMP contract (lp > h/2 of its new lattice).
-void migrate(NestedState& n) {
+void migrate(RunState& n) {
   const std::size_t levels = n.levels.size();
   if (levels == 1) return;
   std::vector<Particles> arriving(levels);
@@ -156,7 +156,7 @@ void migrate(NestedState& n) {
 }
 
 // migrate, distributed: a broken contract on one rank stops every rank at the end of the step.
-void migrate_levels(NestedState& n) {
+void migrate_levels(RunState& n) {
   if (!n.levels[0].halo) return migrate(n);
   try {
     migrate(n);
@@ -169,7 +169,7 @@ void migrate_levels(NestedState& n) {
 
 namespace detail {
 
-Levels levels_of(NestedState& n) {
+Levels levels_of(RunState& n) {
   thread_local std::vector<State*> pointers;
   pointers.clear();
   for (State& s : n.levels) pointers.push_back(&s);
@@ -178,85 +178,10 @@ Levels levels_of(NestedState& n) {
 
 }  // namespace detail
 
-std::size_t NestedState::num_particles() const {
-  std::size_t n = 0;
-  for (const State& s : levels) n += s.particles.size();
-  return n;
-}
-
-bool NestedState::subcycled() const {
-  return std::any_of(period.begin(), period.end(), [](int p) { return p > 1; });
-}
-
-bool synchronized(const State& s) { return !s.nested || s.nested->synchronized(); }
-
-double NestedState::external_work() const {
-  double w = 0.0;
-  for (const State& s : levels) w += s.external_work;
-  return w;
-}
-
-bool NestedState::holds_interfaces(int level) const {
-  return std::find(interface_levels.begin(), interface_levels.end(), level) != interface_levels.end();
-}
-
-void lend_interfaces(State& s) {
-  NestedState& n = *s.nested;
-  for (std::size_t k = 0; k < s.interfaces.size(); ++k)
-    n.levels[std::size_t(n.interface_levels[k])].interfaces.push_back(std::move(s.interfaces[k]));
-}
-void return_interfaces(State& s) {
-  NestedState& n = *s.nested;
-  std::vector<std::size_t> next(n.levels.size(), 0);
-  for (std::size_t k = 0; k < s.interfaces.size(); ++k) {
-    const std::size_t l = std::size_t(n.interface_levels[k]);
-    s.interfaces[k] = std::move(n.levels[l].interfaces[next[l]++]);
-  }
-  for (State& l : n.levels) l.interfaces.clear();
-}
-
-void step_nested_run(State& s) {
-  NestedState& n = *s.nested;
-  for (State& l : n.levels) l.dt_cap = s.dt_cap, l.forced_dt = s.forced_dt;
-  n.sync_by = s.sync_by;
-  lend_interfaces(s);  // for the step
-  try {
-    step(n);
-  } catch (...) {
-    return_interfaces(s);
-    throw;
-  }
-  s.time = n.time, s.step = n.step, s.dt = n.dt;
-  s.external_work = s.strain_work = s.cohesive_seconds = 0.0;
-  double cohesive_dt = INFINITY;
-  for (const State& l : n.levels) {
-    s.external_work += l.external_work, s.strain_work += l.strain_work;
-    s.cohesive_seconds += l.cohesive_seconds;
-    s.limits.min_cohesive_dt = std::min(s.limits.min_cohesive_dt, l.limits.min_cohesive_dt);
-    if (!l.interfaces.empty()) cohesive_dt = std::min(cohesive_dt, l.limits.cohesive_dt);
-  }
-  if (!s.interfaces.empty()) s.limits.cohesive_dt = cohesive_dt;
-  return_interfaces(s);
-}
-
-void merge_level_particles(State& s) {
-  if (!s.nested || s.particles_step == s.step) return;
-  s.particles.resize(0);
-  for (const State& l : s.nested->levels) s.particles.append_copy(l.particles);
-  s.particles_step = s.step;
-}
-
-std::size_t held_particles(const State& s) {
-  if (!s.nested) return s.particles.size();
-  std::size_t n = 0;
-  for (const State& l : s.nested->levels) n += l.particles.size();
-  return n;
-}
-
 namespace {
 
-// NestedState::coupled of every level with period > 1 (after `mixed` and the transposed terms).
-void coupled_nodes(NestedState& n) {
+// RunState::coupled of every level with period > 1 (after `mixed` and the transposed terms).
+void coupled_nodes(RunState& n) {
   const std::size_t levels = n.levels.size();
   n.coupled.assign(levels, {});
   n.coupled_mask.assign(levels, {});
@@ -300,7 +225,7 @@ void coupled_nodes(NestedState& n) {
 
 }  // namespace
 
-void for_each_level_point(const Case& c, const NestedState& n, int l,
+void for_each_level_point(const Case& c, const RunState& n, int l,
                           const std::function<void(double, double, double)>& visit) {
   const Grid& lattice = n.levels[std::size_t(l)].grid;
   for (const BodySpec& b : c.bodies) {  // as make_level_state seeds them
@@ -319,7 +244,7 @@ namespace {
 // holds (LoadState::kAbsent for the others, as for another rank's) and a particle changing
 // level keeps its load. A traction patch is found among particles of every size, each with its
 // own extent along the segment.
-void set_up_level_loads(const Case& c, NestedState& n, const std::vector<std::uint32_t>& first_ids) {
+void set_up_level_loads(const Case& c, RunState& n, const std::vector<std::uint32_t>& first_ids) {
   if (c.loads.empty()) return;
   Particles near;
   for (std::size_t l = 0; l < n.levels.size(); ++l) {
@@ -345,7 +270,7 @@ namespace {
 // applied with the condensed mass at its node. A slave on the edge has its DOFs on the edge
 // (a hanging node: the coarse nodes either side along it; a covered node: the finer node at
 // its point).
-void set_level_absorbing(const Case& c, NestedState& n) {
+void set_level_absorbing(const Case& c, RunState& n) {
   if (c.absorbing_edges.empty()) return;
   const std::size_t levels = n.levels.size();
   for (std::size_t l = 0; l < levels; ++l) {
@@ -440,9 +365,9 @@ void check_nested_support(const Case& c) {
   }
 }
 
-NestedState make_nested_state(const Case& c, const ParticleShare* share) {
+RunState make_nested_state(const Case& c, const ParticleShare* share) {
   check_nested_support(c);
-  NestedState n;
+  RunState n;
   n.grid = make_nested_grid(c.grid.min, c.grid.max, c.grid.coarse_cell_size, c.grid.cell_size,
                             refine_boxes(c.grid), std::max(0.0, c.grid.margin));
   const int levels = int(n.grid.levels.size());
@@ -458,7 +383,6 @@ NestedState make_nested_state(const Case& c, const ParticleShare* share) {
                                         [&g, l](double x, double y) { return g.level_of(x, y) == l; },
                                         share ? &own : nullptr));
     State& s = n.levels.back();
-    s.nested_level = true;
     // The case's step limits are the finest cell's (solver/summary.cpp); a level's scale with
     // its cells: the CFL step with h, the bulk eigenvalue bound with 1 / h^2.
     const double scale = L.x.h / c.grid.cell_size;
@@ -481,8 +405,10 @@ NestedState make_nested_state(const Case& c, const ParticleShare* share) {
     // lives on the one level that holds it whole.
     std::vector<CohesiveInterface> kept;
     n.interface_levels.resize(s.interfaces.size());
+    n.interface_slots.resize(s.interfaces.size());
     for (std::size_t k = 0; k < s.interfaces.size(); ++k)
       if (owning_level(n.grid, s.interfaces[k].x0, s.interfaces[k].y0, c.interface_names[k]) == l) {
+        n.interface_slots[k] = kept.size();
         kept.push_back(std::move(s.interfaces[k]));
         n.interface_levels[k] = l;
       }
@@ -597,7 +523,7 @@ NestedState make_nested_state(const Case& c, const ParticleShare* share) {
   return n;
 }
 
-NestedDrift nested_drift_before(NestedState& n) {
+NestedDrift nested_drift_before(RunState& n) {
   NestedDrift d;
   for (State& s : n.levels) {
     d.window_drift.push_back(s.window_drift);
@@ -607,7 +533,7 @@ NestedDrift nested_drift_before(NestedState& n) {
 }
 
 
-void step(NestedState& n) {
+void step_nested(RunState& n) {
   // Every particle onto the level owning its centre, once any may have moved kMigrateDrift
   // finest cells since the last time (the particle move sums max |v| dt into window_drift,
   // which whole-lattice fields leave alone). Until then a particle may stand a little outside

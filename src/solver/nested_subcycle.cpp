@@ -19,9 +19,9 @@
 // fresh), which is exactly what their particles receive when their step ends: total momentum
 // is kept to round-off, as in one step per level. A level's step is never longer than its CFL
 // step (h is the smallest of level l's limit / period[l]); every level ends together at the
-// run's output times and before particles are due to change level (NestedState::sync_by,
+// run's output times and before particles are due to change level (RunState::sync_by,
 // migrate), so outputs, checkpoints and migrations see every particle at one time.
-// While a level's step goes on, only its coupled nodes (NestedState::coupled: where other
+// While a level's step goes on, only its coupled nodes (RunState::coupled: where other
 // levels' terms meet it, the band's stencils, the ties) are updated each finest step; its
 // other nodes carry its held scatter alone, so they are updated once, when its step ends, over
 // the whole span (integrate_ending: the same update to round-off, without the whole-lattice
@@ -51,7 +51,7 @@ void parallel_list(const std::vector<std::uint32_t>& list, Body&& body) {
 }
 
 // The held scatter of a level: saved when its step begins, put back at every finest step after
-// where condense, the ties and the other levels change it (NestedState::coupled; elsewhere
+// where condense, the ties and the other levels change it (RunState::coupled; elsewhere
 // the arrays keep it: nothing else writes there until the level's step ends).
 void hold_scatter(GridFields& G, LevelHold& H, const std::vector<std::uint32_t>& coupled) {
   const std::size_t n = G.mass.size();
@@ -126,7 +126,7 @@ void advance_hold(const GridFields& G, LevelHold& H, bool first, bool goes_on,
 
 // The level's particles whose stencil reaches a node of `mixed` (its step begins: they stay
 // where they are until it ends), in particle order. Only the first node of each stencil is
-// needed (grid/grid.hpp's uniform_stencil_first), looked up in NestedState::mixed_reach; the threads take fixed chunks and their lists
+// needed (grid/grid.hpp's uniform_stencil_first), looked up in RunState::mixed_reach; the threads take fixed chunks and their lists
 // are joined in order.
 void find_band(const State& s, const std::vector<unsigned char>& reach, LevelHold& H) {
   const Particles& P = s.particles;
@@ -213,7 +213,7 @@ void band_remap(State& s, const LevelHold& H, const std::vector<std::uint32_t>& 
 
 // h: the smallest of every level's stability limit (SPEC E6: its CFL step, and on the
 // interface's level the cohesive bound) over its period, within the time left to the end.
-void subcycled_time_step(NestedState& n) {
+void subcycled_time_step(RunState& n) {
   double h = INFINITY;
   const double cap = n.levels[0].dt_cap, forced = n.levels[0].forced_dt;
   for (std::size_t l = 0; l < n.levels.size(); ++l) {
@@ -232,7 +232,7 @@ void subcycled_time_step(NestedState& n) {
 
 }  // namespace
 
-void step_subcycled(NestedState& n) {
+void step_subcycled(RunState& n) {
   const std::size_t levels = n.levels.size();
   n.hold.resize(levels);
   thread_local std::vector<State*> starting, ending;

@@ -32,7 +32,7 @@
 
 namespace rupture {
 
-struct NestedState;  // solver/nested_state.hpp
+struct RunState;  // solver/run_state.hpp
 struct NestedDrift;  // solver/nested_state.hpp
 
 using InterfaceArray = std::vector<double> CohesiveInterface::*;
@@ -50,9 +50,9 @@ class RankExchange {
   virtual void check_faces_in_reach(State& s) = 0;
   virtual void migrate_if_due(State& s) = 0;
   virtual void finish_step(State& s, double drift_at_start) = 0;
-  virtual void send_to_level_owners(NestedState& n) = 0;
-  virtual void migrate_levels_if_due(NestedState& n) = 0;
-  virtual void finish_nested_step(NestedState& n, const NestedDrift& before) = 0;
+  virtual void send_to_level_owners(RunState& n) = 0;
+  virtual void migrate_levels_if_due(RunState& n) = 0;
+  virtual void finish_nested_step(RunState& n, const NestedDrift& before) = 0;
   virtual double min_over_ranks(double v) const = 0;
   // A distributed nested level: the split fixed its field windows to its reach.
   virtual bool fixes_windows() const = 0;

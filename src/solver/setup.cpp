@@ -3,6 +3,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <stdexcept>
 #include <utility>
 
 #include "particles/seed.hpp"
@@ -15,6 +16,7 @@
 #include "solver/cohesive_step.hpp"
 #include "solver/load_step.hpp"
 #include "solver/nested_state.hpp"
+#include "solver/run_state.hpp"
 #include "solver/summary.hpp"
 
 namespace rupture {
@@ -173,35 +175,6 @@ State make_state_on(const Case& c, Grid grid, const PointFilter* keep, const Poi
   return s;
 }
 
-// The run's State on nested levels: the levels in s.nested, the interfaces (each on the level
-// that holds it whole) in s.interfaces, the particles merged.
-State make_state_on_levels(const Case& c, const ParticleShare* share) {
-  State s;
-  auto n = std::make_shared<NestedState>(make_nested_state(c, share));
-  // The interfaces in input order (each level kept its own in that order).
-  std::vector<std::size_t> next(n->levels.size(), 0);
-  for (const int l : n->interface_levels)
-    s.interfaces.push_back(std::move(n->levels[std::size_t(l)].interfaces[next[std::size_t(l)]++]));
-  for (State& l : n->levels) l.interfaces.clear();
-  const State& first = n->levels[0];
-  // The finest level holding an interface (without: the finest), for what reads one grid.
-  int grid_level = int(n->levels.size()) - 1;
-  if (!n->interface_levels.empty())
-    grid_level = *std::max_element(n->interface_levels.begin(), n->interface_levels.end());
-  s.grid = n->levels[std::size_t(grid_level)].grid;
-  s.scheme = first.scheme;
-  s.flip = first.flip;
-  s.stiffness = first.stiffness;  // the gathered particles' derived state (material/elastic.hpp)
-  s.limits = first.limits;
-  s.dt = first.dt;
-  s.cohesive_safety = first.cohesive_safety;
-  s.mass_floor = first.mass_floor;
-  for (const State& l : n->levels) s.initial_energy += l.initial_energy, s.strain_work += l.strain_work;
-  s.nested = std::move(n);
-  merge_level_particles(s);
-  return s;
-}
-
 }  // namespace
 
 void for_each_case_point(const Case& c, const Grid& g, const CasePointVisit& visit) {
@@ -210,14 +183,14 @@ void for_each_case_point(const Case& c, const Grid& g, const CasePointVisit& vis
     for_each_body_point(c, g, c.bodies[k], [&](const SeedPoint& p) { visit(p, k, id++); });
 }
 
-void for_each_run_point(const Case& c, const State& s, const RunPointVisit& visit) {
-  if (!s.nested) {
-    for_each_case_point(c, s.grid, [&](const SeedPoint& p, std::size_t, std::uint32_t id) { visit(p.x, p.y, id); });
+void for_each_run_point(const Case& c, const RunState& r, const RunPointVisit& visit) {
+  if (!r.joined()) {
+    for_each_case_point(c, r.levels[0].grid, [&](const SeedPoint& p, std::size_t, std::uint32_t id) { visit(p.x, p.y, id); });
     return;
   }
   std::uint32_t id = 0;  // level l's ids follow level l - 1's (solver/nested_state.cpp)
-  for (std::size_t l = 0; l < s.nested->levels.size(); ++l)
-    for_each_level_point(c, *s.nested, int(l), [&](double x, double y, double) { visit(x, y, id++); });
+  for (std::size_t l = 0; l < r.levels.size(); ++l)
+    for_each_level_point(c, r, int(l), [&](double x, double y, double) { visit(x, y, id++); });
 }
 
 CaseTally tally_case_points(const Case& c, const Grid& g) {
@@ -245,10 +218,32 @@ ParticleShare ParticleShare::none() {
 }
 
 State make_state(const Case& c, const ParticleShare* share) {
-  State s = c.grid.nested ? make_state_on_levels(c, share)
-                          : make_state_on(c, build_grid(c.grid), nullptr, share ? &share->own : nullptr);
+  if (c.grid.nested) throw std::logic_error("make_state: nested levels are a RunState (make_run_state)");
+  State s = make_state_on(c, build_grid(c.grid), nullptr, share ? &share->own : nullptr);
   s.particles_from_checkpoint = share && share->from_checkpoint;
   return s;
+}
+
+RunState make_run_state(const Case& c, const ParticleShare* share) {
+  RunState r;
+  if (c.grid.nested) {
+    r = make_nested_state(c, share);  // the levels, their interfaces and the transitions
+    // The run's limits and step at t = 0 are the coarsest level's (as its clock: every level
+    // starts with the common dt), the energies the levels' sums.
+    r.limits = r.levels[0].limits;
+    for (const State& l : r.levels) r.initial_energy += l.initial_energy;
+    r.grid_level = r.levels.size() - 1;
+    if (!r.interface_levels.empty())
+      r.grid_level = std::size_t(*std::max_element(r.interface_levels.begin(), r.interface_levels.end()));
+  } else {
+    r.levels.push_back(make_state(c, share));
+    for (std::size_t k = 0; k < r.levels[0].interfaces.size(); ++k)
+      r.interface_levels.push_back(0), r.interface_slots.push_back(k);
+    r.initial_energy = r.levels[0].initial_energy;
+  }
+  r.particles_from_checkpoint = share && share->from_checkpoint;
+  collect_run_sums(r);
+  return r;
 }
 
 State make_level_state(const Case& c, Grid lattice, const std::function<bool(double, double)>& keep,

@@ -1,7 +1,9 @@
 // rupture/solver/state.hpp
-// Everything that evolves during a run, plus what is derived once from the Case (grid,
-// material stiffnesses, resolved boundary nodes, time step). make_state() builds it;
-// step() (solver/step.hpp) advances it by one time step. SI units throughout.
+// One level of a run: one lattice (a uniform or graded grid, or one nested level), its
+// particles and fields, and what is derived once from the Case for it (material stiffnesses,
+// resolved boundary nodes, its interfaces, loads, step limits). A run is one or more of them
+// (solver/run_state.hpp). make_state() builds a one-grid level; step() (solver/step.hpp)
+// advances one grid by one time step. SI units throughout.
 #pragma once
 #include <cstddef>
 #include <cmath>
@@ -21,7 +23,6 @@
 
 namespace rupture {
 
-struct NestedState;  // solver/nested_state.hpp
 class RankExchange;  // solver/rank_exchange.hpp (parallel/halo.hpp implements it)
 
 // Race-free scatter without locks: particles are kept physically sorted by vertical strips
@@ -133,8 +134,6 @@ struct State {
   StepLimits limits;
   double dt = 0.0;       // this step's, set by choose_time_step (solver/time_step.hpp), s
   double dt_cap = INFINITY;     // no step goes past this much time (the driver: time to the end), s
-  double sync_by = INFINITY;    // nested per-level steps: every level ends its step once the time
-                                // reaches this (the driver: its next output), s
   double forced_dt = 0.0;       // > 0: a fixed step that bypasses E6 (tests of instability only), s
   double cohesive_safety = TimeSpec{}.cohesive_safety;  // dt <= safety x the cohesive limit
                                                         // (time.cohesive_safety; make_state sets it)
@@ -148,15 +147,6 @@ struct State {
   double last_move = 0.0;          // the last particle move's bound, dt max |v|, m (distributed
                                    // nested levels reduce it over the ranks)
   bool whole_grid_fields = false;  // tests: every field over the whole grid (same results)
-
-  // grid.refinement = "nested" (solver/nested_state.hpp): the levels do the stepping; this
-  // State keeps the run's clock, energies and step limits, holds the interfaces (lent to their
-  // level during a step), `grid` is that level's (the finest without interfaces), and
-  // `particles` is every level's particles merged, as of step `particles_step`
-  // (merge_level_particles). run/checkpoint.cpp stores the levels.
-  std::shared_ptr<NestedState> nested;
-  long particles_step = -1;
-  bool nested_level = false;  // one level of a nested run (checkpointed as such)
 
   // A distributed run (MPI): the exchanges with the other ranks the step makes
   // (solver/rank_exchange.hpp; this rank's block and neighbours: parallel/halo.hpp, halo_of);
@@ -195,9 +185,11 @@ struct ParticleShare {
   static ParticleShare none();
 };
 
-// The set-up, for every grid (uniform, graded, nested levels): grid or levels, particles (one
-// velocity field per body; every one, or `share`'s), stiffnesses, boundary nodes, interfaces,
-// loads and the time step, from a validated case.
+// One grid (uniform or graded) as one level: its particles (one velocity field per body;
+// every one, or `share`'s), stiffnesses, boundary nodes, interfaces, loads and the time step,
+// from a validated case. make_run_state (solver/run_state.hpp) is the set-up of a run on any
+// grid; this is its one-grid level, for what steps one grid alone (tests, benchmarks).
+// Throws std::logic_error for nested levels.
 State make_state(const Case& c, const ParticleShare* share = nullptr);
 
 }  // namespace rupture

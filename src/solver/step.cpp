@@ -20,6 +20,7 @@
 #include "solver/levels.hpp"
 #include "solver/load_step.hpp"
 #include "solver/nested_phases.hpp"
+#include "solver/nested_state.hpp"
 #include "solver/time_step.hpp"
 
 namespace rupture {
@@ -252,10 +253,6 @@ void step_levels(const Levels& L, Scheme scheme) {
 }  // namespace detail
 
 void step(State& s) {
-  if (s.nested) {  // grid.refinement = "nested": the levels step (solver/nested_state.hpp)
-    step_nested_run(s);
-    return;
-  }
   migrate_if_due(s);  // distributed: particles that left their rank's block move to its owner
   build_scatter_plan(s);
   const double drift_at_start = s.plan.drift;
@@ -267,6 +264,29 @@ void step(State& s) {
   State* const one[] = {&s};
   detail::step_levels(Levels{one, 1, nullptr}, s.scheme);
   finish_distributed_step(s, drift_at_start);  // migration bound; a failure on any rank stops all
+}
+
+void step(RunState& r) {
+  for (State& l : r.levels) l.dt_cap = r.dt_cap, l.forced_dt = r.forced_dt;
+  if (!r.joined()) {  // one grid: its level is the run
+    try {
+      step(r.levels[0]);
+    } catch (...) {
+      collect_run_sums(r);  // what the step did before it stopped (the record reads it)
+      throw;
+    }
+    collect_run_sums(r);
+    return;
+  }
+  step_nested(r);  // the levels and their transitions (solver/nested_state.hpp)
+  collect_run_sums(r);
+  // The record's limits: the smallest cohesive limits of the levels holding interfaces.
+  double cohesive_dt = INFINITY;
+  for (const State& l : r.levels) {
+    r.limits.min_cohesive_dt = std::min(r.limits.min_cohesive_dt, l.limits.min_cohesive_dt);
+    if (!l.interfaces.empty()) cohesive_dt = std::min(cohesive_dt, l.limits.cohesive_dt);
+  }
+  if (r.num_interfaces() > 0) r.limits.cohesive_dt = cohesive_dt;
 }
 
 }  // namespace rupture

@@ -19,11 +19,15 @@
 // (distributed: at the end of the step, on every rank, with the failing rank's diagnosis).
 #pragma once
 #include "solver/grid_update.hpp"
+#include "solver/run_state.hpp"
 #include "solver/state.hpp"
 #include "solver/transfer.hpp"
 
 namespace rupture {
 
+// One grid's time step.
 void step(State& s);
+// The run's time step on every level (one grid: step(State&)), then its clock and sums.
+void step(RunState& r);
 
 }  // namespace rupture

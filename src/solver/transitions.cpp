@@ -23,7 +23,7 @@ std::vector<double>& array_of(State& s, NodalArray a) { return s.fields.*a; }
 std::vector<double>& array_of(State& s, LoadArray a) { return s.loads.*a; }
 
 template <class Array>
-std::size_t column_bases(NestedState& n, std::initializer_list<Array> arrays, std::vector<double*>& base) {
+std::size_t column_bases(RunState& n, std::initializer_list<Array> arrays, std::vector<double*>& base) {
   const std::size_t levels = n.levels.size(), fields = std::size_t(n.levels[0].fields.num_fields);
   const std::size_t columns = fields * arrays.size();
   base.resize(columns * levels);
@@ -41,26 +41,26 @@ std::size_t column_bases(NestedState& n, std::initializer_list<Array> arrays, st
 
 }  // namespace
 
-static void condense_columns(NestedState& n, double* const* base, std::size_t columns);
-static void spread_columns(NestedState& n, double* const* base, std::size_t columns);
+static void condense_columns(RunState& n, double* const* base, std::size_t columns);
+static void spread_columns(RunState& n, double* const* base, std::size_t columns);
 
 // grid/nested.hpp's condense_to_dofs over the levels' arrays: every DOF adds c * (slave's value) of
-// the slaves it serves, in slave order (the transposed terms: NestedState::dof_start), so the
+// the slaves it serves, in slave order (the transposed terms: RunState::dof_start), so the
 // threads split the DOFs without sharing one and the sums are those of a loop over the
 // slaves; then the slaves are cleared.
 template <class Array>
-void condense_arrays(NestedState& n, std::initializer_list<Array> arrays) {
+void condense_arrays(RunState& n, std::initializer_list<Array> arrays) {
   thread_local std::vector<double*> base_store;
   const std::size_t all = column_bases(n, arrays, base_store), levels = n.levels.size();
   for (std::size_t first = 0; first < all; first += kMaxColumns)
     condense_columns(n, base_store.data() + first * levels, std::min(kMaxColumns, all - first));
 }
 
-void condense_to_dofs(NestedState& n, std::initializer_list<NodalArray> arrays) { condense_arrays(n, arrays); }
-void condense_to_dofs(NestedState& n, std::initializer_list<LoadArray> arrays) { condense_arrays(n, arrays); }
+void condense_to_dofs(RunState& n, std::initializer_list<NodalArray> arrays) { condense_arrays(n, arrays); }
+void condense_to_dofs(RunState& n, std::initializer_list<LoadArray> arrays) { condense_arrays(n, arrays); }
 
 // The same over `columns` (at most kMaxColumns) columns from `base`.
-void condense_columns(NestedState& n, double* const* base, std::size_t columns) {
+void condense_columns(RunState& n, double* const* base, std::size_t columns) {
   const std::size_t levels = n.levels.size();
   const long dofs = long(n.dof_level.size()), slaves = long(n.active_slaves.size());
 #pragma omp parallel
@@ -88,14 +88,14 @@ void condense_columns(NestedState& n, double* const* base, std::size_t columns) 
 }
 
 // grid/nested.hpp's spread_to_slaves: every slave from its DOFs (slaves only read DOFs: no race).
-void spread_to_slaves(NestedState& n, std::initializer_list<NodalArray> arrays) {
+void spread_to_slaves(RunState& n, std::initializer_list<NodalArray> arrays) {
   thread_local std::vector<double*> base_store;
   const std::size_t all = column_bases(n, arrays, base_store), levels = n.levels.size();
   for (std::size_t first = 0; first < all; first += kMaxColumns)
     spread_columns(n, base_store.data() + first * levels, std::min(kMaxColumns, all - first));
 }
 
-void spread_columns(NestedState& n, double* const* base, std::size_t columns) {
+void spread_columns(RunState& n, double* const* base, std::size_t columns) {
   const NestedGrid& g = n.grid;
   const std::size_t levels = n.levels.size();
   const long slaves = long(n.active_slaves.size());

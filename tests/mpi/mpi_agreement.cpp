@@ -40,10 +40,9 @@ using namespace rupture;
 
 namespace {
 
-void advance(State& s, long steps) {
+void advance(RunState& s, long steps) {
   s.dt_cap = INFINITY;
   for (long k = 0; k < steps; ++k) step(s);
-  merge_level_particles(s);  // nested levels: every level's particles, merged
 }
 
 // Every rank's particles, packed, on rank 0 (empty elsewhere). A test helper: a run never
@@ -88,20 +87,20 @@ int main(int argc, char** argv) {
   const Case c = load_case(path, sets);
 
   // The distributed run's set-up: each rank makes its own particles only (make_rank_state).
-  State d = make_rank_state(c, world);
+  RunState d = make_rank_state(c, world);
   // It gives, bit for bit and in the same order, the particles, the split and the mass floor of
   // the whole set-up split afterwards (make_state + distribute); the initial energy to round-off.
   // So does a resumed run's split of particles each rank read some of (distribute_held,
   // distribute_held_nested).
   double setup_same = 1.0, initial_energy_difference = 0.0;
   {
-    State w = make_state(c);
+    RunState w = make_run_state(c);
     split_over_ranks(w, world);
-    const Particles &A = w.particles, &B = d.particles;
+    const Particles &A = all_particles(w), &B = all_particles(d);
     bool same = A.x == B.x && A.y == B.y && A.vx == B.vx && A.vy == B.vy && A.mass == B.mass &&
                 A.volume0 == B.volume0 && A.half_x == B.half_x && A.half_y == B.half_y && A.sxx == B.sxx &&
                 A.syy == B.syy && A.sxy == B.sxy && A.field == B.field && A.material == B.material && A.id == B.id;
-    same = same && w.mass_floor == d.mass_floor && w.strain_work == d.strain_work && !w.halo == !d.halo &&
+    same = same && w.levels[0].mass_floor == d.levels[0].mass_floor && w.strain_work == d.strain_work && !w.halo == !d.halo &&
            (!w.halo || halo_of(w).blocks.size() == halo_of(d).blocks.size());
     for (std::size_t r = 0; same && w.halo && r < halo_of(w).blocks.size(); ++r) {
       const CellBlock &a = halo_of(w).blocks[r], &b = halo_of(d).blocks[r];
@@ -110,7 +109,7 @@ int main(int argc, char** argv) {
     // A resumed run's split (distribute_held): the particles dealt to the ranks in turn, keyed
     // by their one-process index, end on the ranks and in the order distribute gives.
     {
-      State h = make_state(c);
+      RunState h = make_run_state(c);
       // Deals p-th particle (of each level) to rank p mod N, keyed by p.
       const auto deal = [&](Particles& P, std::vector<double>& key) {
         std::vector<unsigned char> away(P.size(), 0);
@@ -121,16 +120,10 @@ int main(int argc, char** argv) {
         Particles others;
         P.move_marked(away, others);
       };
-      if (c.grid.nested) {
-        std::vector<std::vector<double>> keys(h.nested->levels.size());
-        for (std::size_t l = 0; l < keys.size(); ++l) deal(h.nested->levels[l].particles, keys[l]);
-        split_over_ranks(h, world, {false, &keys});
-      } else {
-        std::vector<std::vector<double>> keys(1);
-        deal(h.particles, keys[0]);
-        split_over_ranks(h, world, {false, &keys});
-      }
-      const Particles& H = h.particles;
+      std::vector<std::vector<double>> keys(h.levels.size());
+      for (std::size_t l = 0; l < keys.size(); ++l) deal(h.levels[l].particles, keys[l]);
+      split_over_ranks(h, world, {false, &keys});
+      const Particles& H = all_particles(h);
       same = same && A.x == H.x && A.y == H.y && A.vx == H.vx && A.sxy == H.sxy && A.id == H.id &&
              A.mass == H.mass && A.half_x == H.half_x && A.field == H.field;
       for (std::size_t r = 0; same && r < halo_of(w).blocks.size(); ++r) {
@@ -147,17 +140,17 @@ int main(int argc, char** argv) {
   collect_interface_state(d);  // every interface node from its owner (collective)
   // Interface nodes per rank: the test must split an interface between ranks.
   std::vector<double> owned(std::size_t(world.size()), 0.0);
-  for (const CohesiveInterface& ci : d.interfaces)
-    for (std::size_t q = 0; q < ci.num_nodes(); ++q) owned[std::size_t(world.rank())] += ci.owns(q);
+  for (std::size_t k = 0; k < d.num_interfaces(); ++k)
+    for (std::size_t q = 0; q < d.interface(k).num_nodes(); ++q) owned[std::size_t(world.rank())] += d.interface(k).owns(q);
   world.sum(owned.data(), int(owned.size()));
   int ranks_on_interfaces = 0;
   for (const double o : owned) ranks_on_interfaces += o > 0;
-  const std::vector<double> all = gather_packed(d.particles, world.size());
+  const std::vector<double> all = gather_packed(all_particles(d), world.size());
   int ok = 1;
   if (world.rank() == 0) {
-    State s = make_state(c);  // one process: no halo
+    RunState s = make_run_state(c);  // one process: no halo
     advance(s, steps);
-    const Particles& P = s.particles;
+    const Particles& P = all_particles(s);
     std::map<std::uint32_t, std::size_t> slot;  // id -> serial index
     double vmax = 0.0, smax = 0.0, mass = 0.0, mass_d = 0.0;
     for (std::size_t p = 0; p < P.size(); ++p) {
@@ -187,8 +180,8 @@ int main(int argc, char** argv) {
     // Interfaces: face displacements (relative to the largest jump) and node crack times.
     double du = 0.0, umax = 0.0, dcrack = 0.0;
     long cracked = 0, cracked_d = 0;
-    for (std::size_t k = 0; k < s.interfaces.size(); ++k) {
-      const CohesiveInterface &a = s.interfaces[k], &b = d.interfaces[k];
+    for (std::size_t k = 0; k < s.num_interfaces(); ++k) {
+      const CohesiveInterface &a = s.interface(k), &b = d.interface(k);
       for (std::size_t q = 0; q < a.num_nodes(); ++q) {
         umax = std::max({umax, std::fabs(a.jump_x(q)), std::fabs(a.jump_y(q))});
         du = std::max({du, std::fabs(a.ux_up[q] - b.ux_up[q]), std::fabs(a.uy_up[q] - b.uy_up[q]),
@@ -199,16 +192,16 @@ int main(int argc, char** argv) {
       }
     }
     const double rel_u = umax > 0 ? du / umax : du;
-    if (!s.interfaces.empty())
+    if (s.num_interfaces() > 0)
       fmt::print("interface_nodes_per_rank={}\n", fmt::join(owned, ","));
-    if (!s.interfaces.empty())
+    if (s.num_interfaces() > 0)
       fmt::print("interface_nodes_cracked={}\ninterface_nodes_cracked_distributed={}\n"
                  "face_displacement_difference_relative={:.3e}\ncrack_time_difference={:.3e}\n",
                  cracked, cracked_d, rel_u, dcrack);
     for (const double m : mass_of) mass_d += m;
     const long missing = std::count(seen.begin(), seen.end(), 0);
     const long repeated = long(std::count_if(seen.begin(), seen.end(), [](int k) { return k > 1; }));
-    const double h = std::min(s.grid.x.h, s.grid.y.h);
+    const double h = std::min(s.run_grid().x.h, s.run_grid().y.h);
     const double rel_x = dx / h, rel_v = vmax > 0 ? dv / vmax : dv, rel_s = smax > 0 ? ds / smax : ds;
     fmt::print("ranks={}\nsteps={}\nparticles={}\nparticles_distributed={}\nmissing={}\nrepeated={}\n",
                world.size(), steps, P.size(), n, missing, repeated);

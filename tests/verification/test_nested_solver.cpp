@@ -22,7 +22,7 @@ using namespace rupture;
 
 namespace {
 
-double nested_mean_sxx(const NestedState& n, double x0, double x1) {
+double nested_mean_sxx(const RunState& n, double x0, double x1) {
   double sum = 0;
   int count = 0;
   for (const State& s : n.levels)
@@ -31,7 +31,7 @@ double nested_mean_sxx(const NestedState& n, double x0, double x1) {
   return count ? sum / count : 0.0;
 }
 
-double nested_energy(const NestedState& n) {
+double nested_energy(const RunState& n) {
   double e = 0;
   for (const State& s : n.levels) e += kinetic_energy(s.particles) + strain_energy(s.particles, s.stiffness);
   return e;
@@ -94,8 +94,8 @@ PulseRun pulse(double height, double rise, const std::vector<RefineLevel>& boxes
     }
     return r;
   }
-  NestedState n = make_nested_state(c);
-  r.particles = n.num_particles();
+  RunState n = make_nested_state(c);
+  r.particles = held_particles(n);
   while (n.time < end || !n.synchronized()) {
     step(n);
     if (!n.synchronized()) {
@@ -104,7 +104,7 @@ PulseRun pulse(double height, double rise, const std::vector<RefineLevel>& boxes
       continue;
     }
     record(n.time, nested_mean_sxx(n, 0.0095, 0.0105), nested_mean_sxx(n, 0.0495, 0.0505),
-           nested_energy(n), n.external_work());
+           nested_energy(n), n.external_work);
   }
   r.migrations = n.migrations;
   return r;
@@ -217,8 +217,8 @@ end = 50e-6
 }
 
 // Nodal values (mass, momentum, of any field) on the slaves that condense and distribute skip
-// (NestedState::active_slaves): they must stay zero, else mass would go missing.
-std::size_t nonzero_inactive_slaves(const NestedState& n) {
+// (RunState::active_slaves): they must stay zero, else mass would go missing.
+std::size_t nonzero_inactive_slaves(const RunState& n) {
   std::vector<unsigned char> active(n.grid.slaves.size(), 0);
   for (const std::uint32_t k : n.active_slaves) active[k] = 1;
   std::size_t bad = 0;
@@ -239,9 +239,9 @@ std::size_t nonzero_inactive_slaves(const NestedState& n) {
 void check_rigid_translation(Subcycling subcycling) {
   Case c = moving_block("[0.006, 0.003]", "[0.009, 0.007]", 1);
   c.time.subcycling = subcycling;
-  NestedState n = make_nested_state(c);
+  RunState n = make_nested_state(c);
   double mass0 = 0, px0 = 0;
-  std::size_t count0 = n.num_particles();
+  std::size_t count0 = held_particles(n);
   for (const State& s : n.levels)
     for (std::size_t i = 0; i < s.particles.size(); ++i) mass0 += s.particles.mass[i], px0 += s.particles.mass[i] * s.particles.vx[i];
   while (n.time < 50e-6 || !n.synchronized()) step(n);
@@ -258,9 +258,9 @@ void check_rigid_translation(Subcycling subcycling) {
   }
   std::printf("%zu particles, %ld migrations over %ld steps; |v - v0| <= %.2e m/s, |sigma| <= %.2e Pa, "
               "mass %.3e (rel. change %.1e), momentum x %.1e, y %.1e\n",
-              n.num_particles(), n.migrations, n.step, worst_v, worst_s, mass, (mass - mass0) / mass0,
+              held_particles(n), n.migrations, n.step, worst_v, worst_s, mass, (mass - mass0) / mass0,
               (px - px0) / px0, py / px0);
-  EXPECT_EQ(n.num_particles(), count0);
+  EXPECT_EQ(held_particles(n), count0);
   EXPECT_EQ(ids.size(), count0) << "ids stay unique through migration";
   EXPECT_GT(n.migrations, 100) << "the block does cross the transitions";
   EXPECT_NEAR(mass, mass0, 1e-14 * mass0);
@@ -284,7 +284,7 @@ TEST(NestedSolver, per_level_steps_free_block_translates_rigidly_through_transit
 // particles migrate in lazily (a stencil reaches 1.5 cells) and its fine ones leave on the
 // far side; after every step the skipped nodes must still hold nothing, in any field.
 TEST(NestedSolver, covered_nodes_out_of_reach_stay_empty) {
-  NestedState n = make_nested_state(moving_block("[0.004, 0.002]", "[0.016, 0.008]", 1));
+  RunState n = make_nested_state(moving_block("[0.004, 0.002]", "[0.016, 0.008]", 1));
   ASSERT_LT(n.active_slaves.size(), n.grid.slaves.size()) << "some covered nodes are skipped";
   std::size_t touched = 0;
   while (n.time < 150e-6) {
@@ -316,25 +316,28 @@ TEST(NestedSolver, rejects_what_it_does_not_support_yet) {
 }
 
 // Interfaces on two nested levels (examples/two_planes.toml: the lower plane in a 0.5 mm box,
-// the upper one on the 1 mm level around it): each lies on the level holding it, the run State
-// holds both between steps (in input order, none left on a level), and a step lends each to
-// its level. (Its crack against the uniform grid's: levels_two_planes_match_uniform.)
+// the upper one on the 1 mm level around it): each lies on the level holding it, and stays
+// there; the run reaches them in input order (RunState::interface). (Its crack against the uniform grid's: levels_two_planes_match_uniform.)
 TEST(NestedSolver, interfaces_on_two_levels_step_each_on_its_own) {
   const Case c = load_case(std::string(RUPTURE_SOURCE_DIR) + "/examples/two_planes.toml",
                            {"grid.coarse_cell_size=2e-3", "grid.refinement=\"nested\"",
                             "grid.refine.a={min=[0.0,-0.06],max=[0.075,0.04],level=1}",
                             "grid.refine.b={min=[0.0,-0.06],max=[0.075,0.004],level=2}"});
-  State s = make_state(c);
-  ASSERT_TRUE(s.nested);
-  EXPECT_TRUE(s.nested->holds_interfaces(1) && s.nested->holds_interfaces(2) && !s.nested->holds_interfaces(0));
-  EXPECT_EQ(s.nested->interface_levels, (std::vector<int>{2, 1}));
-  ASSERT_EQ(s.interfaces.size(), 2u);
-  const double y_lower = s.interfaces[0].y0[0], y_upper = s.interfaces[1].y0[0];
+  RunState s = make_run_state(c);
+  ASSERT_TRUE(s.joined());
+  EXPECT_TRUE(s.holds_interfaces(1) && s.holds_interfaces(2) && !s.holds_interfaces(0));
+  EXPECT_EQ(s.interface_levels, (std::vector<int>{2, 1}));
+  ASSERT_EQ(s.num_interfaces(), 2u);
+  const double y_lower = s.interface(0).y0[0], y_upper = s.interface(1).y0[0];
+  EXPECT_EQ(s.levels[2].interfaces.size(), 1u);
+  EXPECT_EQ(s.levels[1].interfaces.size(), 1u);
+  EXPECT_TRUE(s.levels[0].interfaces.empty());
   for (int k = 0; k < 20; ++k) step(s);
-  for (const State& l : s.nested->levels) EXPECT_TRUE(l.interfaces.empty());
-  ASSERT_EQ(s.interfaces.size(), 2u);
-  EXPECT_EQ(s.interfaces[0].y0[0], y_lower) << "input order kept";
-  EXPECT_EQ(s.interfaces[1].y0[0], y_upper);
+  ASSERT_EQ(s.num_interfaces(), 2u);
+  EXPECT_EQ(&s.interface(0), &s.levels[2].interfaces[0]) << "each stays on its level";
+  EXPECT_EQ(&s.interface(1), &s.levels[1].interfaces[0]);
+  EXPECT_EQ(s.interface(0).y0[0], y_lower) << "input order kept";
+  EXPECT_EQ(s.interface(1).y0[0], y_upper);
   EXPECT_TRUE(std::isfinite(s.limits.cohesive_dt) && s.limits.cohesive_dt > 0.0);
 }
 
@@ -344,7 +347,7 @@ TEST(NestedSolver, interfaces_on_two_levels_step_each_on_its_own) {
 // lattice (bc/absorbing.hpp), so no part of the edge is damped twice or not at all.
 TEST(NestedSolver, absorbing_edge_dashpots_add_up_to_the_edge_over_the_levels) {
   const Case c = load_case(std::string(RUPTURE_SOURCE_DIR) + "/tests/inputs/absorbing_on_levels.toml");
-  const NestedState n = make_nested_state(c);
+  const RunState n = make_nested_state(c);
   ASSERT_EQ(n.levels.size(), 3u);
   std::vector<std::vector<char>> slave(n.levels.size());
   for (std::size_t l = 0; l < n.levels.size(); ++l) slave[l].assign(n.grid.levels[l].num_nodes(), 0);
@@ -371,7 +374,7 @@ TEST(NestedSolver, absorbing_edge_dashpots_add_up_to_the_edge_over_the_levels) {
 // A particle made on level 0 (1 mm cells) that reaches level 2 (0.25 mm) through a band of
 // level 1 only two cells wide breaks the GIMP contract: the run stops and says so.
 TEST(NestedSolver, a_particle_two_levels_too_coarse_stops_the_run_with_a_diagnosis) {
-  NestedState n = make_nested_state(moving_block("[0.008, 0.003]", "[0.016, 0.007]", 2));
+  RunState n = make_nested_state(moving_block("[0.008, 0.003]", "[0.016, 0.007]", 2));
   try {
     while (n.time < 50e-6) step(n);
     FAIL() << "no error";
@@ -442,14 +445,16 @@ cell_size = 0.25e-3
     c.time.subcycling = Subcycling::levels;
     EXPECT_THROW(make_nested_state(c), InputError) << "per-level time steps: MUSL only";
   }
-  // make_state gives the nested run: every level's particles merged, the levels stepping.
-  State s = make_state(nested);
-  ASSERT_TRUE(s.nested);
-  EXPECT_EQ(s.particles.size(), s.nested->num_particles());
-  EXPECT_EQ(s.nested->levels.size(), 3u);
+  // make_run_state gives the nested run: every level's particles (merged for the writers),
+  // the levels stepping; make_state is one grid's.
+  RunState s = make_run_state(nested);
+  ASSERT_TRUE(s.joined());
+  EXPECT_EQ(all_particles(s).size(), held_particles(s));
+  EXPECT_EQ(s.levels.size(), 3u);
+  EXPECT_THROW((void)make_state(nested), std::logic_error);
   step(s);
   EXPECT_EQ(s.step, 1);
-  EXPECT_EQ(s.time, s.nested->time);
+  for (const State& l : s.levels) EXPECT_EQ(s.time, l.time);
   for (const auto& [text, words] :
        std::vector<std::pair<std::string, std::vector<std::string>>>{
            {base + "refinement = \"nested\"\n", {"grid.refinement", "nested", "needs grid.coarse_cell_size"}},
@@ -476,35 +481,33 @@ cell_size = 0.25e-3
 void check_nested_checkpoint(const Case& c, int before, int after, bool expect_migrations) {
   const CaseSource source{"title = \"x\"\n", "case.toml", {}};
   RunContext a;
-  a.s = make_state(c);
-  ASSERT_TRUE(a.s.nested);
+  a.s = make_run_state(c);
+  ASSERT_TRUE(a.s.joined());
   for (int k = 0; k < before || !synchronized(a.s); ++k) step(a.s);  // a checkpoint's time
-  const long moved = a.s.nested->migrations;
+  const long moved = a.s.migrations;
   const std::string bytes = checkpoint_bytes(source, a);
   RunContext b;
-  b.s = make_state(c);
+  b.s = make_run_state(c);
   restore_checkpoint_bytes(bytes, "test", b);
   EXPECT_EQ(checkpoint_bytes(source, b), bytes) << "re-written checkpoint differs";
   for (int k = 0; k < after; ++k) step(a.s), step(b.s);
-  merge_level_particles(a.s);
-  merge_level_particles(b.s);
-  const Particles &pa = a.s.particles, &pb = b.s.particles;
+  const Particles &pa = all_particles(a.s), &pb = all_particles(b.s);
   ASSERT_EQ(pa.size(), pb.size());
   const auto same = [](const auto& u, const auto& v) {
     return u.size() == v.size() && std::memcmp(u.data(), v.data(), u.size() * sizeof(u[0])) == 0;
   };
   std::printf("%ld migrations before the checkpoint, %ld after %d more steps\n", moved,
-              a.s.nested->migrations, after);
+              a.s.migrations, after);
   if (expect_migrations) {
     EXPECT_GT(moved, 0) << "particles have changed level before the checkpoint";
-    EXPECT_GT(a.s.nested->migrations, moved) << "and after it";
+    EXPECT_GT(a.s.migrations, moved) << "and after it";
   }
   EXPECT_TRUE(same(pa.id, pb.id) && same(pa.x, pb.x) && same(pa.vy, pb.vy) && same(pa.sxy, pb.sxy));
-  for (std::size_t l = 0; l < a.s.nested->levels.size(); ++l)
-    EXPECT_EQ(a.s.nested->levels[l].particles.size(), b.s.nested->levels[l].particles.size());
-  EXPECT_EQ(a.s.nested->migrations, b.s.nested->migrations);
-  for (std::size_t k = 0; k < a.s.interfaces.size(); ++k)
-    EXPECT_TRUE(same(a.s.interfaces[k].ux_up, b.s.interfaces[k].ux_up));
+  for (std::size_t l = 0; l < a.s.levels.size(); ++l)
+    EXPECT_EQ(a.s.levels[l].particles.size(), b.s.levels[l].particles.size());
+  EXPECT_EQ(a.s.migrations, b.s.migrations);
+  for (std::size_t k = 0; k < a.s.num_interfaces(); ++k)
+    EXPECT_TRUE(same(a.s.interface(k).ux_up, b.s.interface(k).ux_up));
   EXPECT_EQ(a.s.time, b.s.time);
   EXPECT_EQ(a.s.external_work, b.s.external_work);
 }
@@ -564,7 +567,7 @@ end = 1.0
 struct Totals {
   double px = 0, py = 0, scale = 0, energy = 0;
 };
-Totals totals(const NestedState& n) {
+Totals totals(const RunState& n) {
   Totals t;
   for (const State& s : n.levels) {
     const Particles& P = s.particles;
@@ -585,7 +588,7 @@ struct FreeRun {
   long steps = 0;
 };
 FreeRun free_run(Subcycling subcycling, long steps) {
-  NestedState n = make_nested_state(colliding_blocks(subcycling));
+  RunState n = make_nested_state(colliding_blocks(subcycling));
   const Totals t0 = totals(n);
   FreeRun r;
   while (n.step < steps || !n.synchronized()) {
@@ -667,7 +670,7 @@ velocity = [120.0, 0.0]
 end = 25e-6
 )");
   ASSERT_EQ(c.field_names.size(), 4u);
-  NestedState n = make_nested_state(c);
+  RunState n = make_nested_state(c);
   double mass0 = 0, px0 = 0;
   for (const State& s : n.levels)
     for (std::size_t i = 0; i < s.particles.size(); ++i)
