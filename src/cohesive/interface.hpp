@@ -103,6 +103,7 @@ struct CohesiveInterface {
   std::vector<double> gp_tn, gp_tt;        // traction at each Gauss point, Pa
   std::vector<std::uint8_t> gp_separated;  // irreversible separation flags
   std::vector<double> gp_damage, gp_slip;  // law history per Gauss point (GaussHistory)
+  std::vector<double> gp_state, gp_rate;   // rate-and-state history (GaussHistory; else 0)
   // Which law each Gauss point and node uses: 0 = spec.law, k = spec.stretches[k - 1].law
   // (derived from the spec, not state; empty when the interface has no stretches).
   std::vector<std::uint16_t> gp_law, node_law;
@@ -124,6 +125,7 @@ struct CohesiveInterface {
   // run of steps began, m.
   std::vector<double> last_increment_n, last_increment_t, streak_base;
   std::vector<std::int32_t> reversal_streak;
+  double time = 0.0;  // s, the time of the tractions (the last evaluation)
   double work = 0.0;  // work done on the interface by the bodies so far, J/m (stored + dissipated)
   // Distributed runs (parallel/halo.hpp): per node, 1 where this rank owns it (moves its faces,
   // evaluates the segments that touch it, loads the grid with its force) and where it knows it

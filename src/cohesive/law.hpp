@@ -56,6 +56,7 @@
 #include "cohesive/bilinear.hpp"
 #include "cohesive/contact.hpp"
 #include "cohesive/law_types.hpp"
+#include "cohesive/rate_state.hpp"
 #include "cohesive/slip_weakening.hpp"
 #include "cohesive/xu_needleman.hpp"
 
@@ -79,11 +80,12 @@ concept TractionLaw = requires(const L& law, double d, GaussHistory& h, const Ga
   { L::kName } -> std::convertible_to<const char*>;
 };
 
-using CohesiveLaw = std::variant<XuNeedleman, BilinearLaw, SlipWeakening>;
+using CohesiveLaw = std::variant<XuNeedleman, BilinearLaw, SlipWeakening, RateStateFriction>;
 
 static_assert(TractionLaw<XuNeedleman>);
 static_assert(TractionLaw<BilinearLaw>);
 static_assert(TractionLaw<SlipWeakening>);
+static_assert(TractionLaw<RateStateFriction>);
 
 // The name the input file uses for the law.
 inline const char* law_name(const CohesiveLaw& law) {

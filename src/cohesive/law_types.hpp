@@ -16,11 +16,21 @@ namespace rupture {
 //           separated point hands over to contact. SlipWeakening: the same (stick spring).
 //   jump_t  the tangential jump at the previous step, m: not stored apart but loaded by the
 //           interface loop from its gp_dt (SlipWeakening measures its slip path with it).
-// SlipWeakening keeps its slip path D (m, never decreases) in `damage`.
+//   state   RateStateFriction: its state psi minus the initial state (dimensionless; 0 =
+//           pristine). The other laws leave it alone.
+//   rate    RateStateFriction: its slip rate V minus the initial rate, m/s (signed along t).
+// SlipWeakening and RateStateFriction keep their slip path D (m, never decreases) in `damage`.
+// The loop also loads what the point's law may ask (and no law stores): where the point lies
+// (x, y: its reference position, m), the time of the jumps (s) and the step that led there
+// (duration, s; 0 at set-up).
 struct GaussHistory {
   double damage = 0.0;
   double slip = 0.0;
   double jump_t = 0.0;
+  double state = 0.0;
+  double rate = 0.0;
+  double x = 0.0, y = 0.0;
+  double time = 0.0, duration = 0.0;
 };
 
 // What a law returns at one Gauss point.

@@ -103,7 +103,10 @@ FrontSummary summarize_front(const std::vector<double>& s, const std::vector<dou
   return r;
 }
 
-bool is_fault(const CohesiveInterface& c) { return std::holds_alternative<SlipWeakening>(c.spec.law); }
+bool is_fault(const CohesiveInterface& c) {
+  return std::holds_alternative<SlipWeakening>(c.spec.law) ||
+         std::holds_alternative<RateStateFriction>(c.spec.law);
+}
 
 FrontSummary summarize_front(const CohesiveInterface& c, double cell_size, double dt,
                              double c_max, const WaveSpeeds& w) {
@@ -111,7 +114,9 @@ FrontSummary summarize_front(const CohesiveInterface& c, double cell_size, doubl
   std::vector<double> s(c.s0.begin(), c.s0.begin() + std::ptrdiff_t(n));
   std::vector<double> t(c.node_rupture_time.begin(), c.node_rupture_time.begin() + std::ptrdiff_t(n));
   std::vector<unsigned char> patch(n, 0);
-  if (is_fault(c))
+  // Slip weakening: the nodes overstressed at t = 0. Rate-and-state has no static strength:
+  // its patch is the first node to rupture (summarize_front's fallback).
+  if (std::holds_alternative<SlipWeakening>(c.spec.law))
     for (std::size_t k = 0; k < n; ++k) {
       const SlipWeakening& f = std::get<SlipWeakening>(node_law_variant(c, k));
       patch[k] = std::fabs(f.tt0) > f.static_strength() ? 1 : 0;  // overstressed at t = 0

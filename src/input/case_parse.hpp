@@ -41,6 +41,8 @@ void parse_absorbing(Section& top, Case& c);  // after parse_boundary
 void parse_stations(Section& top, Case& c);   // after parse_interfaces
 // law = "slip_weakening" keys of an [interface] table into is.law, its stretches (input/parse_fault.cpp).
 void parse_fault_law(Section& f, const Case& c, InterfaceSpec& is);
+// law = "rate_state" keys of an [interface] table into is.law, its stretches (input/parse_fault.cpp).
+void parse_rate_state_law(Section& f, const Case& c, InterfaceSpec& is);
 // The contact of separated points (cohesive/contact.hpp) from the keys contact, friction,
 // contact_stiffness and contact_tangential_stiffness into is.contact and is.contact_law
 // (input/parse_interfaces.cpp), for a law's parser (input/law_registry.hpp). default_stiffness:

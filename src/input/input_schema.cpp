@@ -309,6 +309,8 @@ std::vector<KeyDoc> build_schema() {
   const std::string horizontal = "the horizontal form (y, start, end)";
   const std::string cohesive = "law = xu_needleman | bilinear";
   const std::string friction = "law = slip_weakening";
+  const std::string rate_state = "law = rate_state";
+  const std::string faults = "law = slip_weakening | rate_state";
   const std::vector<KeyDoc> interfaces = {
       {"interface", "named tables", "", "none", "",
        "Cohesive interfaces, one [interface.NAME] table each, joining two bodies of different "
@@ -411,20 +413,72 @@ std::vector<KeyDoc> build_schema() {
        friction},
       {"interface.*.dynamic_friction", "number", "", "required", "[0, static_friction]",
        "dynamic friction coefficient mu_d, reached after a slip of dc", "0.525", friction},
-      {"interface.*.dc", "number", "m", "required", "> 0", "slip-weakening distance Dc", "0.4",
-       friction},
+      {"interface.*.dc", "number", "m", "required", "> 0",
+       "Dc: the slip-weakening distance (slip_weakening), the state evolution slip (rate_state)",
+       "0.4", faults},
       {"interface.*.cohesion", "number", "Pa", "0.0", ">= 0", "cohesion added to the strength",
        "0.0", friction},
-      {"interface.*.initial_traction", "[normal, shear]", "Pa", "[0.0, 0.0]", "finite",
+      {"interface.*.initial_traction", "[normal, shear]", "Pa",
+       "[0.0, 0.0] (required with law = rate_state)",
+       "finite (rate_state: normal < 0, shear != 0, balanced by a finite state)",
        "initial fault traction (traction-offset form): normal (tension positive, < 0 "
        "compresses) and shear (> 0 drives the upper body along the tangent, +x on a line drawn "
        "in +x)",
-       "[-120e6, 70e6]", friction},
+       "[-120e6, 70e6]", faults},
       {"interface.*.normal_stiffness", "number", "Pa/m",
        "depends: M / h, the stiffer body's P-wave modulus over the cell size", "> 0",
-       "penalty against interpenetration kn", "1e9", friction},
+       "penalty against interpenetration kn", "1e9", faults},
       {"interface.*.stick_stiffness", "number", "Pa/m", "depends: M / h, as normal_stiffness",
-       "> 0", "tangential spring kt of stuck faces", "1e9", friction},
+       "> 0", "tangential spring kt of stuck faces (rate_state: of the faces, whose slip rate is "
+       "solved against it)",
+       "1e9", faults},
+      {"interface.*.evolution", "string", "", "\"aging\"", "aging, slip, flash_heating",
+       "the state evolution law: aging (d theta/dt = 1 - V theta/Dc), slip (d psi/dt = -(V/Dc) "
+       "(psi - psi_ss)), flash_heating (the slip law with strong rate weakening, TPV103)",
+       "\"aging\"", rate_state},
+      {"interface.*.a", "number", "", "required", "> 0",
+       "direct effect a of f = a asinh[V/(2 V0) exp(psi/a)]", "0.008", rate_state},
+      {"interface.*.b", "number", "", "required", "> 0", "evolution effect b", "0.012", rate_state},
+      {"interface.*.reference_slip_rate", "number", "m/s", "1e-6", "> 0", "reference slip rate V0",
+       "1e-6", rate_state},
+      {"interface.*.reference_friction", "number", "", "0.6", ">= 0",
+       "steady-state friction f0 at V0", "0.6", rate_state},
+      {"interface.*.weakened_friction", "number", "", "required with evolution = flash_heating",
+       ">= 0", "fully weakened friction f_w", "0.2", rate_state},
+      {"interface.*.weakening_slip_rate", "number", "m/s",
+       "required with evolution = flash_heating", "> 0", "weakening slip rate V_w", "0.1",
+       rate_state},
+      {"interface.*.initial_slip_rate", "number", "m/s", "required", "> 0",
+       "initial slip rate V_ini: the initial state balances initial_traction at it, psi = a "
+       "ln[(2 V0/V_ini) sinh(|shear|/(a x compression))]",
+       "1e-12", rate_state},
+      {"interface.*.nucleation_stress", "number", "Pa", "0.0", "finite",
+       "nucleation shear stress dtau added to the prestress as dtau F(r) G(t)", "25e6",
+       rate_state},
+      {"interface.*.nucleation_centre", "[x, y]", "m", "[0.0, 0.0]", "finite; with nucleation_stress",
+       "centre of the nucleation stress (r is the distance from it)", "[0.0, 0.0]", rate_state},
+      {"interface.*.nucleation_radius", "number", "m", "0.0", ">= 0; with nucleation_stress",
+       "R of F(r) = exp(r^2/(r^2 - R^2)) for r < R, else 0 (0: F = 1 on the whole fault)",
+       "3000.0", rate_state},
+      {"interface.*.taper", "table", "", "none", "",
+       "the smooth taper of TPV101-103: within half_width of centre the fault's a, b, dc, "
+       "weakening_slip_rate; beyond half_width + width this table's; between, B(r) = 0.5 [1 + "
+       "tanh(w/(r - W - w) + w/(r - W))] blends them (docs/faults.md)",
+       "", rate_state},
+      {"interface.*.taper.centre", "[x, y]", "m", "required", "finite",
+       "the point r is measured from (the hypocentre)", "[0.0, 0.0]"},
+      {"interface.*.taper.half_width", "number", "m", "required", ">= 0",
+       "W: the untapered distance from the centre", "15000.0"},
+      {"interface.*.taper.width", "number", "m", "required", "> 0", "w: the taper's width",
+       "3000.0"},
+      {"interface.*.taper.a", "number", "", "not tapered", "> 0", "a beyond W + w", "0.016"},
+      {"interface.*.taper.b", "number", "", "not tapered", "> 0", "b beyond W + w", "0.012"},
+      {"interface.*.taper.dc", "number", "m", "not tapered", "> 0", "Dc beyond W + w", "0.02"},
+      {"interface.*.taper.weakening_slip_rate", "number", "m/s", "not tapered",
+       "> 0; with evolution = flash_heating", "V_w beyond W + w", "1.0"},
+      {"interface.*.nucleation_time", "number", "s", "0.0", ">= 0; with nucleation_stress",
+       "T of G(t) = exp((t - T)^2/(t (t - 2T))) for t < T, else 1 (0: a step at t = 0+)", "1.0",
+       rate_state},
       {"interface.*.overstressed", "boolean", "", "false", "true, false",
        "allow an initial shear traction above the static strength on the whole fault (it all "
        "slides at once, as in the 1D slip-weakening test); without it that is an input error",
@@ -436,9 +490,11 @@ std::vector<KeyDoc> build_schema() {
       {"interface.*.stretches", "array of tables", "", "none", "",
        "stretches of the fault with their own parameters (a nucleation patch, a stress patch, a "
        "barrier): each [[interface.NAME.stretches]] has from, to and any of static_friction, "
-       "dynamic_friction, dc, cohesion, initial_traction, normal_stiffness, stick_stiffness; "
-       "later stretches override earlier ones",
-       "", friction},
+       "dynamic_friction, dc, cohesion, initial_traction, normal_stiffness, stick_stiffness "
+       "(rate_state: a, b, dc, reference_friction, weakened_friction, weakening_slip_rate, "
+       "initial_traction, normal_stiffness, stick_stiffness); later stretches override earlier "
+       "ones",
+       "", faults},
       {"interface.*.stretches[].from", "[x, y]", "m", "required",
        "on the interface's line (within half a cell)", "one end of the stretch",
        "[-1500.0, 0.0]"},
@@ -449,6 +505,16 @@ std::vector<KeyDoc> build_schema() {
       {"interface.*.stretches[].dynamic_friction", "number", "", "the interface's",
        "[0, static_friction]", "mu_d here", "0.525"},
       {"interface.*.stretches[].dc", "number", "m", "the interface's", "> 0", "Dc here", "0.4"},
+      {"interface.*.stretches[].a", "number", "", "the interface's", "> 0",
+       "rate_state: a here (a velocity-strengthening barrier: a > b)", "0.016"},
+      {"interface.*.stretches[].b", "number", "", "the interface's", "> 0", "rate_state: b here",
+       "0.012"},
+      {"interface.*.stretches[].reference_friction", "number", "", "the interface's", ">= 0",
+       "rate_state: f0 here", "0.6"},
+      {"interface.*.stretches[].weakened_friction", "number", "", "the interface's", ">= 0",
+       "rate_state: f_w here", "0.2"},
+      {"interface.*.stretches[].weakening_slip_rate", "number", "m/s", "the interface's", "> 0",
+       "rate_state: V_w here", "0.1"},
       {"interface.*.stretches[].cohesion", "number", "Pa", "the interface's", ">= 0",
        "cohesion here", "0.0"},
       {"interface.*.stretches[].initial_traction", "[normal, shear]", "Pa", "the interface's",

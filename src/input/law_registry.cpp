@@ -14,6 +14,7 @@ const std::vector<LawEntry>& law_registry() {
       bilinear_entry(),
       contact_entry(),
       slip_weakening_entry(),
+      rate_state_entry(),
   };
   return table;
 }

@@ -90,5 +90,6 @@ LawEntry xu_needleman_entry();    // input/law_xu_needleman.cpp
 LawEntry bilinear_entry();        // input/law_bilinear.cpp
 LawEntry contact_entry();         // input/law_contact.cpp
 LawEntry slip_weakening_entry();  // input/law_slip_weakening.cpp
+LawEntry rate_state_entry();      // input/law_rate_state.cpp
 
 }  // namespace rupture

@@ -1,10 +1,14 @@
 // rupture/input/parse_fault.cpp
-// law = "slip_weakening" in an [interface] table: the fault's friction and initial traction, its
-// stretches (nucleation patch, stress patches, barriers) and the check that some of it holds
-// (docs/faults.md).
+// The fault laws of an [interface] table, law = "slip_weakening" and law = "rate_state": the
+// fault's friction and initial traction, its stretches (nucleation patch, stress patches,
+// barriers, the rate-and-state parameters along strike), the slip-weakening check that some of
+// it holds and the rate-and-state initial state and nucleation stress (docs/faults.md).
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <string>
+#include <type_traits>
+#include <vector>
 #include <cmath>
 #include <utility>
 #include <variant>
@@ -18,6 +22,10 @@
 namespace rupture {
 
 namespace {
+
+bool has(const std::vector<std::string>& keys, const std::string& k) {
+  return std::find(keys.begin(), keys.end(), k) != keys.end();
+}
 
 // The slip-weakening keys of table f on top of `law` (an interface, or a stretch overriding
 // its interface's values).
@@ -48,9 +56,22 @@ double stretch_end(Section& f, const std::string& key, const Polyline& line, con
   return q.s;
 }
 
+// The stretch keys each fault law reads (a stretch of the other law's keys is refused, not
+// ignored).
+const std::vector<std::string>& stretch_keys(bool rate_state) {
+  static const std::vector<std::string> sw = {"static_friction", "dynamic_friction", "dc", "cohesion",
+                                              "initial_traction", "normal_stiffness", "stick_stiffness"};
+  static const std::vector<std::string> rs = {"a", "b", "dc", "reference_friction", "weakened_friction",
+                                              "weakening_slip_rate", "initial_traction",
+                                              "normal_stiffness", "stick_stiffness"};
+  return rate_state ? rs : sw;
+}
+
 // interface.NAME.stretches: an array of tables, each a stretch [from, to] of the line with
-// its own law parameters (those not given are the interface's).
-void parse_stretches(Section& f, InterfaceSpec& is, const Case& c) {
+// its own law parameters (those not given are the interface's), read by `read` on top of a
+// copy of the interface's law.
+template <class Law, class Read>
+void parse_stretches(Section& f, InterfaceSpec& is, const Case& c, Read read) {
   const toml::node* n = f.node("stretches");
   if (!n) return;
   const toml::array* a = n->as_array();
@@ -59,17 +80,22 @@ void parse_stretches(Section& f, InterfaceSpec& is, const Case& c) {
          "must be an array of tables [[" + f.key("stretches") + "]], each with from, to and "
          "the law parameters that differ there");
   const Polyline line = is.geometry();
+  constexpr bool rate_state = std::is_same_v<Law, RateStateFriction>;
   for (std::size_t k = 0; k < a->size(); ++k) {
     Section st(*(*a)[k].as_table(), fmt::format("{}[{}]", f.key("stretches"), k),
                allowed_keys("interface.*.stretches[]"));
+    for (const std::string& key : stretch_keys(!rate_state))
+      if (st.has(key) && !has(stretch_keys(rate_state), key))
+        fail(st.key(key), show(*st.node(key)),
+             fmt::format("not a parameter of law = \"{}\"", Law::kName));
     LawStretch ls;
     ls.from = stretch_end(st, "from", line, c);
     ls.to = stretch_end(st, "to", line, c);
     if (ls.to < ls.from) std::swap(ls.from, ls.to);
     if (!(ls.to > ls.from))
       fail(st.key("to"), show(*st.node("to")), "must differ from `from`: a stretch has a length");
-    SlipWeakening law = std::get<SlipWeakening>(is.law);
-    read_slip_weakening(st, law);
+    Law law = std::get<Law>(is.law);
+    read(st, law);
     ls.law = law;
     is.stretches.push_back(ls);
   }
@@ -110,8 +136,72 @@ void parse_fault_law(Section& f, const Case& c, InterfaceSpec& is) {
   law.normal_stiffness = law.stick_stiffness = cell_penalty_stiffness(c, is);  // kn = kt = M / h
   read_slip_weakening(f, law);
   is.law = law;
-  parse_stretches(f, is, c);
+  parse_stretches<SlipWeakening>(f, is, c, read_slip_weakening);
   check_prestress(f, is);
+}
+
+namespace {
+
+// The rate-and-state keys of table f on top of `law` (an interface, or a stretch overriding its
+// interface's values); then the initial state from the balance of the initial traction.
+void read_rate_state(Section& f, RateStateFriction& law) {
+  law.a = f.number("a", law.a);
+  law.b = f.number("b", law.b);
+  law.dc = f.number("dc", law.dc);
+  law.f0 = f.number("reference_friction", law.f0);
+  law.fw = f.number("weakened_friction", law.fw);
+  law.vw = f.number("weakening_slip_rate", law.vw);
+  law.normal_stiffness = f.number("normal_stiffness", law.normal_stiffness);
+  law.stick_stiffness = f.number("stick_stiffness", law.stick_stiffness);
+  double t0[2] = {law.tn0, law.tt0};
+  f.pair("initial_traction", t0, false);
+  law.tn0 = t0[0], law.tt0 = t0[1];
+  law.initialize_state();
+  fail_on_invalid(f, law.validate(), {});  // its messages name the input keys (taper.*: f's)
+}
+
+}  // namespace
+
+// law = "rate_state": rate-and-state friction on a prestressed fault (cohesive/rate_state.hpp).
+void parse_rate_state_law(Section& f, const Case& c, InterfaceSpec& is) {
+  RateStateFriction law;
+  for (const char* k : {"a", "b", "dc", "initial_slip_rate", "initial_traction"})
+    if (!f.has(k)) fail(f.key(k), "(missing)", "required with law = \"rate_state\"");
+  const std::string evolution = f.string("evolution", "aging", {"aging", "slip", "flash_heating"});
+  law.evolution = evolution == "slip"    ? StateEvolution::slip
+                  : evolution == "aging" ? StateEvolution::aging
+                                         : StateEvolution::flash_heating;
+  if (law.evolution == StateEvolution::flash_heating)
+    for (const char* k : {"weakened_friction", "weakening_slip_rate"})
+      if (!f.has(k)) fail(f.key(k), "(missing)", "required with evolution = \"flash_heating\"");
+  law.v0 = f.number("reference_slip_rate", law.v0);
+  law.v_init = f.number("initial_slip_rate");
+  law.nucleation_stress = f.number("nucleation_stress", 0.0);
+  double centre[2] = {0.0, 0.0};
+  f.pair("nucleation_centre", centre, false);
+  law.nucleation_x = centre[0], law.nucleation_y = centre[1];
+  law.nucleation_radius = f.number("nucleation_radius", 0.0);
+  law.nucleation_time = f.number("nucleation_time", 0.0);
+  if (law.nucleation_stress == 0.0)
+    for (const char* k : {"nucleation_centre", "nucleation_radius", "nucleation_time"})
+      if (f.has(k))
+        fail(f.key(k), show(*f.node(k)), "needs nucleation_stress (the stress it shapes)");
+  law.normal_stiffness = law.stick_stiffness = cell_penalty_stiffness(c, is);  // kn = kt = M / h
+  if (f.has("taper")) {  // [interface.NAME.taper]: TPV101-103's smooth taper
+    Section t = f.table("taper", false, allowed_keys("interface.*.taper"));
+    RateStateTaper& tp = law.taper;
+    tp.on = true;
+    double at[2] = {0.0, 0.0};
+    t.pair("centre", at, true);
+    tp.x = at[0], tp.y = at[1];
+    tp.half_width = t.number("half_width");
+    tp.width = t.number("width");
+    tp.a = t.number("a", 0.0), tp.b = t.number("b", 0.0), tp.dc = t.number("dc", 0.0);
+    tp.vw = t.number("weakening_slip_rate", 0.0);
+  }
+  read_rate_state(f, law);
+  is.law = law;
+  parse_stretches<RateStateFriction>(f, is, c, read_rate_state);
 }
 
 }  // namespace rupture

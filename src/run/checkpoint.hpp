@@ -16,7 +16,7 @@
 
 namespace rupture {
 
-inline constexpr int kCheckpointVersion = 11;  // 2: State::strain_work; 3: Mach readings;
+inline constexpr int kCheckpointVersion = 12;  // 2: State::strain_work; 3: Mach readings;
                                               // 4: interface rupture times, peak slip rates;
                                               // 5: nested levels; 6: particles store the
                                               // stress only (no strain, szz, volume);
@@ -26,7 +26,9 @@ inline constexpr int kCheckpointVersion = 11;  // 2: State::strain_work; 3: Mach
                                               // 10: the run's identity (run_id);
                                               // 11: refined grids default to nested levels
                                               // with per-level steps (a stored case without
-                                              // grid.refinement meant "graded" before)
+                                              // grid.refinement meant "graded" before);
+                                              // 12: rate-and-state history (gp_state,
+                                              // gp_rate) and the interfaces' time
 
 std::string checkpoint_path(const std::string& dir);  // DIR/checkpoint/checkpoint.bin
 

@@ -104,7 +104,9 @@ void evaluate_with(CohesiveInterface& c, const Law& law, double t, double t_befo
       const double jx = Na * jx_a + Nb * jx_b, jy = Na * jy_a + Nb * jy_b;  // linear jump
       const double dn = nx * jx + ny * jy, dt = tx * jx + ty * jy;          // in the segment frame
       const Law& L = stretches ? law_of(c, law, c.gp_law[i]) : law;  // a stretch's own law
-      GaussHistory h{c.gp_damage[i], c.gp_slip[i], c.gp_dt[i]};
+      GaussHistory h{c.gp_damage[i], c.gp_slip[i], c.gp_dt[i], c.gp_state[i], c.gp_rate[i]};
+      h.x = Na * c.x0[s] + Nb * c.x0[e], h.y = Na * c.y0[s] + Nb * c.y0[e];  // reference position
+      h.time = t, h.duration = t - t_before;
       LawResponse r{0.0, 0.0, 0.0};
       // Xu-Needleman: separated at |jump| >= 5 delta_t (SPEC §3); the other laws never here.
       if (!c.gp_separated[i] && L.separates_at(dn, dt, c.spec.separation_factor))
@@ -115,7 +117,7 @@ void evaluate_with(CohesiveInterface& c, const Law& law, double t, double t_befo
       } else if (contact) {
         r = contact_law.respond(dn, dt, h);
       }
-      c.gp_damage[i] = h.damage, c.gp_slip[i] = h.slip;
+      c.gp_damage[i] = h.damage, c.gp_slip[i] = h.slip, c.gp_state[i] = h.state, c.gp_rate[i] = h.rate;
       const double tn = r.tn, tt = r.tt, k = r.stiffness;
       // Work of the tractions over the step, trapezoidal in time (E14).
       const double jw = kW[g] * half;
@@ -132,6 +134,7 @@ void evaluate_with(CohesiveInterface& c, const Law& law, double t, double t_befo
     c.seg_fb_x[s] = -(fb_n * nx + fb_t * tx), c.seg_fb_y[s] = -(fb_n * ny + fb_t * ty);
   }
   c.work += work;
+  c.time = t;
   const long nn = long(c.num_nodes());
   const std::size_t last_seg = c.num_segments() - 1;
 #pragma omp parallel for schedule(static)
