@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <variant>
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
@@ -40,6 +41,21 @@ void check_energy(RunState& s, const EnergySample& e, double& peak_work) {
   const double supplied = e.initial + peak_work + released;
   const double mechanical = e.kinetic + e.strain;
   if (mechanical <= 2.0 * supplied || mechanical <= 0.0) return;
+  // A prestressed fault creeping at its initial rate (rate-and-state: 1e-16 m/s in TPV103)
+  // moves the bulk at that rate: energies of 1e-22 J/m, where the trapezoidal work and the
+  // particles' energy differ by round-off alone. Below 1e-12 of the faults' own energy scale
+  // (their prestress held by their stick springs, |T0|^2 / k L, J/m) nothing is resolved.
+  double fault_scale = 0.0;
+  for (std::size_t k = 0; k < s.num_interfaces(); ++k) {
+    const CohesiveInterface& c = s.interface(k);
+    std::visit(
+        [&](const auto& l) {
+          if constexpr (requires { l.tt0; l.tn0; })
+            fault_scale += (l.tt0 * l.tt0 + l.tn0 * l.tn0) / l.initial_stiffness() * c.length();
+        },
+        c.spec.law);
+  }
+  if (mechanical <= 1e-12 * fault_scale) return;
   const Particles& P = all_particles(s);
   std::size_t fastest = 0;
   double vmax = -1.0;
