@@ -215,3 +215,29 @@ TEST(RateStateLaw, bad_parameters_are_named) {
             }).find("weakening_slip_rate"),
             std::string::npos);
 }
+
+TEST(RateStateLaw, taper_blends_the_parameters_and_keeps_the_initial_balance) {
+  // TPV101: a = 0.008 within 15 km, 0.016 beyond 18 km, B(x) = 0.5 [1 + tanh(w/(x - W - w) +
+  // w/(x - W))] between (W = 15 km, w = 3 km).
+  RateStateFriction f = law();
+  f.taper.on = true, f.taper.half_width = 15e3, f.taper.width = 3e3, f.taper.a = 0.016;
+  EXPECT_EQ(f.validate(), "");
+  EXPECT_EQ(f.taper.weight(14e3, 0.0), 1.0);
+  EXPECT_EQ(f.taper.weight(18e3, 0.0), 0.0);
+  EXPECT_NEAR(f.taper.weight(16.5e3, 0.0), 0.5, 1e-15);  // tanh(-2 + 2) = 0
+  const double x = 16e3, B = 0.5 * (1.0 + std::tanh(3e3 / (x - 18e3) + 3e3 / (x - 15e3)));
+  EXPECT_NEAR(f.taper.weight(-x, 0.0), B, 1e-15);  // symmetric about the centre
+  for (double px : {0.0, 15.5e3, 16e3, 17.9e3, 25e3}) {
+    const RateStateFriction l = f.at(px, 0.0);
+    const double w = f.taper.weight(px, 0.0);
+    EXPECT_NEAR(l.a, 0.016 + (0.008 - 0.016) * w, 1e-15) << px;
+    EXPECT_EQ(l.b, f.b);  // untapered
+    EXPECT_NEAR(120e6 * l.friction(l.v_init, l.psi_init), 75e6, 1e-6) << "balanced at " << px;
+    // the response at the point is the local law's
+    GaussHistory h1, h2;
+    h1.x = h2.x = px, h1.duration = h2.duration = 5e-3;
+    EXPECT_EQ(f.respond(0.0, 1e-3, h1).tt, l.respond(0.0, 1e-3, h2).tt);
+  }
+  f.taper.width = 0.0;
+  EXPECT_NE(f.validate().find("taper.width"), std::string::npos);
+}
