@@ -16,11 +16,7 @@ namespace rupture {
 namespace {
 
 void parse(Section& f, InterfaceSpec& is, const Case& c) {
-  for (const char* k : {"contact", "friction", "contact_stiffness", "contact_tangential_stiffness"})
-    if (f.has(k))
-      fail(f.key(k), show(*f.node(k)),
-           "not with law = \"rate_state\": a fault is always in frictional contact (use "
-           "normal_stiffness, stick_stiffness)");
+  refuse_contact_keys(f, RateStateFriction::kName);
   parse_rate_state_law(f, c, is);
 }
 
@@ -51,16 +47,9 @@ std::string describe(const InterfaceSpec& is) {
 // The total traction T0(t) + dT of the Gauss points next to the node, averaged (T0(t): the
 // initial shear plus the nucleation stress at the interface's time).
 CohesiveTraction node_traction(const CohesiveInterface& c, std::size_t k) {
-  const std::size_t G = std::size_t(CohesiveInterface::kGauss);
   const RateStateFriction& f = std::get<RateStateFriction>(node_law_variant(c, k));
-  double tn = 0.0, tt = 0.0;
-  int count = 0;
-  if (k < c.num_segments()) tn += c.gp_tn[k * G], tt += c.gp_tt[k * G], ++count;
-  if (k > 0 || c.closed) {
-    const std::size_t prev = k > 0 ? k - 1 : c.num_segments() - 1;
-    tn += c.gp_tn[prev * G + G - 1], tt += c.gp_tt[prev * G + G - 1], ++count;
-  }
-  return {f.tn0 + tn / count, f.shear_prestress(c.x0[k], c.y0[k], c.time) + tt / count};
+  const CohesiveTraction d = mean_gauss_traction(c, k);
+  return {f.tn0 + d.normal, f.shear_prestress(c.x0[k], c.y0[k], c.time) + d.tangential};
 }
 
 }  // namespace

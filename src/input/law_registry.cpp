@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "cohesive/interface.hpp"
+#include "input/case_parse.hpp"
 
 namespace rupture {
 
@@ -51,6 +52,26 @@ const LawEntry& law_entry(const CohesiveLaw& law) {
 
 const LawEntry& law_entry(const InterfaceSpec& is) {
   return entry_of_alternative(is.precracked ? -1 : int(is.law.index()));
+}
+
+CohesiveTraction mean_gauss_traction(const CohesiveInterface& c, std::size_t k) {
+  const std::size_t G = std::size_t(CohesiveInterface::kGauss);
+  double tn = 0.0, tt = 0.0;
+  int count = 0;
+  if (k < c.num_segments()) tn += c.gp_tn[k * G], tt += c.gp_tt[k * G], ++count;
+  if (k > 0 || c.closed) {
+    const std::size_t prev = k > 0 ? k - 1 : c.num_segments() - 1;
+    tn += c.gp_tn[prev * G + G - 1], tt += c.gp_tt[prev * G + G - 1], ++count;
+  }
+  return {tn / count, tt / count};
+}
+
+void refuse_contact_keys(Section& f, const std::string& law) {
+  for (const char* k : {"contact", "friction", "contact_stiffness", "contact_tangential_stiffness"})
+    if (f.has(k))
+      fail(f.key(k), show(*f.node(k)),
+           "not with law = \"" + law + "\": a fault is always in frictional contact (use "
+           "normal_stiffness, stick_stiffness)");
 }
 
 CohesiveTraction traction_at_node_jump(const CohesiveInterface& c, std::size_t k) {

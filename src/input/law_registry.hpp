@@ -85,6 +85,14 @@ const LawEntry& law_entry(const InterfaceSpec& is);
 // with the largest damage of the Gauss points around it; 0 once the node has cracked.
 CohesiveTraction traction_at_node_jump(const CohesiveInterface& c, std::size_t k);
 
+// The fault laws' shared parts (input/law_registry.cpp). The mean traction change dT of the
+// Gauss points next to node k (the first of the segment starting there, the last of the one
+// ending there), Pa: a fault adds its prestress to report the total.
+CohesiveTraction mean_gauss_traction(const CohesiveInterface& c, std::size_t k);
+// A fault is always in frictional contact: the contact keys of separated points are an input
+// error with law = "<law>".
+void refuse_contact_keys(Section& f, const std::string& law);
+
 // Each law's entry, defined in its own file.
 LawEntry xu_needleman_entry();    // input/law_xu_needleman.cpp
 LawEntry bilinear_entry();        // input/law_bilinear.cpp

@@ -18,11 +18,7 @@ namespace {
 // A fault is always in frictional contact: the contact keys of separated points are refused;
 // the friction, the initial traction and the stretches come from input/parse_fault.cpp.
 void parse(Section& f, InterfaceSpec& is, const Case& c) {
-  for (const char* k : {"contact", "friction", "contact_stiffness", "contact_tangential_stiffness"})
-    if (f.has(k))
-      fail(f.key(k), show(*f.node(k)),
-           "not with law = \"slip_weakening\": a fault is always in frictional contact (use "
-           "normal_stiffness, stick_stiffness)");
+  refuse_contact_keys(f, SlipWeakening::kName);
   parse_fault_law(f, c, is);
 }
 
@@ -43,16 +39,9 @@ std::string describe(const InterfaceSpec& is) {
 // Friction is history-dependent: the total traction T0 + dT of the Gauss points next to the
 // node (the segments' first and last), averaged.
 CohesiveTraction node_traction(const CohesiveInterface& c, std::size_t k) {
-  const std::size_t G = std::size_t(CohesiveInterface::kGauss);
   const SlipWeakening& f = std::get<SlipWeakening>(node_law_variant(c, k));
-  double tn = 0.0, tt = 0.0;
-  int count = 0;
-  if (k < c.num_segments()) tn += c.gp_tn[k * G], tt += c.gp_tt[k * G], ++count;
-  if (k > 0 || c.closed) {
-    const std::size_t prev = k > 0 ? k - 1 : c.num_segments() - 1;
-    tn += c.gp_tn[prev * G + G - 1], tt += c.gp_tt[prev * G + G - 1], ++count;
-  }
-  return {f.tn0 + tn / count, f.tt0 + tt / count};
+  const CohesiveTraction d = mean_gauss_traction(c, k);
+  return {f.tn0 + d.normal, f.tt0 + d.tangential};
 }
 
 }  // namespace
