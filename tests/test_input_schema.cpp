@@ -64,6 +64,13 @@ max = [0.001, 0.004]
 direction = [1.0, 0.0]
 velocity = 1.0
 bodies = ["upper"]
+[loads.p]
+type = "point_force"
+point = [0.005, 0.002]
+force = [0.0, 1.0]
+function = "ricker"
+frequency = 1e5
+delay = 1e-5
 [interface.weak]
 upper_body = "upper"
 lower_body = "lower"
@@ -114,7 +121,8 @@ std::vector<std::string> instances(const std::string& table, const std::string& 
     if (when.find("type = traction") == 0) return {"loads.t"};
     if (when.find("type = body_force") == 0) return {"loads.g"};
     if (when.find("type = velocity") == 0) return {"loads.v"};
-    return {"loads.t", "loads.g", "loads.v"};
+    if (when.find("type = point_force") == 0) return {"loads.p"};
+    return {"loads.t", "loads.g", "loads.v", "loads.p"};
   }
   return {table};
 }
@@ -291,7 +299,8 @@ TEST(InputSchema, entries_are_complete_and_conditions_name_sibling_keys) {
 // The variant lists the parsers use keep their order (messages list them).
 TEST(InputSchema, variant_key_lists) {
   using V = std::vector<std::string>;
-  const V fn = {"function", "rise_time", "plateau_time", "fall_time", "table", "table_file"};
+  const V fn = {"function", "rise_time", "plateau_time", "fall_time", "frequency", "delay", "table",
+                "table_file"};
   auto plus = [&](V v) {
     v.insert(v.end(), fn.begin(), fn.end());
     return v;
@@ -302,6 +311,7 @@ TEST(InputSchema, variant_key_lists) {
             plus({"type", "acceleration", "bodies"}));
   EXPECT_EQ(allowed_keys("loads.*", "type", "velocity"),
             plus({"type", "min", "max", "direction", "velocity", "bodies"}));
+  EXPECT_EQ(allowed_keys("loads.*", "type", "point_force"), plus({"type", "point", "force", "bodies"}));
   EXPECT_EQ(variant_keys("bodies.*.minus[]", "shape", "rectangle"), (V{"min", "max"}));
   EXPECT_EQ(variant_keys("bodies.*.minus[]", "shape", "ellipse"), (V{"center", "radii", "angle"}));
   EXPECT_EQ(allowed_keys(""), (V{"title", "model", "materials", "grid", "bodies", "time", "solver",

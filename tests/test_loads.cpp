@@ -27,6 +27,13 @@ using namespace rupture;
 
 namespace {
 
+TimeFunction ricker(double value, double frequency, double delay) {
+  TimeFunction f;
+  f.kind = TimeFunction::Kind::ricker;
+  f.value = value, f.frequency = frequency, f.delay = delay;
+  return f;
+}
+
 // Midpoint-rule integral of f over [0, t] with n steps.
 double integrate(const TimeFunction& f, double t, int n) {
   double u = 0.0;
@@ -67,6 +74,26 @@ void run_to(State& s, double end) {
 
 // ---- time functions ----
 
+// The Ricker wavelet: its peak V1 at t0, zeros where a = [pi f0 (t - t0)]^2 = 1/2, minima
+// -2 exp(-3/2) V1 where a = 3/2, symmetric about t0 and of zero integral over all time.
+TEST(TimeFunctionKinds, ricker_has_its_peak_zeros_and_minima_where_the_formula_puts_them) {
+  const double f0 = 10.0, t0 = 0.15, pi = std::numbers::pi;
+  const TimeFunction f = ricker(3.0, f0, t0);
+  EXPECT_DOUBLE_EQ(f(t0), 3.0);
+  for (const double side : {-1.0, 1.0}) {
+    EXPECT_NEAR(f(t0 + side * std::sqrt(0.5) / (pi * f0)), 0.0, 1e-14);
+    const double t_min = t0 + side * std::sqrt(1.5) / (pi * f0);
+    EXPECT_NEAR(f(t_min), -2.0 * std::exp(-1.5) * 3.0, 1e-14);
+    EXPECT_GT(f(t_min - 1e-4), f(t_min));
+    EXPECT_GT(f(t_min + 1e-4), f(t_min));
+  }
+  EXPECT_NEAR(f(t0 - 0.031), f(t0 + 0.031), 1e-14);
+  // The lobes cancel: what is left is the part before t = 0, 2 t0 exp(-a(0)) V1.
+  const double a0 = (pi * f0 * t0) * (pi * f0 * t0);
+  EXPECT_NEAR(f.displacement(2 * t0), 2.0 * 3.0 * t0 * std::exp(-a0), 1e-15);
+  EXPECT_EQ(f(-1e-3), 0.0);  // nothing before the run starts
+}
+
 TEST(TimeFunctionKinds, smooth_ramp_value_and_slope_are_continuous) {
   TimeFunction f{TimeFunction::Kind::smooth_ramp, 2.0, 1e-6, 0, 0};
   const double e = 1e-13, tr = 1e-6;
@@ -88,11 +115,12 @@ TEST(TimeFunctionKinds, displacement_equals_the_numerical_integral_for_every_kin
       {TimeFunction::Kind::constant, -2.0, 0, 0, 0},
       {TimeFunction::Kind::trapezoid, 30.0, 0.3e-6, 1e-6, 0.7e-6},
       {TimeFunction::Kind::smooth_ramp, 7.0, 1.3e-6, 0, 0},
+      ricker(2.5, 2e6, 1.1e-6),
       table};
   for (const TimeFunction& f : kinds)
     for (double t : {0.1e-6, 0.77e-6, 1.3e-6, 2.2e-6, 4e-6}) {
       const double exact = f.displacement(t), numeric = integrate(f, t, 400000);
-      EXPECT_NEAR(exact, numeric, 1e-9 * std::fabs(numeric))
+      EXPECT_NEAR(exact, numeric, 1e-9 * std::fabs(numeric) + 1e-18)  // (a Ricker's is ~0 late)
           << "kind " << int(f.kind) << " at t = " << t;
     }
 }
@@ -301,6 +329,113 @@ bodies = ["upper"]
   } catch (const InputError& err) {
     EXPECT_NE(std::string(err.what()).find("loads.open.bodies"), std::string::npos) << err.what();
   }
+}
+
+// ---- point force ----
+
+// The spread of a point force among the particle centres is their bilinear interpolation: the
+// weights sum to 1 and reproduce the point (no moment about it), wherever it lies in a cell,
+// on a lattice of any particle count per cell.
+TEST(PointForce, spread_weights_sum_to_one_and_put_the_centroid_on_the_point) {
+  for (const int ppc : {1, 2, 3}) {
+    Particles P;
+    const double lo[2] = {0.0, 0.0}, hi[2] = {0.01, 0.004}, v[2] = {0.0, 0.0}, origin[2] = {0.0, 0.0};
+    seed_rectangle(P, lo, hi, 0.5e-3, ppc, 1000.0, 0, 0, v, origin);
+    for (const auto& [x, y] : {std::pair{0.00437, 0.00121}, {0.005, 0.002}, {0.00611, 0.00263}}) {
+      PointForceLoad load;
+      load.name = "s", load.point[0] = x, load.point[1] = y;
+      const PointSpread spread = find_point_spread(load, P);
+      double sum = 0, mx = 0, my = 0;
+      for (std::size_t j = 0; j < spread.ids.size(); ++j) {
+        const std::uint32_t id = spread.ids[j];  // the ids are the indices here
+        EXPECT_GT(spread.weight[j], 0.0);
+        sum += spread.weight[j];
+        mx += spread.weight[j] * (P.x[id] - x), my += spread.weight[j] * (P.y[id] - y);
+      }
+      EXPECT_LE(spread.ids.size(), 4u) << "ppc " << ppc;
+      EXPECT_NEAR(sum, 1.0, 1e-14);
+      EXPECT_NEAR(mx, 0.0, 1e-15) << "ppc " << ppc << " at " << x << ", " << y;
+      EXPECT_NEAR(my, 0.0, 1e-15);
+      EXPECT_TRUE(std::is_sorted(spread.ids.begin(), spread.ids.end()));
+    }
+  }
+}
+
+// A free strip (no boundary condition) under a point force F f(t), f a Ricker wavelet (10 cells
+// per S wavelength at 2.5 f0): its
+// momentum is the impulse F x (integral of f) at every time (the forces sum to F, the GIMP
+// weights are a partition of unity) to round-off.
+TEST(PointForce, momentum_of_a_free_body_is_the_impulse) {
+  const std::string text = strip_with(R"([loads.tap]
+type = "point_force"
+point = [0.00437, 0.00121]
+force = [3e4, -5e4]
+function = "ricker"
+frequency = 1e5
+delay = 1.5e-5
+)");
+  State s = make_state(parse_case(text));
+  const TimeFunction& f = s.loads.spec.point_forces.at(0).factor;
+  double impulse = 0.0;  // the step applies f(t^n) over [t^n, t^n+1]: a left Riemann sum of f
+  const double scale = 0.3 / 1e5;  // the size of the wavelet's integral over one lobe, s
+  for (const double end : {1.2e-5, 1.5e-5, 3e-5}) {
+    while (s.time < end - 1e-6 * s.dt) {
+      s.dt_cap = end - s.time;
+      const double t = s.time;
+      step(s);
+      impulse += f(t) * (s.time - t);
+    }
+    const Particles& P = s.particles;
+    double px = 0, py = 0;
+    for (std::size_t p = 0; p < P.size(); ++p) px += P.mass[p] * P.vx[p], py += P.mass[p] * P.vy[p];
+    EXPECT_NEAR(px, 3e4 * impulse, 1e-9 * 3e4 * scale) << "t = " << s.time;
+    EXPECT_NEAR(py, -5e4 * impulse, 1e-9 * 5e4 * scale);
+    // ... and that sum is the wavelet's integral to the step's accuracy.
+    EXPECT_NEAR(impulse, f.displacement(s.time), 0.02 * scale);
+    // Printed, not asserted: a point force's near field is singular in 2D (u ~ log r, its
+    // energy grows as log(1/h)), so no grid resolves it and the balance does not converge to 0
+    // (MUSL: 3.5, 3.6, 2.4 % at 0.5, 0.25, 0.125 mm cells). The momentum is exact.
+    const double err = energy_error(s);
+    std::printf("t = %.3g s: momentum (%.6g, %.6g) N s/m, impulse x F (%.6g, %.6g); energy error %.3e\n",
+                s.time, px, py, 3e4 * impulse, -5e4 * impulse, err);
+  }
+}
+
+TEST(PointForce, bad_input_is_named_and_a_coarse_grid_for_the_wavelet_warned) {
+  const std::string load = "[loads.src]\ntype = \"point_force\"\nforce = [0.0, 1.0]\n";
+  // Outside the domain; in the domain but off the body (the grid taller than the strip); no
+  // force; the wavelet's parameters.
+  EXPECT_NE(error_of(strip_with(load + "point = [0.02, 0.001]\n")).find("loads.src.point"), std::string::npos);
+  std::string tall = strip_with(load + "point = [0.005, 0.003]\n");
+  tall.replace(tall.find("max = [0.01, 0.002]"), 19, "max = [0.01, 0.004]");  // the grid's
+  const std::string off = error_of(tall);
+  EXPECT_NE(off.find("'loads.src.point' = [0.005, 0.003]"), std::string::npos) << off;
+  EXPECT_NE(off.find("outside every body"), std::string::npos) << off;
+  EXPECT_NE(error_of(strip_with("[loads.src]\ntype = \"point_force\"\npoint = [0.005, 0.001]\n"))
+                .find("loads.src.force"),
+            std::string::npos);
+  const std::string at = load + "point = [0.005, 0.001]\n";
+  EXPECT_NE(error_of(strip_with(at + "function = \"ricker\"\nfrequency = 0.0\ndelay = 1e-6\n"))
+                .find("'loads.src.frequency' = 0"),
+            std::string::npos);
+  EXPECT_NE(error_of(strip_with(at + "function = \"ricker\"\nfrequency = 1e5\ndelay = -1.0\n"))
+                .find("'loads.src.delay' = -1"),
+            std::string::npos);
+  EXPECT_NE(error_of(strip_with(at + "function = \"trapezoid\"\nrise_time = 1e-7\nplateau_time = 0.0\n"
+                                     "fall_time = 1e-7\nfrequency = 1e5\n"))
+                .find("only allowed with function = \"ricker\""),
+            std::string::npos);
+  // c_S = 1248 m/s: 8 cells of 0.5 mm per c_S / (2.5 f0) hold up to f0 = 1.25e5 Hz.
+  auto warnings = [&](double f0) {
+    const Case c = parse_case(strip_with(at + fmt::format("function = \"ricker\"\nfrequency = {}\ndelay = 1e-5\n", f0)));
+    std::string all;
+    for (const std::string& w : c.warnings) all += w + "\n";
+    return all;
+  };
+  EXPECT_EQ(warnings(1e5).find("loads.src.frequency"), std::string::npos) << warnings(1e5);
+  const std::string w = warnings(1e6);
+  EXPECT_NE(w.find("'loads.src.frequency' = 1e+06 Hz"), std::string::npos) << w;
+  EXPECT_NE(w.find("fewer than 8"), std::string::npos) << w;
 }
 
 // ---- body force ----

@@ -144,6 +144,32 @@ TractionPatch find_traction_patch(const TractionLoad& load, const Particles& p, 
   return patch;
 }
 
+PointSpread find_point_spread(const PointForceLoad& load, const Particles& p) {
+  // (id, weight) of every particle within one spacing of the point, in id order (one process
+  // and a distributed rank's share list them alike).
+  std::vector<std::pair<std::uint32_t, double>> found;
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    if (!load.fields.empty() &&
+        std::count(load.fields.begin(), load.fields.end(), int(p.field[k])) == 0)
+      continue;
+    const double sx = 2.0 * p.half_x[k], sy = 2.0 * p.half_y[k];  // the particle spacing
+    const double wx = 1.0 - std::fabs(p.x[k] - load.point[0]) / sx;
+    const double wy = 1.0 - std::fabs(p.y[k] - load.point[1]) / sy;
+    if (wx > 0.0 && wy > 0.0) found.emplace_back(p.id[k], wx * wy);
+  }
+  std::sort(found.begin(), found.end());
+  double total = 0.0;
+  for (const auto& e : found) total += e.second;
+  if (!(total > 0.0))
+    throw InputError(fmt::format(
+        "input key 'loads.{}.point' = [{:g}, {:g}]: no particle{} lies within one particle "
+        "spacing of the point; a point force must act inside a body's material",
+        load.name, load.point[0], load.point[1], load.fields.empty() ? "" : " of the bodies it names"));
+  PointSpread s;
+  for (const auto& [id, w] : found) s.ids.push_back(id), s.weight.push_back(w / total);
+  return s;
+}
+
 std::vector<std::uint32_t> region_particles(const VelocityRegion& r, const Particles& p) {
   std::vector<std::uint32_t> ids;
   for (std::size_t k = 0; k < p.size(); ++k) {

@@ -10,6 +10,12 @@
 //                 n the outward normal of the material there (normal > 0: tension), s the unit
 //                 vector from `from` to `to` (shear > 0 pulls the surface along s).
 //   body_force:   f_p = m_p * factor(t) * acceleration on the particles of the chosen bodies.
+//   point_force:  a line force F (N/m) at a point inside a body, F factor(t), as the body force
+//                 F delta(x - x_s): f_p = factor(t) F w_p on the particles around the point, w_p
+//                 the bilinear interpolation weights of x_s among the particle centres (the tent
+//                 of half-width the particle spacing 2 l_p in each direction), normalised to sum
+//                 to 1, so the particles carry F exactly and its moment about x_s vanishes on a
+//                 regular lattice. Then scattered with the GIMP weights like every force.
 //   velocity:     the material initially inside a box moves at factor(t) * speed along d;
 //                 the perpendicular component stays free (see solver/load_step.hpp).
 // Particles are re-sorted during a run: loads hold particle ids (Particles::id), which are stable,
@@ -44,6 +50,14 @@ struct BodyForceLoad {
   TimeFunction factor;       // dimensionless
 };
 
+struct PointForceLoad {
+  std::string name;
+  double point[2]{};        // x_s, m
+  double force[2]{};        // F, N/m (a line force in plane strain/stress)
+  std::vector<int> fields;  // velocity fields of the bodies it may act on; empty = all
+  TimeFunction factor;      // dimensionless
+};
+
 struct VelocityRegion {
   std::string name;
   double min[2]{}, max[2]{};  // box holding the driven material at t = 0, m
@@ -60,8 +74,10 @@ struct Loads {
   std::vector<TractionLoad> tractions;
   std::vector<BodyForceLoad> body_forces;
   std::vector<VelocityRegion> velocity_regions;
+  std::vector<PointForceLoad> point_forces;
   bool empty() const {
-    return tractions.empty() && body_forces.empty() && velocity_regions.empty();
+    return tractions.empty() && body_forces.empty() && velocity_regions.empty() &&
+           point_forces.empty();
   }
 };
 
@@ -82,6 +98,16 @@ struct TractionPatch {
 // material (of those fields) lies on both sides of it, or if the particles carry less than half
 // of it.
 TractionPatch find_traction_patch(const TractionLoad& load, const Particles& p, double cell_size);
+
+// The particles that carry a point force and their weights (summing to 1).
+struct PointSpread {
+  std::vector<std::uint32_t> ids;  // Particles::id
+  std::vector<double> weight;
+};
+// The particles of the load's fields within one particle spacing of its point in both
+// directions, with their bilinear weights (above). Throws InputError (naming loads.NAME.point)
+// when no such particle lies there: the point is outside every body it may act on.
+PointSpread find_point_spread(const PointForceLoad& load, const Particles& p);
 
 // Ids of the particles of the region's fields whose centre lies in its box (closed).
 std::vector<std::uint32_t> region_particles(const VelocityRegion& r, const Particles& p);

@@ -7,6 +7,10 @@
 //   smooth_ramp: V = V1 (tau - sin(2 pi tau)/(2 pi)), tau = t/tr (0 <= t < tr); V1 afterwards;
 //                0 before t = 0. Value and slope are continuous: dV/dt = V1 (1 - cos 2 pi tau)/tr
 //                is 0 at both ends of the rise.
+//   ricker:      V = V1 (1 - 2 a) exp(-a), a = [pi f0 (t - t0)]^2: the Ricker wavelet (the second
+//                derivative of a Gaussian, sign reversed) of peak frequency f0 (`frequency`, Hz)
+//                centred on t0 (`delay`, s); its spectrum (f/f0)^2 exp(-(f/f0)^2) peaks at f0
+//                and falls to 3 % of the peak at 2.5 f0. Its integral is V1 tau exp(-a), tau = t - t0.
 //   table:       value x the piecewise-linear interpolant through (t_k, v_k), k = 0..n-1, times
 //                strictly increasing; v_0 before t_0 and v_{n-1} after t_{n-1} (held constant).
 // (The paper prints the ramp-down with t - tp; SPEC E2 corrects it so V is continuous.)
@@ -22,12 +26,14 @@
 namespace rupture {
 
 struct TimeFunction {
-  enum class Kind { constant, trapezoid, smooth_ramp, table };
+  enum class Kind { constant, trapezoid, smooth_ramp, ricker, table };
   Kind kind = Kind::constant;
   double value = 0.0;         // V1 or the constant, m/s (a table's scale)
   double rise_time = 0.0;     // tr, s (trapezoid, smooth_ramp)
   double plateau_time = 0.0;  // tp, s
   double fall_time = 0.0;     // ts, s
+  double frequency = 0.0;     // f0, Hz (ricker)
+  double delay = 0.0;         // t0, s (ricker)
   std::vector<double> table_t{}, table_v{};  // table points (set_table), s and value units
   std::vector<double> table_integral{};     // integral of the interpolant from t_0 to t_k
 
@@ -47,6 +53,10 @@ struct TimeFunction {
     if (kind == Kind::constant) return value;
     if (kind == Kind::table) return value * table_value(t);
     if (t < 0.0) return 0.0;
+    if (kind == Kind::ricker) {
+      const double a = ricker_exponent(t);
+      return value * (1.0 - 2.0 * a) * std::exp(-a);
+    }
     if (kind == Kind::smooth_ramp) {
       if (t >= rise_time) return value;
       const double tau = t / rise_time;
@@ -64,6 +74,8 @@ struct TimeFunction {
     if (t <= 0.0) return 0.0;
     if (kind == Kind::constant) return value * t;
     if (kind == Kind::table) return value * (table_antiderivative(t) - table_antiderivative(0.0));
+    if (kind == Kind::ricker)  // d/dt [tau exp(-a)] = (1 - 2a) exp(-a)
+      return value * ((t - delay) * std::exp(-ricker_exponent(t)) + delay * std::exp(-ricker_exponent(0.0)));
     const double tr = rise_time, tp = plateau_time, ts = fall_time;
     if (kind == Kind::smooth_ramp) {
       if (t >= tr) return value * (0.5 * tr + (t - tr));
@@ -80,6 +92,10 @@ struct TimeFunction {
   }
 
  private:
+  double ricker_exponent(double t) const {
+    const double u = std::numbers::pi * frequency * (t - delay);
+    return u * u;
+  }
   // Index k of the table interval [t_k, t_{k+1}) holding t (t_0 <= t < t_{n-1}).
   std::size_t table_interval(double t) const {
     const auto it = std::upper_bound(table_t.begin(), table_t.end(), t);

@@ -93,6 +93,7 @@ CohesiveInterface make_interface(const InterfaceSpec& spec) {
   c.node_rupture_time.assign(n, -1.0);
   c.node_peak_slip_rate.assign(n, 0.0);
   c.node_slip_path.assign(n, 0.0);
+  c.node_slip_rate.assign(n, 0.0);
   if (!spec.stretches.empty()) {
     auto which = [&](double s) { return stretch_at(spec, s); };
     const double* xi = CohesiveInterface::kGaussXi;

@@ -112,6 +112,10 @@ struct CohesiveInterface {
   // the rate of the slip path, sliding only; else of the tangential jump).
   std::vector<double> node_rupture_time, node_peak_slip_rate;
   std::vector<double> node_slip_path;  // friction: the node's slip path D at the last step, m
+  // The slip rate at the node over the last step, m/s: on a fault (Law::kSlipPathRate) the rate
+  // friction sees, the slip path's (sliding only), signed as the tangential jump's increment;
+  // elsewhere the tangential jump's rate (last_increment_t / dt).
+  std::vector<double> node_slip_rate;
   std::vector<double> seg_fa_x, seg_fa_y, seg_fb_x, seg_fb_y;  // per-segment end forces (scratch)
   // Tributary tangent stiffness of each node at its current openings, N/m^2 per unit
   // thickness (sum over the Gauss points of its segments of weight x N x the law's largest

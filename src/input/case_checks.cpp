@@ -31,6 +31,9 @@ std::string describe(const VelocityBC& bc) {
     return fmt::format("velocity = {:g} (constant)", f.value);
   if (f.kind == TimeFunction::Kind::smooth_ramp)
     return fmt::format("velocity = {:g} (smooth_ramp: rise_time = {:g})", f.value, f.rise_time);
+  if (f.kind == TimeFunction::Kind::ricker)
+    return fmt::format("velocity = {:g} (ricker: frequency = {:g}, delay = {:g})", f.value,
+                       f.frequency, f.delay);
   if (f.kind == TimeFunction::Kind::table)
     return fmt::format("velocity from a table of {} points ({:g} m/s at t = {:g} s ... {:g} m/s at "
                        "t = {:g} s)",
@@ -48,7 +51,7 @@ bool same_function(const TimeFunction& a, const TimeFunction& b) {
   return a.kind == b.kind && a.value == b.value &&
          (a.kind == TimeFunction::Kind::constant ||
           (a.rise_time == b.rise_time && a.plateau_time == b.plateau_time &&
-           a.fall_time == b.fall_time));
+           a.fall_time == b.fall_time && a.frequency == b.frequency && a.delay == b.delay));
 }
 
 // Bodies (by name) both conditions act on; an empty field list means every body.
@@ -215,6 +218,28 @@ void warn_long_run(Case& c, const CaseSummary& s) {
                       : "time.cfl x the smallest cell / c_D, SPEC E6"));
 }
 
+// A Ricker wavelet of peak frequency f0 carries energy up to about 2.5 f0 (its spectrum there is
+// 3 % of the peak); the shortest S wavelength c_S / (2.5 f0) needs 8 cells (a common rule for
+// low-order schemes; docs/loads.md) or the waves it sends disperse.
+void warn_ricker_resolution(Case& c) {
+  double cs = INFINITY;
+  for (const ElasticMaterial& m : c.materials) cs = std::min(cs, wave_speeds(m, c.plane).shear);
+  auto check = [&](const TimeFunction& f, const std::string& key) {
+    if (f.kind != TimeFunction::Kind::ricker) return;
+    const double wavelength = cs / (2.5 * f.frequency), cells = wavelength / c.grid.cell_size;
+    if (cells >= 8.0) return;
+    c.warnings.push_back(fmt::format(
+        "'{}.frequency' = {:g} Hz: the shortest S wavelength it carries, c_S / (2.5 f0) = {:.4g} m "
+        "(c_S = {:.6g} m/s), spans {:.3g} cells of grid.cell_size = {:g} m, fewer than 8: the "
+        "waves will disperse; use a cell of at most {:.4g} m or a lower frequency",
+        key, f.frequency, wavelength, cs, cells, c.grid.cell_size, wavelength / 8.0));
+  };
+  for (const PointForceLoad& l : c.loads.point_forces) check(l.factor, "loads." + l.name);
+  for (const TractionLoad& l : c.loads.tractions) check(l.factor, "loads." + l.name);
+  for (const BodyForceLoad& l : c.loads.body_forces) check(l.factor, "loads." + l.name);
+  for (const VelocityBC& b : c.boundary) check(b.velocity, "boundary." + b.name);
+}
+
 // The machine's physical memory, bytes (0 when unknown).
 double machine_memory_bytes() {
   const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
@@ -273,6 +298,7 @@ void check_case_consistency(Case& c) {
   const CaseSummary s = summarize(c);
   check_run_limits(c, s);
   warn_long_run(c, s);
+  warn_ricker_resolution(c);
 }
 
 }  // namespace rupture

@@ -7,7 +7,8 @@
 //    rectangles: along x or y = const; other shapes: particle boxes sharing an edge) with no
 //    [interface] between their fields: InputError (they would pass through each other; an
 //    interface of law = "contact" asks for contact);
-//  - a run of more than 1e7 time steps: a warning.
+//  - a run of more than 1e7 time steps: a warning;
+//  - a Ricker wavelet whose shortest S wavelength (at 2.5 f0) spans fewer than 8 cells: a warning.
 // Warnings are appended to Case::warnings; the CLI prints them as `warning: ...` on stderr.
 #pragma once
 #include "input/case.hpp"

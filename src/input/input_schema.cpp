@@ -65,11 +65,11 @@ std::vector<KeyDoc> time_function_keys(const std::string& prefix, bool boundary)
   const std::string value = boundary ? "velocity (m/s)" : "factor (dimensionless)";
   std::vector<KeyDoc> k = {
       {p + "function", "string", "", "\"constant\"",
-       "\"constant\", \"trapezoid\", \"smooth_ramp\", \"table\"",
+       "\"constant\", \"trapezoid\", \"smooth_ramp\", \"ricker\", \"table\"",
        boundary ? "time function of the velocity: constant V1, the trapezoid impact pulse, a "
-                  "smooth ramp or a table (docs/loads.md)"
+                  "smooth ramp, a Ricker wavelet or a table (docs/loads.md)"
                 : "time function of the load's factor (value 1): constant, trapezoid, smooth "
-                  "ramp or table (docs/loads.md)",
+                  "ramp, Ricker wavelet or table (docs/loads.md)",
        "\"trapezoid\""},
       {p + "rise_time", "number", "s", "required", "> 0", "rise time tr, from 0 to the full value",
        "0.1e-6", "function = trapezoid | smooth_ramp"},
@@ -77,6 +77,12 @@ std::vector<KeyDoc> time_function_keys(const std::string& prefix, bool boundary)
        "15e-6", "function = trapezoid"},
       {p + "fall_time", "number", "s", "required", "> 0", "fall time ts, back to 0", "1e-6",
        "function = trapezoid"},
+      {p + "frequency", "number", "Hz", "required", "> 0, finite",
+       "peak frequency f0 of the Ricker wavelet (1 - 2a) exp(-a), a = [pi f0 (t - t0)]^2; a "
+       "warning when the grid has fewer than 8 cells per shortest S wavelength at 2.5 f0",
+       "10.0", "function = ricker"},
+      {p + "delay", "number", "s", "required", ">= 0, finite", "centre t0 of the Ricker wavelet",
+       "0.15", "function = ricker"},
       {p + "table", "array of points", boundary ? "s, m/s" : "s, -",
        "required: table or table_file",
        "an array of [time, value] pairs of finite numbers: at least two points, times strictly "
@@ -94,7 +100,7 @@ std::vector<KeyDoc> time_function_keys(const std::string& prefix, bool boundary)
     k.insert(k.begin() + 1, {p + "velocity", "number", "m/s", "required", "finite",
                              "amplitude V1 of the time function (the table holds the values "
                              "itself)",
-                             "30.0", "function = constant | trapezoid | smooth_ramp"});
+                             "30.0", "function = constant | trapezoid | smooth_ramp | ricker"});
   return k;
 }
 
@@ -270,7 +276,8 @@ std::vector<KeyDoc> build_schema() {
        ""},
       {"loads.*", "table", "", "", "",
        "One load: `type` and that type's keys, times a dimensionless time function (value 1).", ""},
-      {"loads.*.type", "string", "", "required", "\"traction\", \"body_force\", \"velocity\"",
+      {"loads.*.type", "string", "", "required",
+       "\"traction\", \"body_force\", \"velocity\", \"point_force\"",
        "the kind of load; only that type's keys may be given", "\"traction\""},
       {"loads.*.from", "[x, y]", "m", "required", "must lie in the grid domain",
        "one end of the loaded surface segment", "[0.04, 0.0]", "type = traction"},
@@ -298,9 +305,18 @@ std::vector<KeyDoc> build_schema() {
        "speed along d, times the time function", "10.0", "type = velocity"},
       {"loads.*.acceleration", "[x, y]", "m/s^2", "required", "finite",
        "acceleration g of the body force m g", "[0.0, -9.81]", "type = body_force"},
+      {"loads.*.point", "[x, y]", "m", "required",
+       "must lie in the grid domain, inside a body's material (within one particle spacing of "
+       "a particle of the bodies it names)",
+       "where the point force acts (spread over the particles around it with their bilinear "
+       "weights)",
+       "[1500.0, -50.0]", "type = point_force"},
+      {"loads.*.force", "[fx, fy]", "N/m", "required", "finite",
+       "the line force F, times the time function (a Ricker wavelet: function = \"ricker\")",
+       "[0.0, 1.0]", "type = point_force"},
       {"loads.*.bodies", "array of strings", "", "all bodies", "names of [bodies] entries",
        "the bodies loaded (traction: whose face, on a segment with material on both sides)",
-       "[\"plate\"]", "type = traction | body_force | velocity"},
+       "[\"plate\"]", "type = traction | body_force | velocity | point_force"},
   };
   s.insert(s.end(), loads.begin(), loads.end());
   const std::vector<KeyDoc> load_function = time_function_keys("loads.*", false);
@@ -539,7 +555,8 @@ std::vector<KeyDoc> build_schema() {
        ""},
       {"stations.*", "table", "", "", "",
        "One station: on a fault (interface given: slip, slip rate, opening, shear and normal "
-       "traction) or in a body (the velocity of the particle nearest the point).",
+       "traction, jump rate) or in a body (the position, velocity and displacement of the "
+       "particle nearest the point).",
        ""},
       {"stations.*.at", "[x, y]", "m", "required",
        "in the grid; with interface: on that interface's line (within half a cell)",

@@ -1,11 +1,13 @@
 // rupture/input/parse_loads.cpp
 // The [loads] table (bc/loads.hpp, docs/loads.md): tractions on surface segments, body forces,
-// prescribed velocities of material regions, each with a dimensionless time function.
+// prescribed velocities of material regions, point forces, each with a dimensionless time
+// function.
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 
+#include "geometry/shape.hpp"
 #include "input/case_parse.hpp"
 #include "input/input_schema.hpp"
 
@@ -45,7 +47,7 @@ void parse_loads(Section& top, Case& c, ParseContext& ctx) {
   for (const auto& [k, v] : named_entries(loads)) {
     const std::string& name = k;
     Section probe = loads.table(name, true);
-    const std::string type = probe.string("type", "", {"traction", "body_force", "velocity"});
+    const std::string type = probe.string("type", "", {"traction", "body_force", "velocity", "point_force"});
     Section l = loads.table(name, true, allowed_keys("loads.*", "type", type));
     const TimeFunction factor = parse_time_function(l, "", {"loads", name}, ctx);
     if (type == "traction") {
@@ -84,6 +86,25 @@ void parse_loads(Section& top, Case& c, ParseContext& ctx) {
       l.pair("acceleration", b.acceleration, true);
       b.fields = body_fields(l, c, ctx);
       c.loads.body_forces.push_back(b);
+    } else if (type == "point_force") {
+      PointForceLoad f;
+      f.name = name;
+      f.factor = factor;
+      l.pair("point", f.point, true);
+      check_in_domain(l, "point", f.point, c);
+      l.pair("force", f.force, true);
+      f.fields = body_fields(l, c, ctx);
+      // Inside a body it may act on (the particles there: solver/load_step.cpp).
+      bool inside_one = false;
+      for (const BodySpec& body : c.bodies)
+        if (f.fields.empty() || std::count(f.fields.begin(), f.fields.end(), body.field) > 0)
+          inside_one = inside_one || contains(body.region, f.point[0], f.point[1]);
+      if (!inside_one)
+        fail(l.key("point"), show_pair(f.point),
+             f.fields.empty() ? "lies outside every body: a point force must act inside material"
+                              : "lies outside the bodies it names: a point force must act inside "
+                                "their material");
+      c.loads.point_forces.push_back(f);
     } else {
       VelocityRegion r;
       r.name = name;

@@ -1,7 +1,8 @@
 // rupture/input/parse_time_function.cpp
 // `function` and its keys in a [boundary.X] or [loads.X] table (bc/time_function.hpp):
-//   function = "constant" | "trapezoid" | "smooth_ramp" | "table"
-//   rise_time (trapezoid, smooth_ramp), plateau_time, fall_time (trapezoid)
+//   function = "constant" | "trapezoid" | "smooth_ramp" | "ricker" | "table"
+//   rise_time (trapezoid, smooth_ramp), plateau_time, fall_time (trapezoid),
+//   frequency, delay (ricker)
 //   table = [[t0, v0], [t1, v1], ...] or table_file = "path.csv" (table)
 // A CSV file has two columns time,value (comma or blank separated), an optional header line and
 // '#' comments; a relative path is relative to the case file's directory. The values read are
@@ -73,7 +74,7 @@ TimeFunction parse_time_function(Section& b, const std::string& value_key,
                                  const std::vector<std::string>& path, ParseContext& ctx) {
   TimeFunction f;
   const std::string fn =
-      b.string("function", "constant", {"constant", "trapezoid", "smooth_ramp", "table"});
+      b.string("function", "constant", {"constant", "trapezoid", "smooth_ramp", "ricker", "table"});
   const bool is_table = fn == "table";
   if (value_key.empty()) {
     f.value = 1.0;  // a dimensionless factor
@@ -83,6 +84,18 @@ TimeFunction parse_time_function(Section& b, const std::string& value_key,
            "not used with function = \"table\": the table holds the values");
   } else {
     f.value = b.number(value_key);
+  }
+  if (fn != "ricker")
+    for (const char* key : {"frequency", "delay"})
+      if (b.has(key)) fail(b.key(key), show(*b.node(key)), "only allowed with function = \"ricker\"");
+  if (fn == "ricker") {
+    f.kind = TimeFunction::Kind::ricker;
+    f.frequency = b.number("frequency");
+    if (!(f.frequency > 0) || !std::isfinite(f.frequency))
+      fail(b.key("frequency"), f.frequency, "must be > 0 and finite (Hz, the wavelet's peak frequency)");
+    f.delay = b.number("delay");
+    if (!(f.delay >= 0) || !std::isfinite(f.delay))
+      fail(b.key("delay"), f.delay, "must be >= 0 and finite (s, the wavelet's centre)");
   }
   if (fn == "trapezoid") {
     f.kind = TimeFunction::Kind::trapezoid;

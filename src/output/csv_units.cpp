@@ -52,7 +52,7 @@ const std::vector<CsvColumn>& csv_columns() {
       {"rupture_time_*.csv", "opening", "m", "normal jump now"},
       {"stations/*.csv", "time", "s", "sample time"},
       {"stations/*.csv", "slip", "m", "fault station: tangential jump"},
-      {"stations/*.csv", "slip_rate", "m/s", "fault station: the last step's slip increment over its dt"},
+      {"stations/*.csv", "slip_rate", "m/s", "fault station: the slip rate friction sees (a fault's slip path rate over the last step, signed as the jump; elsewhere the jump's rate)"},
       {"stations/*.csv", "opening", "m", "fault station: normal jump"},
       {"stations/*.csv", "shear_traction", "Pa", "fault station: total shear traction (prestress included)"},
       {"stations/*.csv", "normal_traction", "Pa", "fault station: total normal traction, tension positive"},
@@ -60,6 +60,9 @@ const std::vector<CsvColumn>& csv_columns() {
       {"stations/*.csv", "y", "m", "body station: the particle's position"},
       {"stations/*.csv", "vx", "m/s", "body station: the particle's velocity"},
       {"stations/*.csv", "vy", "m/s", "body station: the particle's velocity"},
+      {"stations/*.csv", "ux", "m", "body station: the particle's displacement since t = 0"},
+      {"stations/*.csv", "uy", "m", "body station: the particle's displacement since t = 0"},
+      {"stations/*.csv", "jump_rate", "m/s", "fault station: the last step's tangential jump increment over its dt (the stick spring's elastic jump included)"},
       // cohesive/mach_angle.cpp (SPEC E12)
       {"mach_angle*.csv", "time", "s", "reading time"},
       {"mach_angle*.csv", "tip_x", "m", "x of the tip"},

@@ -54,12 +54,16 @@ std::vector<StationProbe> make_probes(const std::vector<StationSpec>& specs, Run
 
 namespace {
 
+double jump_rate(const CohesiveInterface& c, std::size_t k, double dt) {
+  return dt > 0 ? c.last_increment_t[k] / dt : 0.0;
+}
+
 // A distributed run (parallel/halo.hpp): each node's values from the rank owning it, each body
 // station's particle from the rank holding it, added over the ranks (zeros elsewhere), so every
 // rank records the one-process rows.
 void sample_distributed(RunState& s, std::vector<StationProbe>& probes,
                         std::vector<StationSeries>& series) {
-  constexpr std::size_t kV = 5;  // per node: slip, slip rate, opening, shear, normal traction
+  constexpr std::size_t kV = kFaultColumns - 1;  // per node: the fault row without the time
   std::vector<double> v(probes.size() * 2 * kV, 0.0);
   for (std::size_t i = 0; i < probes.size(); ++i) {
     StationProbe& p = probes[i];
@@ -71,8 +75,8 @@ void sample_distributed(RunState& s, std::vector<StationProbe>& probes,
         const std::size_t k = nodes[e];
         if (!c.owns(k)) continue;
         const CohesiveTraction t = node_traction(c, k);
-        const double row[kV] = {c.jump_tangential(k), s.dt > 0 ? c.last_increment_t[k] / s.dt : 0.0,
-                                c.jump_normal(k), t.tangential, t.normal};
+        const double row[kV] = {c.jump_tangential(k), c.node_slip_rate[k], c.jump_normal(k),
+                                t.tangential,         t.normal,            jump_rate(c, k, s.dt)};
         std::copy(row, row + kV, out + e * kV);
       }
       continue;
@@ -94,7 +98,7 @@ void sample_distributed(RunState& s, std::vector<StationProbe>& probes,
     if (probes[i].interface >= 0) {
       const double f = probes[i].f;
       r.push_back(s.time);
-      for (const std::size_t j : {0, 1, 2, 3, 4}) r.push_back((1.0 - f) * in[j] + f * in[kV + j]);
+      for (std::size_t j = 0; j < kV; ++j) r.push_back((1.0 - f) * in[j] + f * in[kV + j]);
     } else {
       r.insert(r.end(), {s.time, in[0], in[1], in[2], in[3]});
     }
@@ -113,15 +117,14 @@ void sample_stations(RunState& s, std::vector<StationProbe>& probes,
     if (p.interface >= 0) {
       const CohesiveInterface& c = s.interface(std::size_t(p.interface));
       auto mix = [&](double va, double vb) { return (1.0 - p.f) * va + p.f * vb; };
-      const double rate_a = s.dt > 0 ? c.last_increment_t[p.a] / s.dt : 0.0;
-      const double rate_b = s.dt > 0 ? c.last_increment_t[p.b] / s.dt : 0.0;
       const CohesiveTraction ta = node_traction(c, p.a), tb = node_traction(c, p.b);
       const double row[kFaultColumns] = {s.time,
                                          mix(c.jump_tangential(p.a), c.jump_tangential(p.b)),
-                                         mix(rate_a, rate_b),
+                                         mix(c.node_slip_rate[p.a], c.node_slip_rate[p.b]),
                                          mix(c.jump_normal(p.a), c.jump_normal(p.b)),
                                          mix(ta.tangential, tb.tangential),
-                                         mix(ta.normal, tb.normal)};
+                                         mix(ta.normal, tb.normal),
+                                         mix(jump_rate(c, p.a, s.dt), jump_rate(c, p.b, s.dt))};
       r.insert(r.end(), row, row + kFaultColumns);
     } else {
       const Particles& P = all_particles(s);
@@ -142,14 +145,16 @@ void write_stations(const std::string& dir, const std::vector<StationSpec>& spec
   for (std::size_t i = 0; i < specs.size() && i < series.size(); ++i) {
     const bool fault = probes[i].interface >= 0;
     const std::size_t cols = fault ? kFaultColumns : kBodyColumns;
-    std::string out = fault ? "time,slip,slip_rate,opening,shear_traction,normal_traction\n"
-                            : "time,x,y,vx,vy\n";
+    std::string out = fault ? "time,slip,slip_rate,opening,shear_traction,normal_traction,jump_rate\n"
+                            : "time,x,y,vx,vy,ux,uy\n";
     const std::vector<double>& r = series[i].rows;
     for (std::size_t k = 0; k + cols <= r.size(); k += cols) {
       for (std::size_t j = 0; j < cols; ++j) {
         if (j > 0) out += ',';
         out += fmt::format("{:.9e}", r[k + j]);
       }
+      if (!fault)  // the displacement since the first sample (t = 0)
+        out += fmt::format(",{:.9e},{:.9e}", r[k + 1] - r[1], r[k + 2] - r[2]);
       out += '\n';
     }
     write_file_atomic(dir + "/stations/" + specs[i].name + ".csv", out);

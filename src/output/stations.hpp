@@ -1,11 +1,15 @@
 // rupture/output/stations.hpp
 // Stations: named points whose time series the run records (the SCEC benchmarks' receivers).
 // A fault station (`interface` given) lies on that interface's line and records, interpolated
-// between the two nodes around it: slip (tangential jump, m), slip rate (m/s, the last step's
-// jump increment over dt), opening (normal jump, m), and the total shear and normal tractions
-// (Pa, prestress included; normal tension positive). A body station records the velocity of the
-// particle nearest its point at t = 0 (and where that particle is). Written to
-// DIR/stations/NAME.csv atomically at every flush and at the end; the samples are checkpointed.
+// between the two nodes around it: slip (tangential jump, m), slip rate (m/s, the rate friction
+// sees: on a fault the slip path's over the last step, sliding only, CohesiveInterface::
+// node_slip_rate; elsewhere the jump's), opening (normal jump, m), the total shear and normal
+// tractions (Pa, prestress included; normal tension positive) and jump_rate (m/s, the last
+// step's tangential jump increment over dt: on a fault it includes the stick spring's elastic
+// jump, which passing waves load). A body station records the particle nearest its point at
+// t = 0: where it is, its velocity and its displacement since t = 0 (ux, uy, m: its position
+// less the first sample's, which is taken at t = 0). Written to DIR/stations/NAME.csv
+// atomically at every flush and at the end; the samples are checkpointed.
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -33,7 +37,9 @@ struct StationProbe {
   std::size_t slot = 0;           //       its index at the last read (re-found after sorts)
 };
 
-inline constexpr std::size_t kFaultColumns = 6;  // time, slip, slip_rate, opening, shear, normal
+// Columns of a sample (the rows stored); a body station's file adds ux, uy (from x, y).
+inline constexpr std::size_t kFaultColumns = 7;  // time, slip, slip_rate, opening, shear, normal,
+                                                 // jump_rate
 inline constexpr std::size_t kBodyColumns = 5;   // time, x, y, vx, vy
 
 // A body station reads the particle nearest its point at t = 0, the lowest id among equally

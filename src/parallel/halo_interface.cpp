@@ -149,7 +149,7 @@ void collect_interface_state(State& s) {
     const std::vector<unsigned char>& o = c.rank_owned;
     for (auto* v : {&c.ux_up, &c.uy_up, &c.ux_lo, &c.uy_lo, &c.fx_node, &c.fy_node,
                     &c.node_crack_time, &c.node_rupture_time, &c.node_peak_slip_rate,
-                    &c.node_slip_path, &c.stiffness_node, &c.jump_before})
+                    &c.node_slip_path, &c.node_slip_rate, &c.stiffness_node, &c.jump_before})
       if (v->size() == c.num_nodes()) whole(comm, o, *v, 1);
     // Gauss points by segment, each from the owner of its first node.
     const std::size_t G = std::size_t(CohesiveInterface::kGauss);

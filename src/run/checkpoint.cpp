@@ -138,6 +138,7 @@ void fields(A& a, CohesiveInterface& c) {
   a("node_rupture_time", c.node_rupture_time);
   a("node_peak_slip_rate", c.node_peak_slip_rate);
   a("node_slip_path", c.node_slip_path);
+  a("node_slip_rate", c.node_slip_rate);
   a("gp_dn", c.gp_dn);
   a("gp_dt", c.gp_dt);
   a("gp_tn", c.gp_tn);
@@ -168,10 +169,10 @@ void fields(A& a, CohesiveInterface& c) {
 // Nested per-level time steps (RunState::period, mixed: from the case; hold, substep: 0 at
 // every checkpoint, which waits for the levels to end their steps together; sync_by: set by
 // the driver before every step).
-// A run (solver/run_state.hpp), format 12. On one grid: its level's State as above, entries
+// A run (solver/run_state.hpp), format 13. On one grid: its level's State as above, entries
 // at the run's level. On nested levels: the run's entries (the grid level's lattice size, the
 // particle count, the interfaces in input order, the clock, sums and limits; the one-grid
-// entries bc_nodes, bc_lines and plan are stored empty, as formats 11 and 12 have them), then
+// entries bc_nodes, bc_lines and plan are stored empty, as formats 11 to 13 have them), then
 // "nested": every level's State as above (its particle count changes as particles move
 // between levels, and its window_drift decides the next move; its interfaces are the run's
 // entry), the levels' clock and the migration count. Every level's particles are merged anew

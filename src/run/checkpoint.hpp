@@ -16,7 +16,7 @@
 
 namespace rupture {
 
-inline constexpr int kCheckpointVersion = 12;  // 2: State::strain_work; 3: Mach readings;
+inline constexpr int kCheckpointVersion = 13;  // 2: State::strain_work; 3: Mach readings;
                                               // 4: interface rupture times, peak slip rates;
                                               // 5: nested levels; 6: particles store the
                                               // stress only (no strain, szz, volume);
@@ -28,7 +28,9 @@ inline constexpr int kCheckpointVersion = 12;  // 2: State::strain_work; 3: Mach
                                               // with per-level steps (a stored case without
                                               // grid.refinement meant "graded" before);
                                               // 12: rate-and-state history (gp_state,
-                                              // gp_rate) and the interfaces' time
+                                              // gp_rate) and the interfaces' time;
+                                              // 13: the nodes' slip rate (node_slip_rate)
+                                              // and fault stations' jump_rate column
 
 std::string checkpoint_path(const std::string& dir);  // DIR/checkpoint/checkpoint.bin
 

@@ -149,7 +149,8 @@ void check_interfaces(const Checker& ck, const std::vector<InterfaceOnGrid>& all
     nodes("ux_lo", c.ux_lo.size()), nodes("uy_lo", c.uy_lo.size()), nodes("fx_node", c.fx_node.size());
     nodes("fy_node", c.fy_node.size()), nodes("node_crack_time", c.node_crack_time.size());
     nodes("node_rupture_time", c.node_rupture_time.size()), nodes("node_peak_slip_rate", c.node_peak_slip_rate.size());
-    nodes("node_slip_path", c.node_slip_path.size()), nodes("stiffness_node", c.stiffness_node.size());
+    nodes("node_slip_path", c.node_slip_path.size()), nodes("node_slip_rate", c.node_slip_rate.size());
+    nodes("stiffness_node", c.stiffness_node.size());
     nodes("last_increment_n", c.last_increment_n.size()), nodes("last_increment_t", c.last_increment_t.size());
     nodes("streak_base", c.streak_base.size()), nodes("reversal_streak", c.reversal_streak.size());
     points("gp_dn", c.gp_dn.size()), points("gp_dt", c.gp_dt.size()), points("gp_tn", c.gp_tn.size());

@@ -30,10 +30,10 @@ void for_each_run_point(const Case& c, const RunState& r, const RunPointVisit& v
 // A particle centre's test (x, y in m).
 using PointFilter = std::function<bool(double, double)>;
 
-// The particles at t = 0 near c.loads (a traction segment's reach, a velocity region's box) on
-// grid g, with the ids one process gives them from first_id, in id order: a distributed rank
-// (or a nested level) finds the loads' particles among them as one process finds them among
-// all. With `keep` (a nested level, solver/nested_state.hpp), the points of g's lattice seeded
+// The particles at t = 0 near c.loads (a traction segment's reach, a velocity region's box, a
+// point force's neighbourhood) on grid g, with the ids one process gives them from first_id, in
+// id order: a distributed rank (or a nested level) finds the loads' particles among them as one
+// process finds them among all. With `keep` (a nested level, solver/nested_state.hpp), the points of g's lattice seeded
 // through every body's region that `keep` accepts, as make_level_state makes them.
 Particles particles_near_loads(const Case& c, const Grid& g, const PointFilter* keep, std::uint32_t first_id);
 

@@ -155,6 +155,7 @@ void evaluate_with(CohesiveInterface& c, const Law& law, double t, double t_befo
     // no slip.
     const double dt = t - t_before;
     double slip_rate = dt > 0.0 ? std::fabs(c.last_increment_t[k]) / dt : 0.0;
+    c.node_slip_rate[k] = dt > 0.0 ? c.last_increment_t[k] / dt : 0.0;
     if constexpr (Law::kSlipPathRate) {
       const std::size_t G = std::size_t(kG);
       double path = 0.0;
@@ -165,6 +166,7 @@ void evaluate_with(CohesiveInterface& c, const Law& law, double t, double t_befo
       const double sliding = dt > 0.0 ? (path - c.node_slip_path[k]) / dt : 0.0;
       c.node_slip_path[k] = path;
       slip_rate = sliding;
+      c.node_slip_rate[k] = std::copysign(sliding, c.last_increment_t[k]);
     }
     c.node_peak_slip_rate[k] = std::max(c.node_peak_slip_rate[k], slip_rate);
     if (c.node_rupture_time[k] < 0.0 && slip_rate > c.spec.rupture_slip_rate)

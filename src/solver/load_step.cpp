@@ -44,6 +44,10 @@ void set_up_loads(State& s, const Loads& loads, double cell_size, const Particle
           "holds no particle (of the bodies it names); a velocity region must hold material",
           r.name, r.min[0], r.min[1], r.max[0], r.max[1]));
   }
+  for (const PointForceLoad& f : loads.point_forces)
+    L.spreads.push_back(find_point_spread(f, near ? *near : s.particles));
+  L.spread_index.resize(L.spreads.size());
+  for (std::size_t k = 0; k < L.spreads.size(); ++k) L.spread_index[k].resize(L.spreads[k].ids.size());
   L.patch_index.resize(L.patches.size());
   for (std::size_t k = 0; k < L.patches.size(); ++k) L.patch_index[k].resize(L.patches[k].ids.size());
   L.region_index.resize(L.region_ids.size());
@@ -65,7 +69,8 @@ void set_up_loads(State& s, const Loads& loads, double cell_size, const Particle
 
 void prepare_loads(State& s) {
   LoadState& L = s.loads;
-  if (L.spec.tractions.empty() && L.spec.velocity_regions.empty()) return;
+  if (L.spec.tractions.empty() && L.spec.velocity_regions.empty() && L.spec.point_forces.empty())
+    return;
   const Particles& P = s.particles;
   if (L.indexed_sort != s.plan.sorted_step) {
     // Indexed by id: as long as the largest id held (a distributed rank's ids are some of the
@@ -83,6 +88,9 @@ void prepare_loads(State& s) {
     for (std::size_t k = 0; k < L.patches.size(); ++k)
       for (std::size_t j = 0; j < L.patches[k].ids.size(); ++j)
         L.patch_index[k][j] = slot(L.patches[k].ids[j]);
+    for (std::size_t k = 0; k < L.spreads.size(); ++k)
+      for (std::size_t j = 0; j < L.spreads[k].ids.size(); ++j)
+        L.spread_index[k][j] = slot(L.spreads[k].ids[j]);
     for (std::size_t k = 0; k < L.region_ids.size(); ++k) {  // the region particles held here
       L.region_index[k].clear();  // keeps its capacity (the region's ids): no allocation
       for (std::size_t j = 0; j < L.region_ids[k].size(); ++j)
@@ -179,6 +187,20 @@ void add_external_forces(State& s) {
       for_each_weight(s, L.patch_index[k][j], [&](std::size_t i, double w) {
         L.ext_fx[i] += w * tx * len;
         L.ext_fy[i] += w * ty * len;
+      });
+    }
+  }
+  // Point forces: f_p = F factor(t) w_p.
+  for (std::size_t k = 0; k < L.spreads.size(); ++k) {
+    const PointForceLoad& load = L.spec.point_forces[k];
+    const double f = load.factor(t);
+    const PointSpread& spread = L.spreads[k];
+    for (std::size_t j = 0; j < spread.ids.size(); ++j) {
+      if (L.spread_index[k][j] == LoadState::kAbsent) continue;  // another rank's particle
+      const double fx = f * load.force[0] * spread.weight[j], fy = f * load.force[1] * spread.weight[j];
+      for_each_weight(s, L.spread_index[k][j], [&](std::size_t i, double w) {
+        L.ext_fx[i] += w * fx;
+        L.ext_fy[i] += w * fy;
       });
     }
   }

@@ -3,7 +3,8 @@
 // loads of its kind, so a case without [loads] runs exactly as before.
 //   prepare_loads:          after a particle sort, maps the loads' particle ids to indices; lists
 //                           the nodes the velocity regions' particles touch now (t^n).
-//   add_external_forces:    f_p = factor(t^n) x (traction x length_p | m_p x acceleration),
+//   add_external_forces:    f_p = factor(t^n) x (traction x length_p | m_p x acceleration |
+//                           F x w_p, a point force's share),
 //                           scattered with the GIMP weights S_ip into the nodal force (E4),
 //                           after the internal force and before the cohesive forces.
 //   apply_velocity_regions: after the momentum update (next to apply_velocity_bcs), every node

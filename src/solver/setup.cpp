@@ -57,7 +57,8 @@ SeedProperties seed_properties(const Case& c, const BodySpec& b) {
 // region_particles on them find what they find on all.
 Particles particles_near_loads(const Case& c, const Grid& g, const PointFilter* keep, std::uint32_t first_id) {
   Particles near;
-  if (c.loads.tractions.empty() && c.loads.velocity_regions.empty()) return near;
+  if (c.loads.tractions.empty() && c.loads.velocity_regions.empty() && c.loads.point_forces.empty())
+    return near;
   double wx = 0.0, wy = 0.0;
   for (int i = 0; i < g.x.cells; ++i) wx = std::max(wx, g.x.width(i));
   for (int j = 0; j < g.y.cells; ++j) wy = std::max(wy, g.y.width(j));
@@ -69,6 +70,11 @@ Particles particles_near_loads(const Case& c, const Grid& g, const PointFilter* 
       if (keep && !(*keep)(p.x, p.y)) return;  // another level's
       for (const VelocityRegion& r : c.loads.velocity_regions)  // bc/loads.cpp: region_particles
         if (p.x >= r.min[0] && p.x <= r.max[0] && p.y >= r.min[1] && p.y <= r.max[1]) {
+          append_seed_point(near, p, props, id++);
+          return;
+        }
+      for (const PointForceLoad& f : c.loads.point_forces)  // bc/loads.cpp: find_point_spread
+        if (std::fabs(p.x - f.point[0]) < R && std::fabs(p.y - f.point[1]) < R) {
           append_seed_point(near, p, props, id++);
           return;
         }

@@ -84,12 +84,13 @@ struct LoadState {
   Loads spec;
   std::vector<TractionPatch> patches;                    // per traction load
   std::vector<std::vector<std::uint32_t>> region_ids;    // per velocity region: particle ids
+  std::vector<PointSpread> spreads;                      // per point force
   // Rebuilt after each sort (ScatterPlan::sorted_step): particle indices of the ids above.
   long indexed_sort = -2;
   std::vector<std::uint32_t> slot_of_id;                 // id -> index
   // kAbsent: the particle is another rank's (distributed runs, parallel/halo.hpp).
   static constexpr std::uint32_t kAbsent = 0xffffffffu;
-  std::vector<std::vector<std::uint32_t>> patch_index, region_index;
+  std::vector<std::vector<std::uint32_t>> patch_index, region_index, spread_index;
   // Per-step scratch.
   std::vector<double> accel_x, accel_y;  // per field: summed body-force acceleration, m/s^2
   std::vector<double> ext_fx, ext_fy;    // per field node: this step's external force, N
@@ -103,7 +104,9 @@ struct LoadState {
   // it (-1: none), and the halo nodes another rank's region particles made listed.
   std::vector<int> node_region;
   std::vector<std::size_t> region_changed;
-  bool has_forces() const { return !spec.tractions.empty() || !spec.body_forces.empty(); }
+  bool has_forces() const {
+    return !spec.tractions.empty() || !spec.body_forces.empty() || !spec.point_forces.empty();
+  }
 };
 
 // The grid nodes where an interface's two fields are tied into one body (its bonded stretches).
