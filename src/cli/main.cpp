@@ -47,31 +47,53 @@ using namespace rupture;
 
 namespace {
 
-std::string plot_script(const char* argv0) {
+// A helper script (python/NAME): next to the executable, in ../share/rupture, or the source's.
+std::string helper_script(const char* argv0, const char* name, const char* source) {
   namespace fs = std::filesystem;
   std::error_code ec;
   const fs::path exe = fs::canonical("/proc/self/exe", ec);
   const fs::path dir = ec ? fs::path(argv0).parent_path() : exe.parent_path();
-  for (const fs::path& p : {dir / "rupture_plot.py", dir / "../share/rupture/rupture_plot.py",
-                            fs::path(RUPTURE_PLOT_SCRIPT_SOURCE)})
+  for (const fs::path& p : {dir / name, dir / "../share/rupture" / name, fs::path(source)})
     if (fs::exists(p)) return p.string();
   return {};
+}
+
+// Replaces this process by `python script args...`; returns only on failure.
+int exec_python(const std::string& script, std::vector<std::string> args) {
+  const char* env = std::getenv("RUPTURE_PYTHON");
+  const std::string python = env && *env ? env
+                             : std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3"
+                                                                           : "python3";
+  args.insert(args.begin(), {python, script});
+  std::vector<char*> cargs;
+  for (std::string& a : args) cargs.push_back(a.data());
+  cargs.push_back(nullptr);
+  execvp(cargs[0], cargs.data());
+  fmt::print(stderr, "error: cannot start '{}': {}\n", python, std::strerror(errno));
+  return 3;
+}
+
+// `rupture export DIR --format scec` (python/rupture_export.py).
+int run_export(const char* argv0, const std::vector<std::string>& args) {
+  const std::string script = helper_script(argv0, "rupture_export.py", RUPTURE_EXPORT_SCRIPT_SOURCE);
+  if (script.empty()) {
+    fmt::print(stderr, "error: rupture_export.py not found next to the executable nor at {}\n",
+               RUPTURE_EXPORT_SCRIPT_SOURCE);
+    return 3;
+  }
+  return exec_python(script, args);
 }
 
 // Replaces this process by the plotting script; returns only on failure.
 int run_plot(const char* argv0, const std::string& dir, const std::vector<std::string>& compare,
              const std::vector<std::string>& labels) {
-  const std::string script = plot_script(argv0);
+  const std::string script = helper_script(argv0, "rupture_plot.py", RUPTURE_PLOT_SCRIPT_SOURCE);
   if (script.empty()) {
     fmt::print(stderr, "error: rupture_plot.py not found next to the executable nor at {}\n",
                RUPTURE_PLOT_SCRIPT_SOURCE);
     return 3;
   }
-  const char* env = std::getenv("RUPTURE_PYTHON");
-  const std::string python = env && *env ? env
-                             : std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3"
-                                                                           : "python3";
-  std::vector<std::string> args{python, script, dir};
+  std::vector<std::string> args{dir};
   if (!compare.empty()) {
     args.push_back("--compare");
     args.insert(args.end(), compare.begin(), compare.end());
@@ -80,12 +102,7 @@ int run_plot(const char* argv0, const std::string& dir, const std::vector<std::s
     args.push_back("--labels");
     args.insert(args.end(), labels.begin(), labels.end());
   }
-  std::vector<char*> cargs;
-  for (std::string& a : args) cargs.push_back(a.data());
-  cargs.push_back(nullptr);
-  execvp(cargs[0], cargs.data());
-  fmt::print(stderr, "error: cannot start '{}': {}\n", python, std::strerror(errno));
-  return 3;
+  return exec_python(script, args);
 }
 
 CaseSource read_case_source(const std::string& path, const std::vector<std::string>& overrides) {
@@ -219,7 +236,24 @@ int main(int argc, char** argv) {
       ->check(CLI::ExistingDirectory);
   plot->add_option("--labels", labels, "legend labels, one per run");
 
+  std::string export_dir, export_format, export_problem, export_author;
+  auto* exp = app.add_subcommand(
+      "export", "write a finished run's results in a community format into DIR/FORMAT/ (docs/faults.md)");
+  exp->add_option("dir", export_dir, "run directory")->required()->check(CLI::ExistingDirectory);
+  exp->add_option("--format", export_format, "the format: scec (the SCEC code-verification uploads)")
+      ->required()
+      ->check(CLI::IsMember({"scec"}));
+  exp->add_option("--problem", export_problem, "the benchmark's name for the files' # problem= line "
+                                               "(default: the case's title)");
+  exp->add_option("--author", export_author, "the files' # author= line");
+
   CLI11_PARSE(app, argc, argv);
+  if (exp->parsed()) {
+    std::vector<std::string> args{export_dir, "--format", export_format};
+    if (!export_problem.empty()) args.insert(args.end(), {"--problem", export_problem});
+    if (!export_author.empty()) args.insert(args.end(), {"--author", export_author});
+    return run_export(argv[0], args);
+  }
   if (docs->parsed()) {
     fmt::print("{}", input_reference_markdown());
     return 0;
