@@ -78,6 +78,14 @@ void parse_materials(Section& top, Case& c, ParseContext& ctx) {
       elastic_from_wave_speeds(m, em);
     else
       elastic_from_moduli(m, em);
+    // Kelvin-Voigt eta / dt: the explicit step stays stable for any value at the reduced step
+    // dt <= 2 / (omega sqrt(1 + 2 eta/dt)) (docs/theory.md §16), which the step bound applies;
+    // above 1 the damping is no longer a small regularization of the highest frequencies.
+    em.kelvin_voigt = m.number("kelvin_voigt", 0.0);
+    if (!(em.kelvin_voigt >= 0.0 && em.kelvin_voigt <= 1.0))
+      fail(m.key("kelvin_voigt"), em.kelvin_voigt,
+           "must lie in [0, 1] (eta / dt, the Kelvin-Voigt viscosity in units of the time step; "
+           "the reference codes use 0.1)");
     material_index[name] = int(c.materials.size());
     c.materials.push_back(em);
   }

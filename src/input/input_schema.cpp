@@ -134,6 +134,11 @@ std::vector<KeyDoc> build_schema() {
        "none (with p_wave_speed, instead of youngs_modulus and poisson_ratio)", "> 0, finite",
        "S-wave speed c_S: mu = rho c_S^2", "3464.0"},
       {"materials.*.density", "number", "kg/m^3", "required", "> 0", "mass density rho", "1246.0"},
+      {"materials.*.kelvin_voigt", "number", "", "0", "[0, 1]",
+       "Kelvin-Voigt damping eta / dt: sigma = C : (eps + eta eps_dot), eta this multiple of the "
+       "time step (0.1 as SEM2DPACK and PyLith); enters the energy balance as viscous_dissipated "
+       "and the step bound (docs/theory.md §16)",
+       "0.1"},
 
       {"grid", "table", "", "required", "",
        "The background grid: a rectangular domain of square cells, optionally refined in nested "

@@ -10,10 +10,10 @@ ElasticStiffness stiffness(const ElasticMaterial& m, PlaneMode mode) {
   const double mu = E / (2.0 * (1.0 + nu));
   if (mode == PlaneMode::strain) {
     const double lambda = E * nu / ((1.0 + nu) * (1.0 - 2.0 * nu));
-    return {lambda + 2.0 * mu, lambda, mu, lambda, 1.0 / (2.0 * (lambda + mu))};
+    return {lambda + 2.0 * mu, lambda, mu, lambda, 1.0 / (2.0 * (lambda + mu)), m.kelvin_voigt};
   }
   const double c = E / (1.0 - nu * nu);
-  return {c, c * nu, mu, 0.0, 1.0 / (c * (1.0 + nu))};
+  return {c, c * nu, mu, 0.0, 1.0 / (c * (1.0 + nu)), m.kelvin_voigt};
 }
 
 ElasticState prestressed_state(const ElasticMaterial& m, PlaneMode mode, double sxx, double syy,

@@ -14,6 +14,9 @@ struct ElasticMaterial {
   double youngs_modulus = 0.0;  // E, Pa
   double poisson_ratio = 0.0;   // nu, -
   double density = 0.0;         // rho, kg/m^3
+  // Kelvin-Voigt damping (docs/theory.md §16): sigma = C : (eps + eta eps_dot) with
+  // eta = kelvin_voigt x dt, the time step (as SEM2DPACK and PyLith set it, e.g. 0.1). 0: none.
+  double kelvin_voigt = 0.0;    // eta / dt, -
 };
 
 // In-plane stiffness for the chosen plane mode: sigma = C : eps with
@@ -23,6 +26,7 @@ struct ElasticMaterial {
 struct ElasticStiffness {
   double c11, c12, mu, cz;
   double tr_per_stress;
+  double kelvin_voigt = 0.0;  // eta / dt (ElasticMaterial::kelvin_voigt)
 };
 
 ElasticStiffness stiffness(const ElasticMaterial& m, PlaneMode mode);

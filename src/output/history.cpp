@@ -27,11 +27,14 @@ double History::max_relative_error(double after) const {
 std::string History::csv() const {
   std::string s =
       "time,kinetic_energy,strain_energy,external_work,total_energy,balance,"
-      "relative_balance_error,cohesive_stored,cohesive_dissipated\n";
-  for (const EnergySample& e : samples)
-    s += fmt::format("{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.6e},{:.9e},{:.9e}\n", e.time,
+      "relative_balance_error,cohesive_stored,cohesive_dissipated";
+  s += viscous ? ",viscous_dissipated\n" : "\n";
+  for (const EnergySample& e : samples) {
+    s += fmt::format("{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.6e},{:.9e},{:.9e}", e.time,
                      e.kinetic, e.strain, e.external_work, e.total(), e.balance(),
                      e.relative_error(), e.cohesive_stored, e.cohesive_dissipated);
+    s += viscous ? fmt::format(",{:.9e}\n", e.viscous_dissipated) : "\n";
+  }
   return s;
 }
 

@@ -14,7 +14,10 @@ namespace rupture {
 struct EnergySample {
   double time, kinetic, strain, external_work, initial;
   double cohesive_stored = 0.0, cohesive_dissipated = 0.0;
-  double total() const { return kinetic + strain + cohesive_stored + cohesive_dissipated; }
+  double viscous_dissipated = 0.0;  // Kelvin-Voigt damping's work, J (State::viscous_work)
+  double total() const {
+    return kinetic + strain + cohesive_stored + cohesive_dissipated + viscous_dissipated;
+  }
   double balance() const { return initial + external_work - total(); }
   // |balance| relative to the energy put in: initial + |external work| + the energy a
   // prestressed fault releases (minus its work, when that is negative).
@@ -23,6 +26,7 @@ struct EnergySample {
 
 struct History {
   std::vector<EnergySample> samples;
+  bool viscous = false;  // a damped material: csv() adds the viscous_dissipated column
   std::string csv() const;
   // Largest relative_error() of the samples at or after time `after` (s); the last sample's
   // if none is that late.

@@ -151,7 +151,7 @@ void distribute(State& s, const Comm& comm, bool fresh) {
   if (fresh) {
     s.strain_work = strain_energy(P, s.stiffness);
   } else if (comm.rank() > 0) {
-    s.strain_work = s.external_work = 0.0;
+    s.strain_work = s.external_work = s.viscous_work = 0.0;
     for (CohesiveInterface& c : s.interfaces) c.work = 0.0;
   }
 }

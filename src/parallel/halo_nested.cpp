@@ -339,7 +339,7 @@ void distribute_nested(RunState& n, const Comm& comm, bool fresh, const NestedSp
     if (fresh)
       L.strain_work = strain_energy(P, L.stiffness);
     else if (comm.rank() > 0)
-      L.strain_work = L.external_work = 0.0;
+      L.strain_work = L.external_work = L.viscous_work = 0.0;
     if (!fresh && comm.rank() > 0)  // the run's sums stay on rank 0
       for (CohesiveInterface& c : L.interfaces) c.work = 0.0;
   }

@@ -128,7 +128,7 @@ void distribute_held(State& s, const Comm& comm, const std::vector<double>& key)
   set_blocks(s, d.block);
   // The run's sums stay on rank 0 (as distribute of a restored State).
   if (comm.rank() > 0) {
-    s.strain_work = s.external_work = 0.0;
+    s.strain_work = s.external_work = s.viscous_work = 0.0;
     for (CohesiveInterface& c : s.interfaces) c.work = 0.0;
   }
 }

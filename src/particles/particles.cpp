@@ -13,6 +13,13 @@ void Particles::resize(std::size_t n) {
   field.resize(n, 0);
   material.resize(n, 0);
   id.resize(n, 0);
+  if (viscous_on)
+    for (auto* v : {&vsxx, &vsyy, &vsxy}) v->resize(n, 0.0);
+}
+
+void Particles::enable_viscous() {
+  viscous_on = true;
+  for (auto* v : {&vsxx, &vsyy, &vsxy}) v->resize(size(), 0.0);
 }
 
 namespace {
@@ -38,6 +45,8 @@ void Particles::permute(const std::vector<std::uint32_t>& order, std::vector<dou
   permute_one(material, order, tmp8);
   thread_local std::vector<std::uint32_t> tmp32;
   permute_one(id, order, tmp32);
+  if (viscous_on)
+    for (auto* v : {&vsxx, &vsyy, &vsxy}) permute_one(*v, order, scratch);
 }
 
 namespace {
@@ -66,6 +75,12 @@ std::size_t Particles::move_marked(const std::vector<unsigned char>& mark, Parti
   move_one(field, to.field, mark);
   move_one(material, to.material, mark);
   move_one(id, to.id, mark);
+  if (viscous_on || to.viscous_on) {  // both stores of a damped run carry it
+    enable_viscous(), to.enable_viscous();
+    for (auto [a, b] : {std::pair{&vsxx, &to.vsxx}, {&vsyy, &to.vsyy}, {&vsxy, &to.vsxy}})
+      move_one(*a, *b, mark);
+    to.enable_viscous();
+  }
   return before - size();
 }
 
@@ -75,12 +90,22 @@ void Particles::append_copy(const Particles& from) {
   add(volume0, from.volume0), add(half_x, from.half_x), add(half_y, from.half_y);
   add(sxx, from.sxx), add(syy, from.syy), add(sxy, from.sxy);
   add(field, from.field), add(material, from.material), add(id, from.id);
+  if (viscous_on || from.viscous_on) {
+    const std::size_t n = x.size();
+    viscous_on = true;
+    for (auto [to, v] : {std::pair{&vsxx, &from.vsxx}, {&vsyy, &from.vsyy}, {&vsxy, &from.vsxy}}) {
+      to->resize(n - from.size(), 0.0);
+      if (v->empty()) to->resize(n, 0.0); else add(*to, *v);
+    }
+  }
 }
 
 void Particles::pack(std::size_t p, double* out) const {
   const double v[kPacked] = {x[p],   y[p],   vx[p],  vy[p],           mass[p],
                              volume0[p], half_x[p], half_y[p], sxx[p], syy[p],
-                             sxy[p], double(field[p]), double(material[p]), double(id[p])};
+                             sxy[p], double(field[p]), double(material[p]), double(id[p]),
+                             viscous_on ? vsxx[p] : 0.0, viscous_on ? vsyy[p] : 0.0,
+                             viscous_on ? vsxy[p] : 0.0};
   for (std::size_t k = 0; k < kPacked; ++k) out[k] = v[k];
 }
 
@@ -90,6 +115,7 @@ void Particles::push_packed(const double* in) {
   field.push_back(std::uint8_t(in[11]));
   material.push_back(std::uint8_t(in[12]));
   id.push_back(std::uint32_t(in[13]));
+  if (viscous_on) vsxx.push_back(in[14]), vsyy.push_back(in[15]), vsxy.push_back(in[16]);
 }
 
 void seed_rectangle(Particles& p, const double min[2], const double max[2], double h, int ppc,

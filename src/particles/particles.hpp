@@ -24,6 +24,14 @@ struct Particles {
   std::vector<std::uint8_t> field;         // velocity field (body) id
   std::vector<std::uint8_t> material;      // material id
   std::vector<std::uint32_t> id;           // creation index: identity across re-sorting
+  // Kelvin-Voigt viscous stress eta C : eps_dot of the last stress update, Pa (in-plane), which
+  // the next internal force adds to the elastic stress (material/elastic.hpp: kelvin_voigt).
+  // Empty unless a material is damped (enable_viscous); then of size(), and every operation
+  // below carries it.
+  std::vector<double> vsxx, vsyy, vsxy;
+  bool viscous() const { return viscous_on; }
+  void enable_viscous();  // sizes the viscous arrays (zeros) and keeps them from now on
+  bool viscous_on = false;
 
 
   std::size_t size() const { return x.size(); }
@@ -41,8 +49,9 @@ struct Particles {
   // Appends a copy of every particle of `from`.
   void append_copy(const Particles& from);
   // One particle as kPacked doubles (every array; the integers are exact in a double), for
-  // sending it to another process (parallel/halo.hpp), and back.
-  static constexpr std::size_t kPacked = 14;
+  // sending it to another process (parallel/halo.hpp), and back; the viscous stress travels
+  // too (zeros when the store has none).
+  static constexpr std::size_t kPacked = 17;
   void pack(std::size_t p, double* out) const;
   void push_packed(const double* in);
 };

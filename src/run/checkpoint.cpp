@@ -86,6 +86,10 @@ void fields(A& a, Particles& p) {
   a("field", p.field);
   a("material", p.material);
   a("id", p.id);
+  a("viscous_on", p.viscous_on);
+  a("vsxx", p.vsxx);
+  a("vsyy", p.vsyy);
+  a("vsxy", p.vsxy);
 }
 
 // The particle order and the strips it was sorted into fix the summation order: both stored.
@@ -233,6 +237,7 @@ void state_fields(A& a, State& s, bool level) {
   a("cohesive_seconds", s.cohesive_seconds);
   a("external_work", s.external_work);
   a("strain_work", s.strain_work);
+  a("viscous_work", s.viscous_work);
   a("initial_energy", s.initial_energy);
   if (level) a("window_drift", s.window_drift);
   a.same("nested", false);
@@ -316,6 +321,7 @@ void fields(A& a, RunState& r) {
   a("cohesive_seconds", r.cohesive_seconds);
   a("external_work", r.external_work);
   a("strain_work", r.strain_work);
+  a("viscous_work", r.viscous_work);
   a("initial_energy", r.initial_energy);
   a.same("nested", true);
   NestedEntry nested{&r};
@@ -341,6 +347,7 @@ void fields(A& a, EnergySample& e) {
   a("initial", e.initial);
   a("cohesive_stored", e.cohesive_stored);
   a("cohesive_dissipated", e.cohesive_dissipated);
+  a("viscous_dissipated", e.viscous_dissipated);
 }
 
 template <class A>

@@ -29,8 +29,10 @@ inline constexpr int kCheckpointVersion = 13;  // 2: State::strain_work; 3: Mach
                                               // grid.refinement meant "graded" before);
                                               // 12: rate-and-state history (gp_state,
                                               // gp_rate) and the interfaces' time;
-                                              // 13: the nodes' slip rate (node_slip_rate)
-                                              // and fault stations' jump_rate column
+                                              // 13: the nodes' slip rate (node_slip_rate),
+                                              // fault stations' jump_rate column, the
+                                              // particles' Kelvin-Voigt stress (viscous_on,
+                                              // vsxx, vsyy, vsxy) and viscous_dissipated
 
 std::string checkpoint_path(const std::string& dir);  // DIR/checkpoint/checkpoint.bin
 

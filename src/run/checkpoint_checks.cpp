@@ -275,6 +275,11 @@ void check_particle_arrays(const Particles& p, const std::string& entry, const s
       {"sxy", p.sxy.size()},       {"field", p.field.size()},   {"material", p.material.size()},
       {"id", p.id.size()}};
   for (const auto& [name, size] : arrays) ck.length(entry + "." + name, size, n, "the length of x, one per particle");
+  // The Kelvin-Voigt stress: one per particle in a damped run, none otherwise.
+  const std::size_t viscous = p.viscous_on ? n : 0;
+  for (const auto& [name, size] : {std::pair{"vsxx", p.vsxx.size()}, {"vsyy", p.vsyy.size()}, {"vsxy", p.vsxy.size()}})
+    ck.length(entry + "." + name, size, viscous,
+              p.viscous_on ? "the length of x (viscous_on: a damped material)" : "0 (viscous_on is false)");
 }
 
 void check_particles(const Particles& p, const State& s, const std::string& entry, const std::string& origin) {

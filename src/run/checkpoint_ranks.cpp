@@ -70,8 +70,10 @@ void write_checkpoint_ranks(const std::string& dir, const CaseSource& source, Ru
   const int n = comm.size(), parts = int(held.size()) * n;
   std::vector<CohesiveInterface*> interfaces;
   for (std::size_t k = 0; k < s.num_interfaces(); ++k) interfaces.push_back(&s.interface(k));
-  std::vector<double> sums{s.strain_work, s.external_work};
-  for (const State* l : held) sums.push_back(l->strain_work), sums.push_back(l->external_work);
+  // Three sums per State (the run's, then each part's): strain, external and viscous work.
+  constexpr std::size_t K = 3;
+  std::vector<double> sums{s.strain_work, s.external_work, s.viscous_work};
+  for (const State* l : held) sums.insert(sums.end(), {l->strain_work, l->external_work, l->viscous_work});
   for (const CohesiveInterface* c : interfaces) sums.push_back(c->work);
   comm.sum(sums.data(), int(sums.size()));
   std::string failure;
@@ -86,21 +88,25 @@ void write_checkpoint_ranks(const std::string& dir, const CaseSource& source, Ru
     // The run's sums and no particles (they are in the parts), then this rank's own back.
     const std::size_t L = held.size();
     std::vector<Particles> mine(L);
-    std::vector<double> own(2 * L + 2);
-    own[0] = s.strain_work, own[1] = s.external_work;
+    std::vector<double> own(K * L + K);
+    own[0] = s.strain_work, own[1] = s.external_work, own[2] = s.viscous_work;
     for (std::size_t l = 0; l < L; ++l) {
       std::swap(mine[l], held[l]->particles);
-      own[2 + 2 * l] = held[l]->strain_work, own[3 + 2 * l] = held[l]->external_work;
+      own[K + K * l] = held[l]->strain_work, own[K + K * l + 1] = held[l]->external_work;
+      own[K + K * l + 2] = held[l]->viscous_work;
       held[l]->particle_parts = n;
     }
     std::vector<double> work;
     for (const CohesiveInterface* c : interfaces) work.push_back(c->work);
     const auto set = [&](const std::vector<double>& v) {  // run's and each part's sums
-      s.strain_work = v[0], s.external_work = v[1];
-      for (std::size_t l = 0; l < L; ++l) held[l]->strain_work = v[2 + 2 * l], held[l]->external_work = v[3 + 2 * l];
+      s.strain_work = v[0], s.external_work = v[1], s.viscous_work = v[2];
+      for (std::size_t l = 0; l < L; ++l) {
+        held[l]->strain_work = v[K + K * l], held[l]->external_work = v[K + K * l + 1];
+        held[l]->viscous_work = v[K + K * l + 2];
+      }
     };
     set(sums);
-    for (std::size_t k = 0; k < interfaces.size(); ++k) interfaces[k]->work = sums[2 + 2 * L + k];
+    for (std::size_t k = 0; k < interfaces.size(); ++k) interfaces[k]->work = sums[K + K * L + k];
     try {
       write_checkpoint(dir, source, ctx);
     } catch (const std::exception& e) {

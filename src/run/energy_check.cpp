@@ -15,10 +15,11 @@ namespace rupture {
 EnergySample sample_energy(RunState& s) {
   // Distributed: the sums over particles and owned nodes, added over the ranks; every
   // interface node's state from its owner.
-  double part[3] = {kinetic_energy(all_particles(s)), s.strain_work, s.external_work};
-  if (s.halo) halo_of(s).comm.sum(part, 3);
+  double part[4] = {kinetic_energy(all_particles(s)), s.strain_work, s.external_work, s.viscous_work};
+  if (s.halo) halo_of(s).comm.sum(part, 4);
   collect_interface_state(s);
   EnergySample e{s.time, part[0], part[1], part[2], s.initial_energy};
+  e.viscous_dissipated = part[3];
   for (std::size_t k = 0; k < s.num_interfaces(); ++k) {
     const double stored = s.interface(k).stored_energy();
     e.cohesive_stored += stored;

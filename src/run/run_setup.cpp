@@ -39,6 +39,8 @@ std::vector<StationProbe> set_up(RunContext& r, const Case& c, const std::string
   // A distributed resume builds no particle: the checkpoint brings them and their sums.
   const ParticleShare none = ParticleShare::none();
   r.s = !by_rank ? make_run_state(c) : resume ? make_run_state(c, &none) : make_rank_state(c, comm);
+  r.history.viscous = std::any_of(c.materials.begin(), c.materials.end(),
+                                  [](const ElasticMaterial& m) { return m.kelvin_voigt > 0.0; });
   const double* region = c.output.has_snapshot_region ? c.output.snapshot_region : nullptr;
   std::vector<StationProbe> probes;
   if (by_rank) {

@@ -168,7 +168,8 @@ void gather_nodes(const StencilBatch& B, int n, const typename GatherTile<kMode>
 // particle order into `work`. The stress is the stored state: tr eps (for the volume) follows
 // from it (material/elastic.hpp), and sigma_zz and the strain are derived where needed.
 void update_stress(Particles& P, std::size_t p, int n, const Gathered& g,
-                   const std::vector<ElasticStiffness>& stiffness, double dt, double& work) {
+                   const std::vector<ElasticStiffness>& stiffness, double dt, double& work,
+                   double& viscous_work) {
   alignas(64) double c11[kBatch], c12[kBatch], mu[kBatch], kt[kBatch], wk[kBatch];
   const std::uint8_t* mat = P.material.data() + p;
   const bool one = stiffness.size() == 1;  // one material: no lookup per particle
@@ -193,6 +194,23 @@ void update_stress(Particles& P, std::size_t p, int n, const Gathered& g,
     sxy[k] += dsxy;
   }
   for (int k = 0; k < n; ++k) work += wk[k];
+  if (!P.viscous_on) return;
+  // Kelvin-Voigt (docs/theory.md §16): the viscous stress sigma_v = eta C : eps_dot with eta =
+  // f dt is f C : d eps, f this material's kelvin_voigt. The one the step's force used (the
+  // last update's) did the work V sigma_v : d eps, dissipated; then it takes this increment's.
+  double* __restrict vxx = P.vsxx.data() + p;
+  double* __restrict vyy = P.vsyy.data() + p;
+  double* __restrict vxy = P.vsxy.data() + p;
+  for (int k = 0; k < n; ++k) {
+    const ElasticStiffness& C = stiffness[one ? 0 : mat[k]];
+    const double dexx = g.L00[k] * dt, deyy = g.L11[k] * dt, dexy = 0.5 * (g.L01[k] + g.L10[k]) * dt;
+    const double V = vol0[k] * (1.0 + (sxx[k] + syy[k]) * kt[k]);
+    viscous_work += V * (vxx[k] * dexx + vyy[k] * deyy + 2.0 * vxy[k] * dexy);
+    const double f = C.kelvin_voigt;
+    vxx[k] = f * (c11[k] * dexx + c12[k] * deyy);
+    vyy[k] = f * (c12[k] * dexx + c11[k] * deyy);
+    vxy[k] = f * 2.0 * mu[k] * dexy;
+  }
 }
 
 // Bounds a strip's particles must keep: inside the grid (see below), within the scatter plan's
@@ -286,6 +304,7 @@ std::size_t first_bad(const Particles& P, std::size_t p, int n, const MoveLimits
 // (so the totals do not depend on the number of threads or on which thread took the strip).
 struct StripResult {
   double work = 0.0;     // E14's stress work of the strip's particles, J
+  double viscous = 0.0;  // the Kelvin-Voigt stresses' work (dissipated), J
   double fastest = 0.0;  // the largest |v_x| + |v_y| a particle moved with, m/s
   std::size_t bad = kNone;  // the first non-finite particle or one outside the grid
   bool drifted = false;     // a particle left the strip's drift tolerance
@@ -353,7 +372,7 @@ StripResult strip_to_particles(State& s, int strip, const double* gvx, const dou
         vy[k] = flip * (vy[k] + g.dv_y[k]) + (1.0 - flip) * g.pic_y[k];
       }
     }
-    if constexpr (do_stress) update_stress(P, p0, n, g, s.stiffness, dt, r.work);
+    if constexpr (do_stress) update_stress(P, p0, n, g, s.stiffness, dt, r.work, r.viscous);
     if constexpr (do_move) move_particles(P, p0, n, g, dt, s.grid.x, lim, r.drifted, r.fastest);
     const std::size_t b = first_bad<kMode != G2PMode::stress_and_move>(P, p0, n, lim);
     if (b != kNone) r.bad = std::min(r.bad, b);
@@ -401,7 +420,7 @@ void states_to_particles(State* const* states, std::size_t count, NodalArray gx,
     bool drifted = false;
     double fastest = 0.0;
     for (std::size_t t = first[l]; t < first[l + 1]; ++t) {
-      if (stress) s.strain_work += out[t].work;
+      if (stress) s.strain_work += out[t].work, s.viscous_work += out[t].viscous;
       bad = std::min(bad, out[t].bad);
       drifted = drifted || out[t].drifted;
       fastest = std::max(fastest, out[t].fastest);

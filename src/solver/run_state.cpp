@@ -36,12 +36,14 @@ void collect_run_sums(RunState& r) {
     r.time = s.time, r.dt = s.dt, r.step = s.step;
     r.limits = s.limits;
     r.external_work = s.external_work, r.strain_work = s.strain_work;
+    r.viscous_work = s.viscous_work;
     r.cohesive_seconds = s.cohesive_seconds;
     return;
   }
-  r.external_work = r.strain_work = r.cohesive_seconds = 0.0;
+  r.external_work = r.strain_work = r.viscous_work = r.cohesive_seconds = 0.0;
   for (const State& l : r.levels) {
     r.external_work += l.external_work, r.strain_work += l.strain_work;
+    r.viscous_work += l.viscous_work;
     r.cohesive_seconds += l.cohesive_seconds;
   }
 }

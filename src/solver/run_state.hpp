@@ -50,6 +50,7 @@ struct RunState {
   StepLimits limits;
   double initial_energy = 0.0;    // kinetic + strain energy at t = 0, J (per unit thickness)
   double strain_work = 0.0;       // E14 (solver/energy.hpp), summed over the levels, J
+  double viscous_work = 0.0;      // Kelvin-Voigt dissipation, summed over the levels, J
   double external_work = 0.0;     // work of the prescribed velocities and loads, J
   double cohesive_seconds = 0.0;  // wall time in the cohesive phases so far, s
   // interface_levels[k], interface_slots[k]: the level of the case's interface k (input

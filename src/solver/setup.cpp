@@ -137,6 +137,9 @@ State make_state_on(const Case& c, Grid grid, const PointFilter* keep, const Poi
     }
     prestress(s.particles, first, s.particles.size(), b, c.materials[std::size_t(b.material)], c.plane);
   }
+  // Kelvin-Voigt damping: the particles carry their viscous stress (particles/particles.hpp).
+  for (const ElasticMaterial& m : c.materials)
+    if (m.kelvin_voigt > 0.0) s.particles.enable_viscous();
   if (!keep) {
     s.boundary = c.boundary;
     update_edge_lines(s.boundary, s.grid, 0.0, s.bc_lines);

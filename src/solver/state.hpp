@@ -170,6 +170,9 @@ struct State {
   // E14's strain energy (solver/energy.hpp): the elastic energy at t = 0 plus the work the
   // stresses have done since, sum V sigma : d eps, J (per unit thickness)
   double strain_work = 0.0;
+  // Kelvin-Voigt damping (material/elastic.hpp): the work of the viscous stresses, dissipated,
+  // sum V sigma_v : d eps, J (per unit thickness; 0 without a damped material)
+  double viscous_work = 0.0;
 };
 
 // Which of the case's particles a State made from it holds. One process holds every one (no

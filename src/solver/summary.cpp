@@ -69,9 +69,12 @@ CaseSummary summarize(const Case& c) {
   // (2 / m) k h with k the law's stiffness at rest, penalty included (a node carries a length
   // h of interface). The run recomputes both terms every step from the actual state.
   const int ppc = c.grid.particles_per_cell;
+  // Kelvin-Voigt damping eta = f dt lowers the central-difference limit from omega dt <= 2 to
+  // omega dt <= 2 / sqrt(1 + 2 f) (docs/theory.md §16): the bound's eigenvalue times (1 + 2 f).
   for (const ElasticMaterial& m : c.materials)
     s.bulk_eigen_bound =
-        std::max(s.bulk_eigen_bound, bulk_eigen_bound(stiffness(m, c.plane), m.density, ppc, h));
+        std::max(s.bulk_eigen_bound, (1.0 + 2.0 * m.kelvin_voigt) *
+                                         bulk_eigen_bound(stiffness(m, c.plane), m.density, ppc, h));
   s.dt_bulk = 2.0 / std::sqrt(s.bulk_eigen_bound);
   for (const InterfaceSpec& is : c.interfaces) {
     const double rho = std::min(c.materials[c.bodies[is.upper_body].material].density,

@@ -39,6 +39,16 @@ inline void batch_force(const Particles& P, const ElasticStiffness* stiffness, b
     const double V = vol0[k] * (1.0 + (sxx[k] + syy[k]) * kt[k]);
     f.xx[k] = -V * sxx[k], f.yy[k] = -V * syy[k], f.xy[k] = -V * sxy[k];
   }
+  if (!P.viscous_on) return;
+  // Kelvin-Voigt: the viscous stress of the last update joins the elastic one (the explicit
+  // central-difference form, docs/theory.md §16).
+  const double* __restrict vxx = P.vsxx.data() + p0;
+  const double* __restrict vyy = P.vsyy.data() + p0;
+  const double* __restrict vxy = P.vsxy.data() + p0;
+  for (int k = 0; k < n; ++k) {
+    const double V = vol0[k] * (1.0 + (sxx[k] + syy[k]) * kt[k]);
+    f.xx[k] -= V * vxx[k], f.yy[k] -= V * vyy[k], f.xy[k] -= V * vxy[k];
+  }
 }
 
 // Adds particle k's contribution to node (a, b) of its stencil, sy_b col_a [+ dsy_b col_y_a],
