@@ -8,6 +8,7 @@ out=${1:?usage: tpv205_study.sh OUT_DIR [cell sizes]}
 shift || true
 sizes=${*:-200 100 50}
 bin=${RUPTURE:-build/release/bin/rupture}
+mkdir -p "$out"
 case=${CASE:-examples/tpv205_2d.toml}
 length=${FAULT_LENGTH:-40000}
 for h in $sizes; do
