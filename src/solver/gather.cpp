@@ -170,12 +170,12 @@ void gather_nodes(const StencilBatch& B, int n, const typename GatherTile<kMode>
 void update_stress(Particles& P, std::size_t p, int n, const Gathered& g,
                    const std::vector<ElasticStiffness>& stiffness, double dt, double& work,
                    double& viscous_work) {
-  alignas(64) double c11[kBatch], c12[kBatch], mu[kBatch], kt[kBatch], wk[kBatch];
+  alignas(64) double c11[kBatch], c12[kBatch], mu[kBatch], kt[kBatch], wk[kBatch], kv[kBatch];
   const std::uint8_t* mat = P.material.data() + p;
   const bool one = stiffness.size() == 1;  // one material: no lookup per particle
   for (int k = 0; k < n; ++k) {
     const ElasticStiffness& C = stiffness[one ? 0 : mat[k]];
-    c11[k] = C.c11, c12[k] = C.c12, mu[k] = C.mu, kt[k] = C.tr_per_stress;
+    c11[k] = C.c11, c12[k] = C.c12, mu[k] = C.mu, kt[k] = C.tr_per_stress, kv[k] = C.kelvin_voigt;
   }
   double* __restrict sxx = P.sxx.data() + p;
   double* __restrict syy = P.syy.data() + p;
@@ -201,16 +201,16 @@ void update_stress(Particles& P, std::size_t p, int n, const Gathered& g,
   double* __restrict vxx = P.vsxx.data() + p;
   double* __restrict vyy = P.vsyy.data() + p;
   double* __restrict vxy = P.vsxy.data() + p;
+#pragma omp simd
   for (int k = 0; k < n; ++k) {
-    const ElasticStiffness& C = stiffness[one ? 0 : mat[k]];
     const double dexx = g.L00[k] * dt, deyy = g.L11[k] * dt, dexy = 0.5 * (g.L01[k] + g.L10[k]) * dt;
     const double V = vol0[k] * (1.0 + (sxx[k] + syy[k]) * kt[k]);
-    viscous_work += V * (vxx[k] * dexx + vyy[k] * deyy + 2.0 * vxy[k] * dexy);
-    const double f = C.kelvin_voigt;
-    vxx[k] = f * (c11[k] * dexx + c12[k] * deyy);
-    vyy[k] = f * (c12[k] * dexx + c11[k] * deyy);
-    vxy[k] = f * 2.0 * mu[k] * dexy;
+    wk[k] = V * (vxx[k] * dexx + vyy[k] * deyy + 2.0 * vxy[k] * dexy);
+    vxx[k] = kv[k] * (c11[k] * dexx + c12[k] * deyy);
+    vyy[k] = kv[k] * (c12[k] * dexx + c11[k] * deyy);
+    vxy[k] = kv[k] * 2.0 * mu[k] * dexy;
   }
+  for (int k = 0; k < n; ++k) viscous_work += wk[k];  // in particle order, as the elastic work
 }
 
 // Bounds a strip's particles must keep: inside the grid (see below), within the scatter plan's

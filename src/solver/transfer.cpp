@@ -45,6 +45,7 @@ inline void batch_force(const Particles& P, const ElasticStiffness* stiffness, b
   const double* __restrict vxx = P.vsxx.data() + p0;
   const double* __restrict vyy = P.vsyy.data() + p0;
   const double* __restrict vxy = P.vsxy.data() + p0;
+#pragma omp simd
   for (int k = 0; k < n; ++k) {
     const double V = vol0[k] * (1.0 + (sxx[k] + syy[k]) * kt[k]);
     f.xx[k] -= V * vxx[k], f.yy[k] -= V * vyy[k], f.xy[k] -= V * vxy[k];
