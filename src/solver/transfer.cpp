@@ -27,7 +27,7 @@ struct BatchForce {
 };
 inline void batch_force(const Particles& P, const ElasticStiffness* stiffness, bool one_material,
                         std::size_t p0, int n, BatchForce& f) {
-  alignas(64) double kt[kBatch];
+  alignas(64) double kt[kBatch], vol[kBatch];
   const std::uint8_t* mat = P.material.data() + p0;
   for (int k = 0; k < n; ++k) kt[k] = stiffness[one_material ? 0 : mat[k]].tr_per_stress;
   const double* __restrict sxx = P.sxx.data() + p0;
@@ -37,6 +37,7 @@ inline void batch_force(const Particles& P, const ElasticStiffness* stiffness, b
 #pragma omp simd
   for (int k = 0; k < n; ++k) {
     const double V = vol0[k] * (1.0 + (sxx[k] + syy[k]) * kt[k]);
+    vol[k] = V;
     f.xx[k] = -V * sxx[k], f.yy[k] = -V * syy[k], f.xy[k] = -V * sxy[k];
   }
   if (!P.viscous_on) return;
@@ -46,10 +47,7 @@ inline void batch_force(const Particles& P, const ElasticStiffness* stiffness, b
   const double* __restrict vyy = P.vsyy.data() + p0;
   const double* __restrict vxy = P.vsxy.data() + p0;
 #pragma omp simd
-  for (int k = 0; k < n; ++k) {
-    const double V = vol0[k] * (1.0 + (sxx[k] + syy[k]) * kt[k]);
-    f.xx[k] -= V * vxx[k], f.yy[k] -= V * vyy[k], f.xy[k] -= V * vxy[k];
-  }
+  for (int k = 0; k < n; ++k) f.xx[k] -= vol[k] * vxx[k], f.yy[k] -= vol[k] * vyy[k], f.xy[k] -= vol[k] * vxy[k];
 }
 
 // Adds particle k's contribution to node (a, b) of its stencil, sy_b col_a [+ dsy_b col_y_a],
