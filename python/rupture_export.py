@@ -79,10 +79,14 @@ FAULT_COLUMNS = ["Time (s)", "horizontal slip (m)", "horizontal slip rate (m/s)"
                  "vertical shear stress (MPa)", "normal stress (MPa)"]
 FAULT_NAMES = ["t", "h-slip", "h-slip-rate", "h-shear-stress", "v-slip", "v-slip-rate",
                "v-shear-stress", "n-stress"]
+# The CSV column and scale behind each data column after the time (None: 0 in 2D).
+FAULT_SOURCES = [("slip", 1.0), ("slip_rate", 1.0), ("shear_traction", 1e-6), None, None, None,
+                 ("normal_traction", 1e-6)]
 BODY_COLUMNS = ["Time (s)", "horizontal displacement (m)", "horizontal velocity (m/s)",
                 "vertical displacement (m)", "vertical velocity (m/s)", "normal displacement (m)",
                 "normal velocity (m/s)"]
 BODY_NAMES = ["t", "h-disp", "h-vel", "v-disp", "v-vel", "n-disp", "n-vel"]
+BODY_SOURCES = [("ux", 1.0), ("vx", 1.0), None, None, ("uy", 1.0), ("vy", 1.0)]
 
 
 def write_atomic(path, text):
@@ -126,27 +130,19 @@ def export_scec(run, problem, author):
         info["num_time_steps"] = len(t)
         if len(t) > 1:  # the series' own step (output.station_interval, or the run's dt)
             info["time_step"] = (t[-1] - t[0]) / (len(t) - 1)
-        if "interface" in st:
-            for key in ("slip", "slip_rate", "shear_traction", "normal_traction"):
-                if key not in c:
-                    fail(f"'{path}' has no column '{key}': not a fault station's file")
-            location = (f"on fault '{st['interface']}', {at[0] / 1e3:g} km along strike "
-                        f"(x = {at[0]:g} m, y = {at[1]:g} m)")
-            text = header(info, location, FAULT_COLUMNS, FAULT_NAMES)
-            for k in range(len(t)):
-                text += f"{t[k]:.12E}" + "".join(" " + e15(v) for v in (
-                    c["slip"][k], c["slip_rate"][k], c["shear_traction"][k] / 1e6, 0.0, 0.0, 0.0,
-                    c["normal_traction"][k] / 1e6)) + "\n"
-        else:
-            for key in ("ux", "vx", "uy", "vy"):
-                if key not in c:
-                    fail(f"'{path}' has no column '{key}': not a body station's file")
-            location = (f"{at[0] / 1e3:g} km along strike, {at[1] / 1e3:g} km across "
-                        f"(x = {at[0]:g} m, y = {at[1]:g} m)")
-            text = header(info, location, BODY_COLUMNS, BODY_NAMES)
-            for k in range(len(t)):
-                text += f"{t[k]:.12E}" + "".join(" " + e15(v) for v in (
-                    c["ux"][k], c["vx"][k], 0.0, 0.0, c["uy"][k], c["vy"][k])) + "\n"
+        fault = "interface" in st
+        # Each column of the format: (the CSV column, its scale to the format's unit), or None: 0.
+        cols = FAULT_SOURCES if fault else BODY_SOURCES
+        for key in {src[0] for src in cols if src}:
+            if key not in c:
+                fail(f"'{path}' has no column '{key}': not a {'fault' if fault else 'body'} station's file")
+        location = (f"on fault '{st['interface']}', {at[0] / 1e3:g} km along strike" if fault else
+                    f"{at[0] / 1e3:g} km along strike, {at[1] / 1e3:g} km across")
+        location += f" (x = {at[0]:g} m, y = {at[1]:g} m)"
+        text = header(info, location, *((FAULT_COLUMNS, FAULT_NAMES) if fault else (BODY_COLUMNS, BODY_NAMES)))
+        for k in range(len(t)):
+            text += f"{t[k]:.12E}" + "".join(" " + e15(c[src[0]][k] * src[1] if src else 0.0)
+                                             for src in cols) + "\n"
         write_atomic(os.path.join(out, name + ".txt"), text)
         written.append(name + ".txt")
     faults = sorted({st["interface"] for st in stations.values() if "interface" in st})
