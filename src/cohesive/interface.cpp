@@ -89,6 +89,7 @@ CohesiveInterface make_interface(const InterfaceSpec& spec) {
   c.gp_slip.assign(g, 0.0);
   c.gp_state.assign(g, 0.0);
   c.gp_rate.assign(g, 0.0);
+  c.gp_normal.assign(g, 0.0);
   if (spec.precracked) c.node_crack_time.assign(n, 0.0);
   c.node_rupture_time.assign(n, -1.0);
   c.node_peak_slip_rate.assign(n, 0.0);
@@ -119,7 +120,7 @@ double CohesiveInterface::stored_energy() const {
           const double half = 0.5 * seg_length[s];
           for (int g = 0; g < kGauss; ++g) {
             const std::size_t i = s * kGauss + std::size_t(g);
-            const GaussHistory h{gp_damage[i], gp_slip[i], gp_dt[i], gp_state[i], gp_rate[i]};
+            const GaussHistory h{gp_damage[i], gp_slip[i], gp_dt[i], gp_state[i], gp_rate[i], gp_normal[i]};
             const auto& L = law_of(*this, law, gp_law.empty() ? 0 : gp_law[i]);
             if (!gp_separated[i])
               e += w[g] * half * L.stored_energy(gp_dn[i], gp_dt[i], h);

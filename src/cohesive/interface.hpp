@@ -104,6 +104,7 @@ struct CohesiveInterface {
   std::vector<std::uint8_t> gp_separated;  // irreversible separation flags
   std::vector<double> gp_damage, gp_slip;  // law history per Gauss point (GaussHistory)
   std::vector<double> gp_state, gp_rate;   // rate-and-state history (GaussHistory; else 0)
+  std::vector<double> gp_normal;           // sigma* - sigma0, Pa (GaussHistory::normal_seen)
   // Which law each Gauss point and node uses: 0 = spec.law, k = spec.stretches[k - 1].law
   // (derived from the spec, not state; empty when the interface has no stretches).
   std::vector<std::uint16_t> gp_law, node_law;

@@ -19,6 +19,9 @@ namespace rupture {
 //   state   RateStateFriction: its state psi minus the initial state (dimensionless; 0 =
 //           pristine). The other laws leave it alone.
 //   rate    RateStateFriction: its slip rate V minus the initial rate, m/s (signed along t).
+//   normal_seen  SlipWeakening and RateStateFriction with a normal-stress regularization
+//           (cohesive/normal_relaxation.hpp): the compression friction sees, sigma*, minus the
+//           initial compression, Pa (0 = pristine). The other laws leave it alone.
 // SlipWeakening and RateStateFriction keep their slip path D (m, never decreases) in `damage`.
 // The loop also loads what the point's law may ask (and no law stores): where the point lies
 // (x, y: its reference position, m), the time of the jumps (s) and the step that led there
@@ -29,6 +32,7 @@ struct GaussHistory {
   double jump_t = 0.0;
   double state = 0.0;
   double rate = 0.0;
+  double normal_seen = 0.0;
   double x = 0.0, y = 0.0;
   double time = 0.0, duration = 0.0;
 };

@@ -34,6 +34,7 @@
 #include <string>
 
 #include "cohesive/law_types.hpp"
+#include "cohesive/normal_relaxation.hpp"
 
 namespace rupture {
 
@@ -80,6 +81,7 @@ struct RateStateFriction {
   double nucleation_radius = 0.0;    // m, R (0: uniform over the fault)
   double nucleation_time = 0.0;      // s, T (0: a step at t = 0+)
   RateStateTaper taper;              // along-strike taper of a, b, Dc, V_w (off by default)
+  NormalRelaxation relaxation;       // the compression friction sees (off: -Tn itself)
 
   // "" when every parameter lies in its range (and the initial state balances the initial
   // traction), else "name = value: rule" for the first that does not (rate_state.cpp).
@@ -203,7 +205,8 @@ struct RateStateFriction {
 
   // The traction change dT at jumps (dn, dt). History (cohesive/law_types.hpp): h.slip = the
   // plastic slip s (the stick spring's rest length), h.damage = the slip path, h.state =
-  // psi - psi_init, h.rate = V - v_init (signed V along t); inputs h.x, h.y, h.time (the
+  // psi - psi_init, h.rate = V - v_init (signed V along t), h.normal_seen = sigma* - sigma0
+  // (with a regularization); inputs h.x, h.y, h.time (the
   // point and the time of the jumps) and h.duration (the step that led there, s).
   LawResponse respond(double dn, double dt, GaussHistory& h) const {
     if (taper.on) return at(h.x, h.y).respond(dn, dt, h);
@@ -211,7 +214,10 @@ struct RateStateFriction {
     LawResponse r{0.0, 0.0, initial_stiffness()};
     const double t0 = shear_prestress(h.x, h.y, h.time);
     const double tn = tn0 + normal_stiffness * dn;
-    const double sigma = std::max(0.0, -tn);
+    // The compression friction sees: -Tn, or with a regularization the relaxed sigma*
+    // (cohesive/normal_relaxation.hpp; h.normal_seen updated).
+    const double sigma =
+        relaxation.seen(std::max(0.0, -tn), std::max(0.0, -tn0), dt - h.jump_t, h.duration, h);
     const double psi_old = psi_init + h.state, v_old = std::fabs(v_init + h.rate);
     const double step = h.duration;
     const double trial = t0 + kt * (dt - h.slip);

@@ -16,12 +16,15 @@
 // D grows by |dDt| over every step in which the point slides or is open: the weakening follows
 // the jump the bulk sees, so the sliding fault obeys T = strength(D) with no error from the
 // stick penalty (the 1D test's ODE tau0 - (rho c_S / 2) V = strength(D) holds exactly).
+// With a normal-stress regularization (cohesive/normal_relaxation.hpp) the strength's
+// compression is the relaxed sigma* instead of -Tn; the penalty's Tn itself is unchanged.
 #pragma once
 #include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "cohesive/law_types.hpp"
+#include "cohesive/normal_relaxation.hpp"
 
 namespace rupture {
 
@@ -34,6 +37,7 @@ struct SlipWeakening {
   double stick_stiffness = 0.0;   // Pa/m, kt: stuck faces' tangential spring
   double tn0 = 0.0;               // Pa, initial normal traction (< 0: compression)
   double tt0 = 0.0;               // Pa, initial shear traction (> 0 drives the upper face along +t)
+  NormalRelaxation relaxation;    // the compression friction sees (off: -Tn itself)
 
   // "" when every parameter lies in its range, else a message naming the first one that does
   // not, its value and the range (slip_weakening.cpp).
@@ -77,12 +81,15 @@ struct SlipWeakening {
   static constexpr const char* kName = "slip_weakening";
 
   // The traction change dT at jumps (dn, dt); h.damage = slip path D, h.slip = the stick
-  // spring's rest length, h.jump_t = dt at the previous call (the loop's gp_dt).
+  // spring's rest length, h.jump_t = dt at the previous call (the loop's gp_dt),
+  // h.normal_seen = sigma* - sigma0 (with a regularization; h.duration the step).
   LawResponse respond(double dn, double dt, GaussHistory& h) const {
     const double kt = stick_stiffness;
     LawResponse r{0.0, 0.0, initial_stiffness()};  // closed or about to close: max(kn, kt)
     const double path = std::fabs(dt - h.jump_t);
     const double tn = tn0 + normal_stiffness * dn;
+    const double seen = relaxation.seen(std::max(0.0, -tn), std::max(0.0, -tn0), dt - h.jump_t,
+                                        h.duration, h);  // -Tn without a regularization
     if (tn > 0.0) {  // open: no traction; the stick spring follows, the path grows
       h.damage += path;
       h.slip = dt + tt0 / kt;
@@ -91,7 +98,7 @@ struct SlipWeakening {
     }
     const double trial = tt0 + kt * (dt - h.slip);
     double tt = trial;
-    const double s_trial = strength(tn, h.damage + path);
+    const double s_trial = strength(-seen, h.damage + path);
     if (std::fabs(trial) > s_trial) {
       h.damage += path;
       tt = std::copysign(s_trial, trial);

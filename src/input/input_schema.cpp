@@ -453,6 +453,19 @@ std::vector<KeyDoc> build_schema() {
        "> 0", "tangential spring kt of stuck faces (rate_state: of the faces, whose slip rate is "
        "solved against it)",
        "1e9", faults},
+      {"interface.*.normal_relaxation", "string", "", "\"none\"", "none, time, slip",
+       "the normal stress friction sees, regularized after Prakash & Clifton (1993) for faults "
+       "between different materials: none (the actual compression; scales given stay "
+       "unused), time (d sigma*/dt = -(sigma* - sigma)/T), slip (d sigma*/dt = -(|V| + V*)/L "
+       "(sigma* - sigma)); docs/faults.md",
+       "\"none\"", faults},
+      {"interface.*.normal_relaxation_time", "number", "s", "required with normal_relaxation = time",
+       "> 0", "T of the time form", "0.01", faults},
+      {"interface.*.normal_relaxation_slip", "number", "m", "required with normal_relaxation = slip",
+       "> 0", "L of the slip form", "0.2", faults},
+      {"interface.*.normal_relaxation_rate", "number", "m/s",
+       "required with normal_relaxation = slip", ">= 0", "V* of the slip form (relaxation where "
+       "the fault does not slip)", "1.0", faults},
       {"interface.*.evolution", "string", "", "\"aging\"", "aging, slip, flash_heating",
        "the state evolution law: aging (d theta/dt = 1 - V theta/Dc), slip (d psi/dt = -(V/Dc) "
        "(psi - psi_ss)), flash_heating (the slip law with strong rate weakening, TPV103)",

@@ -33,7 +33,7 @@ std::string describe(const InterfaceSpec& is) {
       "{:.4g} Pa static, {:.4g} Pa dynamic, S = {}, {} stretch(es)",
       f.static_friction, f.dynamic_friction, f.dc, f.tn0, f.tt0, ts, td,
       t0 > td ? fmt::format("{:.3g}", (ts - t0) / (t0 - td)) : std::string("inf"),
-      is.stretches.size());
+      is.stretches.size()) + f.relaxation.describe();
 }
 
 // Friction is history-dependent: the total traction T0 + dT of the Gauss points next to the
@@ -54,7 +54,8 @@ LawEntry slip_weakening_entry() {
           law_alternative<SlipWeakening>(),
           true,
           {"static_friction", "dynamic_friction", "dc", "cohesion", "normal_stiffness",
-           "stick_stiffness", "initial_traction", "stretches", "overstressed"},
+           "stick_stiffness", "initial_traction", "stretches", "overstressed", "normal_relaxation",
+           "normal_relaxation_time", "normal_relaxation_slip", "normal_relaxation_rate"},
           parse,
           describe,
           node_traction};

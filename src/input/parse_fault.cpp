@@ -126,6 +126,38 @@ void check_prestress(Section& f, const InterfaceSpec& is) {
                    L.static_strength()));
 }
 
+// interface.NAME.normal_relaxation and its scales (cohesive/normal_relaxation.hpp), for the
+// whole fault: a stretch keeps its interface's. A scale of the other form is refused rather
+// than ignored; with "none" the scales are kept unused (one key switches it off).
+NormalRelaxation read_relaxation(Section& f) {
+  NormalRelaxation r;
+  const std::string form = f.string("normal_relaxation", "none", {"none", "time", "slip"});
+  r.form = form == "time"   ? RelaxationForm::time
+           : form == "slip" ? RelaxationForm::slip
+                            : RelaxationForm::none;
+  const std::vector<std::string> keys =
+      r.form == RelaxationForm::time   ? std::vector<std::string>{"normal_relaxation_time"}
+      : r.form == RelaxationForm::slip ? std::vector<std::string>{"normal_relaxation_slip",
+                                                                  "normal_relaxation_rate"}
+                                       : std::vector<std::string>{};
+  for (const char* k : {"normal_relaxation_time", "normal_relaxation_slip", "normal_relaxation_rate"}) {
+    if (has(keys, k) && !f.has(k))
+      fail(f.key(k), "(missing)", fmt::format("required with normal_relaxation = \"{}\"", form));
+    // With "none" the scales may stay (unused), so that one key switches the regularization off.
+    if (!has(keys, k) && f.has(k) && r.form != RelaxationForm::none)
+      fail(f.key(k), show(*f.node(k)),
+           fmt::format("not a parameter of normal_relaxation = \"{}\" (time: "
+                       "normal_relaxation_time; slip: normal_relaxation_slip and "
+                       "normal_relaxation_rate)",
+                       form));
+  }
+  r.time = f.number("normal_relaxation_time", 0.0);
+  r.slip = f.number("normal_relaxation_slip", 0.0);
+  r.rate = f.number("normal_relaxation_rate", 0.0);
+  fail_on_invalid(f, r.validate(), {});
+  return r;
+}
+
 }  // namespace
 
 // law = "slip_weakening": friction on a prestressed fault (cohesive/slip_weakening.hpp).
@@ -134,6 +166,7 @@ void parse_fault_law(Section& f, const Case& c, InterfaceSpec& is) {
   for (const char* k : {"static_friction", "dynamic_friction", "dc"})
     if (!f.has(k)) fail(f.key(k), "(missing)", "required with law = \"slip_weakening\"");
   law.normal_stiffness = law.stick_stiffness = cell_penalty_stiffness(c, is);  // kn = kt = M / h
+  law.relaxation = read_relaxation(f);
   read_slip_weakening(f, law);
   is.law = law;
   parse_stretches<SlipWeakening>(f, is, c, read_slip_weakening);
@@ -187,6 +220,7 @@ void parse_rate_state_law(Section& f, const Case& c, InterfaceSpec& is) {
       if (f.has(k))
         fail(f.key(k), show(*f.node(k)), "needs nucleation_stress (the stress it shapes)");
   law.normal_stiffness = law.stick_stiffness = cell_penalty_stiffness(c, is);  // kn = kt = M / h
+  law.relaxation = read_relaxation(f);
   if (f.has("taper")) {  // [interface.NAME.taper]: TPV101-103's smooth taper
     Section t = f.table("taper", false, allowed_keys("interface.*.taper"));
     RateStateTaper& tp = law.taper;

@@ -153,7 +153,8 @@ void collect_interface_state(State& s) {
       if (v->size() == c.num_nodes()) whole(comm, o, *v, 1);
     // Gauss points by segment, each from the owner of its first node.
     const std::size_t G = std::size_t(CohesiveInterface::kGauss);
-    for (auto* v : {&c.gp_dn, &c.gp_dt, &c.gp_tn, &c.gp_tt, &c.gp_damage, &c.gp_slip, &c.gp_state, &c.gp_rate})
+    for (auto* v : {&c.gp_dn, &c.gp_dt, &c.gp_tn, &c.gp_tt, &c.gp_damage, &c.gp_slip, &c.gp_state, &c.gp_rate,
+                     &c.gp_normal})
       whole(comm, o, *v, G);
     whole(comm, o, c.gp_separated, G);
   }

@@ -157,6 +157,7 @@ void check_interfaces(const Checker& ck, const std::vector<InterfaceOnGrid>& all
     points("gp_tt", c.gp_tt.size()), points("gp_separated", c.gp_separated.size());
     points("gp_damage", c.gp_damage.size()), points("gp_slip", c.gp_slip.size());
     points("gp_state", c.gp_state.size()), points("gp_rate", c.gp_rate.size());
+    points("gp_normal", c.gp_normal.size());
     for (const auto& [name, v] : {std::pair{"seg_fa_x", &c.seg_fa_x}, {"seg_fa_y", &c.seg_fa_y},
                                   {"seg_fb_x", &c.seg_fb_x}, {"seg_fb_y", &c.seg_fb_y}})
       if (v->size() != segs && !v->empty())

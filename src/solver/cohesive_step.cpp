@@ -104,7 +104,7 @@ void evaluate_with(CohesiveInterface& c, const Law& law, double t, double t_befo
       const double jx = Na * jx_a + Nb * jx_b, jy = Na * jy_a + Nb * jy_b;  // linear jump
       const double dn = nx * jx + ny * jy, dt = tx * jx + ty * jy;          // in the segment frame
       const Law& L = stretches ? law_of(c, law, c.gp_law[i]) : law;  // a stretch's own law
-      GaussHistory h{c.gp_damage[i], c.gp_slip[i], c.gp_dt[i], c.gp_state[i], c.gp_rate[i]};
+      GaussHistory h{c.gp_damage[i], c.gp_slip[i], c.gp_dt[i], c.gp_state[i], c.gp_rate[i], c.gp_normal[i]};
       h.x = Na * c.x0[s] + Nb * c.x0[e], h.y = Na * c.y0[s] + Nb * c.y0[e];  // reference position
       h.time = t, h.duration = t - t_before;
       LawResponse r{0.0, 0.0, 0.0};
@@ -118,6 +118,7 @@ void evaluate_with(CohesiveInterface& c, const Law& law, double t, double t_befo
         r = contact_law.respond(dn, dt, h);
       }
       c.gp_damage[i] = h.damage, c.gp_slip[i] = h.slip, c.gp_state[i] = h.state, c.gp_rate[i] = h.rate;
+      c.gp_normal[i] = h.normal_seen;
       const double tn = r.tn, tt = r.tt, k = r.stiffness;
       // Work of the tractions over the step, trapezoidal in time (E14).
       const double jw = kW[g] * half;

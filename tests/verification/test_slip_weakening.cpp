@@ -142,6 +142,18 @@ TEST(SlipWeakening, bad_fault_input_is_named) {
       {{"interface.fault.friction=0.3"}, {"interface.fault.friction", "slip_weakening"}},
       {{"interface.fault.delta_n=1e-6"}, {"interface.fault.delta_n", "not a parameter"}},
       {{"interface.fault.initial_traction=[1.0]"}, {"interface.fault.initial_traction", "two"}},
+      {{"interface.fault.normal_relaxation=\"slip\""},
+       {"interface.fault.normal_relaxation_slip", "required with normal_relaxation = \"slip\""}},
+      {{"interface.fault.normal_relaxation=\"fast\""}, {"interface.fault.normal_relaxation", "time"}},
+      {{"interface.fault.normal_relaxation=\"slip\"", "interface.fault.normal_relaxation_time=0.1"},
+       {"interface.fault.normal_relaxation_time", "not a parameter of normal_relaxation = \"slip\""}},
+      {{"interface.fault.normal_relaxation=\"time\"", "interface.fault.normal_relaxation_time=-1"},
+       {"interface.fault.normal_relaxation_time", "-1", "> 0"}},
+      {{"interface.fault.normal_relaxation=\"slip\"", "interface.fault.normal_relaxation_slip=0.1",
+        "interface.fault.normal_relaxation_rate=-2"},
+       {"interface.fault.normal_relaxation_rate", "-2", ">= 0"}},
+      {{"interface.fault.stretches=[{from=[0.0,0.0],to=[10.0,0.0],normal_relaxation=\"time\"}]"},
+       {"normal_relaxation"}},
   };
   for (const auto& c : cases) {
     const std::string msg = error_of(c.set);
