@@ -114,6 +114,7 @@ std::vector<std::string> instances(const std::string& table, const std::string& 
   if (table == "bodies.*.minus[]") return {"bodies.lower.minus[0]"};
   if (table == "interface.*.stretches[]") return {"interface.weak.stretches[0]"};
   if (table == "interface.*.taper") return {"interface.weak.taper"};
+  if (table == "interface.*.profile") return {"interface.weak.profile"};
   if (table == "boundary.*") return {"boundary.push"};
   if (table == "interface.*") return {"interface.weak"};
   if (table == "stations.*") return {"stations.st"};
@@ -144,14 +145,16 @@ std::string with_key(const std::string& table, const std::string& key, const std
       if (std::string(k).rfind(key + " =", 0) != 0) stretch += std::string(k) + "\n";
     return text + stretch + key + " = " + value + "\n";
   }
-  if (table == "interface.weak.taper") {
-    // The interface made a rate-and-state fault with a taper.
+  if (table == "interface.weak.taper" || table == "interface.weak.profile") {
+    // The interface made a rate-and-state fault with a taper (or a profile of b).
     for (const char* k : {"sigma_max = 24e6\n", "delta_n = 0.4e-6\n"})
       text.erase(text.find(k), std::string(k).size());
     overrides = {"interface.weak.law=\"rate_state\"", "interface.weak.a=0.008", "interface.weak.b=0.012",
                  "interface.weak.dc=1e-6", "interface.weak.initial_slip_rate=1e-12",
                  "interface.weak.initial_traction=[-1e6, 0.1e6]",
-                 "interface.weak.taper={centre=[0.0,0.0],half_width=0.001,width=0.001,a=0.016}",
+                 table == "interface.weak.taper"
+                     ? "interface.weak.taper={centre=[0.0,0.0],half_width=0.001,width=0.001,a=0.016}"
+                     : "interface.weak.profile={along=\"x\",b=[[0.0,0.012],[0.005,0.014]]}",
                  table + "." + key + "=" + value};
     return text;
   }

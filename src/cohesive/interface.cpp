@@ -45,6 +45,41 @@ void for_each_gauss_point_law(const InterfaceSpec& spec, const std::function<boo
   }
 }
 
+namespace {
+// A rate-and-state law whose parameters vary continuously along the line (its taper, the
+// spec's profile) is resolved once here at every Gauss point and node: the stretch's law there,
+// RateStateFriction::at (the taper) and RateStateProfile::apply. A Gauss point's position is
+// computed exactly as the interface loop computes the one it gives the law (h.x, h.y:
+// solver/cohesive_step.cpp), so the taper gives the same law, bit for bit, as evaluated there.
+void resolve_point_laws(CohesiveInterface& c) {
+  const auto* base = std::get_if<RateStateFriction>(&c.spec.law);
+  if (!base) return;
+  bool varies = base->taper.on || c.spec.profile.on();
+  for (const LawStretch& st : c.spec.stretches) varies = varies || std::get<RateStateFriction>(st.law).taper.on;
+  if (!varies) return;
+  const RateStateProfile& prof = c.spec.profile;
+  const std::size_t nseg = c.num_segments(), G = std::size_t(CohesiveInterface::kGauss);
+  const double* xi = CohesiveInterface::kGaussXi;
+  c.gp_point_law.resize(nseg * G);
+  for (std::size_t s = 0; s < nseg; ++s) {
+    const std::size_t e = c.segment_end(s);
+    for (std::size_t q = 0; q < G; ++q) {
+      const std::size_t i = s * G + q;
+      const double Na = 0.5 * (1.0 - xi[q]), Nb = 0.5 * (1.0 + xi[q]);
+      const double x = Na * c.x0[s] + Nb * c.x0[e], y = Na * c.y0[s] + Nb * c.y0[e];
+      const double arc = c.s0[s] + 0.5 * (1.0 + xi[q]) * c.seg_length[s];
+      const RateStateFriction& L = c.gp_law.empty() ? *base : law_of(c, *base, c.gp_law[i]);
+      c.gp_point_law[i] = prof.apply(L.at(x, y), x, y, arc);
+    }
+  }
+  c.node_point_law.resize(c.num_nodes());
+  for (std::size_t k = 0; k < c.num_nodes(); ++k) {
+    const RateStateFriction& L = c.node_law.empty() ? *base : law_of(c, *base, c.node_law[k]);
+    c.node_point_law[k] = prof.apply(L.at(c.x0[k], c.y0[k]), c.x0[k], c.y0[k], c.s0[k]);
+  }
+}
+}  // namespace
+
 CohesiveInterface make_interface(const InterfaceSpec& spec) {
   CohesiveInterface c;
   c.spec = spec;
@@ -108,6 +143,7 @@ CohesiveInterface make_interface(const InterfaceSpec& spec) {
   }
   for (auto* v : {&c.seg_fa_x, &c.seg_fa_y, &c.seg_fb_x, &c.seg_fb_y, &c.seg_ka, &c.seg_kb})
     v->assign(nseg, 0.0);
+  resolve_point_laws(c);
   return c;
 }
 
@@ -121,7 +157,7 @@ double CohesiveInterface::stored_energy() const {
           for (int g = 0; g < kGauss; ++g) {
             const std::size_t i = s * kGauss + std::size_t(g);
             const GaussHistory h{gp_damage[i], gp_slip[i], gp_dt[i], gp_state[i], gp_rate[i], gp_normal[i]};
-            const auto& L = law_of(*this, law, gp_law.empty() ? 0 : gp_law[i]);
+            const auto& L = gauss_point_law(*this, law, i);
             if (!gp_separated[i])
               e += w[g] * half * L.stored_energy(gp_dn[i], gp_dt[i], h);
             else if (spec.contact)

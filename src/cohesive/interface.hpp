@@ -20,6 +20,7 @@
 #include <variant>
 #include <vector>
 
+#include "cohesive/fault_profile.hpp"
 #include "cohesive/law.hpp"
 #include "cohesive/polyline.hpp"
 
@@ -45,6 +46,8 @@ struct InterfaceSpec {
   // The traction-separation law (cohesive/law.hpp), chosen once per interface.
   CohesiveLaw law = XuNeedleman{};
   std::vector<LawStretch> stretches;  // stretches with their own parameters (none: one law)
+  // law = "rate_state": its parameters tabulated along the line (off: none tabulated).
+  RateStateProfile profile;
   // A node has ruptured once its slip rate |dDt/dt| first exceeds this (m/s; the SCEC
   // benchmarks' rupture-time definition, 1 mm/s).
   double rupture_slip_rate = 1e-3;
@@ -108,6 +111,11 @@ struct CohesiveInterface {
   // Which law each Gauss point and node uses: 0 = spec.law, k = spec.stretches[k - 1].law
   // (derived from the spec, not state; empty when the interface has no stretches).
   std::vector<std::uint16_t> gp_law, node_law;
+  // The law of each Gauss point and node where it varies continuously along the line (a
+  // rate-and-state taper or profile): the stretch's law with the taper and the profile
+  // resolved there, once at set-up (derived from the spec, not state; empty otherwise, and
+  // then gp_law / node_law decide).
+  std::vector<CohesiveLaw> gp_point_law, node_point_law;
   // Rupture front (SCEC definition): the first time each node's slip rate exceeded
   // spec.rupture_slip_rate (or -1), s, and the largest slip rate it has had, m/s (on a fault:
   // the rate of the slip path, sliding only; else of the tangential jump).
@@ -174,7 +182,21 @@ template <class Law>
 const Law& law_of(const CohesiveInterface& c, const Law& base, std::uint16_t which) {
   return which == 0 ? base : std::get<Law>(c.spec.stretches[which - 1u].law);
 }
+// The law at Gauss point i (base: the interface's, of type Law): its point law, its stretch's,
+// or the interface's.
+template <class Law>
+const Law& gauss_point_law(const CohesiveInterface& c, const Law& base, std::size_t i) {
+  if (!c.gp_point_law.empty()) return std::get<Law>(c.gp_point_law[i]);
+  return c.gp_law.empty() ? base : law_of(c, base, c.gp_law[i]);
+}
+// The same at node k.
+template <class Law>
+const Law& node_law_of(const CohesiveInterface& c, const Law& base, std::size_t k) {
+  if (!c.node_point_law.empty()) return std::get<Law>(c.node_point_law[k]);
+  return c.node_law.empty() ? base : law_of(c, base, c.node_law[k]);
+}
 inline const CohesiveLaw& node_law_variant(const CohesiveInterface& c, std::size_t k) {
+  if (!c.node_point_law.empty()) return c.node_point_law[k];
   const std::uint16_t w = c.node_law.empty() ? 0 : c.node_law[k];
   return w == 0 ? c.spec.law : c.spec.stretches[w - 1u].law;
 }

@@ -41,7 +41,7 @@ std::string describe(const InterfaceSpec& is) {
                      "Dc = {:g} m, V_w = {:g} m/s (0: untapered)",
                      f.taper.x, f.taper.y, f.taper.half_width, f.taper.width, f.taper.a, f.taper.b,
                      f.taper.dc, f.taper.vw);
-  return s + fmt::format(", {} stretch(es)", is.stretches.size()) + f.relaxation.describe();
+  return s + fmt::format(", {} stretch(es)", is.stretches.size()) + is.profile.describe() + f.relaxation.describe();
 }
 
 // The total traction T0(t) + dT of the Gauss points next to the node, averaged (T0(t): the
@@ -64,7 +64,7 @@ LawEntry rate_state_entry() {
           {"evolution", "a", "b", "dc", "reference_slip_rate", "reference_friction",
            "weakened_friction", "weakening_slip_rate", "initial_slip_rate", "initial_traction",
            "normal_stiffness", "stick_stiffness", "nucleation_stress", "nucleation_centre",
-           "nucleation_radius", "nucleation_time", "taper", "stretches", "normal_relaxation",
+           "nucleation_radius", "nucleation_time", "taper", "profile", "stretches", "normal_relaxation",
            "normal_relaxation_time", "normal_relaxation_slip", "normal_relaxation_rate"},
           parse,
           describe,

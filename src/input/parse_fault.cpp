@@ -10,6 +10,7 @@
 #include <type_traits>
 #include <vector>
 #include <cmath>
+#include <optional>
 #include <utility>
 #include <variant>
 
@@ -193,6 +194,68 @@ void read_rate_state(Section& f, RateStateFriction& law) {
   fail_on_invalid(f, law.validate(), {});  // its messages name the input keys (taper.*: f's)
 }
 
+// One table of [interface.NAME.profile]: [[coordinate, value], ...], at least two points,
+// coordinates strictly increasing, values > 0 and finite.
+ProfileTable read_profile_table(Section& p, const std::string& k) {
+  ProfileTable t;
+  const toml::node* n = p.node(k);
+  if (!n) return t;
+  const std::string rule = "must be an array of [coordinate, value] pairs of finite numbers, "
+                           "coordinates increasing strictly, values > 0";
+  const toml::array* a = n->as_array();
+  if (!a) fail(p.key(k), show(*n), rule);
+  for (std::size_t r = 0; r < a->size(); ++r) {
+    const toml::array* row = (*a)[r].as_array();
+    const auto u = row && row->size() == 2 ? (*row)[0].value<double>() : std::nullopt;
+    const auto v = row && row->size() == 2 ? (*row)[1].value<double>() : std::nullopt;
+    if (!u || !v || !std::isfinite(*u) || !std::isfinite(*v) || !(*v > 0.0))
+      fail(p.key(k), show(*n), fmt::format("{}; row {} is not", rule, r + 1));
+    if (!t.at.empty() && !(*u > t.at.back()))
+      fail(p.key(k), show(*n),
+           fmt::format("{}; row {} has coordinate {:g} m after {:g} m", rule, r + 1, *u, t.at.back()));
+    t.at.push_back(*u), t.value.push_back(*v);
+  }
+  if (t.at.size() < 2)
+    fail(p.key(k), show(*n), fmt::format("a profile needs at least two points (it has {})", t.at.size()));
+  return t;
+}
+
+// [interface.NAME.profile]: a, b, dc, weakening_slip_rate tabulated along x, y or the arc
+// length s (cohesive/fault_profile.hpp). A tabulated parameter may not be tapered too, nor set
+// by a stretch (which would be ignored).
+void read_profile(Section& f, InterfaceSpec& is, const RateStateFriction& law) {
+  Section p = f.table("profile", false, allowed_keys("interface.*.profile"));
+  RateStateProfile& prof = is.profile;
+  const std::string along = p.string("along", "", {"x", "y", "s"});
+  prof.along = along == "x" ? ProfileAxis::x : along == "y" ? ProfileAxis::y : ProfileAxis::s;
+  prof.a = read_profile_table(p, "a");
+  prof.b = read_profile_table(p, "b");
+  prof.dc = read_profile_table(p, "dc");
+  prof.vw = read_profile_table(p, "weakening_slip_rate");
+  if (!prof.on())
+    fail(f.key("profile"), "{...}", "needs at least one of a, b, dc, weakening_slip_rate");
+  if (prof.vw.on() && law.evolution != StateEvolution::flash_heating)
+    fail(p.key("weakening_slip_rate"), show(*p.node("weakening_slip_rate")),
+         "only with evolution = \"flash_heating\"");
+  const struct {
+    const char* key;
+    bool tabulated;
+    double tapered;
+  } params[] = {{"a", prof.a.on(), law.taper.a}, {"b", prof.b.on(), law.taper.b},
+                {"dc", prof.dc.on(), law.taper.dc}, {"weakening_slip_rate", prof.vw.on(), law.taper.vw}};
+  for (const auto& q : params)
+    if (q.tabulated && law.taper.on && q.tapered > 0.0)
+      fail(p.key(q.key), show(*p.node(q.key)),
+           fmt::format("{} is also tapered ({}.{}): give it one way", q.key, f.key("taper"), q.key));
+  if (const toml::node* n = f.node("stretches"); n && n->as_array())
+    for (std::size_t k = 0; k < n->as_array()->size(); ++k)
+      if (const toml::table* st = (*n->as_array())[k].as_table())
+        for (const auto& q : params)
+          if (q.tabulated && st->contains(q.key))
+            fail(fmt::format("{}[{}].{}", f.key("stretches"), k, q.key), show(*st->get(q.key)),
+                 fmt::format("{} is tabulated along the fault by {}.{}", q.key, f.key("profile"), q.key));
+}
+
 }  // namespace
 
 // law = "rate_state": rate-and-state friction on a prestressed fault (cohesive/rate_state.hpp).
@@ -235,6 +298,7 @@ void parse_rate_state_law(Section& f, const Case& c, InterfaceSpec& is) {
   }
   read_rate_state(f, law);
   is.law = law;
+  if (f.has("profile")) read_profile(f, is, law);
   parse_stretches<RateStateFriction>(f, is, c, read_rate_state);
 }
 

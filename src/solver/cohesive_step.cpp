@@ -79,7 +79,6 @@ namespace {
 // cohesive/law.hpp).
 template <class Law>
 void evaluate_with(CohesiveInterface& c, const Law& law, double t, double t_before) {
-  const bool stretches = !c.gp_law.empty();
   const bool contact = c.spec.contact;
   const ContactLaw& contact_law = c.spec.contact_law;
   const long nseg = long(c.num_segments());
@@ -103,7 +102,7 @@ void evaluate_with(CohesiveInterface& c, const Law& law, double t, double t_befo
       const double Na = 0.5 * (1.0 - kXi[g]), Nb = 0.5 * (1.0 + kXi[g]);
       const double jx = Na * jx_a + Nb * jx_b, jy = Na * jy_a + Nb * jy_b;  // linear jump
       const double dn = nx * jx + ny * jy, dt = tx * jx + ty * jy;          // in the segment frame
-      const Law& L = stretches ? law_of(c, law, c.gp_law[i]) : law;  // a stretch's own law
+      const Law& L = gauss_point_law(c, law, i);  // a stretch's or a point's own law
       GaussHistory h{c.gp_damage[i], c.gp_slip[i], c.gp_dt[i], c.gp_state[i], c.gp_rate[i], c.gp_normal[i]};
       h.x = Na * c.x0[s] + Nb * c.x0[e], h.y = Na * c.y0[s] + Nb * c.y0[e];  // reference position
       h.time = t, h.duration = t - t_before;
@@ -172,7 +171,7 @@ void evaluate_with(CohesiveInterface& c, const Law& law, double t, double t_befo
     c.node_peak_slip_rate[k] = std::max(c.node_peak_slip_rate[k], slip_rate);
     if (c.node_rupture_time[k] < 0.0 && slip_rate > c.spec.rupture_slip_rate)
       c.node_rupture_time[k] = t;
-    const Law& L = c.node_law.empty() ? law : law_of(c, law, c.node_law[k]);
+    const Law& L = node_law_of(c, law, k);
     const double crit = L.crack_threshold(c.spec.separation_factor);
     const double opening = L.crack_measure(c.jump_normal(k), c.jump_tangential(k));
     if (c.node_crack_time[k] < 0.0 && opening >= crit) {
@@ -197,7 +196,7 @@ void record_openings(CohesiveInterface& c) {
   std::visit(
       [&](const auto& law) {
         for (std::size_t k = 0; k < c.num_nodes(); ++k) {
-          const auto& L = c.node_law.empty() ? law : law_of(c, law, c.node_law[k]);
+          const auto& L = node_law_of(c, law, k);
           c.jump_before[k] = L.crack_measure(c.jump_normal(k), c.jump_tangential(k));
         }
       },

@@ -175,6 +175,23 @@ TEST(RateState, bad_fault_input_is_named) {
       {{"interface.fault.nucleation_stress=0", "interface.fault.nucleation_radius=100.0"},
        {"interface.fault.nucleation_radius", "needs nucleation_stress"}},
       {{"interface.fault.nucleation_time=-1"}, {"interface.fault.nucleation_time", ">= 0"}},
+      {{"interface.fault.profile={along=\"x\",a=[[0.0,0.01]]}"},
+       {"interface.fault.profile.a", "at least two points"}},
+      {{"interface.fault.profile={along=\"x\",a=[[0.0,0.01],[0.0,0.02]]}"},
+       {"interface.fault.profile.a", "increasing strictly", "row 2"}},
+      {{"interface.fault.profile={along=\"x\",b=[[0.0,0.01],[1.0,-0.02]]}"},
+       {"interface.fault.profile.b", "values > 0", "row 2"}},
+      {{"interface.fault.profile={along=\"z\",a=[[0.0,0.01],[1.0,0.02]]}"},
+       {"interface.fault.profile.along", "\"s\""}},
+      {{"interface.fault.profile={along=\"x\"}"}, {"interface.fault.profile", "at least one of a"}},
+      {{"interface.fault.profile={along=\"x\",weakening_slip_rate=[[0.0,0.1],[1.0,0.2]]}"},
+       {"interface.fault.profile.weakening_slip_rate", "flash_heating"}},
+      {{"interface.fault.profile={along=\"x\",a=[[0.0,0.01],[1.0,0.02]]}",
+        "interface.fault.taper={centre=[0.0,0.0],half_width=10.0,width=10.0,a=0.02}"},
+       {"interface.fault.profile.a", "also tapered"}},
+      {{"interface.fault.profile={along=\"x\",dc=[[0.0,0.01],[1.0,0.02]]}",
+        "interface.fault.stretches=[{from=[0.0,0.0],to=[10.0,0.0],dc=0.5}]"},
+       {"interface.fault.stretches[0].dc", "tabulated along the fault"}},
   };
   for (const auto& c : cases) {
     const std::string msg = error_of(c.set);
