@@ -14,7 +14,10 @@ input/names.cpp restricts to letters, digits, '_' and '-'):
                   and one row per sample. A 2D in-plane fault slips along strike only: the
                   horizontal columns hold the slip (m), the slip rate friction sees (m/s) and the
                   shear traction (MPa); the vertical ones are 0; n-stress is the normal traction
-                  (MPa, negative in compression, as the SCEC files have it).
+                  (MPa, negative in compression, as the SCEC files have it). On a
+                  rate-and-state fault (a station file with a `state` column) a ninth column,
+                  psi, the state variable (dimensionless), as the rate-and-state benchmarks'
+                  files (TPV101-105) have it.
   NAME.txt        one per body station: t h-disp h-vel v-disp v-vel n-disp n-vel, with x as the
                   horizontal (along-strike) and y as the fault-normal direction (the axes of
                   every example: faults along x); vertical 0.
@@ -82,6 +85,8 @@ FAULT_NAMES = ["t", "h-slip", "h-slip-rate", "h-shear-stress", "v-slip", "v-slip
 # The CSV column and scale behind each data column after the time (None: 0 in 2D).
 FAULT_SOURCES = [("slip", 1.0), ("slip_rate", 1.0), ("shear_traction", 1e-6), None, None, None,
                  ("normal_traction", 1e-6)]
+# A rate-and-state fault's ninth column.
+STATE_COLUMN, STATE_NAME, STATE_SOURCE = "state variable psi (dimensionless)", "psi", ("state", 1.0)
 BODY_COLUMNS = ["Time (s)", "horizontal displacement (m)", "horizontal velocity (m/s)",
                 "vertical displacement (m)", "vertical velocity (m/s)", "normal displacement (m)",
                 "normal velocity (m/s)"]
@@ -133,13 +138,16 @@ def export_scec(run, problem, author):
         fault = "interface" in st
         # Each column of the format: (the CSV column, its scale to the format's unit), or None: 0.
         cols = FAULT_SOURCES if fault else BODY_SOURCES
+        columns, names = (FAULT_COLUMNS, FAULT_NAMES) if fault else (BODY_COLUMNS, BODY_NAMES)
+        if fault and "state" in c:  # rate and state
+            cols, columns, names = cols + [STATE_SOURCE], columns + [STATE_COLUMN], names + [STATE_NAME]
         for key in {src[0] for src in cols if src}:
             if key not in c:
                 fail(f"'{path}' has no column '{key}': not a {'fault' if fault else 'body'} station's file")
         location = (f"on fault '{st['interface']}', {at[0] / 1e3:g} km along strike" if fault else
                     f"{at[0] / 1e3:g} km along strike, {at[1] / 1e3:g} km across")
         location += f" (x = {at[0]:g} m, y = {at[1]:g} m)"
-        text = header(info, location, *((FAULT_COLUMNS, FAULT_NAMES) if fault else (BODY_COLUMNS, BODY_NAMES)))
+        text = header(info, location, columns, names)
         for k in range(len(t)):
             text += f"{t[k]:.12E}" + "".join(" " + e15(c[src[0]][k] * src[1] if src else 0.0)
                                              for src in cols) + "\n"

@@ -201,6 +201,11 @@ inline const CohesiveLaw& node_law_variant(const CohesiveInterface& c, std::size
   return w == 0 ? c.spec.law : c.spec.stretches[w - 1u].law;
 }
 
+// The rate-and-state state psi at node k (dimensionless): the mean over the Gauss points next
+// to it (the first of the segment after, the last of the one before, as the node's slip path),
+// each its law's initial state plus its gp_state. 0 for any other law.
+double node_state(const CohesiveInterface& c, std::size_t k);
+
 // An opening small against the interface law's own scale (m): the instability watch's floor.
 inline double opening_scale(const CohesiveLaw& law) {
   return std::visit([](const auto& l) { return l.opening_scale(); }, law);

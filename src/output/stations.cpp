@@ -37,6 +37,7 @@ std::vector<StationProbe> make_probes(const std::vector<StationSpec>& specs, Run
       p.b = a + 1 < n ? a + 1 : (c.closed ? 0 : a);
       const double len = p.b == p.a ? 1.0 : (p.b == 0 ? c.length() : c.s0[p.b]) - c.s0[p.a];
       p.f = p.b == p.a ? 0.0 : std::clamp((arc - c.s0[p.a]) / len, 0.0, 1.0);
+      p.state = std::holds_alternative<RateStateFriction>(c.spec.law);
     } else if (nearest) {
       p.particle_id = (*nearest)[k];
       p.slot = 0;  // found at the first read
@@ -76,7 +77,8 @@ void sample_distributed(RunState& s, std::vector<StationProbe>& probes,
         if (!c.owns(k)) continue;
         const CohesiveTraction t = node_traction(c, k);
         const double row[kV] = {c.jump_tangential(k), c.node_slip_rate[k], c.jump_normal(k),
-                                t.tangential,         t.normal,            jump_rate(c, k, s.dt)};
+                                t.tangential,         t.normal,            jump_rate(c, k, s.dt),
+                                node_state(c, k)};
         std::copy(row, row + kV, out + e * kV);
       }
       continue;
@@ -124,7 +126,8 @@ void sample_stations(RunState& s, std::vector<StationProbe>& probes,
                                          mix(c.jump_normal(p.a), c.jump_normal(p.b)),
                                          mix(ta.tangential, tb.tangential),
                                          mix(ta.normal, tb.normal),
-                                         mix(jump_rate(c, p.a, s.dt), jump_rate(c, p.b, s.dt))};
+                                         mix(jump_rate(c, p.a, s.dt), jump_rate(c, p.b, s.dt)),
+                                         mix(node_state(c, p.a), node_state(c, p.b))};
       r.insert(r.end(), row, row + kFaultColumns);
     } else {
       const Particles& P = all_particles(s);
@@ -145,11 +148,15 @@ void write_stations(const std::string& dir, const std::vector<StationSpec>& spec
   for (std::size_t i = 0; i < specs.size() && i < series.size(); ++i) {
     const bool fault = probes[i].interface >= 0;
     const std::size_t cols = fault ? kFaultColumns : kBodyColumns;
-    std::string out = fault ? "time,slip,slip_rate,opening,shear_traction,normal_traction,jump_rate\n"
-                            : "time,x,y,vx,vy,ux,uy\n";
+    // A fault file's last column, the state, only where the fault has one (rate and state).
+    const std::size_t written = fault && !probes[i].state ? cols - 1 : cols;
+    std::string out = !fault ? "time,x,y,vx,vy,ux,uy\n"
+                      : probes[i].state
+                          ? "time,slip,slip_rate,opening,shear_traction,normal_traction,jump_rate,state\n"
+                          : "time,slip,slip_rate,opening,shear_traction,normal_traction,jump_rate\n";
     const std::vector<double>& r = series[i].rows;
     for (std::size_t k = 0; k + cols <= r.size(); k += cols) {
-      for (std::size_t j = 0; j < cols; ++j) {
+      for (std::size_t j = 0; j < written; ++j) {
         if (j > 0) out += ',';
         out += fmt::format("{:.9e}", r[k + j]);
       }

@@ -6,7 +6,8 @@
 // node_slip_rate; elsewhere the jump's), opening (normal jump, m), the total shear and normal
 // tractions (Pa, prestress included; normal tension positive) and jump_rate (m/s, the last
 // step's tangential jump increment over dt: on a fault it includes the stick spring's elastic
-// jump, which passing waves load). A body station records the particle nearest its point at
+// jump, which passing waves load), and on a rate-and-state fault the state psi
+// (dimensionless, the law's psi: f = a asinh[V/(2 V0) exp(psi/a)]). A body station records the particle nearest its point at
 // t = 0: where it is, its velocity and its displacement since t = 0 (ux, uy, m: its position
 // less the first sample's, which is taken at t = 0). Written to DIR/stations/NAME.csv
 // atomically at every flush and at the end; the samples are checkpointed.
@@ -33,13 +34,15 @@ struct StationProbe {
   int interface = -1;
   std::size_t a = 0, b = 0;  // fault: the nodes around the station
   double f = 0.0;            //        weight of node b (linear in arc length)
+  bool state = false;        //        a rate-and-state fault: its file has the state column
   std::uint32_t particle_id = 0;  // body: the particle read
   std::size_t slot = 0;           //       its index at the last read (re-found after sorts)
 };
 
 // Columns of a sample (the rows stored); a body station's file adds ux, uy (from x, y).
-inline constexpr std::size_t kFaultColumns = 7;  // time, slip, slip_rate, opening, shear, normal,
-                                                 // jump_rate
+inline constexpr std::size_t kFaultColumns = 8;  // time, slip, slip_rate, opening, shear, normal,
+                                                 // jump_rate, state (written on rate-and-state
+                                                 // faults only)
 inline constexpr std::size_t kBodyColumns = 5;   // time, x, y, vx, vy
 
 // A body station reads the particle nearest its point at t = 0, the lowest id among equally

@@ -174,10 +174,10 @@ void fields(A& a, CohesiveInterface& c) {
 // Nested per-level time steps (RunState::period, mixed: from the case; hold, substep: 0 at
 // every checkpoint, which waits for the levels to end their steps together; sync_by: set by
 // the driver before every step).
-// A run (solver/run_state.hpp), format 14. On one grid: its level's State as above, entries
+// A run (solver/run_state.hpp), format 15. On one grid: its level's State as above, entries
 // at the run's level. On nested levels: the run's entries (the grid level's lattice size, the
 // particle count, the interfaces in input order, the clock, sums and limits; the one-grid
-// entries bc_nodes, bc_lines and plan are stored empty, as formats 11 to 14 have them), then
+// entries bc_nodes, bc_lines and plan are stored empty, as formats 11 to 15 have them), then
 // "nested": every level's State as above (its particle count changes as particles move
 // between levels, and its window_drift decides the next move; its interfaces are the run's
 // entry), the levels' clock and the migration count. Every level's particles are merged anew

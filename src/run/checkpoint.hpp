@@ -16,7 +16,7 @@
 
 namespace rupture {
 
-inline constexpr int kCheckpointVersion = 14;  // 2: State::strain_work; 3: Mach readings;
+inline constexpr int kCheckpointVersion = 15;  // 2: State::strain_work; 3: Mach readings;
                                               // 4: interface rupture times, peak slip rates;
                                               // 5: nested levels; 6: particles store the
                                               // stress only (no strain, szz, volume);
@@ -34,7 +34,8 @@ inline constexpr int kCheckpointVersion = 14;  // 2: State::strain_work; 3: Mach
                                               // particles' Kelvin-Voigt stress (viscous_on,
                                               // vsxx, vsyy, vsxy) and viscous_dissipated;
                                               // 14: the normal stress friction sees
-                                              // (gp_normal, normal-stress regularization)
+                                              // (gp_normal, normal-stress regularization);
+                                              // 15: the fault stations' state column
 
 std::string checkpoint_path(const std::string& dir);  // DIR/checkpoint/checkpoint.bin
 

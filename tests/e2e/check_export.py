@@ -5,7 +5,8 @@ RUN/scec/NAME.txt with the header lines in the format's order (# problem=, # aut
 # code=, # code_version=, # element_size=, # time_step=, # num_time_steps=, # location=, the
 # Column #k lines), the field-name line, and one row per sample of the station's CSV whose
 numbers are that CSV's (slip, slip rate, shear and normal traction in MPa; body: ux, vx, uy, vy)
-to the 7 digits of E15.7; the rupture-time contour file has the j k t line and one row per
+to the 7 digits of E15.7 (a rate-and-state fault adds psi, the state column, as the ninth);
+the rupture-time contour file has the j k t line and one row per
 node, 1e9 where the node never ruptured. Nothing is written outside RUN/scec/.
 Usage: check_export.py RUPTURE RUN [PROBLEM]"""
 import csv
@@ -30,6 +31,10 @@ def columns(path):
     return {k: [float(r[i]) for r in rows[1:]] for i, k in enumerate(rows[0])}
 
 
+def n_cols_text(text):
+    return [l for l in text if l.startswith("# Column #")]
+
+
 def close(a, b, scale):
     return abs(a - b) <= 1e-6 * max(abs(b), scale)
 
@@ -47,6 +52,9 @@ for name in stations:
     fault = "slip" in c
     names = ("t h-slip h-slip-rate h-shear-stress v-slip v-slip-rate v-shear-stress n-stress" if fault
              else "t h-disp h-vel v-disp v-vel n-disp n-vel").split()
+    if "state" in c:
+        names.append("psi")
+        assert n_cols_text(text)[-1] == "# Column #9 = state variable psi (dimensionless)"
     n_cols = [l for l in text if l.startswith("# Column #")]
     assert len(n_cols) == len(names), n_cols
     at = text.index(" ".join(names))
@@ -55,6 +63,8 @@ for name in stations:
     want = ([(c["slip"], 1), (c["slip_rate"], 2), ([v / 1e6 for v in c["shear_traction"]], 3),
              ([v / 1e6 for v in c["normal_traction"]], 7)] if fault else
             [(c["ux"], 1), (c["vx"], 2), (c["uy"], 5), (c["vy"], 6)])
+    if "state" in c:
+        want.append((c["state"], 8))
     for k, row in enumerate(data):
         assert len(row) == len(names)
         assert close(row[0], c["time"][k], 1e-300)
@@ -63,7 +73,8 @@ for name in stations:
             assert close(row[col], series[k], scale), (name, k, col, row[col], series[k])
         zero = (4, 5, 6) if fault else (3, 4)
         assert all(row[j] == 0.0 for j in zero)
-    print(f"{name}.txt: {len(data)} rows, {'fault' if fault else 'body'} station, numbers as in the CSV")
+    print(f"{name}.txt: {len(data)} rows, {'fault' if fault else 'body'} station"
+          f"{' with psi' if 'state' in c else ''}, numbers as in the CSV")
 profiles = sorted(f for f in os.listdir(run) if f.startswith("rupture_time_") and f.endswith(".csv"))
 for prof in profiles:
     iface = prof[len("rupture_time_"):-4]
