@@ -2,7 +2,6 @@
 #include "cohesive/interface.hpp"
 
 #include <cmath>
-#include <cstdint>
 #include <utility>
 
 namespace rupture {
@@ -152,15 +151,12 @@ double node_state(const CohesiveInterface& c, std::size_t k) {
   const auto* base = std::get_if<RateStateFriction>(&c.spec.law);
   if (!base) return 0.0;
   const std::size_t G = std::size_t(CohesiveInterface::kGauss);
-  const bool has_prev = k > 0 || c.closed;
+  const auto psi = [&](std::size_t i) { return gauss_point_law(c, *base, i).psi_init + c.gp_state[i]; };
+  const bool has_next = k < c.num_segments(), has_prev = k > 0 || c.closed;
   const std::size_t prev = k > 0 ? k - 1 : c.num_segments() - 1;
-  double psi = 0.0;
-  int count = 0;
-  for (const std::size_t i : {k < c.num_segments() ? k * G : SIZE_MAX, has_prev ? prev * G + G - 1 : SIZE_MAX}) {
-    if (i == SIZE_MAX) continue;
-    psi += gauss_point_law(c, *base, i).psi_init + c.gp_state[i], ++count;
-  }
-  return count > 0 ? psi / count : 0.0;
+  const double sum = (has_next ? psi(k * G) : 0.0) + (has_prev ? psi(prev * G + G - 1) : 0.0);
+  const int count = int(has_next) + int(has_prev);
+  return count > 0 ? sum / count : 0.0;
 }
 
 double CohesiveInterface::stored_energy() const {

@@ -150,10 +150,9 @@ void write_stations(const std::string& dir, const std::vector<StationSpec>& spec
     const std::size_t cols = fault ? kFaultColumns : kBodyColumns;
     // A fault file's last column, the state, only where the fault has one (rate and state).
     const std::size_t written = fault && !probes[i].state ? cols - 1 : cols;
-    std::string out = !fault ? "time,x,y,vx,vy,ux,uy\n"
-                      : probes[i].state
-                          ? "time,slip,slip_rate,opening,shear_traction,normal_traction,jump_rate,state\n"
-                          : "time,slip,slip_rate,opening,shear_traction,normal_traction,jump_rate\n";
+    std::string out = !fault ? "time,x,y,vx,vy,ux,uy"
+                             : "time,slip,slip_rate,opening,shear_traction,normal_traction,jump_rate";
+    out += fault && probes[i].state ? ",state\n" : "\n";
     const std::vector<double>& r = series[i].rows;
     for (std::size_t k = 0; k + cols <= r.size(); k += cols) {
       for (std::size_t j = 0; j < written; ++j) {
