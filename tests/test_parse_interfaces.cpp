@@ -311,6 +311,16 @@ TEST(ParseInterfaces, every_bad_table_names_the_key_the_value_and_what_is_allowe
       {"contact on a fault", sw + "contact = true", {"'interface.w.contact' = true", "not with law = \"slip_weakening\""}},
       {"dynamic above static friction", replace(sw, "dynamic_friction = 0.5", "dynamic_friction = 0.7"),
        {"'interface.w.dynamic_friction' = 0.7", "must lie in [0, static_friction = 0.6]"}},
+      {"j_domains without stress_intensity", xn + "j_domains = [4.0, 6.0]",
+       {"'interface.w.j_domains' = [ 4.0, 6.0 ]", "needs stress_intensity = true"}},
+      {"j_domains decreasing", xn + "stress_intensity = true\nj_domains = [6.0, 4.0]",
+       {"'interface.w.j_domains' = [ 6.0, 4.0 ]", "increasing numbers >= 2", "in cells"}},
+      {"j_domains below two cells", xn + "stress_intensity = true\nj_domains = [1.0]",
+       {"'interface.w.j_domains' = [ 1.0 ]", ">= 2"}},
+      {"j_domains empty", xn + "stress_intensity = true\nj_domains = []", {"'interface.w.j_domains' = []", "1 to 8"}},
+      {"j_domains not numbers", xn + "stress_intensity = true\nj_domains = [\"wide\"]",
+       {"'interface.w.j_domains'", "1 to 8 increasing numbers"}},
+      {"stress_intensity not a boolean", xn + "stress_intensity = 1", {"'interface.w.stress_intensity' = 1", "true or false"}},
   };
   for (const Bad& b : cases) {
     const std::string msg = error_of(b.lines);

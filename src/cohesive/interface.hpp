@@ -67,6 +67,11 @@ struct InterfaceSpec {
   bool bonded = false;
   double bonded_from = 0.0, bonded_to = 0.0;  // m
 
+  // K_I, K_II and J at the crack's tips over time (fracture/j_integral.hpp; docs/fracture.md):
+  // on the circular domains of outer radii j_domains (in cells; inner: half of each).
+  bool stress_intensity = false;
+  std::vector<double> j_domains{4.0, 6.0, 8.0};
+
   Polyline geometry() const;                     // line, or its horizontal form
   std::vector<Polyline> tie_geometries() const;  // bonded_lines, or the horizontal form (none
                                                  // if not bonded)

@@ -538,6 +538,16 @@ std::vector<KeyDoc> build_schema() {
        "allow an initial shear traction above the static strength on the whole fault (it all "
        "slides at once, as in the 1D slip-weakening test); without it that is an input error",
        "true", friction},
+      {"interface.*.stress_intensity", "boolean", "", "false", "true, false",
+       "record J, K_I and K_II at the crack's tips over time (stress_intensity_NAME.csv; "
+       "docs/fracture.md): the line's ends that meet a bonded stretch on a pre-crack, the "
+       "running tip otherwise",
+       "true"},
+      {"interface.*.j_domains", "array of numbers", "cells", "[4.0, 6.0, 8.0]",
+       "1 to 8, increasing, each >= 2; with stress_intensity = true",
+       "the J domains' outer radii (circles about the tip; inner radius: "
+       "half of each)",
+       "[4.0, 6.0, 8.0]"},
       {"interface.*.rupture_slip_rate", "number", "m/s", "0.001", "> 0",
        "a node's rupture time is the first time its slip rate exceeds this "
        "(interface_nodes.csv)",

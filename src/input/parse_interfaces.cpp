@@ -290,6 +290,27 @@ void check_no_crossing(Section& f, const InterfaceSpec& is, const Case& c) {
   }
 }
 
+// stress_intensity, j_domains (fracture/j_integral.hpp): the domains' outer radii in cells,
+// increasing, each at least 2 (the inner radius is half of it: a ring of at least a cell).
+void parse_stress_intensity(Section& f, InterfaceSpec& is, const Case& c) {
+  is.stress_intensity = f.boolean("stress_intensity", false);
+  if (!f.has("j_domains")) return;
+  if (!is.stress_intensity)
+    fail(f.key("j_domains"), show(*f.node("j_domains")), "needs stress_intensity = true");
+  const toml::array* a = f.node("j_domains")->as_array();
+  const std::string rule = "must be an array of 1 to 8 increasing numbers >= 2 (the J domains' "
+                           "outer radii, in cells)";
+  if (!a || a->empty() || a->size() > 8) fail(f.key("j_domains"), show(*f.node("j_domains")), rule);
+  is.j_domains.clear();
+  for (const toml::node& n : *a) {
+    const std::optional<double> v = n.value<double>();
+    if (!v || !std::isfinite(*v) || *v < 2.0 || (!is.j_domains.empty() && *v <= is.j_domains.back()))
+      fail(f.key("j_domains"), show(*f.node("j_domains")), rule);
+    is.j_domains.push_back(*v);
+  }
+  (void)c;
+}
+
 }  // namespace
 
 double cell_penalty_stiffness(const Case& c, const InterfaceSpec& is) {
@@ -382,6 +403,7 @@ void parse_interfaces(Section& top, Case& c, ParseContext& ctx) {
       parse_interface_geometry(f, is, c, &up, &lo);
     }
     parse_interface_law(f, is, c);
+    parse_stress_intensity(f, is, c);
     check_no_crossing(f, is, c);
     c.interfaces.push_back(is);
     c.interface_names.push_back(name);

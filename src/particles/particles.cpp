@@ -7,7 +7,7 @@
 namespace rupture {
 
 void Particles::resize(std::size_t n) {
-  for (auto* v : {&x, &y, &vx, &vy, &mass, &volume0, &half_x, &half_y, &sxx, &syy, &sxy}) {
+  for (auto* v : {&x, &y, &vx, &vy, &mass, &volume0, &half_x, &half_y, &sxx, &syy, &sxy, &x0, &y0}) {
     v->resize(n, 0.0);
   }
   field.resize(n, 0);
@@ -37,7 +37,7 @@ void permute_one(std::vector<T>& v, const std::vector<std::uint32_t>& order, std
 }  // namespace
 
 void Particles::permute(const std::vector<std::uint32_t>& order, std::vector<double>& scratch) {
-  for (auto* v : {&x, &y, &vx, &vy, &mass, &volume0, &half_x, &half_y, &sxx, &syy, &sxy}) {
+  for (auto* v : {&x, &y, &vx, &vy, &mass, &volume0, &half_x, &half_y, &sxx, &syy, &sxy, &x0, &y0}) {
     permute_one(*v, order, scratch);
   }
   thread_local std::vector<std::uint8_t> tmp8;
@@ -69,7 +69,7 @@ std::size_t Particles::move_marked(const std::vector<unsigned char>& mark, Parti
   for (auto [a, b] : {std::pair{&x, &to.x}, {&y, &to.y}, {&vx, &to.vx}, {&vy, &to.vy},
                       {&mass, &to.mass}, {&volume0, &to.volume0},
                       {&half_x, &to.half_x}, {&half_y, &to.half_y}, {&sxx, &to.sxx},
-                      {&syy, &to.syy}, {&sxy, &to.sxy}}) {
+                      {&syy, &to.syy}, {&sxy, &to.sxy}, {&x0, &to.x0}, {&y0, &to.y0}}) {
     move_one(*a, *b, mark);
   }
   move_one(field, to.field, mark);
@@ -89,6 +89,7 @@ void Particles::append_copy(const Particles& from) {
   add(x, from.x), add(y, from.y), add(vx, from.vx), add(vy, from.vy), add(mass, from.mass);
   add(volume0, from.volume0), add(half_x, from.half_x), add(half_y, from.half_y);
   add(sxx, from.sxx), add(syy, from.syy), add(sxy, from.sxy);
+  add(x0, from.x0), add(y0, from.y0);
   add(field, from.field), add(material, from.material), add(id, from.id);
   if (viscous_on || from.viscous_on) {
     const std::size_t n = x.size();
@@ -105,13 +106,14 @@ void Particles::pack(std::size_t p, double* out) const {
                              volume0[p], half_x[p], half_y[p], sxx[p], syy[p],
                              sxy[p], double(field[p]), double(material[p]), double(id[p]),
                              viscous_on ? vsxx[p] : 0.0, viscous_on ? vsyy[p] : 0.0,
-                             viscous_on ? vsxy[p] : 0.0};
+                             viscous_on ? vsxy[p] : 0.0, x0[p], y0[p]};
   for (std::size_t k = 0; k < kPacked; ++k) out[k] = v[k];
 }
 
 void Particles::push_packed(const double* in) {
   std::vector<double>* d[11] = {&x, &y, &vx, &vy, &mass, &volume0, &half_x, &half_y, &sxx, &syy, &sxy};
   for (std::size_t k = 0; k < 11; ++k) d[k]->push_back(in[k]);
+  x0.push_back(in[17]), y0.push_back(in[18]);
   field.push_back(std::uint8_t(in[11]));
   material.push_back(std::uint8_t(in[12]));
   id.push_back(std::uint32_t(in[13]));
@@ -132,8 +134,8 @@ void seed_rectangle(Particles& p, const double min[2], const double max[2], doub
   std::size_t k = start;
   for (long j = 0; j < ny; ++j) {
     for (long i = 0; i < nx; ++i, ++k) {
-      p.x[k] = lattice_centre(origin[0], side, ix + i);
-      p.y[k] = lattice_centre(origin[1], side, iy + j);
+      p.x[k] = p.x0[k] = lattice_centre(origin[0], side, ix + i);
+      p.y[k] = p.y0[k] = lattice_centre(origin[1], side, iy + j);
       p.vx[k] = velocity[0];
       p.vy[k] = velocity[1];
       p.volume0[k] = side * side;

@@ -24,6 +24,10 @@ struct Particles {
   std::vector<std::uint8_t> field;         // velocity field (body) id
   std::vector<std::uint8_t> material;      // material id
   std::vector<std::uint32_t> id;           // creation index: identity across re-sorting
+  // Reference position X (where the particle was made, t = 0), m: the displacement u = x - X
+  // that fracture/ needs for the J-integral's du/dx (rotation included, which the stress does
+  // not give). No step loop streams it; sorting, migration and checkpoints carry it.
+  std::vector<double> x0, y0;
   // Kelvin-Voigt viscous stress eta C : eps_dot of the last stress update, Pa (in-plane), which
   // the next internal force adds to the elastic stress (material/elastic.hpp: kelvin_voigt).
   // Empty unless a material is damped (enable_viscous); then of size(), and every operation
@@ -38,7 +42,7 @@ struct Particles {
   void resize(std::size_t n);
   // Bytes held per particle by the arrays above.
   static constexpr std::size_t bytes_per_particle() {
-    return 11 * sizeof(double) + 2 * sizeof(std::uint8_t) + sizeof(std::uint32_t);
+    return 13 * sizeof(double) + 2 * sizeof(std::uint8_t) + sizeof(std::uint32_t);
   }
   // Reorders every array so that the particle now at index k is the one that was at
   // order[k]. `scratch` is reused between calls to avoid allocating in the time loop.
@@ -50,8 +54,8 @@ struct Particles {
   void append_copy(const Particles& from);
   // One particle as kPacked doubles (every array; the integers are exact in a double), for
   // sending it to another process (parallel/halo.hpp), and back; the viscous stress travels
-  // too (zeros when the store has none).
-  static constexpr std::size_t kPacked = 17;
+  // too (zeros when the store has none), then the reference position.
+  static constexpr std::size_t kPacked = 19;
   void pack(std::size_t p, double* out) const;
   void push_packed(const double* in);
 };

@@ -49,8 +49,8 @@ Line graded_line(const Axis& a, double lo, double hi, int ppc) {
 }
 
 void fill(Particles& p, std::size_t k, const SeedPoint& s, const SeedProperties& props) {
-  p.x[k] = s.x;
-  p.y[k] = s.y;
+  p.x[k] = p.x0[k] = s.x;
+  p.y[k] = p.y0[k] = s.y;
   p.vx[k] = props.velocity[0];
   p.vy[k] = props.velocity[1];
   p.volume0[k] = s.lx * s.ly;

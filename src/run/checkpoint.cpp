@@ -64,6 +64,8 @@ void fields(A& a, MachReading& r);
 template <class A>
 void fields(A& a, StationSeries& r);
 template <class A>
+void fields(A& a, TipSeries& r);
+template <class A>
 void fields(A& a, Schedule& s);
 template <class A>
 void fields(A& a, RunContext& c);
@@ -86,6 +88,8 @@ void fields(A& a, Particles& p) {
   a("field", p.field);
   a("material", p.material);
   a("id", p.id);
+  a("x0", p.x0);
+  a("y0", p.y0);
   a("viscous_on", p.viscous_on);
   a("vsxx", p.vsxx);
   a("vsyy", p.vsyy);
@@ -386,6 +390,11 @@ void fields(A& a, StationSeries& r) {
 }
 
 template <class A>
+void fields(A& a, TipSeries& r) {
+  a("rows", r.rows);
+}
+
+template <class A>
 void fields(A& a, MachReading& r) {
   a("interface", r.interface);
   a("time", r.time);
@@ -418,6 +427,8 @@ void fields(A& a, RunContext& c) {
   a("schedule.mach", c.mach_schedule);
   a("stations", c.stations);
   a("schedule.stations", c.station_schedule);
+  a("tips", c.tips);
+  a("schedule.tips", c.tip_schedule);
   a("interface_files", c.interface_files);
   a("wall_before", c.wall_before);
   a("segments", c.segments);

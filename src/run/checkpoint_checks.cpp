@@ -274,7 +274,7 @@ void check_particle_arrays(const Particles& p, const std::string& entry, const s
       {"mass", p.mass.size()},     {"volume0", p.volume0.size()}, {"half_x", p.half_x.size()},
       {"half_y", p.half_y.size()}, {"sxx", p.sxx.size()},       {"syy", p.syy.size()},
       {"sxy", p.sxy.size()},       {"field", p.field.size()},   {"material", p.material.size()},
-      {"id", p.id.size()}};
+      {"id", p.id.size()},         {"x0", p.x0.size()},         {"y0", p.y0.size()}};
   for (const auto& [name, size] : arrays) ck.length(entry + "." + name, size, n, "the length of x, one per particle");
   // The Kelvin-Voigt stress: one per particle in a damped run, none otherwise.
   const std::size_t viscous = p.viscous_on ? n : 0;
@@ -314,6 +314,9 @@ void check_particles(const Particles& p, const State& s, const std::string& entr
     }
     ck.positive(item(entry + ".mass", q), p.mass[q]);
     ck.positive(item(entry + ".volume0", q), p.volume0[q]);
+    // The reference position enters only u = x - X (fracture/): any finite point is a state.
+    for (const auto& [name, v] : {std::pair{".x0", p.x0[q]}, {".y0", p.y0[q]}})
+      if (!std::isfinite(v)) refuse(origin, item(entry + name, q), num(v), "must be finite (the particle's position at t = 0, m)");
   }
 }
 
@@ -375,8 +378,13 @@ void check_restored(const RunContext& ctx, const CheckpointBaseline& fresh, cons
       {"run.schedule.history", &ctx.hist},         {"run.schedule.snapshot", &ctx.snap},
       {"run.schedule.interface", &ctx.prof},       {"run.schedule.crack", &ctx.crack},
       {"run.schedule.checkpoint", &ctx.checkpoint}, {"run.schedule.mach", &ctx.mach_schedule},
-      {"run.schedule.stations", &ctx.station_schedule}};
+      {"run.schedule.stations", &ctx.station_schedule}, {"run.schedule.tips", &ctx.tip_schedule}};
   for (const auto& [name, sc] : schedules) check_schedule(ck, *sc, name, s);
+  for (std::size_t k = 0; k < ctx.tips.size(); ++k)
+    if (ctx.tips[k].rows.size() % kTipColumns != 0)
+      ck.length(fmt::format("run.tips[{}].rows", k), ctx.tips[k].rows.size(),
+                ctx.tips[k].rows.size() / kTipColumns * kTipColumns,
+                fmt::format("a multiple of {} (the columns of a row)", kTipColumns).c_str());
   ck.at_least("run.eps", ctx.eps, 0.0);
   ck.count("run.interface_files", ctx.interface_files, 0, 1L << 30, "files written");
   ck.at_least("run.wall_before", ctx.wall_before, 0.0);

@@ -177,6 +177,10 @@ RunOutputs choose_outputs(RunIo& io) {
       flush_record(io);  // the small record files first: they say what happened if the disk fills
       io.ctx.snapshots->write(all_particles(s), s.stiffness(), s.time, s.step);
     }));
+  if (ctx.tip_schedule.interval > 0)  // J and K read the particles near the tips
+    add(std::make_unique<ScheduledOutput>(ctx.tip_schedule, true, [&io] {
+      sample_stress_intensity(io.c, io.s, io.ctx.cracks, io.ctx.tips);
+    }));
   add(std::make_unique<ProgressLine>(io));
   add(std::make_unique<RecordFlush>(io));
   out.checkpoint = std::make_unique<CheckpointOutput>(io);

@@ -13,6 +13,7 @@
 #include "output/history.hpp"
 #include "output/snapshot.hpp"
 #include "output/stations.hpp"
+#include "output/stress_intensity.hpp"
 #include "solver/run_state.hpp"
 
 namespace rupture {
@@ -50,6 +51,9 @@ struct RunContext {
   Schedule mach_schedule;  // Mach-angle readings (output.mach_interval)
   std::vector<StationSeries> stations;  // per [stations] entry: the rows recorded so far
   Schedule station_schedule;            // output.station_interval (0: every step)
+  std::vector<TipSeries> tips;          // per interface: J, K at its tips (stress_intensity)
+  Schedule tip_schedule;                // output.crack_sample_interval where any interface has
+                                        // stress_intensity (else never)
   int interface_files = 0;   // interface/*.csv written so far
   double wall_before = 0.0;  // wall seconds of earlier segments (resumed runs)
   int segments = 1;          // 1 + number of resumptions

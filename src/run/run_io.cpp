@@ -244,6 +244,7 @@ void write_record_files(RunIo& io) {
   io.ctx.history.write(io.dir + "/history.csv");
   write_cracks(io);
   write_stations(io.dir, io.c.stations, io.probes, io.ctx.stations);
+  write_stress_intensity(io.dir, io.c, io.ctx.tips);
 }
 
 }  // namespace rupture

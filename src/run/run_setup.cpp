@@ -1,6 +1,8 @@
 // rupture/run/run_setup.cpp
 #include "run/run_setup.hpp"
 
+#include <algorithm>
+
 #include <omp.h>
 
 #include <chrono>
@@ -84,6 +86,10 @@ std::vector<StationProbe> set_up(RunContext& r, const Case& c, const std::string
   r.checkpoint = Schedule(checkpoint_interval);
   r.mach_schedule = Schedule(c.output.mach_interval);
   r.station_schedule = Schedule(c.output.station_interval);
+  const bool tips = std::any_of(c.interfaces.begin(), c.interfaces.end(),
+                                [](const InterfaceSpec& is) { return is.stress_intensity; });
+  r.tip_schedule = Schedule(tips ? c.output.crack_sample_interval : 0.0);
+  r.tips.assign(c.interfaces.size(), TipSeries{});
   return probes;
 }
 
@@ -182,6 +188,13 @@ void prepare_dir(const std::string& dir, const RunOptions& o) {
 std::vector<StationProbe> start_run(RunContext& ctx, const Case& c, const CaseSummary& summary,
                                     const RunOptions& options) {
   const Comm& comm = options.comm;
+  // J and K are summed over one process's particles (output/stress_intensity.hpp).
+  for (std::size_t k = 0; k < c.interfaces.size(); ++k)
+    if (comm.distributed() && c.interfaces[k].stress_intensity)
+      throw InputError(fmt::format(
+          "input key 'interface.{}.stress_intensity' = true: J and K are computed on one process "
+          "only; run this case without mpiexec (or set it to false)",
+          c.interface_names[k]));
   try {
     std::vector<StationProbe> probes =
         set_up(ctx, c, options.output_dir, options.checkpoint_interval, comm, options.resume);

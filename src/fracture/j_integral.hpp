@@ -1,0 +1,72 @@
+// rupture/fracture/j_integral.hpp
+// The J-integral and the stress intensity factors K_I, K_II of one crack tip, from the domain
+// form of the dynamic J-integral and of the interaction integral, summed over material points
+// (the particles as quadrature points; docs/fracture.md).
+//   J = sum_p A_p { [sigma_ij u_i,1 - (W + T) delta_1j] q_,j + rho (a_i u_i,1 - v_i v_i,1) q }
+//   M = sum_p A_p { [sigma_ij u^a_i,1 + sigma^a_ij u_i,1 - sigma_ij eps^a_ij delta_1j] q_,j
+//                   + rho a_i u^a_i,1 q },   K = E' M / 2 per auxiliary mode (a: the unit
+//       Williams field of fracture/near_tip_field.hpp, mode I then mode II),
+// in the tip frame (x1 along the crack ahead of the tip), W = sigma:eps / 2, T = rho v.v / 2,
+// E' = E / (1 - nu^2) in plane strain, E in plane stress. q is 1 inside the circle of radius
+// `inner` about the tip, 0 outside the one of radius `outer`, and the smooth step
+// 1 - (3 xi^2 - 2 xi^3), xi = (r - inner) / (outer - inner), between (its gradient vanishes at
+// both circles: the particle sums converge at second order whatever the crack's angle to the
+// lattice). Contract: the material is one
+// homogeneous linear elastic solid over the domain, with a stress-free reference state; the
+// crack faces inside the domain are straight and traction-free (the form then needs no face
+// term); the crack does not move during the evaluation (stationary-crack forms: for a running
+// crack the J-K relation takes a speed factor the caller applies). Units: SI (J in J/m^2,
+// K in Pa sqrt(m)).
+#pragma once
+#include <cstddef>
+#include <vector>
+
+namespace rupture {
+
+// One material point in the domain, global frame.
+struct DomainPoint {
+  double x, y;                    // position, m
+  double area;                    // current area (volume per unit thickness), m^2
+  double density;                 // kg/m^3
+  double sxx, syy, sxy;           // stress, Pa
+  double exx, eyy, exy;           // strain (tensor components), -
+  double ux_x, ux_y, uy_x, uy_y;  // displacement gradient du_i/dx_j, -
+  double vx, vy;                  // velocity, m/s
+  double vx_x, vx_y, vy_x, vy_y;  // velocity gradient, 1/s
+  double ax, ay;                  // acceleration, m/s^2
+};
+
+// The tip and the direction the crack points to (unit vector e1, from the crack into the
+// material ahead), global frame.
+struct TipFrame {
+  double x = 0.0, y = 0.0;       // m
+  double e1x = 1.0, e1y = 0.0;   // -
+};
+
+struct JDomain {
+  double inner = 0.0, outer = 0.0;  // radii, m (0 <= inner < outer)
+};
+
+struct TipMaterial {
+  double e_prime = 0.0;  // E', Pa
+  double mu = 0.0;       // shear modulus, Pa
+  double kappa = 0.0;    // Kolosov's constant, -
+};
+
+struct TipIntegrals {
+  double J = 0.0;              // J/m^2
+  double K_I = 0.0, K_II = 0.0;  // Pa sqrt(m)
+  std::size_t points = 0;      // material points with q or grad q non-zero
+};
+
+// The integrals over the points (those outside the outer square contribute nothing).
+TipIntegrals tip_integrals(const std::vector<DomainPoint>& points, const TipFrame& tip,
+                           const JDomain& domain, const TipMaterial& material);
+
+// The maximum hoop stress direction (Erdogan & Sih 1963): the angle from the crack's direction
+// to the one a tip with K_I, K_II would kink into, radians, counterclockwise:
+// theta = 2 atan[(K_I - sqrt(K_I^2 + 8 K_II^2)) / (4 K_II)] (0 when K_II = 0; -70.5 degrees in
+// pure mode II with K_II > 0).
+double hoop_stress_angle(double K_I, double K_II);
+
+}  // namespace rupture

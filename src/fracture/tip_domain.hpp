@@ -1,0 +1,36 @@
+// rupture/fracture/tip_domain.hpp
+// The material points of a crack tip's J-integral domain, from a level's particles and grid
+// (fracture/j_integral.hpp's DomainPoint): stress and strain from the particle (its material's
+// compliance), the displacement and velocity gradients from the particles' displacement
+// u = x - X and velocity mapped to the grid nodes of their own field (mass-weighted GIMP
+// weights, SPEC E3) and differentiated with the particle's GIMP gradients, as the time step
+// differentiates the velocity; the acceleration from the last step's nodal velocity increment
+// (GridFields::dvel / dt). The two fields of a crack meet at tied nodes (bonded stretches: the
+// intact material beyond a tip) as one body there, so the maps sum both fields at those nodes.
+// Contract: every point within `reach` + a cell of the tip (m) is returned; the nodal maps see every particle that reaches their
+// nodes. One process and one level (the caller passes the level holding the tip).
+#pragma once
+#include <cstddef>
+#include <vector>
+
+#include "fracture/j_integral.hpp"
+#include "grid/grid.hpp"
+#include "material/elastic.hpp"
+#include "particles/particles.hpp"
+
+namespace rupture {
+
+// Grid nodes where two fields are one body (solver/state.hpp BondedTie, as plain data).
+struct TiedFields {
+  int upper_field = 0, lower_field = 0;
+  const std::vector<std::size_t>* nodes = nullptr;  // grid nodes, increasing
+};
+
+// dt: the last step's (s; 0 gives zero accelerations).
+std::vector<DomainPoint> tip_domain_points(const Grid& g, const GridFields& fields,
+                                           const Particles& P,
+                                           const std::vector<ElasticStiffness>& stiffness,
+                                           const std::vector<TiedFields>& ties,
+                                           const TipFrame& tip, double reach, double dt);
+
+}  // namespace rupture

@@ -1,0 +1,46 @@
+// rupture/output/stress_intensity.hpp
+// J, K_I and K_II at the crack tips of the interfaces with stress_intensity = true, over time
+// (fracture/j_integral.hpp; docs/fracture.md). The tips of an interface:
+//  - a pre-crack (no cohesion): each end of its line that meets one of its bonded stretches
+//    (where the crack meets intact material; the crack inside a body, or an edge crack), the
+//    crack direction the line's outward tangent there;
+//  - a cohesive line: the running tip of its crack tracker (cohesive/crack_tip.hpp: the
+//    farthest separated node, the line's start before initiation), direction along the line.
+// Per sample and tip, one row per J domain: time (s), tip (0, 1: which of the tips), x, y (m),
+// domain (its outer radius, m), J (J/m^2), K_I, K_II (Pa m^1/2), points (in the domain).
+// Written to DIR/stress_intensity_NAME.csv atomically at every flush; the rows are
+// checkpointed. One process; on nested levels the level holding the interface.
+#pragma once
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "cohesive/crack_tip.hpp"
+#include "fracture/j_integral.hpp"
+#include "input/case.hpp"
+
+namespace rupture {
+
+struct RunState;
+
+inline constexpr std::size_t kTipColumns = 9;
+
+// One interface's rows (checkpointed), kTipColumns per row; empty for interfaces without
+// stress_intensity.
+struct TipSeries {
+  std::vector<double> rows;
+};
+
+// The tips of interface k now (see above): frames in the global frame.
+std::vector<TipFrame> crack_tips(const Case& c, const RunState& s, std::size_t k,
+                                 const CrackTracker& tracker);
+// The material of the tip region (interface k's upper body's).
+TipMaterial tip_material(const Case& c, std::size_t k);
+
+// Appends the rows of every interface with stress_intensity at the state's time.
+void sample_stress_intensity(const Case& c, RunState& s, const std::vector<CrackTracker>& trackers,
+                             std::vector<TipSeries>& series);
+void write_stress_intensity(const std::string& dir, const Case& c,
+                            const std::vector<TipSeries>& series);
+
+}  // namespace rupture
