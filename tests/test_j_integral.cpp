@@ -5,6 +5,8 @@
 //  - a uniform stress sigma_11 = T along the crack (the T-stress: its faces stay traction-free)
 //    gives J = K = 0: no singularity, no energy release (a stress across the crack line would
 //    load the faces the form takes as free, and the K of that is not zero);
+//  - a uniform stress across the crack with its faces loaded by their own traction: J = K = 0
+//    (the face terms);
 //  - the maximum hoop stress angle: 0 in mode I, -70.53 degrees in pure mode II, the sign of
 //    -K_II, and the formula of Erdogan & Sih at K_II/K_I = 1.
 #include <gtest/gtest.h>
@@ -113,6 +115,34 @@ TEST(JIntegral, uniform_stress_along_the_crack_releases_nothing) {
   // no auxiliary field and is zero to round-off).
   EXPECT_NEAR(r.K_I, 0.0, 2e-3 * 5e6 * std::sqrt(kPi * 2e-3));
   EXPECT_NEAR(r.K_II, 0.0, 2e-3 * 5e6 * std::sqrt(kPi * 2e-3));
+}
+
+// A uniform stress across the crack line, sigma_22 = p, with the crack faces loaded by exactly
+// the traction that stress puts on them (t = -p e2 on the upper face, whose outward normal is
+// -e2; +p e2 on the lower): the state is that of the uncracked plate, so nothing is released,
+// and only the face terms make the integrals see that (without them K_I is 0.6 p sqrt(pi d)).
+TEST(JIntegral, faces_loaded_by_the_stress_they_carry_release_nothing) {
+  const Field F = homalite(0.0, 0.0);
+  std::vector<DomainPoint> pts;
+  std::vector<FaceTraction> faces;
+  const double h = 0.1e-3, p = 5e6;
+  for (int j = -30; j < 30; ++j)
+    for (int i = -30; i < 30; ++i) {
+      DomainPoint d{};
+      d.x = (i + 0.5) * h, d.y = (j + 0.5) * h, d.area = h * h, d.density = 1246.0;
+      d.syy = p;
+      strain_of(F.C, d.sxx, d.syy, d.sxy, d.exx, d.eyy, d.exy);
+      d.ux_x = d.exx, d.uy_y = d.eyy;
+      if (d.x < 0.0 && (j == 0 || j == -1)) faces.push_back({pts.size(), h, 0.0, j == 0 ? -p : p});
+      pts.push_back(d);
+    }
+  const TipIntegrals r = tip_integrals(pts, {0.0, 0.0, 1.0, 0.0}, {1e-3, 2e-3}, tip_material(F), faces);
+  const double K = p * std::sqrt(kPi * 2e-3), Jscale = p * p / tip_material(F).e_prime * 2e-3;
+  EXPECT_NEAR(r.J, 0.0, 1e-9 * Jscale);
+  EXPECT_NEAR(r.K_I, 0.0, 2e-3 * K);
+  EXPECT_NEAR(r.K_II, 0.0, 2e-3 * K);
+  const TipIntegrals free = tip_integrals(pts, {0.0, 0.0, 1.0, 0.0}, {1e-3, 2e-3}, tip_material(F));
+  EXPECT_GT(std::fabs(free.K_I), 0.1 * K);  // the face term is what cancels it
 }
 
 TEST(JIntegral, hoop_stress_angle) {

@@ -90,6 +90,19 @@ struct TractionPatch {
   double segment_length = 0.0;     // m
 };
 
+// The traction a load applies on its patch at time t (global frame, Pa): the global vector, or
+// normal n + shear s in the segment frame, times factor(t).
+inline void patch_traction(const TractionLoad& load, const TractionPatch& patch, double t,
+                           double& tx, double& ty) {
+  tx = load.traction[0], ty = load.traction[1];
+  if (!load.global) {
+    tx = load.normal * patch.normal[0] + load.shear * patch.tangent[0];
+    ty = load.normal * patch.normal[1] + load.shear * patch.tangent[1];
+  }
+  const double f = load.factor(t);
+  tx *= f, ty *= f;
+}
+
 // Finds the surface particles that carry the segment of `load` and their shares: along grid
 // lines, the length each GIMP box holds; on an oblique (staircase) edge, where the boxes the line
 // cuts hold only about half of it, the length of the segment nearer to each particle centre than

@@ -31,7 +31,8 @@ struct Rotation {
 }  // namespace
 
 TipIntegrals tip_integrals(const std::vector<DomainPoint>& points, const TipFrame& tip,
-                           const JDomain& domain, const TipMaterial& m) {
+                           const JDomain& domain, const TipMaterial& m,
+                           const std::vector<FaceTraction>& faces) {
   const double norm = std::hypot(tip.e1x, tip.e1y);
   const Rotation R{tip.e1x / norm, tip.e1y / norm};
   const double width = domain.outer - domain.inner;
@@ -74,6 +75,35 @@ TipIntegrals tip_integrals(const std::vector<DomainPoint>& points, const TipFram
       M[k] += p.area * ((s11 * f.u1_1 + s21 * f.u2_1 + f.s11 * u11 + f.s12 * u21 - cross) * q1 +
                         (s12 * f.u1_1 + s22 * f.u2_1 + f.s12 * u11 + f.s22 * u21) * q2 +
                         p.density * (a1 * f.u1_1 + a2 * f.u2_1) * q);
+    }
+  }
+  // Loaded faces: the boundary term of the divergence theorem that free faces do not have.
+  for (const FaceTraction& f : faces) {
+    const DomainPoint& p = points[f.point];
+    double x1, x2, t1, t2;
+    R.vec(p.x - tip.x, p.y - tip.y, x1, x2);
+    // The face is the line x2 = 0 behind the tip: the point carries its share there, on its own
+    // side (the auxiliary field jumps across the line, and varies fast with theta near the tip).
+    x2 = std::copysign(1e-12 * std::fabs(x1), x2);
+    const double r = std::fabs(x1);
+    if (r >= domain.outer) continue;
+    const double q = r <= domain.inner ? 1.0 : [&] {
+      const double xi = (r - domain.inner) / width;
+      return 1.0 - xi * xi * (3.0 - 2.0 * xi);
+    }();
+    R.vec(f.tx, f.ty, t1, t2);
+    double u11, u12, u21, u22;
+    R.ten(p.ux_x, p.ux_y, p.uy_x, p.uy_y, u11, u12, u21, u22);
+    // Near the tip u_,1 and u^a_,1 on a face go as c r^-1/2: each is integrated as that over the
+    // point's share (r from r - l/2 to r + l/2, cut at the tip), where a midpoint value would
+    // leave an O(sqrt h) error from the singularity (tests/test_j_integral.cpp).
+    const double lo = std::max(r - 0.5 * f.length, 0.0), hi = r + 0.5 * f.length;
+    const double share = 2.0 * (std::sqrt(hi) - std::sqrt(lo)) * std::sqrt(r);  // = l far away
+    J -= share * (t1 * u11 + t2 * u21) * q;
+    for (int k = 0; k < 2; ++k) {
+      const NearTipField a =
+          williams_field(k == 0 ? CrackMode::opening : CrackMode::sliding, x1, x2, m.mu, m.kappa);
+      M[k] -= share * (t1 * a.u1_1 + t2 * a.u2_1) * q;
     }
   }
   out.J = J;

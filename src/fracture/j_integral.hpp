@@ -19,6 +19,7 @@
 // K in Pa sqrt(m)).
 #pragma once
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace rupture {
@@ -34,6 +35,19 @@ struct DomainPoint {
   double vx, vy;                  // velocity, m/s
   double vx_x, vx_y, vy_x, vy_y;  // velocity gradient, 1/s
   double ax, ay;                  // acceleration, m/s^2
+  std::uint32_t id;               // the particle's (Particles::id)
+};
+
+// A traction prescribed on a crack face inside the domain, carried by one of the points (a
+// surface particle and its share of the loaded length, as the load applies it): the faces are
+// then not traction-free, and both integrals take the face term (docs/fracture.md)
+//   J -= sum t_i u_i,1 q l,   M -= sum t_i u^a_i,1 q l,
+// q and u^a taken on the face (the point projected onto the crack line, on its own side), u_i,1
+// the point's. Contract: the faces lie on the crack line behind the tip (x1 < 0).
+struct FaceTraction {
+  std::size_t point = 0;     // index into the points
+  double length = 0.0;       // m
+  double tx = 0.0, ty = 0.0; // traction on the body, global frame, Pa
 };
 
 // The tip and the direction the crack points to (unit vector e1, from the crack into the
@@ -61,7 +75,8 @@ struct TipIntegrals {
 
 // The integrals over the points (those outside the outer square contribute nothing).
 TipIntegrals tip_integrals(const std::vector<DomainPoint>& points, const TipFrame& tip,
-                           const JDomain& domain, const TipMaterial& material);
+                           const JDomain& domain, const TipMaterial& material,
+                           const std::vector<FaceTraction>& faces = {});
 
 // The maximum hoop stress direction (Erdogan & Sih 1963): the angle from the crack's direction
 // to the one a tip with K_I, K_II would kink into, radians, counterclockwise:

@@ -79,6 +79,7 @@ std::vector<DomainPoint> tip_domain_points(const Grid& g, const GridFields& fiel
     const int f = P.field[p];
     DomainPoint d{};
     d.x = P.x[p], d.y = P.y[p];
+    d.id = P.id[p];
     d.vx = P.vx[p], d.vy = P.vy[p];
     const ElasticStiffness& C = stiffness[P.material[p]];
     d.sxx = P.sxx[p], d.syy = P.syy[p], d.sxy = P.sxy[p];

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <unordered_map>
 
 #include "core/atomic_file.hpp"
 #include "fracture/near_tip_field.hpp"
@@ -91,13 +92,31 @@ void sample_stress_intensity(const Case& c, RunState& s, const std::vector<Crack
     const double h = L.grid.cell_size();
     const TipMaterial mat = tip_material(c, k);
     const std::vector<TipFrame> tips = crack_tips(c, s, k, trackers[k]);
+    // Tractions on faces (loads on crack faces): their particles' shares, by id.
+    struct Carried {
+      double length, tx, ty;
+    };
+    std::unordered_multimap<std::uint32_t, Carried> carried;
+    for (std::size_t j = 0; j < L.loads.patches.size(); ++j) {
+      double tx, ty;
+      patch_traction(L.loads.spec.tractions[j], L.loads.patches[j], s.time, tx, ty);
+      if (tx == 0.0 && ty == 0.0) continue;
+      const TractionPatch& patch = L.loads.patches[j];
+      for (std::size_t i = 0; i < patch.ids.size(); ++i)
+        carried.insert({patch.ids[i], {patch.length[i], tx, ty}});
+    }
     for (std::size_t t = 0; t < tips.size(); ++t) {
       const double reach = is.j_domains.back() * h;
       const std::vector<DomainPoint> pts =
           tip_domain_points(L.grid, L.fields, L.particles, L.stiffness, ties, tips[t], reach, L.dt);
+      std::vector<FaceTraction> faces;
+      for (std::size_t i = 0; i < pts.size(); ++i) {
+        const auto [lo, hi] = carried.equal_range(pts[i].id);
+        for (auto e = lo; e != hi; ++e) faces.push_back({i, e->second.length, e->second.tx, e->second.ty});
+      }
       for (double cells : is.j_domains) {
         const JDomain d{0.5 * cells * h, cells * h};
-        const TipIntegrals r = tip_integrals(pts, tips[t], d, mat);
+        const TipIntegrals r = tip_integrals(pts, tips[t], d, mat, faces);
         series[k].rows.insert(series[k].rows.end(),
                               {s.time, double(t), tips[t].x, tips[t].y, d.outer, r.J, r.K_I, r.K_II,
                                double(r.points)});

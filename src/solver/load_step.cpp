@@ -174,13 +174,8 @@ void add_external_forces(State& s) {
   for (std::size_t k = 0; k < L.patches.size(); ++k) {
     const TractionLoad& load = L.spec.tractions[k];
     const TractionPatch& patch = L.patches[k];
-    double tx = load.traction[0], ty = load.traction[1];
-    if (!load.global) {
-      tx = load.normal * patch.normal[0] + load.shear * patch.tangent[0];
-      ty = load.normal * patch.normal[1] + load.shear * patch.tangent[1];
-    }
-    const double f = load.factor(t);
-    tx *= f, ty *= f;
+    double tx, ty;
+    patch_traction(load, patch, t, tx, ty);
     for (std::size_t j = 0; j < patch.ids.size(); ++j) {
       const double len = patch.length[j];
       if (L.patch_index[k][j] == LoadState::kAbsent) continue;  // another rank's particle
