@@ -1,0 +1,108 @@
+// Tests of fracture/tip_domain.hpp: the domain points' gradients come from the particles'
+// displacement and velocity mapped to the grid.
+//  - an affine deformation x = (I + A) X with velocity v = B X (rotation included) gives the
+//    spatial gradients grad u = A (I + A)^-1 and grad v = B (I + A)^-1 at every point whose
+//    stencil lies in the material, to round-off (mass-weighted GIMP maps of particles on a
+//    lattice symmetric about each node reproduce linear fields);
+//  - only points within reach (+ a cell) of the tip are returned, with the particle's stress,
+//    strain, area, density and id;
+//  - two fields that meet along a line hold one body's gradient only where they are tied.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "fracture/tip_domain.hpp"
+#include "grid/grid.hpp"
+#include "material/elastic.hpp"
+#include "particles/particles.hpp"
+
+namespace rupture {
+namespace {
+
+constexpr double kA[2][2] = {{1e-3, -4e-3}, {6e-3, 2e-3}};  // du_i/dX_j (a rotation in it)
+constexpr double kB[2][2] = {{3.0, 1.0}, {-2.0, 0.5}};      // dv_i/dX_j, 1/s
+
+// M (I + A)^-1.
+void right_inverse(const double M[2][2], double out[2][2]) {
+  const double a = 1 + kA[0][0], b = kA[0][1], c = kA[1][0], d = 1 + kA[1][1], det = a * d - b * c;
+  const double inv[2][2] = {{d / det, -b / det}, {-c / det, a / det}};
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j) out[i][j] = M[i][0] * inv[0][j] + M[i][1] * inv[1][j];
+}
+
+struct Block {
+  Grid g;
+  GridFields fields;
+  Particles P;
+  std::vector<ElasticStiffness> C;
+};
+
+// A 20 x 20 mm block of 1 mm cells, 2 particles per cell; field 1 below y = `split` (if given).
+Block block(double split = -1.0) {
+  Block b;
+  const double lo[2] = {0.0, 0.0}, hi[2] = {0.02, 0.02}, v[2] = {0.0, 0.0};
+  b.g = make_uniform_grid(lo, hi, 1e-3);
+  const double origin[2] = {b.g.x.origin, b.g.y.origin};
+  seed_rectangle(b.P, lo, hi, 1e-3, 2, 1246.0, 0, 0, v, origin);
+  // The particles where they are seeded (a lattice symmetric about every node: the maps then
+  // reproduce any linear field exactly) and their reference positions X = (I + A)^-1 x.
+  double G[2][2], H[2][2];
+  right_inverse(kA, G), right_inverse(kB, H);
+  for (std::size_t p = 0; p < b.P.size(); ++p) {
+    const double x = b.P.x[p], y = b.P.y[p];
+    b.P.x0[p] = x - (G[0][0] * x + G[0][1] * y), b.P.y0[p] = y - (G[1][0] * x + G[1][1] * y);
+    b.P.vx[p] = H[0][0] * x + H[0][1] * y, b.P.vy[p] = H[1][0] * x + H[1][1] * y;
+    const double Y = b.P.y0[p];
+    b.P.sxx[p] = 1e6, b.P.syy[p] = 2e6, b.P.sxy[p] = 3e5;
+    if (split >= 0.0 && Y < split) b.P.field[p] = 1;
+  }
+  b.fields.resize(2, std::size_t(b.g.nodes_x()), std::size_t(b.g.nodes_y()));
+  b.C.push_back(stiffness(ElasticMaterial{"homalite", 5.2e9, 0.34, 1246.0}, PlaneMode::strain));
+  return b;
+}
+
+TEST(TipDomain, affine_fields_give_their_gradients_and_the_particles_state) {
+  const Block b = block();
+  const TipFrame tip{0.01, 0.01, 1.0, 0.0};
+  const std::vector<DomainPoint> pts = tip_domain_points(b.g, b.fields, b.P, b.C, {}, tip, 4e-3, 0.0);
+  ASSERT_FALSE(pts.empty());
+  double G[2][2], H[2][2];
+  right_inverse(kA, G), right_inverse(kB, H);
+  for (const DomainPoint& d : pts) {
+    EXPECT_LT(std::hypot(d.x - tip.x, d.y - tip.y), 4e-3 + 1e-3);
+    EXPECT_NEAR(d.ux_x, G[0][0], 1e-12);
+    EXPECT_NEAR(d.ux_y, G[0][1], 1e-12);
+    EXPECT_NEAR(d.uy_x, G[1][0], 1e-12);
+    EXPECT_NEAR(d.uy_y, G[1][1], 1e-12);
+    EXPECT_NEAR(d.vx_x, H[0][0], 1e-9);
+    EXPECT_NEAR(d.vy_y, H[1][1], 1e-9);
+    EXPECT_NEAR(d.vx_y, H[0][1], 1e-9);
+    EXPECT_NEAR(d.vy_x, H[1][0], 1e-9);
+    EXPECT_EQ(d.sxy, 3e5);
+    EXPECT_NEAR(d.density, 1246.0, 1e-9);
+    EXPECT_EQ(d.ax, 0.0);  // dt = 0: no acceleration read
+  }
+}
+
+TEST(TipDomain, two_fields_are_one_body_where_tied) {
+  // Fields 0 above and 1 below y = 10 mm: untied, the maps of a field see its own particles
+  // only, and next to the line the gradient misses the other side; tied everywhere,
+  // every point has the one body's gradient again.
+  Block b = block(0.01);
+  const TipFrame tip{0.01, 0.01, 1.0, 0.0};
+  const std::vector<DomainPoint> apart = tip_domain_points(b.g, b.fields, b.P, b.C, {}, tip, 4e-3, 0.0);
+  double G[2][2];
+  right_inverse(kA, G);
+  double worst = 0.0;
+  for (const DomainPoint& d : apart) worst = std::max(worst, std::fabs(d.uy_y - G[1][1]));
+  EXPECT_GT(worst, 1e-4);  // a free edge's one-sided map
+  std::vector<std::size_t> all(b.g.num_nodes());
+  for (std::size_t n = 0; n < all.size(); ++n) all[n] = n;
+  const std::vector<TiedFields> ties{{0, 1, &all}};
+  const std::vector<DomainPoint> tied = tip_domain_points(b.g, b.fields, b.P, b.C, ties, tip, 4e-3, 0.0);
+  for (const DomainPoint& d : tied) EXPECT_NEAR(d.uy_y, G[1][1], 1e-12);
+}
+
+}  // namespace
+}  // namespace rupture
