@@ -292,7 +292,7 @@ void check_no_crossing(Section& f, const InterfaceSpec& is, const Case& c) {
 
 // stress_intensity, j_domains (fracture/j_integral.hpp): the domains' outer radii in cells,
 // increasing, each at least 2 (the inner radius is half of it: a ring of at least a cell).
-void parse_stress_intensity(Section& f, InterfaceSpec& is, const Case& c) {
+void parse_stress_intensity(Section& f, InterfaceSpec& is) {
   is.stress_intensity = f.boolean("stress_intensity", false);
   if (!f.has("j_domains")) return;
   if (!is.stress_intensity)
@@ -308,7 +308,6 @@ void parse_stress_intensity(Section& f, InterfaceSpec& is, const Case& c) {
       fail(f.key("j_domains"), show(*f.node("j_domains")), rule);
     is.j_domains.push_back(*v);
   }
-  (void)c;
 }
 
 }  // namespace
@@ -403,7 +402,7 @@ void parse_interfaces(Section& top, Case& c, ParseContext& ctx) {
       parse_interface_geometry(f, is, c, &up, &lo);
     }
     parse_interface_law(f, is, c);
-    parse_stress_intensity(f, is, c);
+    parse_stress_intensity(f, is);
     check_no_crossing(f, is, c);
     c.interfaces.push_back(is);
     c.interface_names.push_back(name);
