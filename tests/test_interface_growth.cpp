@@ -1,0 +1,93 @@
+// Tests of cohesive/interface_growth.hpp: a crack tip's new segment at either end of a
+// pre-crack keeps every existing node's and Gauss point's state where it was (the jumps, the
+// law history), has the geometry asked for (its length, its normal: the direction turned +90
+// degrees), arc lengths from the new start, and a new node with no jump (intact material).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "cohesive/interface_growth.hpp"
+
+namespace rupture {
+namespace {
+
+CohesiveInterface precrack() {
+  InterfaceSpec s;
+  s.line.x = {0.0, 1.0, 2.0};
+  s.line.y = {0.0, 0.0, 0.5};
+  s.segments = 4;
+  s.precracked = true;
+  s.contact = true;
+  CohesiveInterface c = make_interface(s);
+  for (std::size_t k = 0; k < c.num_nodes(); ++k)
+    c.ux_up[k] = 0.1 * double(k), c.uy_lo[k] = -0.01 * double(k), c.node_slip_path[k] = double(k);
+  for (std::size_t i = 0; i < c.gp_dn.size(); ++i) c.gp_dn[i] = 1e-3 * double(i), c.gp_slip[i] = double(i);
+  c.time = 2.5e-6;
+  c.work = 3.0;
+  return c;
+}
+
+TEST(InterfaceGrowth, NewSegmentAtTheEndKeepsEveryStateAndHasTheAskedGeometry) {
+  const CohesiveInterface before = precrack();
+  CohesiveInterface c = before;
+  const double a = 0.3, th = 0.7;  // a segment of length 0.3 at 0.7 rad
+  const std::size_t n = before.num_nodes();
+  extend_interface(c, LineEnd::end, 2.0 + a * std::cos(th), 0.5 + a * std::sin(th), 0.25, -0.05);
+  ASSERT_EQ(c.num_nodes(), n + 1);
+  ASSERT_EQ(c.num_segments(), before.num_segments() + 1);
+  for (std::size_t k = 0; k < n; ++k) {
+    EXPECT_DOUBLE_EQ(c.x0[k], before.x0[k]);
+    EXPECT_DOUBLE_EQ(c.y0[k], before.y0[k]);
+    EXPECT_DOUBLE_EQ(c.s0[k], before.s0[k]);
+    EXPECT_EQ(c.ux_up[k], before.ux_up[k]);
+    EXPECT_EQ(c.uy_lo[k], before.uy_lo[k]);
+    EXPECT_EQ(c.node_slip_path[k], before.node_slip_path[k]);
+  }
+  for (std::size_t i = 0; i < before.gp_dn.size(); ++i) {
+    EXPECT_EQ(c.gp_dn[i], before.gp_dn[i]);
+    EXPECT_EQ(c.gp_slip[i], before.gp_slip[i]);
+  }
+  for (std::size_t s = 0; s < before.num_segments(); ++s) {
+    EXPECT_NEAR(c.seg_nx[s], before.seg_nx[s], 1e-15);
+    EXPECT_NEAR(c.seg_ny[s], before.seg_ny[s], 1e-15);
+  }
+  const std::size_t s = c.num_segments() - 1;
+  EXPECT_NEAR(c.seg_length[s], a, 1e-14);
+  EXPECT_NEAR(c.seg_nx[s], -std::sin(th), 1e-14);
+  EXPECT_NEAR(c.seg_ny[s], std::cos(th), 1e-14);
+  EXPECT_NEAR(c.length(), before.length() + a, 1e-14);
+  EXPECT_EQ(c.ux_up[n], 0.25);
+  EXPECT_EQ(c.ux_lo[n], 0.25);
+  EXPECT_EQ(c.uy_up[n], -0.05);
+  EXPECT_EQ(c.jump_x(n), 0.0);
+  EXPECT_EQ(c.jump_y(n), 0.0);
+  EXPECT_EQ(c.node_crack_time[n], before.time);  // a pre-crack's new node: cracked now
+  for (int q = 0; q < CohesiveInterface::kGauss; ++q) EXPECT_EQ(c.gp_separated[s * 4 + std::size_t(q)], 1);
+  EXPECT_EQ(c.time, before.time);
+  EXPECT_EQ(c.work, before.work);
+}
+
+TEST(InterfaceGrowth, NewSegmentAtTheStartShiftsTheStateByOneNodeAndOneSegment) {
+  const CohesiveInterface before = precrack();
+  CohesiveInterface c = before;
+  extend_interface(c, LineEnd::start, -0.2, -0.1, 0.0, 0.0);
+  const std::size_t n = before.num_nodes();
+  ASSERT_EQ(c.num_nodes(), n + 1);
+  const double first = std::hypot(0.2, 0.1);
+  EXPECT_NEAR(c.seg_length[0], first, 1e-15);
+  // The normal of the new first piece, drawn from (-0.2, -0.1) to (0, 0).
+  EXPECT_NEAR(c.seg_nx[0], -0.1 / first, 1e-14);
+  EXPECT_NEAR(c.seg_ny[0], 0.2 / first, 1e-14);
+  for (std::size_t k = 0; k < n; ++k) {
+    EXPECT_DOUBLE_EQ(c.x0[k + 1], before.x0[k]);
+    EXPECT_NEAR(c.s0[k + 1], before.s0[k] + first, 1e-14);
+    EXPECT_EQ(c.ux_up[k + 1], before.ux_up[k]);
+    EXPECT_EQ(c.node_slip_path[k + 1], before.node_slip_path[k]);
+  }
+  for (std::size_t i = 0; i < before.gp_dn.size(); ++i) EXPECT_EQ(c.gp_slip[i + 4], before.gp_slip[i]);
+  EXPECT_EQ(c.ux_up[0], 0.0);
+  EXPECT_EQ(c.jump_x(0), 0.0);
+}
+
+}  // namespace
+}  // namespace rupture
