@@ -89,5 +89,33 @@ TEST(InterfaceGrowth, NewSegmentAtTheStartShiftsTheStateByOneNodeAndOneSegment) 
   EXPECT_EQ(c.jump_x(0), 0.0);
 }
 
+TEST(InterfaceGrowth, TipsAreTheEndsThatMeetABondedStretchPointingOutward) {
+  InterfaceSpec s;
+  s.line.x = {0.0, 1.0, 2.0};
+  s.line.y = {0.0, 0.0, 1.0};
+  Polyline tie;  // beyond the end only: an edge crack from the start
+  tie.x = {2.0, 3.0};
+  tie.y = {1.0, 2.0};
+  s.bonded_lines = {tie};
+  s.bonded = true;
+  std::vector<CrackTip> tips = precrack_tips(s, 1e-9);
+  ASSERT_EQ(tips.size(), 1u);
+  EXPECT_EQ(tips[0].end, LineEnd::end);
+  EXPECT_DOUBLE_EQ(tips[0].frame.x, 2.0);
+  EXPECT_NEAR(tips[0].frame.e1x, std::sqrt(0.5), 1e-15);
+  EXPECT_NEAR(tips[0].frame.e1y, std::sqrt(0.5), 1e-15);
+  Polyline back;  // and one before the start: a crack inside the body, two tips
+  back.x = {-1.0, 0.0};
+  back.y = {0.0, 0.0};
+  s.bonded_lines.push_back(back);
+  tips = precrack_tips(s, 1e-9);
+  ASSERT_EQ(tips.size(), 2u);
+  EXPECT_EQ(tips[0].end, LineEnd::start);
+  EXPECT_DOUBLE_EQ(tips[0].frame.e1x, -1.0);
+  s.bonded_lines.clear();
+  s.bonded = false;
+  EXPECT_TRUE(precrack_tips(s, 1e-9).empty());  // edge to edge: nothing to grow into
+}
+
 }  // namespace
 }  // namespace rupture

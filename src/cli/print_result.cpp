@@ -43,6 +43,13 @@ void print_readable_summary(const Case& c, const RunResult& r) {
     const ElasticMaterial& lower = c.materials[std::size_t(c.bodies[std::size_t(is.lower_body)].material)];
     const WaveSpeeds w = wave_speeds(lower, c.plane);
     std::string line = fmt::format("# {} {}: ", q.fault ? "fault" : "crack", c.interface_names[i]);
+    if (q.grows) {
+      if (!q.grown_length) fmt::print("{}did not grow\n", line);
+      else
+        fmt::print("{}grew from {:.4g} {} at {:.2f} degrees to its direction, by {:.4g} {} ({} branches)\n", line,
+                   u.tf * q.initiation_time, u.t, q.initial_angle, u.lf * q.grown_length, u.l, q.branches);
+      continue;
+    }
     if (!q.initiated && !(q.fault && q.front.ruptured)) {
       fmt::print("{}did not initiate\n", line);
       continue;
@@ -141,6 +148,11 @@ void print_run_result(const Case& c, const RunResult& r, const std::string& out_
       fmt::print("crack.{}.arrested={}\n", n, q.arrested);
       fmt::print("crack.{}.mach_angle={:.2f}\n", n, q.mach_angle);
       fmt::print("crack.{}.mach_speed={:.1f}\n", n, q.mach_speed);
+      if (q.grows) {  // a crack that grows off its line (initiation_time above: its first step)
+        fmt::print("crack.{}.initial_angle={:.2f}\n", n, q.initial_angle);
+        fmt::print("crack.{}.branches={}\n", n, q.branches);
+        fmt::print("crack.{}.length={:.6e}\n", n, q.grown_length);
+      }
       if (q.fault) {  // the rupture front outside the nucleation patch (cohesive/rupture_front.hpp)
         const FrontSummary& f = q.front;
         fmt::print("crack.{}.nucleation_time={:.6e}\n", n, f.nucleation_time);

@@ -47,6 +47,12 @@ struct CrackSample {
 
 struct CrackSummary {
   bool initiated = false;
+  // A crack that grows off its line (interface.NAME.growth; solver/crack_growth.hpp): then
+  // initiated and initiation_time are its first growth step's, and these say how it grew.
+  bool grows = false;
+  double initial_angle = 0.0;  // degrees, counterclockwise from the crack's direction to its first segment
+  int branches = 0;            // how many times a tip split
+  double grown_length = 0.0;   // m, the length grown by the end
   double initiation_time = -1.0;     // s (first node to crack; -1 if none)
   // m/s: the least-squares slope of the tip positions over the steady running phase, the
   // latest stretch of at least kSteadyMin in which every E11 speed is positive and within

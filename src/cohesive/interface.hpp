@@ -23,6 +23,7 @@
 #include "cohesive/fault_profile.hpp"
 #include "cohesive/law.hpp"
 #include "cohesive/polyline.hpp"
+#include "fracture/growth_criterion.hpp"
 
 namespace rupture {
 
@@ -71,6 +72,8 @@ struct InterfaceSpec {
   // on the circular domains of outer radii j_domains (in cells; inner: half of each).
   bool stress_intensity = false;
   std::vector<double> j_domains{4.0, 6.0, 8.0};
+  // A pre-crack's tips grow by this criterion (solver/crack_growth.hpp; off: they stay).
+  GrowthLaw growth;
 
   Polyline geometry() const;                     // line, or its horizontal form
   std::vector<Polyline> tie_geometries() const;  // bonded_lines, or the horizontal form (none

@@ -1,6 +1,7 @@
 // rupture/cohesive/interface_growth.cpp
 #include "cohesive/interface_growth.hpp"
 
+#include <cmath>
 #include <stdexcept>
 
 namespace rupture {
@@ -12,7 +13,36 @@ void carry(const std::vector<T>& old, std::vector<T>& grown, std::size_t shift) 
   for (std::size_t i = 0; i < old.size() && i + shift < grown.size(); ++i) grown[i + shift] = old[i];
 }
 
+bool same_point(double ax, double ay, double bx, double by, double tol) {
+  return std::hypot(ax - bx, ay - by) <= tol;
+}
+
 }  // namespace
+
+std::vector<CrackTip> precrack_tips(const InterfaceSpec& is, double tol) {
+  std::vector<CrackTip> tips;
+  const Polyline line = is.geometry();
+  if (line.closed || line.num_vertices() < 2) return tips;
+  const std::vector<Polyline> ties = is.tie_geometries();
+  const std::size_t last = line.num_vertices() - 1;
+  for (std::size_t end : {std::size_t(0), last}) {
+    const double x = line.x[end], y = line.y[end];
+    bool meets = false;
+    for (const Polyline& t : ties)
+      if (t.num_vertices() >= 2)
+        meets = meets || same_point(x, y, t.x.front(), t.y.front(), tol) ||
+                same_point(x, y, t.x.back(), t.y.back(), tol);
+    if (!meets) continue;
+    const std::size_t inner = end == 0 ? 1 : last - 1;  // the end piece's other vertex
+    CrackTip t;
+    t.end = end == 0 ? LineEnd::start : LineEnd::end;
+    t.frame.x = x, t.frame.y = y;
+    const double dx = x - line.x[inner], dy = y - line.y[inner], n = std::hypot(dx, dy);
+    t.frame.e1x = dx / n, t.frame.e1y = dy / n;
+    tips.push_back(t);
+  }
+  return tips;
+}
 
 void extend_interface(CohesiveInterface& c, LineEnd at, double x, double y, double ux, double uy) {
   if (c.closed) throw std::logic_error("extend_interface: a closed interface has no ends");

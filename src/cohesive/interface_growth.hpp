@@ -1,6 +1,9 @@
 // rupture/cohesive/interface_growth.hpp
-// A crack tip that grew (solver/crack_growth.hpp) adds a segment to its interface at that end.
-// Contract: the interface is open; the line becomes one piece per segment (its nodes are the
+// Where a pre-crack can grow from, and a new segment at that end (solver/crack_growth.hpp).
+// precrack_tips: each end of the interface's current line (InterfaceSpec::line, grown or as
+// drawn) that meets one of its bonded stretches (where the crack meets intact material), in
+// order start, end; its frame: the end vertex (reference position) and the end piece's outward
+// tangent. extend_interface: the interface is open; the line becomes one piece per segment (its nodes are the
 // vertices), plus the new end node at reference position (x, y), m, with displacement (ux, uy)
 // on both faces (the material there is intact: no jump). Every existing node and Gauss point
 // keeps its state (displacements, jumps, tractions, law history, crack and rupture times); the
@@ -8,11 +11,22 @@
 // the new node of a pre-crack counts as cracked at the interface's time. Arc lengths s0 are
 // measured from the new start. One process (no rank ownership).
 #pragma once
+#include <vector>
+
 #include "cohesive/interface.hpp"
+#include "fracture/j_integral.hpp"
 
 namespace rupture {
 
 enum class LineEnd { start, end };
+
+struct CrackTip {
+  LineEnd end = LineEnd::end;  // which end of the line
+  TipFrame frame;
+};
+
+// tol: how close (m) an end must be to a bonded stretch's end to meet it.
+std::vector<CrackTip> precrack_tips(const InterfaceSpec& is, double tol);
 
 void extend_interface(CohesiveInterface& c, LineEnd at, double x, double y, double ux, double uy);
 

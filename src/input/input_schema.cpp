@@ -548,6 +548,22 @@ std::vector<KeyDoc> build_schema() {
        "the J domains' outer radii (circles about the tip; inner radius: "
        "half of each)",
        "[4.0, 6.0, 8.0]"},
+      {"interface.*.growth", "string", "", "none", "none, max_hoop, energy",
+       "the crack's tips grow by this criterion (docs/fracture.md, \"Growth\"): max_hoop, when "
+       "the hoop stress intensity in the maximum hoop stress direction reaches toughness "
+       "(Erdogan-Sih); energy, when G = (K_I^2 + K_II^2) / E' reaches fracture_energy; a "
+       "pre-crack (law = \"contact\") drawn inside one body (body = ...), on a uniform grid, "
+       "one process; records K at the tips (stress_intensity)",
+       "\"max_hoop\""},
+      {"interface.*.toughness", "number", "Pa m^1/2", "none", "> 0; with growth = max_hoop",
+       "K_Ic, the mode-I fracture toughness", "1.0e6"},
+      {"interface.*.fracture_energy", "number", "J/m^2", "none", "> 0; with growth = energy",
+       "G_c, the critical energy release rate", "200.0"},
+      {"interface.*.growth_direction", "string", "", "max_hoop", "max_hoop, straight; with growth",
+       "the direction of a new segment: the maximum hoop stress direction from K_I, K_II, or "
+       "straight on along the crack", "\"max_hoop\""},
+      {"interface.*.growth_step", "number", "cells", "0.5", "(0, 0.5]; with growth",
+       "the length of one new segment (a tip grows at most one segment per step)", "0.5"},
       {"interface.*.rupture_slip_rate", "number", "m/s", "0.001", "> 0",
        "a node's rupture time is the first time its slip rate exceeds this "
        "(interface_nodes.csv)",

@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "cohesive/interface.hpp"
+#include "cohesive/interface_growth.hpp"
 #include "input/law_registry.hpp"
 #include "cohesive/polyline.hpp"
 #include "material/elastic.hpp"
@@ -310,6 +311,68 @@ void parse_stress_intensity(Section& f, InterfaceSpec& is) {
   }
 }
 
+// growth, toughness, fracture_energy, growth_direction, growth_step (fracture/
+// growth_criterion.hpp; solver/crack_growth.hpp): a pre-crack drawn inside one body, with at
+// least one tip, on a uniform grid. Growth reads K at the tips, so it records them too
+// (stress_intensity).
+void parse_growth(Section& f, InterfaceSpec& is, const Case& c) {
+  GrowthLaw& g = is.growth;
+  const std::string criterion = f.string("growth", "none", {"none", "max_hoop", "energy"});
+  g.criterion = criterion == "max_hoop" ? GrowthCriterion::max_hoop
+                : criterion == "energy" ? GrowthCriterion::energy
+                                        : GrowthCriterion::none;
+  if (!g.on()) {
+    for (const char* key : {"toughness", "fracture_energy", "growth_direction", "growth_step"})
+      if (f.has(key)) fail(f.key(key), show(*f.node(key)), "needs growth = \"max_hoop\" or \"energy\"");
+    return;
+  }
+  const std::string shown = "\"" + criterion + "\"";
+  if (!is.precracked)
+    fail(f.key("growth"), shown,
+         "grows a pre-crack: needs law = \"contact\" (a crack with no cohesion whose faces only "
+         "touch); cohesive lines do not grow off their line yet");
+  if (!f.has("body"))
+    fail(f.key("growth"), shown,
+         fmt::format("grows a crack drawn inside one body: give {} (the body it lies in) instead "
+                     "of upper_body and lower_body",
+                     f.key("body")));
+  if (c.grid.refined())
+    fail(f.key("growth"), shown,
+         "needs a uniform grid (no [grid.refine] boxes): a grown segment is measured in cells and "
+         "its tie and the flipped particles live on one level");
+  if (!is.stretches.empty())
+    fail(f.key("growth"), shown, "is not allowed with stretches (their arc lengths would move as the crack grows)");
+  if (precrack_tips(is, 1e-6 * c.grid.cell_size).empty())
+    fail(f.key("growth"), shown,
+         "needs a crack tip: an end of the line inside the body (the line runs from edge to edge, "
+         "or is closed, so nothing is left to grow into)");
+  if (g.criterion == GrowthCriterion::max_hoop) {
+    if (f.has("fracture_energy"))
+      fail(f.key("fracture_energy"), show(*f.node("fracture_energy")), "is for growth = \"energy\"; growth = \"max_hoop\" takes toughness");
+    if (!f.has("toughness"))
+      fail(f.key("toughness"), "(missing)", "required with growth = \"max_hoop\": K_Ic, Pa m^1/2, > 0");
+    g.toughness = f.number("toughness", 0.0);
+    if (!(g.toughness > 0.0) || !std::isfinite(g.toughness))
+      fail(f.key("toughness"), g.toughness, "must be > 0 (K_Ic, Pa m^1/2)");
+  } else {
+    if (f.has("toughness"))
+      fail(f.key("toughness"), show(*f.node("toughness")), "is for growth = \"max_hoop\"; growth = \"energy\" takes fracture_energy");
+    if (!f.has("fracture_energy"))
+      fail(f.key("fracture_energy"), "(missing)", "required with growth = \"energy\": G_c, J/m^2, > 0");
+    g.fracture_energy = f.number("fracture_energy", 0.0);
+    if (!(g.fracture_energy > 0.0) || !std::isfinite(g.fracture_energy))
+      fail(f.key("fracture_energy"), g.fracture_energy, "must be > 0 (G_c, J/m^2)");
+  }
+  const std::string dir = f.string("growth_direction", "max_hoop", {"max_hoop", "straight"});
+  g.direction = dir == "straight" ? GrowthDirection::straight : GrowthDirection::max_hoop;
+  g.step = f.number("growth_step", 0.5);
+  if (!(g.step > 0.0 && g.step <= 0.5))
+    fail(f.key("growth_step"), g.step,
+         "must be in (0, 0.5] (cells): a tip grows at most half a cell at a time, so a segment "
+         "never jumps over the grid nodes that carry the fields on either side");
+  is.stress_intensity = true;
+}
+
 }  // namespace
 
 double cell_penalty_stiffness(const Case& c, const InterfaceSpec& is) {
@@ -403,6 +466,7 @@ void parse_interfaces(Section& top, Case& c, ParseContext& ctx) {
     }
     parse_interface_law(f, is, c);
     parse_stress_intensity(f, is);
+    parse_growth(f, is, c);
     check_no_crossing(f, is, c);
     c.interfaces.push_back(is);
     c.interface_names.push_back(name);

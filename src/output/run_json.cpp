@@ -176,6 +176,16 @@ std::string run_json(const Case& c, const CaseSummary& s, const RunRecord& r) {
       ct.insert("speed_ratio_material",
                 c.materials[std::size_t(c.bodies[std::size_t(c.interfaces[k].lower_body)].material)].name);
       if (cs.fault) ct.insert("front", front_table(cs.front));
+      if (cs.grows) {  // a growing crack (solver/crack_growth.hpp), also as flat cracks.NAME.KEY
+        ct.insert_or_assign("initial_angle", cs.initial_angle);
+        ct.insert_or_assign("branches", cs.branches);
+        ct.insert_or_assign("length", cs.grown_length);
+        const std::string p = "cracks." + c.interface_names[k] + ".";
+        insert_or_null(t, p + "initiation_time", cs.initiated ? cs.initiation_time : -1.0);
+        t.insert(p + "initial_angle", cs.initial_angle);
+        t.insert(p + "branches", cs.branches);
+        t.insert(p + "length", cs.grown_length);
+      }
       if (k == 0) {
         t.insert("crack", ct);
         for (auto&& [key, value] : ct) t.insert("crack." + std::string(key.str()), value);

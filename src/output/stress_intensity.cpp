@@ -5,20 +5,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <unordered_map>
 
 #include "core/atomic_file.hpp"
-#include "fracture/near_tip_field.hpp"
-#include "fracture/tip_domain.hpp"
+#include "solver/crack_tips.hpp"
 #include "solver/run_state.hpp"
 
 namespace rupture {
 
 namespace {
-
-bool same_point(double ax, double ay, double bx, double by, double tol) {
-  return std::hypot(ax - bx, ay - by) <= tol;
-}
 
 // The point at arc length s along the interface's nodes and the line's direction there.
 TipFrame along_line(const CohesiveInterface& in, double s) {
@@ -38,46 +32,16 @@ TipFrame along_line(const CohesiveInterface& in, double s) {
 
 std::vector<TipFrame> crack_tips(const Case& c, const RunState& s, std::size_t k,
                                  const CrackTracker& tracker) {
-  const InterfaceSpec& is = c.interfaces[k];
   const CohesiveInterface& in = s.interface(k);
   std::vector<TipFrame> tips;
-  if (!is.precracked) {
+  if (!c.interfaces[k].precracked) {
     const double at = tracker.samples().empty() ? 0.0 : tracker.samples().back().tip;
     tips.push_back(along_line(in, at));
     return tips;
   }
-  const Polyline line = is.geometry();
-  if (line.closed || line.num_vertices() < 2) return tips;
-  const double tol = 1e-6 * c.grid.cell_size;
-  const std::vector<Polyline> ties = is.tie_geometries();
-  const std::size_t last = line.num_vertices() - 1;
-  for (std::size_t end : {std::size_t(0), last}) {
-    const double x = line.x[end], y = line.y[end];
-    bool meets = false;
-    for (const Polyline& t : ties)
-      if (t.num_vertices() >= 2)
-        meets = meets || same_point(x, y, t.x.front(), t.y.front(), tol) ||
-                same_point(x, y, t.x.back(), t.y.back(), tol);
-    if (!meets) continue;
-    const std::size_t inner = end == 0 ? 1 : last - 1;  // the end piece's other vertex
-    TipFrame f;
-    f.x = x, f.y = y;
-    const double dx = x - line.x[inner], dy = y - line.y[inner], n = std::hypot(dx, dy);
-    f.e1x = dx / n, f.e1y = dy / n;
-    tips.push_back(f);
-  }
+  // The interface's own line: the one drawn, or grown (solver/crack_growth.hpp).
+  for (const CrackTip& t : precrack_tips(in.spec, 1e-6 * c.grid.cell_size)) tips.push_back(t.frame);
   return tips;
-}
-
-TipMaterial tip_material(const Case& c, std::size_t k) {
-  const ElasticMaterial& m =
-      c.materials[std::size_t(c.bodies[std::size_t(c.interfaces[k].upper_body)].material)];
-  const double E = m.youngs_modulus, nu = m.poisson_ratio;
-  TipMaterial t;
-  t.e_prime = c.plane == PlaneMode::strain ? E / (1.0 - nu * nu) : E;
-  t.mu = E / (2.0 * (1.0 + nu));
-  t.kappa = kolosov_kappa(nu, c.plane);
-  return t;
 }
 
 void sample_stress_intensity(const Case& c, RunState& s, const std::vector<CrackTracker>& trackers,
@@ -87,40 +51,15 @@ void sample_stress_intensity(const Case& c, RunState& s, const std::vector<Crack
     const InterfaceSpec& is = c.interfaces[k];
     if (!is.stress_intensity) continue;
     const State& L = s.levels[std::size_t(s.interface_levels[k])];
-    std::vector<TiedFields> ties;
-    for (const BondedTie& b : L.bonded) ties.push_back({b.upper_field, b.lower_field, &b.nodes});
-    const double h = L.grid.cell_size();
     const TipMaterial mat = tip_material(c, k);
     const std::vector<TipFrame> tips = crack_tips(c, s, k, trackers[k]);
-    // Tractions on faces (loads on crack faces): their particles' shares, by id.
-    struct Carried {
-      double length, tx, ty;
-    };
-    std::unordered_multimap<std::uint32_t, Carried> carried;
-    for (std::size_t j = 0; j < L.loads.patches.size(); ++j) {
-      double tx, ty;
-      patch_traction(L.loads.spec.tractions[j], L.loads.patches[j], s.time, tx, ty);
-      if (tx == 0.0 && ty == 0.0) continue;
-      const TractionPatch& patch = L.loads.patches[j];
-      for (std::size_t i = 0; i < patch.ids.size(); ++i)
-        carried.insert({patch.ids[i], {patch.length[i], tx, ty}});
-    }
+    const double h = L.grid.cell_size();
     for (std::size_t t = 0; t < tips.size(); ++t) {
-      const double reach = is.j_domains.back() * h;
-      const std::vector<DomainPoint> pts =
-          tip_domain_points(L.grid, L.fields, L.particles, L.stiffness, ties, tips[t], reach, L.dt);
-      std::vector<FaceTraction> faces;
-      for (std::size_t i = 0; i < pts.size(); ++i) {
-        const auto [lo, hi] = carried.equal_range(pts[i].id);
-        for (auto e = lo; e != hi; ++e) faces.push_back({i, e->second.length, e->second.tx, e->second.ty});
-      }
-      for (double cells : is.j_domains) {
-        const JDomain d{0.5 * cells * h, cells * h};
-        const TipIntegrals r = tip_integrals(pts, tips[t], d, mat, faces);
+      const std::vector<TipIntegrals> r = read_tip(L, is, tips[t], mat, s.time);
+      for (std::size_t d = 0; d < r.size(); ++d)
         series[k].rows.insert(series[k].rows.end(),
-                              {s.time, double(t), tips[t].x, tips[t].y, d.outer, r.J, r.K_I, r.K_II,
-                               double(r.points)});
-      }
+                              {s.time, double(t), tips[t].x, tips[t].y, is.j_domains[d] * h, r[d].J,
+                               r[d].K_I, r[d].K_II, double(r[d].points)});
     }
   }
 }
@@ -136,6 +75,19 @@ void write_stress_intensity(const std::string& dir, const Case& c,
                          int(r[i + 1]), r[i + 2], r[i + 3], r[i + 4], r[i + 5], r[i + 6], r[i + 7],
                          long(r[i + 8]));
     write_file_atomic(dir + "/stress_intensity_" + c.interface_names[k] + ".csv", out);
+  }
+}
+
+void write_crack_paths(const std::string& dir, const Case& c,
+                       const std::vector<CrackGrowthRecord>& growth) {
+  for (std::size_t k = 0; k < c.interfaces.size() && k < growth.size(); ++k) {
+    if (!c.interfaces[k].growth.on()) continue;
+    std::string out = "time,tip,end,x,y,angle,length,K_I,K_II\n";
+    const std::vector<double>& r = growth[k].rows;
+    for (std::size_t i = 0; i + kGrowthColumns <= r.size(); i += kGrowthColumns)
+      out += fmt::format("{:.9e},{:d},{:d},{:.9e},{:.9e},{:.6f},{:.9e},{:.9e},{:.9e}\n", r[i], int(r[i + 1]),
+                         int(r[i + 2]), r[i + 3], r[i + 4], r[i + 5], r[i + 6], r[i + 7], r[i + 8]);
+    write_file_atomic(dir + "/crack_path_" + c.interface_names[k] + ".csv", out);
   }
 }
 

@@ -1,8 +1,8 @@
 // rupture/output/stress_intensity.hpp
 // J, K_I and K_II at the crack tips of the interfaces with stress_intensity = true, over time
 // (fracture/j_integral.hpp; docs/fracture.md). The tips of an interface:
-//  - a pre-crack (no cohesion): each end of its line that meets one of its bonded stretches
-//    (where the crack meets intact material; the crack inside a body, or an edge crack), the
+//  - a pre-crack (no cohesion): each end of its current line (as drawn, or grown) that meets one
+//    of its bonded stretches (solver/crack_tips.hpp: where the crack meets intact material), the
 //    crack direction the line's outward tangent there;
 //  - a cohesive line: the running tip of its crack tracker (cohesive/crack_tip.hpp: the
 //    farthest separated node, the line's start before initiation), direction along the line.
@@ -18,6 +18,7 @@
 #include "cohesive/crack_tip.hpp"
 #include "fracture/j_integral.hpp"
 #include "input/case.hpp"
+#include "solver/crack_growth.hpp"
 
 namespace rupture {
 
@@ -34,13 +35,15 @@ struct TipSeries {
 // The tips of interface k now (see above): frames in the global frame.
 std::vector<TipFrame> crack_tips(const Case& c, const RunState& s, std::size_t k,
                                  const CrackTracker& tracker);
-// The material of the tip region (interface k's upper body's).
-TipMaterial tip_material(const Case& c, std::size_t k);
 
 // Appends the rows of every interface with stress_intensity at the state's time.
 void sample_stress_intensity(const Case& c, RunState& s, const std::vector<CrackTracker>& trackers,
                              std::vector<TipSeries>& series);
 void write_stress_intensity(const std::string& dir, const Case& c,
                             const std::vector<TipSeries>& series);
+// DIR/crack_path_NAME.csv of every growing crack (solver/crack_growth.hpp: one row per grown
+// segment, its new vertex; the path is the drawn line with these vertices added at its ends).
+void write_crack_paths(const std::string& dir, const Case& c,
+                       const std::vector<CrackGrowthRecord>& growth);
 
 }  // namespace rupture

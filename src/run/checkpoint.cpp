@@ -66,6 +66,8 @@ void fields(A& a, StationSeries& r);
 template <class A>
 void fields(A& a, TipSeries& r);
 template <class A>
+void fields(A& a, CrackGrowthRecord& r);
+template <class A>
 void fields(A& a, Schedule& s);
 template <class A>
 void fields(A& a, RunContext& c);
@@ -395,6 +397,25 @@ void fields(A& a, TipSeries& r) {
 }
 
 template <class A>
+void fields(A& a, CrackGrowthRecord& r) {
+  a("rows", r.rows);
+}
+
+// The grown segments a restore lays again: whole rows, each at an end (0 or 1) of its line.
+void check_growth_rows(const std::vector<CrackGrowthRecord>& growth, const std::string& origin) {
+  for (std::size_t k = 0; k < growth.size(); ++k) {
+    const std::vector<double>& r = growth[k].rows;
+    if (r.size() % kGrowthColumns != 0)
+      throw InputError(fmt::format("checkpoint '{}': run.growth[{}].rows.length = {}: must be a multiple of {} (whole rows)",
+                                   origin, k, r.size(), kGrowthColumns));
+    for (std::size_t i = 0; i < r.size(); i += kGrowthColumns)
+      if (r[i + 2] != 0.0 && r[i + 2] != 1.0)
+        throw InputError(fmt::format("checkpoint '{}': run.growth[{}].rows[{}] = {}: must be 0 or 1 (the end of the line the segment grew at)",
+                                     origin, k, i + 2, r[i + 2]));
+  }
+}
+
+template <class A>
 void fields(A& a, MachReading& r) {
   a("interface", r.interface);
   a("time", r.time);
@@ -411,6 +432,14 @@ void fields(A& a, MachReading& r) {
 
 template <class A>
 void fields(A& a, RunContext& c) {
+  // The grown cracks first: a restore lays their segments on the case's interfaces (their
+  // geometry, ties and tied nodes) before it reads the state that holds their nodes.
+  a.same("growth.count", c.growth.size());
+  a("growth", c.growth);
+  if constexpr (A::reading) {
+    check_growth_rows(c.growth, a.origin());
+    if (c.regrow) c.regrow(c.s, c.growth);
+  }
   a("state", c.s);
   a("history", c.history.samples);
   a.same("cracks.count", c.cracks.size());

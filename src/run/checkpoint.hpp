@@ -16,7 +16,7 @@
 
 namespace rupture {
 
-inline constexpr int kCheckpointVersion = 16;  // 2: State::strain_work; 3: Mach readings;
+inline constexpr int kCheckpointVersion = 17;  // 2: State::strain_work; 3: Mach readings;
                                               // 4: interface rupture times, peak slip rates;
                                               // 5: nested levels; 6: particles store the
                                               // stress only (no strain, szz, volume);
@@ -37,7 +37,9 @@ inline constexpr int kCheckpointVersion = 16;  // 2: State::strain_work; 3: Mach
                                               // (gp_normal, normal-stress regularization);
                                               // 15: the fault stations' state column;
                                               // 16: the particles' reference position
-                                              // (x0, y0: the J-integral's displacement)
+                                              // (x0, y0: the J-integral's displacement);
+                                              // 17: the grown cracks' segments (run.growth,
+                                              // before the state)
 
 std::string checkpoint_path(const std::string& dir);  // DIR/checkpoint/checkpoint.bin
 

@@ -186,6 +186,7 @@ class Reader {
     left_ = body - head;
   }
   bool at_end() const { return left_ == 0; }
+  const std::string& origin() const { return origin_; }
 
   template <class T>
   void same(const char* name, T expected) {

@@ -6,6 +6,7 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fmt/format.h>
 
@@ -16,6 +17,7 @@
 #include "run/run_io.hpp"
 #include "run/run_result.hpp"
 #include "run/run_setup.hpp"
+#include "solver/crack_growth.hpp"
 #include "solver/step.hpp"
 #include "solver/summary.hpp"
 
@@ -78,6 +80,8 @@ RunResult run_case(const Case& c, const RunOptions& options) {
   begin_steps(io);
 
   const double eps = ctx.eps;
+  const bool growing = std::any_of(c.interfaces.begin(), c.interfaces.end(),
+                                   [](const InterfaceSpec& is) { return is.growth.on(); });
   InterruptGuard interrupt_guard;
   RunEnd end;
   try {
@@ -90,6 +94,9 @@ RunResult run_case(const Case& c, const RunOptions& options) {
       // Between the finest steps of a coarser level's step (per-level time steps) some particles
       // are behind the run's time: what reads particles waits for a synchronized step.
       const bool synced = synchronized(s);
+      // Crack growth (solver/crack_growth.hpp): the tips read, and grown, after the step and
+      // before the outputs and the checkpoint see it.
+      if (synced && growing) grow_cracks(c, s, ctx.growth);
       for (const std::unique_ptr<Output>& out : outputs.each_step) {
         if ((synced || !out->needs_synchronized_state()) && out->due(s.time, eps, last))
           out->write(s.time, eps, last);

@@ -4,6 +4,7 @@
 // run's start (run/run_setup.cpp) makes it fresh or from a checkpoint (run/checkpoint.hpp), which
 // holds all of it, so a resumed run continues bit for bit.
 #pragma once
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -14,6 +15,7 @@
 #include "output/snapshot.hpp"
 #include "output/stations.hpp"
 #include "output/stress_intensity.hpp"
+#include "solver/crack_growth.hpp"
 #include "solver/run_state.hpp"
 
 namespace rupture {
@@ -54,6 +56,10 @@ struct RunContext {
   std::vector<TipSeries> tips;          // per interface: J, K at its tips (stress_intensity)
   Schedule tip_schedule;                // output.crack_sample_interval where any interface has
                                         // stress_intensity (else never)
+  std::vector<CrackGrowthRecord> growth;  // per interface: its grown segments (solver/crack_growth.hpp)
+  // Set by the run's set-up: lays recorded segments on the case's interfaces again (a restore
+  // calls it before it reads the state that holds their nodes; solver/crack_growth.hpp).
+  std::function<void(RunState&, const std::vector<CrackGrowthRecord>&)> regrow;
   int interface_files = 0;   // interface/*.csv written so far
   double wall_before = 0.0;  // wall seconds of earlier segments (resumed runs)
   int segments = 1;          // 1 + number of resumptions

@@ -245,6 +245,7 @@ void write_record_files(RunIo& io) {
   write_cracks(io);
   write_stations(io.dir, io.c.stations, io.probes, io.ctx.stations);
   write_stress_intensity(io.dir, io.c, io.ctx.tips);
+  write_crack_paths(io.dir, io.c, io.ctx.growth);
 }
 
 }  // namespace rupture

@@ -120,6 +120,15 @@ void add_crack_summaries(RunIo& io, RunResult& result) {
       cs.front = summarize_front(s.interface(k), io.c.grid.cell_size, io.summary.dt, c_max,
                                  io.crack_speeds[k]);
     }
+    if (io.c.interfaces[k].growth.on() && k < io.ctx.growth.size()) {
+      const CrackGrowthRecord& g = io.ctx.growth[k];
+      cs.grows = true;
+      cs.initiated = g.grown();
+      cs.initiation_time = g.initiation_time();
+      cs.initial_angle = g.initial_angle();
+      cs.branches = g.branches();
+      cs.grown_length = g.length();
+    }
     result.cracks.push_back(cs);
   }
 }

@@ -90,6 +90,8 @@ std::vector<StationProbe> set_up(RunContext& r, const Case& c, const std::string
                                 [](const InterfaceSpec& is) { return is.stress_intensity; });
   r.tip_schedule = Schedule(tips ? c.output.crack_sample_interval : 0.0);
   r.tips.assign(c.interfaces.size(), TipSeries{});
+  r.growth.assign(c.interfaces.size(), CrackGrowthRecord{});
+  r.regrow = [&c](RunState& state, const std::vector<CrackGrowthRecord>& grown) { regrow_cracks(c, state, grown); };
   return probes;
 }
 
@@ -189,12 +191,18 @@ std::vector<StationProbe> start_run(RunContext& ctx, const Case& c, const CaseSu
                                     const RunOptions& options) {
   const Comm& comm = options.comm;
   // J and K are summed over one process's particles (output/stress_intensity.hpp).
-  for (std::size_t k = 0; k < c.interfaces.size(); ++k)
+  for (std::size_t k = 0; k < c.interfaces.size(); ++k) {
+    if (comm.distributed() && c.interfaces[k].growth.on())
+      throw InputError(fmt::format(
+          "input key 'interface.{}.growth': crack growth runs on one process only (its tips' J "
+          "and K, the flipped particles and the new ties); run this case without mpiexec",
+          c.interface_names[k]));
     if (comm.distributed() && c.interfaces[k].stress_intensity)
       throw InputError(fmt::format(
           "input key 'interface.{}.stress_intensity' = true: J and K are computed on one process "
           "only; run this case without mpiexec (or set it to false)",
           c.interface_names[k]));
+  }
   try {
     std::vector<StationProbe> probes =
         set_up(ctx, c, options.output_dir, options.checkpoint_interval, comm, options.resume);

@@ -1,0 +1,178 @@
+// rupture/solver/crack_growth.cpp
+#include "solver/crack_growth.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "cohesive/interface_growth.hpp"
+#include "core/errors.hpp"
+#include "geometry/shape.hpp"
+#include "solver/cohesive_step.hpp"
+
+namespace rupture {
+namespace {
+
+constexpr double kDegree = 180.0 / std::numbers::pi;
+
+// The body the crack was drawn in: its shape and cut-outs, without the cuts of lines.
+Region crack_body(const Case& c, std::size_t k) {
+  const Region& r = c.bodies[std::size_t(c.interfaces[k].upper_body)].region;
+  return Region{r.outer, r.minus};
+}
+
+// A frame around the body, the line and p with room to spare (as input/ frames a split).
+Box cut_frame(const Region& body, const Polyline& line, const Point& p, double h) {
+  Box f = bounding_box(body);
+  auto take = [&](double x, double y) {
+    f.min[0] = std::min(f.min[0], x), f.max[0] = std::max(f.max[0], x);
+    f.min[1] = std::min(f.min[1], y), f.max[1] = std::max(f.max[1], y);
+  };
+  for (std::size_t i = 0; i < line.num_vertices(); ++i) take(line.x[i], line.y[i]);
+  take(p.x, p.y);
+  const double pad = h + 0.01 * std::max(f.max[0] - f.min[0], f.max[1] - f.min[1]);
+  for (int d = 0; d < 2; ++d) f.min[d] -= pad, f.max[d] += pad;
+  return f;
+}
+
+bool near(const Point& a, double x, double y, double tol) { return std::hypot(a.x - x, a.y - y) <= tol; }
+
+}  // namespace
+
+double CrackGrowthRecord::length() const {
+  double l = 0.0;
+  for (std::size_t i = 0; i + kGrowthColumns <= rows.size(); i += kGrowthColumns) l += rows[i + 6];
+  return l;
+}
+
+bool add_crack_segment(const Case& c, std::size_t k, State& L, std::size_t slot,
+                       const CrackTip& tip, double x, double y, bool flip_particles) {
+  CohesiveInterface& in = L.interfaces[slot];
+  const double h = L.grid.cell_size(), tol = 1e-6 * h;
+  const Point a{tip.frame.x, tip.frame.y}, p{x, y};
+  const double len = std::hypot(x - a.x, y - a.y);
+  const Point d{(x - a.x) / len, (y - a.y) / len}, e1{tip.frame.e1x, tip.frame.e1y};
+  const Region body = crack_body(c, k);
+  const Box frame = cut_frame(body, in.spec.geometry(), p, h);
+  const Point old_end = leave_box(frame, a, e1), new_end = leave_box(frame, p, d);
+  // The wedge between the old extension and the new one changes sides (left_part: the frame's
+  // part left of a cut from edge to edge; the cut walked so that the wedge is on its left).
+  const double turn = e1.x * d.y - e1.y * d.x;  // sin of the turn, > 0 counterclockwise
+  if (flip_particles && std::fabs(turn) > 1e-12) {
+    const std::vector<Point> cut = turn > 0 ? std::vector<Point>{new_end, p, a, old_end}
+                                            : std::vector<Point>{old_end, a, p, new_end};
+    const Shape wedge = left_part(frame, cut);
+    const Box wb = bounding_box(wedge);
+    Particles& P = L.particles;
+    const std::uint8_t up = std::uint8_t(in.spec.upper_field), lo = std::uint8_t(in.spec.lower_field);
+    for (std::size_t q = 0; q < P.size(); ++q) {
+      if (P.field[q] != up && P.field[q] != lo) continue;
+      const double px = P.x0[q], py = P.y0[q];
+      if (px < wb.min[0] || px > wb.max[0] || py < wb.min[1] || py > wb.max[1]) continue;
+      if (contains(wedge, px, py)) P.field[q] = P.field[q] == up ? lo : up;
+    }
+  }
+  if (flip_particles) {
+    L.plan.valid = false;           // the strips' rows per field: re-sort
+    L.window_drift = INFINITY;      // the windows: measure the particles again
+  }
+  // The segment, its new node displaced as the tip node.
+  const std::size_t tip_node = tip.end == LineEnd::start ? 0 : in.num_nodes() - 1;
+  const double ux = 0.5 * (in.ux_up[tip_node] + in.ux_lo[tip_node]);
+  const double uy = 0.5 * (in.uy_up[tip_node] + in.uy_lo[tip_node]);
+  extend_interface(in, tip.end, x, y, ux, uy);
+  // The tie beyond the tip: the new extension's stretches inside the body.
+  std::vector<Polyline> ties;
+  for (const Polyline& t : in.spec.tie_geometries()) {
+    const bool at_tip = t.num_vertices() >= 2 && (near(a, t.x.front(), t.y.front(), tol) ||
+                                                  near(a, t.x.back(), t.y.back(), tol));
+    if (!at_tip) ties.push_back(t);
+  }
+  bool edge = true;
+  for (const Stretch& st : inside_stretches(body, p, new_end)) {
+    if (std::hypot(st.to.x - st.from.x, st.to.y - st.from.y) <= tol) continue;
+    Polyline t;
+    t.x = {st.from.x, st.to.x};
+    t.y = {st.from.y, st.to.y};
+    ties.push_back(t);
+    if (near(p, st.from.x, st.from.y, tol)) edge = false;
+  }
+  in.spec.bonded_lines = ties;
+  in.spec.bonded = !ties.empty();
+  L.bonded[slot].nodes = bonded_nodes(L.grid, in.spec);
+  return edge;
+}
+
+void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& records) {
+  records.resize(c.interfaces.size());
+  for (std::size_t k = 0; k < c.interfaces.size(); ++k) {
+    const InterfaceSpec& is = c.interfaces[k];
+    if (!is.growth.on()) continue;
+    State& L = s.levels[std::size_t(s.interface_levels[k])];
+    const std::size_t slot = s.interface_slots[k];
+    const double h = L.grid.cell_size();
+    const TipMaterial mat = tip_material(c, k);
+    // Read every tip first, then grow: one tip's segment does not change another's reading.
+    const std::vector<CrackTip> tips = precrack_tips(L.interfaces[slot].spec, 1e-6 * h);
+    struct Grow {
+      CrackTip tip;
+      double x, y, angle, K_I, K_II;
+      std::size_t index;
+    };
+    std::vector<Grow> grow;
+    for (std::size_t t = 0; t < tips.size(); ++t) {
+      const std::vector<TipIntegrals> r = read_tip(L, L.interfaces[slot].spec, tips[t].frame, mat, s.time);
+      double KI = 0.0, KII = 0.0;
+      for (const TipIntegrals& d : r) KI += d.K_I / double(r.size()), KII += d.K_II / double(r.size());
+      const GrowthDecision g = decide_growth(is.growth, KI, KII, mat.e_prime);
+      if (!g.grow) continue;
+      const TipFrame& f = tips[t].frame;
+      const double cs = std::cos(g.angle), sn = std::sin(g.angle);
+      const double dx = cs * f.e1x - sn * f.e1y, dy = sn * f.e1x + cs * f.e1y;
+      const double step = is.growth.step * h;
+      double x = f.x + step * dx, y = f.y + step * dy;
+      // A segment that would leave the body ends on its edge.
+      const std::vector<Stretch> in_body = inside_stretches(crack_body(c, k), {f.x, f.y}, {x, y});
+      if (in_body.empty() || std::hypot(in_body[0].from.x - f.x, in_body[0].from.y - f.y) > 1e-6 * h)
+        continue;  // the tip is on the edge already
+      x = in_body[0].to.x, y = in_body[0].to.y;
+      if (std::hypot(x - f.x, y - f.y) <= 1e-6 * h) continue;
+      grow.push_back({tips[t], x, y, g.angle, KI, KII, t});
+    }
+    // The end first: a new segment at the start shifts nothing the end's tip needs, and the
+    // other way round, but each reads the line as it is now.
+    for (const Grow& g : grow) {
+      const std::vector<CrackTip> now = precrack_tips(L.interfaces[slot].spec, 1e-6 * h);
+      const auto it = std::find_if(now.begin(), now.end(), [&](const CrackTip& t) { return t.end == g.tip.end; });
+      if (it == now.end()) continue;
+      add_crack_segment(c, k, L, slot, *it, g.x, g.y, true);
+      const double len = std::hypot(g.x - g.tip.frame.x, g.y - g.tip.frame.y);
+      records[k].rows.insert(records[k].rows.end(),
+                             {s.time, double(g.index), g.tip.end == LineEnd::start ? 0.0 : 1.0, g.x, g.y,
+                              g.angle * kDegree, len, g.K_I, g.K_II});
+    }
+  }
+}
+
+void regrow_cracks(const Case& c, RunState& s, const std::vector<CrackGrowthRecord>& records) {
+  for (std::size_t k = 0; k < records.size() && k < c.interfaces.size(); ++k) {
+    State& L = s.levels[std::size_t(s.interface_levels[k])];
+    const std::size_t slot = s.interface_slots[k];
+    const double h = L.grid.cell_size();
+    const std::vector<double>& r = records[k].rows;
+    for (std::size_t i = 0; i + kGrowthColumns <= r.size(); i += kGrowthColumns) {
+      const LineEnd end = r[i + 2] == 0.0 ? LineEnd::start : LineEnd::end;
+      const std::vector<CrackTip> now = precrack_tips(L.interfaces[slot].spec, 1e-6 * h);
+      const auto it = std::find_if(now.begin(), now.end(), [&](const CrackTip& t) { return t.end == end; });
+      if (it == now.end())
+        throw InputError(fmt::format("checkpoint: run.growth[{}] row {}: the crack has no tip at its {} to grow "
+                                     "from (the checkpoint is not of this case)",
+                                     k, i / kGrowthColumns, end == LineEnd::start ? "start" : "end"));
+      add_crack_segment(c, k, L, slot, *it, r[i + 3], r[i + 4], false);
+    }
+  }
+}
+
+}  // namespace rupture

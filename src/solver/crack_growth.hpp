@@ -1,0 +1,58 @@
+// rupture/solver/crack_growth.hpp
+// Growth of pre-cracks drawn inside one body (interface.NAME.growth; docs/fracture.md,
+// "Growth"). After every synchronized step, each tip of a growing crack (solver/crack_tips.hpp)
+// is read (K_I, K_II: the mean over its J domains) and the crack's GrowthLaw decides
+// (fracture/growth_criterion.hpp). A tip that grows gets one straight segment of growth.step
+// cells in the criterion's direction (reference coordinates, where the cut is a property of the
+// material), and the body's split follows it exactly as the input split it:
+//  - the interface gets the segment (cohesive/interface_growth.hpp), its new node displaced as
+//    the tip node (the mean of its faces);
+//  - the tie beyond that tip becomes the stretches of the new segment's straight extension
+//    inside the body, and the tied grid nodes are found again (bonded_nodes);
+//  - the particles of the two parts that lie between the old extension and the new one (the
+//    wedge the turn sweeps, by reference position) change field, so each part is again the
+//    material on its side of the extended cut; the next step re-sorts and re-fits the windows.
+// A tip whose segment would leave the body ends on its edge: no tie is left there, the cut is
+// through, and the pieces separate. One process and one level (input/ refuses the others).
+// Units: m, s, degrees in the records.
+#pragma once
+#include <vector>
+
+#include "input/case.hpp"
+#include "solver/crack_tips.hpp"
+#include "solver/run_state.hpp"
+
+namespace rupture {
+
+// Per row: time (s), tip (its index among the crack's tips, as in stress_intensity_NAME.csv),
+// end (0: the line's start, 1: its end), x, y (the new vertex, reference position, m), angle
+// (degrees, counterclockwise from the tip's direction before to the new segment), length (of
+// the segment, m), K_I, K_II (Pa m^1/2, what the criterion read).
+inline constexpr std::size_t kGrowthColumns = 9;
+
+// One interface's growth (checkpointed); empty rows: it has not grown.
+struct CrackGrowthRecord {
+  std::vector<double> rows;
+  bool grown() const { return !rows.empty(); }
+  double initiation_time() const { return grown() ? rows[0] : -1.0; }  // s
+  double initial_angle() const { return grown() ? rows[5] : 0.0; }     // degrees
+  double length() const;                                              // grown length, m
+  int branches() const { return 0; }  // tips that split (branching: not yet)
+};
+
+// Reads every growing crack's tips and grows those the criterion lets grow (at most one segment
+// per tip and call). records: one per interface (resized).
+void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& records);
+
+// A restored run: lays the recorded segments on the interfaces again (their geometry, the ties
+// and the tied nodes; the particles' fields and the interfaces' state come from the
+// checkpoint), so the run continues on the grown cracks.
+void regrow_cracks(const Case& c, RunState& s, const std::vector<CrackGrowthRecord>& records);
+
+// One segment on level L's interface `slot` at `tip`, ending at (x, y) (reference position):
+// the interface, the tie and, with flip_particles, the wedge's particles. Returns whether
+// the tip reached the body's edge. For tests and the two functions above.
+bool add_crack_segment(const Case& c, std::size_t k, State& L, std::size_t slot,
+                       const CrackTip& tip, double x, double y, bool flip_particles);
+
+}  // namespace rupture

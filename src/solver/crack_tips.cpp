@@ -1,0 +1,54 @@
+// rupture/solver/crack_tips.cpp
+#include "solver/crack_tips.hpp"
+
+#include <cmath>
+#include <unordered_map>
+
+#include "fracture/near_tip_field.hpp"
+#include "fracture/tip_domain.hpp"
+
+namespace rupture {
+
+TipMaterial tip_material(const Case& c, std::size_t k) {
+  const ElasticMaterial& m =
+      c.materials[std::size_t(c.bodies[std::size_t(c.interfaces[k].upper_body)].material)];
+  const double E = m.youngs_modulus, nu = m.poisson_ratio;
+  TipMaterial t;
+  t.e_prime = c.plane == PlaneMode::strain ? E / (1.0 - nu * nu) : E;
+  t.mu = E / (2.0 * (1.0 + nu));
+  t.kappa = kolosov_kappa(nu, c.plane);
+  return t;
+}
+
+std::vector<TipIntegrals> read_tip(const State& L, const InterfaceSpec& is, const TipFrame& tip,
+                                   const TipMaterial& material, double time) {
+  std::vector<TiedFields> ties;
+  for (const BondedTie& b : L.bonded) ties.push_back({b.upper_field, b.lower_field, &b.nodes});
+  const double h = L.grid.cell_size();
+  // Tractions on faces (loads on crack faces): their particles' shares, by id.
+  struct Carried {
+    double length, tx, ty;
+  };
+  std::unordered_multimap<std::uint32_t, Carried> carried;
+  for (std::size_t j = 0; j < L.loads.patches.size(); ++j) {
+    double tx, ty;
+    patch_traction(L.loads.spec.tractions[j], L.loads.patches[j], time, tx, ty);
+    if (tx == 0.0 && ty == 0.0) continue;
+    const TractionPatch& patch = L.loads.patches[j];
+    for (std::size_t i = 0; i < patch.ids.size(); ++i)
+      carried.insert({patch.ids[i], {patch.length[i], tx, ty}});
+  }
+  const double reach = is.j_domains.back() * h;
+  const std::vector<DomainPoint> pts =
+      tip_domain_points(L.grid, L.fields, L.particles, L.stiffness, ties, tip, reach, L.dt);
+  std::vector<FaceTraction> faces;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    const auto [lo, hi] = carried.equal_range(pts[i].id);
+    for (auto e = lo; e != hi; ++e) faces.push_back({i, e->second.length, e->second.tx, e->second.ty});
+  }
+  std::vector<TipIntegrals> out;
+  for (double cells : is.j_domains) out.push_back(tip_integrals(pts, tip, {0.5 * cells * h, cells * h}, material, faces));
+  return out;
+}
+
+}  // namespace rupture

@@ -1,0 +1,25 @@
+// rupture/solver/crack_tips.hpp
+// A crack tip's J, K_I, K_II on a level (fracture/j_integral.hpp; docs/fracture.md), read by
+// the stress intensity output and by crack growth (the tips: cohesive/interface_growth.hpp).
+//  - read_tip: the tip's domain points from the level's particles and grid (both fields summed
+//    at tied nodes), the traction loads on faces inside the domains (the face term), and one
+//    TipIntegrals per domain of InterfaceSpec::j_domains (outer radius in cells, inner half).
+// One process; the level passed is the one holding the interface.
+#pragma once
+#include <vector>
+
+#include "cohesive/interface.hpp"
+#include "cohesive/interface_growth.hpp"
+#include "fracture/j_integral.hpp"
+#include "input/case.hpp"
+#include "solver/state.hpp"
+
+namespace rupture {
+
+// The material of interface k's tip region (its upper body's).
+TipMaterial tip_material(const Case& c, std::size_t k);
+
+std::vector<TipIntegrals> read_tip(const State& level, const InterfaceSpec& is,
+                                   const TipFrame& tip, const TipMaterial& material, double time);
+
+}  // namespace rupture
