@@ -331,3 +331,76 @@ TEST(ParseInterfaces, every_bad_table_names_the_key_the_value_and_what_is_allowe
   // The base tables themselves are valid (each error above comes from its one change).
   for (const std::string* ok : {&xn, &bl, &sw}) EXPECT_EQ(error_of(*ok), "");
 }
+
+namespace rupture {
+namespace {
+
+// Crack growth (interface.NAME.growth; solver/crack_growth.hpp): a pre-crack inside one body,
+// the upper one, with the lower one joined to it by a bonded interface.
+const std::string kInside = "body = \"upper\"\npoints = [[0.002, 0.002], [0.005, 0.002]]\nsegments = 3\nlaw = \"contact\"\n";
+const std::string kJoined = "\n[interface.join]\nupper_body = \"upper.below.w\"\nlower_body = \"lower\"\ny = 0.0\nstart = 0.0\n"
+                            "end = 0.008\nsegments = 8\nsigma_max = 24e6\ndelta_n = 0.4e-6\n";
+
+InterfaceSpec parse_grown(const std::string& lines) {
+  const Case c = parse_case(case_with(lines + kJoined));
+  return c.interfaces.at(0);
+}
+std::string growth_error(const std::string& lines) {
+  try {
+    parse_case(case_with(lines + kJoined));
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ParseInterfaces, GrowthNeedsAPreCrackInsideOneBodyWithItsParameters) {
+  const std::string g = kInside + "growth = \"max_hoop\"\n";
+  const InterfaceSpec ok = parse_grown(g + "toughness = 1.5e6\ngrowth_step = 0.25\ngrowth_direction = \"straight\"");
+  EXPECT_EQ(ok.growth.criterion, GrowthCriterion::max_hoop);
+  EXPECT_EQ(ok.growth.direction, GrowthDirection::straight);
+  EXPECT_EQ(ok.growth.toughness, 1.5e6);
+  EXPECT_EQ(ok.growth.step, 0.25);
+  EXPECT_TRUE(ok.stress_intensity);  // growth reads K at the tips, and records them
+  const InterfaceSpec energy = parse_grown(kInside + "growth = \"energy\"\nfracture_energy = 300.0\nj_domains = [3.0, 5.0]");
+  EXPECT_EQ(energy.growth.criterion, GrowthCriterion::energy);
+  EXPECT_EQ(energy.growth.fracture_energy, 300.0);
+  EXPECT_EQ(energy.growth.step, 0.5);  // the default
+  EXPECT_EQ(energy.j_domains, (std::vector<double>{3.0, 5.0}));
+  EXPECT_FALSE(parse_grown(kInside).growth.on());
+  struct Bad {
+    const char* name;
+    std::string lines;
+    std::vector<std::string> expect;
+  };
+  const std::string xn = kGeometry + "sigma_max = 24e6\ndelta_n = 0.4e-6\n";
+  const std::vector<Bad> cases = {
+      {"a cohesive line", replace(g, "law = \"contact\"\n", "sigma_max = 24e6\ndelta_n = 0.4e-6\n") + "toughness = 1e6",
+       {"'interface.w.growth' = \"max_hoop\"", "needs law = \"contact\""}},
+      {"between two bodies", kGeometry + "law = \"contact\"\ngrowth = \"max_hoop\"\ntoughness = 1e6",
+       {"'interface.w.growth' = \"max_hoop\"", "inside one body", "'interface.w.body'"}},
+      {"no toughness", g, {"'interface.w.toughness' = (missing)", "K_Ic"}},
+      {"zero toughness", g + "toughness = 0.0", {"'interface.w.toughness' = 0", "must be > 0"}},
+      {"energy without G_c", kInside + "growth = \"energy\"", {"'interface.w.fracture_energy' = (missing)", "G_c"}},
+      {"toughness with energy", kInside + "growth = \"energy\"\nfracture_energy = 1.0\ntoughness = 1e6",
+       {"'interface.w.toughness' = 1000000", "is for growth = \"max_hoop\""}},
+      {"a step above half a cell", g + "toughness = 1e6\ngrowth_step = 0.6",
+       {"'interface.w.growth_step' = 0.6", "(0, 0.5]", "half a cell"}},
+      {"a zero step", g + "toughness = 1e6\ngrowth_step = 0.0", {"'interface.w.growth_step' = 0", "(0, 0.5]"}},
+      {"toughness without growth", kInside + "toughness = 1e6", {"'interface.w.toughness' = 1000000", "needs growth"}},
+      {"an unknown criterion", kInside + "growth = \"kink\"", {"'interface.w.growth' = \"kink\"", "max_hoop", "energy"}},
+      {"an unknown direction", g + "toughness = 1e6\ngrowth_direction = \"up\"",
+       {"'interface.w.growth_direction' = \"up\"", "straight"}},
+      {"edge to edge: no tip", replace(g, "[[0.002, 0.002], [0.005, 0.002]]", "[[0.0, 0.002], [0.008, 0.002]]") + "toughness = 1e6",
+       {"'interface.w.growth' = \"max_hoop\"", "needs a crack tip"}},
+  };
+  for (const Bad& b : cases) {
+    const std::string msg = growth_error(b.lines);
+    EXPECT_FALSE(msg.empty()) << b.name << ": no error raised";
+    for (const std::string& s : b.expect)
+      EXPECT_NE(msg.find(s), std::string::npos) << b.name << ": '" << s << "' not in: " << msg;
+  }
+}
+
+}  // namespace
+}  // namespace rupture

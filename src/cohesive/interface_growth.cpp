@@ -1,6 +1,7 @@
 // rupture/cohesive/interface_growth.cpp
 #include "cohesive/interface_growth.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -19,7 +20,7 @@ bool same_point(double ax, double ay, double bx, double by, double tol) {
 
 }  // namespace
 
-std::vector<CrackTip> precrack_tips(const InterfaceSpec& is, double tol) {
+std::vector<CrackTip> precrack_tips(const InterfaceSpec& is, double tol, double chord) {
   std::vector<CrackTip> tips;
   const Polyline line = is.geometry();
   if (line.closed || line.num_vertices() < 2) return tips;
@@ -33,11 +34,25 @@ std::vector<CrackTip> precrack_tips(const InterfaceSpec& is, double tol) {
         meets = meets || same_point(x, y, t.x.front(), t.y.front(), tol) ||
                 same_point(x, y, t.x.back(), t.y.back(), tol);
     if (!meets) continue;
-    const std::size_t inner = end == 0 ? 1 : last - 1;  // the end piece's other vertex
+    // Walk back from the end over `chord` of line (at least the end piece; all of a shorter line).
+    const long step = end == 0 ? 1 : -1;
+    const std::size_t other = end == 0 ? last : 0;
+    double need = std::max(chord, 0.0), bx = x, by = y;
+    for (std::size_t i = end; i != other;) {
+      const std::size_t j = std::size_t(long(i) + step);
+      const double len = std::hypot(line.x[j] - line.x[i], line.y[j] - line.y[i]);
+      if (need > 0.0 && len >= need) {
+        const double f = need / len;
+        bx = line.x[i] + f * (line.x[j] - line.x[i]), by = line.y[i] + f * (line.y[j] - line.y[i]);
+        break;
+      }
+      bx = line.x[j], by = line.y[j], need -= len, i = j;
+      if (need <= 0.0) break;
+    }
     CrackTip t;
     t.end = end == 0 ? LineEnd::start : LineEnd::end;
     t.frame.x = x, t.frame.y = y;
-    const double dx = x - line.x[inner], dy = y - line.y[inner], n = std::hypot(dx, dy);
+    const double dx = x - bx, dy = y - by, n = std::hypot(dx, dy);
     t.frame.e1x = dx / n, t.frame.e1y = dy / n;
     tips.push_back(t);
   }

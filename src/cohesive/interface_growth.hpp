@@ -2,8 +2,9 @@
 // Where a pre-crack can grow from, and a new segment at that end (solver/crack_growth.hpp).
 // precrack_tips: each end of the interface's current line (InterfaceSpec::line, grown or as
 // drawn) that meets one of its bonded stretches (where the crack meets intact material), in
-// order start, end; its frame: the end vertex (reference position) and the end piece's outward
-// tangent. extend_interface: the interface is open; the line becomes one piece per segment (its nodes are the
+// order start, end; its frame: the end vertex (reference position) and the direction from the
+// point `chord` back along the line to it (the crack as a J domain of that radius sees it; the
+// end piece's outward tangent where the end piece is longer, or chord = 0). extend_interface: the interface is open; the line becomes one piece per segment (its nodes are the
 // vertices), plus the new end node at reference position (x, y), m, with displacement (ux, uy)
 // on both faces (the material there is intact: no jump). Every existing node and Gauss point
 // keeps its state (displacements, jumps, tractions, law history, crack and rupture times); the
@@ -25,8 +26,8 @@ struct CrackTip {
   TipFrame frame;
 };
 
-// tol: how close (m) an end must be to a bonded stretch's end to meet it.
-std::vector<CrackTip> precrack_tips(const InterfaceSpec& is, double tol);
+// tol: how close (m) an end must be to a bonded stretch's end to meet it; chord, m.
+std::vector<CrackTip> precrack_tips(const InterfaceSpec& is, double tol, double chord = 0.0);
 
 void extend_interface(CohesiveInterface& c, LineEnd at, double x, double y, double ux, double uy);
 

@@ -544,7 +544,7 @@ std::vector<KeyDoc> build_schema() {
        "running tip otherwise",
        "true"},
       {"interface.*.j_domains", "array of numbers", "cells", "[4.0, 6.0, 8.0]",
-       "1 to 8, increasing, each >= 2; with stress_intensity = true",
+       "1 to 8, increasing, each >= 2; with stress_intensity = true or growth",
        "the J domains' outer radii (circles about the tip; inner radius: "
        "half of each)",
        "[4.0, 6.0, 8.0]"},

@@ -296,8 +296,10 @@ void check_no_crossing(Section& f, const InterfaceSpec& is, const Case& c) {
 void parse_stress_intensity(Section& f, InterfaceSpec& is) {
   is.stress_intensity = f.boolean("stress_intensity", false);
   if (!f.has("j_domains")) return;
-  if (!is.stress_intensity)
-    fail(f.key("j_domains"), show(*f.node("j_domains")), "needs stress_intensity = true");
+  const toml::node* growth = f.node("growth");
+  const bool grows = growth && growth->value<std::string>().value_or("none") != "none";
+  if (!is.stress_intensity && !grows)
+    fail(f.key("j_domains"), show(*f.node("j_domains")), "needs stress_intensity = true (or growth)");
   const toml::array* a = f.node("j_domains")->as_array();
   const std::string rule = "must be an array of 1 to 8 increasing numbers >= 2 (the J domains' "
                            "outer radii, in cells)";
@@ -333,7 +335,7 @@ void parse_growth(Section& f, InterfaceSpec& is, const Case& c) {
          "touch); cohesive lines do not grow off their line yet");
   if (!f.has("body"))
     fail(f.key("growth"), shown,
-         fmt::format("grows a crack drawn inside one body: give {} (the body it lies in) instead "
+         fmt::format("grows a crack drawn inside one body: give '{}' (the body it lies in) instead "
                      "of upper_body and lower_body",
                      f.key("body")));
   if (c.grid.refined())

@@ -40,7 +40,9 @@ std::vector<TipFrame> crack_tips(const Case& c, const RunState& s, std::size_t k
     return tips;
   }
   // The interface's own line: the one drawn, or grown (solver/crack_growth.hpp).
-  for (const CrackTip& t : precrack_tips(in.spec, 1e-6 * c.grid.cell_size)) tips.push_back(t.frame);
+  const double h = s.levels[std::size_t(s.interface_levels[k])].grid.cell_size();
+  for (const CrackTip& t : precrack_tips(in.spec, 1e-6 * h, c.interfaces[k].j_domains.back() * h))
+    tips.push_back(t.frame);
   return tips;
 }
 

@@ -115,7 +115,9 @@ void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& rec
     const double h = L.grid.cell_size();
     const TipMaterial mat = tip_material(c, k);
     // Read every tip first, then grow: one tip's segment does not change another's reading.
-    const std::vector<CrackTip> tips = precrack_tips(L.interfaces[slot].spec, 1e-6 * h);
+    // The frame K is read in and the kink turns from: the crack as the outer J domain sees it
+    // (the chord over its radius; a kink shorter than that is not yet the crack's direction).
+    const std::vector<CrackTip> tips = precrack_tips(L.interfaces[slot].spec, 1e-6 * h, is.j_domains.back() * h);
     struct Grow {
       CrackTip tip;
       double x, y, angle, K_I, K_II;

@@ -1,7 +1,8 @@
 // rupture/solver/crack_growth.hpp
 // Growth of pre-cracks drawn inside one body (interface.NAME.growth; docs/fracture.md,
 // "Growth"). After every synchronized step, each tip of a growing crack (solver/crack_tips.hpp)
-// is read (K_I, K_II: the mean over its J domains) and the crack's GrowthLaw decides
+// is read (K_I, K_II: the mean over its J domains, in the frame of the crack's chord over the
+// outer domain's radius: the crack as the domains see it) and the crack's GrowthLaw decides
 // (fracture/growth_criterion.hpp). A tip that grows gets one straight segment of growth.step
 // cells in the criterion's direction (reference coordinates, where the cut is a property of the
 // material), and the body's split follows it exactly as the input split it:
@@ -26,7 +27,8 @@ namespace rupture {
 
 // Per row: time (s), tip (its index among the crack's tips, as in stress_intensity_NAME.csv),
 // end (0: the line's start, 1: its end), x, y (the new vertex, reference position, m), angle
-// (degrees, counterclockwise from the tip's direction before to the new segment), length (of
+// (degrees, counterclockwise from the crack's direction at the tip, the chord above, to the new
+// segment; the first row's: from the drawn crack's direction), length (of
 // the segment, m), K_I, K_II (Pa m^1/2, what the criterion read).
 inline constexpr std::size_t kGrowthColumns = 9;
 
