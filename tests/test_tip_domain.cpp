@@ -106,3 +106,34 @@ TEST(TipDomain, two_fields_are_one_body_where_tied) {
 
 }  // namespace
 }  // namespace rupture
+
+namespace rupture {
+namespace {
+
+// A prestressed body (bodies.NAME.stress): its particles sit where they were made, u = x - X = 0,
+// yet its material is strained by eps0 = C^-1 sigma0; the domain's gradient is that of the
+// displacement from the stress-free state, grad u = eps0 (symmetric: no rotation), per field.
+TEST(TipDomain, a_fields_initial_strain_is_the_gradient_of_an_undisplaced_prestressed_body) {
+  Block b = block(0.01);
+  for (std::size_t p = 0; p < b.P.size(); ++p) b.P.x0[p] = b.P.x[p], b.P.y0[p] = b.P.y[p];
+  const std::vector<InitialStrain> e0 = {{1e-4, -3e-4, 2e-4}, {-5e-5, 6e-4, 0.0}};
+  const TipFrame tip{0.01, 0.015, 1.0, 0.0};  // field 0 around it, field 1 below y = 10 mm
+  const std::vector<DomainPoint> pts = tip_domain_points(b.g, b.fields, b.P, b.C, {}, tip, 4e-3, 0.0, e0);
+  ASSERT_FALSE(pts.empty());
+  for (const DomainPoint& d : pts) {
+    EXPECT_NEAR(d.ux_x, 1e-4, 1e-15);
+    EXPECT_NEAR(d.uy_y, -3e-4, 1e-15);
+    EXPECT_NEAR(d.ux_y, 2e-4, 1e-15);
+    EXPECT_NEAR(d.uy_x, 2e-4, 1e-15);
+  }
+  const TipFrame low{0.01, 0.004, 1.0, 0.0};  // inside field 1
+  for (const DomainPoint& d : tip_domain_points(b.g, b.fields, b.P, b.C, {}, low, 3e-3, 0.0, e0)) {
+    if (d.y > 0.009) continue;  // the points whose stencils reach field 0's side see its nodes empty
+    EXPECT_NEAR(d.ux_x, -5e-5, 1e-15);
+    EXPECT_NEAR(d.uy_y, 6e-4, 1e-15);
+    EXPECT_NEAR(d.ux_y, 0.0, 1e-15);
+  }
+}
+
+}  // namespace
+}  // namespace rupture

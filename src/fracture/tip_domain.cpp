@@ -27,7 +27,8 @@ std::vector<DomainPoint> tip_domain_points(const Grid& g, const GridFields& fiel
                                            const Particles& P,
                                            const std::vector<ElasticStiffness>& stiffness,
                                            const std::vector<TiedFields>& ties,
-                                           const TipFrame& tip, double reach, double dt) {
+                                           const TipFrame& tip, double reach, double dt,
+                                           const std::vector<InitialStrain>& initial) {
   const double h = std::max(g.x.h, g.y.h);
   // The points: boxes within reach + a cell. The maps: every particle within two more cells
   // (a node's support is one cell plus a particle half-width).
@@ -98,6 +99,10 @@ std::vector<DomainPoint> tip_domain_points(const Grid& g, const GridFields& fiel
           d.ax += w * fields.dvel_x[e] / dt, d.ay += w * fields.dvel_y[e] / dt;
         }
       }
+    if (std::size_t(f) < initial.size()) {
+      const InitialStrain& e0 = initial[std::size_t(f)];
+      d.ux_x += e0.exx, d.ux_y += e0.exy, d.uy_x += e0.exy, d.uy_y += e0.eyy;
+    }
     out.push_back(d);
   }
   return out;

@@ -26,11 +26,20 @@ struct TiedFields {
   const std::vector<std::size_t>* nodes = nullptr;  // grid nodes, increasing
 };
 
-// dt: the last step's (s; 0 gives zero accelerations).
+// The uniform strain a field's material was given at t = 0 (a body's initial stress through its
+// compliance; tensor components): u = x - X does not hold it, so it is added to the
+// displacement gradient, and the domain sees the displacement from the stress-free state that
+// its stress and strain belong to.
+struct InitialStrain {
+  double exx = 0.0, eyy = 0.0, exy = 0.0;
+};
+
+// dt: the last step's (s; 0 gives zero accelerations). initial: per field (empty: none).
 std::vector<DomainPoint> tip_domain_points(const Grid& g, const GridFields& fields,
                                            const Particles& P,
                                            const std::vector<ElasticStiffness>& stiffness,
                                            const std::vector<TiedFields>& ties,
-                                           const TipFrame& tip, double reach, double dt);
+                                           const TipFrame& tip, double reach, double dt,
+                                           const std::vector<InitialStrain>& initial = {});
 
 }  // namespace rupture

@@ -54,10 +54,11 @@ void sample_stress_intensity(const Case& c, RunState& s, const std::vector<Crack
     if (!is.stress_intensity) continue;
     const State& L = s.levels[std::size_t(s.interface_levels[k])];
     const TipMaterial mat = tip_material(c, k);
+    const std::vector<InitialStrain> initial = initial_field_strains(c);
     const std::vector<TipFrame> tips = crack_tips(c, s, k, trackers[k]);
     const double h = L.grid.cell_size();
     for (std::size_t t = 0; t < tips.size(); ++t) {
-      const std::vector<TipIntegrals> r = read_tip(L, is, tips[t], mat, s.time);
+      const std::vector<TipIntegrals> r = read_tip(L, is, tips[t], mat, s.time, initial);
       for (std::size_t d = 0; d < r.size(); ++d)
         series[k].rows.insert(series[k].rows.end(),
                               {s.time, double(t), tips[t].x, tips[t].y, is.j_domains[d] * h, r[d].J,

@@ -114,6 +114,7 @@ void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& rec
     const std::size_t slot = s.interface_slots[k];
     const double h = L.grid.cell_size();
     const TipMaterial mat = tip_material(c, k);
+    const std::vector<InitialStrain> initial = initial_field_strains(c);
     // Read every tip first, then grow: one tip's segment does not change another's reading.
     // The frame K is read in and the kink turns from: the crack as the outer J domain sees it
     // (the chord over its radius; a kink shorter than that is not yet the crack's direction).
@@ -125,7 +126,7 @@ void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& rec
     };
     std::vector<Grow> grow;
     for (std::size_t t = 0; t < tips.size(); ++t) {
-      const std::vector<TipIntegrals> r = read_tip(L, L.interfaces[slot].spec, tips[t].frame, mat, s.time);
+      const std::vector<TipIntegrals> r = read_tip(L, L.interfaces[slot].spec, tips[t].frame, mat, s.time, initial);
       double KI = 0.0, KII = 0.0;
       for (const TipIntegrals& d : r) KI += d.K_I / double(r.size()), KII += d.K_II / double(r.size());
       const GrowthDecision g = decide_growth(is.growth, KI, KII, mat.e_prime);

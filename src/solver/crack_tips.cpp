@@ -20,8 +20,20 @@ TipMaterial tip_material(const Case& c, std::size_t k) {
   return t;
 }
 
+std::vector<InitialStrain> initial_field_strains(const Case& c) {
+  std::vector<InitialStrain> out(c.field_names.size());
+  for (const BodySpec& b : c.bodies) {
+    if (b.stress[0] == 0.0 && b.stress[1] == 0.0 && b.stress[2] == 0.0) continue;
+    const ElasticStiffness C = stiffness(c.materials[std::size_t(b.material)], c.plane);
+    InitialStrain& e = out[std::size_t(b.field)];
+    strain_of(C, b.stress[0], b.stress[1], b.stress[2], e.exx, e.eyy, e.exy);
+  }
+  return out;
+}
+
 std::vector<TipIntegrals> read_tip(const State& L, const InterfaceSpec& is, const TipFrame& tip,
-                                   const TipMaterial& material, double time) {
+                                   const TipMaterial& material, double time,
+                                   const std::vector<InitialStrain>& initial) {
   std::vector<TiedFields> ties;
   for (const BondedTie& b : L.bonded) ties.push_back({b.upper_field, b.lower_field, &b.nodes});
   const double h = L.grid.cell_size();
@@ -40,7 +52,7 @@ std::vector<TipIntegrals> read_tip(const State& L, const InterfaceSpec& is, cons
   }
   const double reach = is.j_domains.back() * h;
   const std::vector<DomainPoint> pts =
-      tip_domain_points(L.grid, L.fields, L.particles, L.stiffness, ties, tip, reach, L.dt);
+      tip_domain_points(L.grid, L.fields, L.particles, L.stiffness, ties, tip, reach, L.dt, initial);
   std::vector<FaceTraction> faces;
   for (std::size_t i = 0; i < pts.size(); ++i) {
     const auto [lo, hi] = carried.equal_range(pts[i].id);

@@ -2,7 +2,7 @@
 // A crack tip's J, K_I, K_II on a level (fracture/j_integral.hpp; docs/fracture.md), read by
 // the stress intensity output and by crack growth (the tips: cohesive/interface_growth.hpp).
 //  - read_tip: the tip's domain points from the level's particles and grid (both fields summed
-//    at tied nodes), the traction loads on faces inside the domains (the face term), and one
+//    at tied nodes; a prestressed body's initial strain added to the displacement gradient), the traction loads on faces inside the domains (the face term), and one
 //    TipIntegrals per domain of InterfaceSpec::j_domains (outer radius in cells, inner half).
 // One process; the level passed is the one holding the interface.
 #pragma once
@@ -11,6 +11,7 @@
 #include "cohesive/interface.hpp"
 #include "cohesive/interface_growth.hpp"
 #include "fracture/j_integral.hpp"
+#include "fracture/tip_domain.hpp"
 #include "input/case.hpp"
 #include "solver/state.hpp"
 
@@ -19,7 +20,11 @@ namespace rupture {
 // The material of interface k's tip region (its upper body's).
 TipMaterial tip_material(const Case& c, std::size_t k);
 
+// Per velocity field, the uniform strain of its bodies' initial stress (bodies.NAME.stress).
+std::vector<InitialStrain> initial_field_strains(const Case& c);
+
 std::vector<TipIntegrals> read_tip(const State& level, const InterfaceSpec& is,
-                                   const TipFrame& tip, const TipMaterial& material, double time);
+                                   const TipFrame& tip, const TipMaterial& material, double time,
+                                   const std::vector<InitialStrain>& initial);
 
 }  // namespace rupture
