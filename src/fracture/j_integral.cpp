@@ -30,18 +30,45 @@ struct Rotation {
 
 }  // namespace
 
-TipIntegrals tip_integrals(const std::vector<DomainPoint>& points, const TipFrame& tip,
-                           const JDomain& domain, const TipMaterial& m,
-                           const std::vector<FaceTraction>& faces) {
-  const double norm = std::hypot(tip.e1x, tip.e1y);
-  const Rotation R{tip.e1x / norm, tip.e1y / norm};
+namespace {
+
+// What a point contributes, in the tip frame, before the weight q: the same for every domain
+// (the Williams fields cost most of the integrals, so they are evaluated once per point).
+struct PointTerms {
+  double x1, x2, r;
+  double s11, s12, s21, s22, u11, u21, w11, w21;
+  double v1, v2, a1, a2, W, T, area, density;
+  NearTipField f[2];
+};
+
+PointTerms point_terms(const DomainPoint& p, const Rotation& R, const TipFrame& tip,
+                       const TipMaterial& m) {
+  PointTerms t;
+  R.vec(p.x - tip.x, p.y - tip.y, t.x1, t.x2);
+  t.r = std::hypot(t.x1, t.x2);
+  double e11, e12, e21, e22, u12, u22, w12, w22;
+  R.ten(p.sxx, p.sxy, p.sxy, p.syy, t.s11, t.s12, t.s21, t.s22);
+  R.ten(p.exx, p.exy, p.exy, p.eyy, e11, e12, e21, e22);
+  R.ten(p.ux_x, p.ux_y, p.uy_x, p.uy_y, t.u11, u12, t.u21, u22);  // u_i,j
+  R.ten(p.vx_x, p.vx_y, p.vy_x, p.vy_y, t.w11, w12, t.w21, w22);  // v_i,j
+  R.vec(p.vx, p.vy, t.v1, t.v2);
+  R.vec(p.ax, p.ay, t.a1, t.a2);
+  t.W = 0.5 * (t.s11 * e11 + t.s22 * e22 + 2.0 * t.s12 * e12);
+  t.T = 0.5 * p.density * (t.v1 * t.v1 + t.v2 * t.v2);
+  t.area = p.area, t.density = p.density;
+  for (int k = 0; k < 2; ++k)
+    t.f[k] = williams_field(k == 0 ? CrackMode::opening : CrackMode::sliding, t.x1, t.x2, m.mu, m.kappa);
+  return t;
+}
+
+TipIntegrals integrate(const std::vector<PointTerms>& terms, const std::vector<DomainPoint>& points,
+                       const Rotation& R, const TipFrame& tip, const JDomain& domain,
+                       const TipMaterial& m, const std::vector<FaceTraction>& faces) {
   const double width = domain.outer - domain.inner;
   TipIntegrals out;
   double J = 0.0, M[2] = {0.0, 0.0};
-  for (const DomainPoint& p : points) {
-    double x1, x2;
-    R.vec(p.x - tip.x, p.y - tip.y, x1, x2);
-    const double r = std::hypot(x1, x2);
+  for (const PointTerms& t : terms) {
+    const double r = t.r, x1 = t.x1, x2 = t.x2;
     if (r >= domain.outer) continue;
     // q = 1 - (3 xi^2 - 2 xi^3), xi = (r - inner) / (outer - inner): its gradient vanishes at
     // both edges of the ring, so the particles' midpoint sums converge at second order where a
@@ -54,27 +81,17 @@ TipIntegrals tip_integrals(const std::vector<DomainPoint>& points, const TipFram
       q1 = dq * x1 / r, q2 = dq * x2 / r;
     }
     ++out.points;
-    double s11, s12, s21, s22, e11, e12, e21, e22, u11, u12, u21, u22, w11, w12, w21, w22;
-    R.ten(p.sxx, p.sxy, p.sxy, p.syy, s11, s12, s21, s22);
-    R.ten(p.exx, p.exy, p.exy, p.eyy, e11, e12, e21, e22);
-    R.ten(p.ux_x, p.ux_y, p.uy_x, p.uy_y, u11, u12, u21, u22);  // u_i,j
-    R.ten(p.vx_x, p.vx_y, p.vy_x, p.vy_y, w11, w12, w21, w22);  // v_i,j
-    double v1, v2, a1, a2;
-    R.vec(p.vx, p.vy, v1, v2);
-    R.vec(p.ax, p.ay, a1, a2);
-    const double W = 0.5 * (s11 * e11 + s22 * e22 + 2.0 * s12 * e12);
-    const double T = 0.5 * p.density * (v1 * v1 + v2 * v2);
+    const double s11 = t.s11, s12 = t.s12, s21 = t.s21, s22 = t.s22, u11 = t.u11, u21 = t.u21;
     // sigma_ij u_i,1 q_,j - (W + T) q_,1 and the inertia terms.
-    J += p.area * ((s11 * u11 + s21 * u21 - (W + T)) * q1 + (s12 * u11 + s22 * u21) * q2 +
-                   p.density * (a1 * u11 + a2 * u21 - v1 * w11 - v2 * w21) * q);
+    J += t.area * ((s11 * u11 + s21 * u21 - (t.W + t.T)) * q1 + (s12 * u11 + s22 * u21) * q2 +
+                   t.density * (t.a1 * u11 + t.a2 * u21 - t.v1 * t.w11 - t.v2 * t.w21) * q);
     for (int k = 0; k < 2; ++k) {
-      if (q1 == 0.0 && q2 == 0.0 && (a1 == 0.0 && a2 == 0.0)) break;  // nothing to add
-      const NearTipField f =
-          williams_field(k == 0 ? CrackMode::opening : CrackMode::sliding, x1, x2, m.mu, m.kappa);
+      if (q1 == 0.0 && q2 == 0.0 && (t.a1 == 0.0 && t.a2 == 0.0)) break;  // nothing to add
+      const NearTipField& f = t.f[k];
       const double cross = s11 * (f.u1_1) + s22 * (f.u2_2) + s12 * (f.u1_2 + f.u2_1);  // sigma : eps^a
-      M[k] += p.area * ((s11 * f.u1_1 + s21 * f.u2_1 + f.s11 * u11 + f.s12 * u21 - cross) * q1 +
+      M[k] += t.area * ((s11 * f.u1_1 + s21 * f.u2_1 + f.s11 * u11 + f.s12 * u21 - cross) * q1 +
                         (s12 * f.u1_1 + s22 * f.u2_1 + f.s12 * u11 + f.s22 * u21) * q2 +
-                        p.density * (a1 * f.u1_1 + a2 * f.u2_1) * q);
+                        t.density * (t.a1 * f.u1_1 + t.a2 * f.u2_1) * q);
     }
   }
   // Loaded faces: the boundary term of the divergence theorem that free faces do not have.
@@ -110,6 +127,33 @@ TipIntegrals tip_integrals(const std::vector<DomainPoint>& points, const TipFram
   out.K_I = 0.5 * m.e_prime * M[0];
   out.K_II = 0.5 * m.e_prime * M[1];
   return out;
+}
+
+}  // namespace
+
+std::vector<TipIntegrals> tip_integrals(const std::vector<DomainPoint>& points, const TipFrame& tip,
+                                        const std::vector<JDomain>& domains, const TipMaterial& m,
+                                        const std::vector<FaceTraction>& faces) {
+  const double norm = std::hypot(tip.e1x, tip.e1y);
+  const Rotation R{tip.e1x / norm, tip.e1y / norm};
+  double reach = 0.0;
+  for (const JDomain& d : domains) reach = std::max(reach, d.outer);
+  std::vector<PointTerms> terms;
+  terms.reserve(points.size());
+  for (const DomainPoint& p : points) {
+    double x1, x2;
+    R.vec(p.x - tip.x, p.y - tip.y, x1, x2);
+    if (std::hypot(x1, x2) < reach) terms.push_back(point_terms(p, R, tip, m));
+  }
+  std::vector<TipIntegrals> out;
+  for (const JDomain& d : domains) out.push_back(integrate(terms, points, R, tip, d, m, faces));
+  return out;
+}
+
+TipIntegrals tip_integrals(const std::vector<DomainPoint>& points, const TipFrame& tip,
+                           const JDomain& domain, const TipMaterial& m,
+                           const std::vector<FaceTraction>& faces) {
+  return tip_integrals(points, tip, std::vector<JDomain>{domain}, m, faces).front();
 }
 
 double hoop_stress_angle(double K_I, double K_II) {

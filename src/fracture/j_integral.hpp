@@ -78,6 +78,13 @@ TipIntegrals tip_integrals(const std::vector<DomainPoint>& points, const TipFram
                            const JDomain& domain, const TipMaterial& material,
                            const std::vector<FaceTraction>& faces = {});
 
+// The same on several domains at once (each point's auxiliary fields evaluated once; the
+// results are those of one call per domain, bit for bit).
+std::vector<TipIntegrals> tip_integrals(const std::vector<DomainPoint>& points, const TipFrame& tip,
+                                        const std::vector<JDomain>& domains,
+                                        const TipMaterial& material,
+                                        const std::vector<FaceTraction>& faces = {});
+
 // The maximum hoop stress direction (Erdogan & Sih 1963): the angle from the crack's direction
 // to the one a tip with K_I, K_II would kink into, radians, counterclockwise:
 // theta = 2 atan[(K_I - sqrt(K_I^2 + 8 K_II^2)) / (4 K_II)] (0 when K_II = 0; -70.5 degrees in

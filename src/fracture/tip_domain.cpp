@@ -33,9 +33,16 @@ std::vector<DomainPoint> tip_domain_points(const Grid& g, const GridFields& fiel
   // The points: boxes within reach + a cell. The maps: every particle within two more cells
   // (a node's support is one cell plus a particle half-width).
   const double r_points = reach + h, r_map = reach + 3.0 * h;
+  // Every particle is looked at (squared distances: a hypot per particle cost more than the
+  // integrals, when growth reads the tips every step).
   std::vector<std::size_t> mapped;
-  for (std::size_t p = 0; p < P.size(); ++p)
-    if (tip_distance(tip, P.x[p], P.y[p]) < r_map) mapped.push_back(p);
+  const double r2 = r_map * r_map, tx = tip.x, ty = tip.y;
+  const double* __restrict px = P.x.data();
+  const double* __restrict py = P.y.data();
+  for (std::size_t p = 0; p < P.size(); ++p) {
+    const double dx = px[p] - tx, dy = py[p] - ty;
+    if (dx * dx + dy * dy < r2) mapped.push_back(p);
+  }
   std::vector<DomainPoint> out;
   if (mapped.empty()) return out;
   LocalNodes L;

@@ -125,8 +125,13 @@ void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& rec
       std::size_t index;
     };
     std::vector<Grow> grow;
+    // The tips are read side by side (each read only looks at the level).
+    std::vector<std::vector<TipIntegrals>> readings(tips.size());
+#pragma omp parallel for schedule(static, 1)
+    for (std::size_t t = 0; t < tips.size(); ++t)
+      readings[t] = read_tip(L, L.interfaces[slot].spec, tips[t].frame, mat, s.time, initial);
     for (std::size_t t = 0; t < tips.size(); ++t) {
-      const std::vector<TipIntegrals> r = read_tip(L, L.interfaces[slot].spec, tips[t].frame, mat, s.time, initial);
+      const std::vector<TipIntegrals>& r = readings[t];
       double KI = 0.0, KII = 0.0;
       for (const TipIntegrals& d : r) KI += d.K_I / double(r.size()), KII += d.K_II / double(r.size());
       const GrowthDecision g = decide_growth(is.growth, KI, KII, mat.e_prime);

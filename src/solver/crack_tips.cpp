@@ -58,9 +58,9 @@ std::vector<TipIntegrals> read_tip(const State& L, const InterfaceSpec& is, cons
     const auto [lo, hi] = carried.equal_range(pts[i].id);
     for (auto e = lo; e != hi; ++e) faces.push_back({i, e->second.length, e->second.tx, e->second.ty});
   }
-  std::vector<TipIntegrals> out;
-  for (double cells : is.j_domains) out.push_back(tip_integrals(pts, tip, {0.5 * cells * h, cells * h}, material, faces));
-  return out;
+  std::vector<JDomain> domains;
+  for (double cells : is.j_domains) domains.push_back({0.5 * cells * h, cells * h});
+  return tip_integrals(pts, tip, domains, material, faces);
 }
 
 }  // namespace rupture
