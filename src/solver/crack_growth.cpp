@@ -39,6 +39,22 @@ Box cut_frame(const Region& body, const Polyline& line, const Point& p, double h
 
 bool near(const Point& a, double x, double y, double tol) { return std::hypot(a.x - x, a.y - y) <= tol; }
 
+// The nearest point of the body's edge within `within` of p (rays every 15 degrees), if any.
+bool nearest_edge(const Region& body, const Point& p, double within, Point& at) {
+  constexpr int kRays = 24;
+  double best = INFINITY;
+  for (int i = 0; i < kRays; ++i) {
+    const double a = 2.0 * std::numbers::pi * i / kRays;
+    const Point b{p.x + within * std::cos(a), p.y + within * std::sin(a)};
+    const std::vector<Stretch> st = inside_stretches(body, p, b);
+    if (st.empty() || !near(p, st[0].from.x, st[0].from.y, 1e-9 * within)) continue;  // p not inside
+    if (near(b, st[0].to.x, st[0].to.y, 1e-12 * within)) continue;  // the ray stays inside
+    const double d = std::hypot(st[0].to.x - p.x, st[0].to.y - p.y);
+    if (d < best) best = d, at = st[0].to;
+  }
+  return best < INFINITY;
+}
+
 }  // namespace
 
 double CrackGrowthRecord::length() const {
@@ -155,11 +171,32 @@ void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& rec
       const std::vector<CrackTip> now = precrack_tips(L.interfaces[slot].spec, 1e-6 * h);
       const auto it = std::find_if(now.begin(), now.end(), [&](const CrackTip& t) { return t.end == g.tip.end; });
       if (it == now.end()) continue;
-      add_crack_segment(c, k, L, slot, *it, g.x, g.y, true);
+      const bool through = add_crack_segment(c, k, L, slot, *it, g.x, g.y, true);
+      const double end_column = g.tip.end == LineEnd::start ? 0.0 : 1.0;
       const double len = std::hypot(g.x - g.tip.frame.x, g.y - g.tip.frame.y);
       records[k].rows.insert(records[k].rows.end(),
-                             {s.time, double(g.index), g.tip.end == LineEnd::start ? 0.0 : 1.0, g.x, g.y,
-                              g.angle * kDegree, len, g.K_I, g.K_II});
+                             {s.time, double(g.index), end_column, g.x, g.y, g.angle * kDegree, len, g.K_I, g.K_II});
+      // A free surface less than a cell away: the ligament left holds fewer than two particles
+      // across and cannot carry a field of its own on the grid (nor can a J domain cut by the
+      // edge read the tip), so the crack cuts through to the nearest point of the edge, in
+      // segments of at most the growth step (a junction: the tie there is gone).
+      Point edge;
+      if (through || !nearest_edge(crack_body(c, k), {g.x, g.y}, h, edge)) continue;
+      for (int piece = 0; piece < 4; ++piece) {
+        const std::vector<CrackTip> tip = precrack_tips(L.interfaces[slot].spec, 1e-6 * h);
+        const auto at = std::find_if(tip.begin(), tip.end(), [&](const CrackTip& t) { return t.end == g.tip.end; });
+        if (at == tip.end()) break;
+        const TipFrame& f = at->frame;
+        const double dx = edge.x - f.x, dy = edge.y - f.y, left = std::hypot(dx, dy);
+        if (left <= 1e-6 * h) break;
+        const double l = std::min(left, is.growth.step * h);
+        const double x = l == left ? edge.x : f.x + dx * l / left, y = l == left ? edge.y : f.y + dy * l / left;
+        const double turn = std::atan2(f.e1x * dy - f.e1y * dx, f.e1x * dx + f.e1y * dy);
+        const bool done = add_crack_segment(c, k, L, slot, *at, x, y, true);
+        records[k].rows.insert(records[k].rows.end(),
+                               {s.time, double(g.index), end_column, x, y, turn * kDegree, l, g.K_I, g.K_II});
+        if (done || l == left) break;
+      }
     }
   }
 }

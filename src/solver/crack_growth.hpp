@@ -14,7 +14,8 @@
 //    wedge the turn sweeps, by reference position) change field, so each part is again the
 //    material on its side of the extended cut; the next step re-sorts and re-fits the windows.
 // A tip whose segment would leave the body ends on its edge: no tie is left there, the cut is
-// through, and the pieces separate. One process and one level (input/ refuses the others).
+// through, and the pieces separate. A tip that comes within a cell of the edge cuts through to
+// its nearest point the same way (the ligament left is below what the grid resolves). One process and one level (input/ refuses the others).
 // Units: m, s, degrees in the records.
 #pragma once
 #include <vector>
