@@ -138,13 +138,21 @@ std::vector<TipIntegrals> tip_integrals(const std::vector<DomainPoint>& points, 
   const Rotation R{tip.e1x / norm, tip.e1y / norm};
   double reach = 0.0;
   for (const JDomain& d : domains) reach = std::max(reach, d.outer);
-  std::vector<PointTerms> terms;
-  terms.reserve(points.size());
-  for (const DomainPoint& p : points) {
+  std::vector<std::size_t> inside;
+  for (std::size_t i = 0; i < points.size(); ++i) {
     double x1, x2;
-    R.vec(p.x - tip.x, p.y - tip.y, x1, x2);
-    if (std::hypot(x1, x2) < reach) terms.push_back(point_terms(p, R, tip, m));
+    R.vec(points[i].x - tip.x, points[i].y - tip.y, x1, x2);
+    if (std::hypot(x1, x2) < reach) inside.push_back(i);
   }
+  // The points' terms side by side (each its own; the sums below stay in one order, so the
+  // result does not depend on the threads). A caller already inside a parallel region (several
+  // tips read side by side) runs this on its own thread.
+  thread_local std::vector<PointTerms> kept;  // its capacity is reused call after call
+  std::vector<PointTerms>& terms = kept;       // this thread's, shared with the loop's threads
+  terms.resize(inside.size());
+  const long n = long(inside.size());
+#pragma omp parallel for schedule(static) if (n > 256)
+  for (long i = 0; i < n; ++i) terms[std::size_t(i)] = point_terms(points[inside[std::size_t(i)]], R, tip, m);
   std::vector<TipIntegrals> out;
   for (const JDomain& d : domains) out.push_back(integrate(terms, points, R, tip, d, m, faces));
   return out;

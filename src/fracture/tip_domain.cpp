@@ -29,6 +29,17 @@ std::vector<DomainPoint> tip_domain_points(const Grid& g, const GridFields& fiel
                                            const std::vector<TiedFields>& ties,
                                            const TipFrame& tip, double reach, double dt,
                                            const std::vector<InitialStrain>& initial) {
+  std::vector<DomainPoint> out;
+  tip_domain_points(g, fields, P, stiffness, ties, tip, reach, dt, initial, out);
+  return out;
+}
+
+void tip_domain_points(const Grid& g, const GridFields& fields, const Particles& P,
+                       const std::vector<ElasticStiffness>& stiffness,
+                       const std::vector<TiedFields>& ties, const TipFrame& tip, double reach,
+                       double dt, const std::vector<InitialStrain>& initial,
+                       std::vector<DomainPoint>& out) {
+  out.clear();
   const double h = std::max(g.x.h, g.y.h);
   // The points: boxes within reach + a cell. The maps: every particle within two more cells
   // (a node's support is one cell plus a particle half-width).
@@ -43,8 +54,7 @@ std::vector<DomainPoint> tip_domain_points(const Grid& g, const GridFields& fiel
     const double dx = px[p] - tx, dy = py[p] - ty;
     if (dx * dx + dy * dy < r2) mapped.push_back(p);
   }
-  std::vector<DomainPoint> out;
-  if (mapped.empty()) return out;
+  if (mapped.empty()) return;
   LocalNodes L;
   L.fields = fields.num_fields;
   int imin = g.nodes_x(), imax = -1, jmin = g.nodes_y(), jmax = -1;
@@ -80,10 +90,18 @@ std::vector<DomainPoint> tip_domain_points(const Grid& g, const GridFields& fiel
       const double inv = 1.0 / L.m[k];
       L.ux[k] *= inv, L.uy[k] *= inv, L.vx[k] *= inv, L.vy[k] *= inv;
     }
-  for (std::size_t p : mapped) {
-    if (tip_distance(tip, P.x[p], P.y[p]) >= r_points) continue;
-    stencil(g.x, P.x[p], P.half_x[p], sx);
-    stencil(g.y, P.y[p], P.half_y[p], sy);
+  std::vector<std::size_t> near;
+  for (std::size_t p : mapped)
+    if (tip_distance(tip, P.x[p], P.y[p]) < r_points) near.push_back(p);
+  out.resize(near.size());
+  // Each point's gradients from the maps, side by side (each writes its own point).
+  const long n = long(near.size());
+#pragma omp parallel for schedule(static) if (n > 256)
+  for (long q = 0; q < n; ++q) {
+    const std::size_t p = near[std::size_t(q)];
+    Stencil1D qx, qy;
+    stencil(g.x, P.x[p], P.half_x[p], qx);
+    stencil(g.y, P.y[p], P.half_y[p], qy);
     const int f = P.field[p];
     DomainPoint d{};
     d.x = P.x[p], d.y = P.y[p];
@@ -96,9 +114,9 @@ std::vector<DomainPoint> tip_domain_points(const Grid& g, const GridFields& fiel
     d.density = P.mass[p] / P.volume0[p];
     for (int b = 0; b < 3; ++b)
       for (int a = 0; a < 3; ++a) {
-        const int i = sx.first + a, j = sy.first + b;
+        const int i = qx.first + a, j = qy.first + b;
         const std::size_t k = L.at(f, i, j);
-        const double gx = sx.ds[a] * sy.s[b], gy = sx.s[a] * sy.ds[b], w = sx.s[a] * sy.s[b];
+        const double gx = qx.ds[a] * qy.s[b], gy = qx.s[a] * qy.ds[b], w = qx.s[a] * qy.s[b];
         d.ux_x += L.ux[k] * gx, d.ux_y += L.ux[k] * gy, d.uy_x += L.uy[k] * gx, d.uy_y += L.uy[k] * gy;
         d.vx_x += L.vx[k] * gx, d.vx_y += L.vx[k] * gy, d.vy_x += L.vy[k] * gx, d.vy_y += L.vy[k] * gy;
         if (dt > 0.0 && fields.holds(f, i, j)) {
@@ -110,9 +128,8 @@ std::vector<DomainPoint> tip_domain_points(const Grid& g, const GridFields& fiel
       const InitialStrain& e0 = initial[std::size_t(f)];
       d.ux_x += e0.exx, d.ux_y += e0.exy, d.uy_x += e0.exy, d.uy_y += e0.eyy;
     }
-    out.push_back(d);
+    out[std::size_t(q)] = d;
   }
-  return out;
 }
 
 }  // namespace rupture

@@ -41,5 +41,12 @@ std::vector<DomainPoint> tip_domain_points(const Grid& g, const GridFields& fiel
                                            const std::vector<TiedFields>& ties,
                                            const TipFrame& tip, double reach, double dt,
                                            const std::vector<InitialStrain>& initial = {});
+// The same into `out` (cleared first; a caller that keeps it keeps its capacity: the points
+// of a domain are some hundred kilobytes, which a fresh allocation every step page-faults in).
+void tip_domain_points(const Grid& g, const GridFields& fields, const Particles& P,
+                       const std::vector<ElasticStiffness>& stiffness,
+                       const std::vector<TiedFields>& ties, const TipFrame& tip, double reach,
+                       double dt, const std::vector<InitialStrain>& initial,
+                       std::vector<DomainPoint>& out);
 
 }  // namespace rupture

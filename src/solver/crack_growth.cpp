@@ -82,18 +82,29 @@ bool add_crack_segment(const Case& c, std::size_t k, State& L, std::size_t slot,
     const Shape wedge = left_part(frame, cut);
     const Box wb = bounding_box(wedge);
     Particles& P = L.particles;
+    ScatterPlan& plan = L.plan;
     const std::uint8_t up = std::uint8_t(in.spec.upper_field), lo = std::uint8_t(in.spec.lower_field);
+    const std::size_t fields = std::size_t(L.fields.num_fields);
+    const int cy = L.grid.y.cells;
     for (std::size_t q = 0; q < P.size(); ++q) {
       if (P.field[q] != up && P.field[q] != lo) continue;
       const double px = P.x0[q], py = P.y0[q];
       if (px < wb.min[0] || px > wb.max[0] || py < wb.min[1] || py > wb.max[1]) continue;
-      if (contains(wedge, px, py)) P.field[q] = P.field[q] == up ? lo : up;
+      if (!contains(wedge, px, py)) continue;
+      P.field[q] = P.field[q] == up ? lo : up;
+      // The strips' node rows per field (ScatterPlan::row_lo, row_hi, from the last sort) take
+      // the particle's row now in its new field: the drift since the sort widens them from
+      // there on, as it does for the rows the sort found, so the tile keeps its stencil.
+      if (!plan.rows_known) continue;
+      const auto at = std::upper_bound(plan.strip_begin.begin(), plan.strip_begin.end(), q);
+      const std::size_t strip = std::size_t(at - plan.strip_begin.begin()) - 1;
+      const int row = std::clamp(stencil_first(L.grid.y, P.y[q], P.half_y[q]), 0, cy - 1);
+      const std::size_t e = strip * fields + P.field[q];
+      plan.row_lo[e] = std::min(plan.row_lo[e], row);
+      plan.row_hi[e] = std::max(plan.row_hi[e], row);
     }
   }
-  if (flip_particles) {
-    L.plan.valid = false;           // the strips' rows per field: re-sort
-    L.window_drift = INFINITY;      // the windows: measure the particles again
-  }
+  if (flip_particles) L.window_drift = INFINITY;  // the windows: measure the particles again
   // The segment, its new node displaced as the tip node.
   const std::size_t tip_node = tip.end == LineEnd::start ? 0 : in.num_nodes() - 1;
   const double ux = 0.5 * (in.ux_up[tip_node] + in.ux_lo[tip_node]);

@@ -12,7 +12,9 @@
 //    inside the body, and the tied grid nodes are found again (bonded_nodes);
 //  - the particles of the two parts that lie between the old extension and the new one (the
 //    wedge the turn sweeps, by reference position) change field, so each part is again the
-//    material on its side of the extended cut; the next step re-sorts and re-fits the windows.
+//    material on its side of the extended cut; the strips' node rows per field take each
+//    flipped particle's row, and the windows are re-measured (no re-sort: the order, hence the
+//    round-off, stays the last sort's).
 // A tip whose segment would leave the body ends on its edge: no tie is left there, the cut is
 // through, and the pieces separate. A tip that comes within a cell of the edge cuts through to
 // its nearest point the same way (the ligament left is below what the grid resolves). One process and one level (input/ refuses the others).

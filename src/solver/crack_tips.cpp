@@ -51,8 +51,8 @@ std::vector<TipIntegrals> read_tip(const State& L, const InterfaceSpec& is, cons
       carried.insert({patch.ids[i], {patch.length[i], tx, ty}});
   }
   const double reach = is.j_domains.back() * h;
-  const std::vector<DomainPoint> pts =
-      tip_domain_points(L.grid, L.fields, L.particles, L.stiffness, ties, tip, reach, L.dt, initial);
+  thread_local std::vector<DomainPoint> pts;  // kept: its capacity is reused every step
+  tip_domain_points(L.grid, L.fields, L.particles, L.stiffness, ties, tip, reach, L.dt, initial, pts);
   std::vector<FaceTraction> faces;
   for (std::size_t i = 0; i < pts.size(); ++i) {
     const auto [lo, hi] = carried.equal_range(pts[i].id);
