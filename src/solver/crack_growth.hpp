@@ -55,8 +55,10 @@ void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& rec
 void regrow_cracks(const Case& c, RunState& s, const std::vector<CrackGrowthRecord>& records);
 
 // One segment on level L's interface `slot` at `tip`, ending at (x, y) (reference position):
-// the interface, the tie and, with flip_particles, the wedge's particles. Returns whether
-// the tip reached the body's edge. For tests and the two functions above.
+// the interface, the tie and, with flip_particles, the wedge's particles. `tip` as
+// precrack_tips gives it with chord 0: its direction is the end piece's, along which the old
+// extension runs. Returns whether the tip reached the body's edge (no tie left there). For
+// tests and the two functions above.
 bool add_crack_segment(const Case& c, std::size_t k, State& L, std::size_t slot,
                        const CrackTip& tip, double x, double y, bool flip_particles);
 
