@@ -140,8 +140,11 @@ Grid make_graded_grid(const double min[2], const double max[2], double coarse, d
     std::vector<std::array<long, 3>> spans;
     for (const RefineBox& b : boxes) {
       const long size = std::max(1L, std::lround(b.size / finest));
-      spans.push_back({long(std::floor((b.min[d] - min[d]) / finest + 1e-9)),
-                       long(std::ceil((b.max[d] - min[d]) / finest - 1e-9)), size});
+      // The part of the box inside the domain, in finest cells (clamped in floating point, so
+      // a box far outside gives an empty span, not a value no long can hold).
+      const double from = std::clamp(std::floor((b.min[d] - min[d]) / finest + 1e-9), 0.0, double(units));
+      const double to = std::clamp(std::ceil((b.max[d] - min[d]) / finest - 1e-9), 0.0, double(units));
+      spans.push_back({long(from), long(to), size});
     }
     widths[d] = graded_widths(units, coarse_units, spans);
     for (long e : {widths[d].front(), widths[d].back()})
