@@ -119,3 +119,37 @@ TEST(InterfaceGrowth, TipsAreTheEndsThatMeetABondedStretchPointingOutward) {
 
 }  // namespace
 }  // namespace rupture
+
+namespace rupture {
+namespace {
+
+// A cohesive crack drawn open (drawn_open): the drawn points start separated, as a pre-crack's,
+// and the segments it grows at either end carry the law (intact, not yet cracked); the points it
+// had keep their state. A pre-crack's new segments stay without cohesion.
+TEST(InterfaceGrowth, ACohesiveCracksNewSegmentsCarryTheLawAPreCracksDoNot) {
+  InterfaceSpec s;
+  s.line.x = {0.0, 1.0};
+  s.line.y = {0.0, 0.0};
+  s.segments = 2;
+  s.law = XuNeedleman{1e6, 1e6, 1e-6, 2e-6};
+  s.drawn_open = true;
+  CohesiveInterface c = make_interface(s);
+  for (std::uint8_t v : c.gp_separated) EXPECT_EQ(v, 1);  // the cut
+  for (double t : c.node_crack_time) EXPECT_EQ(t, 0.0);
+  c.time = 1e-6;
+  extend_interface(c, LineEnd::end, 1.25, 0.0, 0.0, 0.0);
+  extend_interface(c, LineEnd::start, -0.25, 0.0, 0.0, 0.0);
+  const std::size_t G = CohesiveInterface::kGauss, n = c.gp_separated.size();
+  ASSERT_EQ(n, 4 * G);
+  for (std::size_t q = 0; q < n; ++q)
+    EXPECT_EQ(c.gp_separated[q], q < G || q >= n - G ? 0 : 1) << "point " << q;
+  EXPECT_EQ(c.node_crack_time.front(), -1.0);  // the new nodes have not cracked
+  EXPECT_EQ(c.node_crack_time.back(), -1.0);
+  EXPECT_EQ(c.node_crack_time[1], 0.0);
+  CohesiveInterface p = precrack();
+  extend_interface(p, LineEnd::end, 2.5, 1.0, 0.0, 0.0);
+  for (std::uint8_t v : p.gp_separated) EXPECT_EQ(v, 1);
+}
+
+}  // namespace
+}  // namespace rupture

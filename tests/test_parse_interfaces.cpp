@@ -338,6 +338,8 @@ namespace {
 // Crack growth (interface.NAME.growth; solver/crack_growth.hpp): a pre-crack inside one body,
 // the upper one, with the lower one joined to it by a bonded interface.
 const std::string kInside = "body = \"upper\"\npoints = [[0.002, 0.002], [0.005, 0.002]]\nsegments = 3\nlaw = \"contact\"\n";
+const std::string kCohesive = "body = \"upper\"\npoints = [[0.002, 0.002], [0.005, 0.002]]\nsegments = 3\n"
+                              "sigma_max = 24e6\ndelta_n = 0.4e-6\ndrawn_open = true\n";
 const std::string kJoined = "\n[interface.join]\nupper_body = \"upper.below.w\"\nlower_body = \"lower\"\ny = 0.0\nstart = 0.0\n"
                             "end = 0.008\nsegments = 8\nsigma_max = 24e6\ndelta_n = 0.4e-6\n";
 
@@ -368,6 +370,15 @@ TEST(ParseInterfaces, GrowthNeedsAPreCrackInsideOneBodyWithItsParameters) {
   EXPECT_EQ(energy.growth.step, 0.5);  // the default
   EXPECT_EQ(energy.j_domains, (std::vector<double>{3.0, 5.0}));
   EXPECT_FALSE(parse_grown(kInside).growth.on());
+  // A cohesive crack drawn open: grown segments carry its law; the cohesive criterion reads
+  // the law's strength.
+  const InterfaceSpec co = parse_grown(kCohesive + "growth = \"energy\"\nfracture_energy = 26.1");
+  EXPECT_TRUE(co.drawn_open);
+  EXPECT_FALSE(co.precracked);
+  EXPECT_EQ(co.growth.criterion, GrowthCriterion::energy);
+  EXPECT_FALSE(parse_grown(kCohesive).growth.on());  // a cohesive crack drawn open need not grow
+  const InterfaceSpec hoop = parse_grown(kCohesive + "growth = \"max_hoop\"\ntoughness = 1e6");
+  EXPECT_EQ(hoop.growth.criterion, GrowthCriterion::max_hoop);  // a cohesive crack by a K criterion
   struct Bad {
     const char* name;
     std::string lines;
@@ -375,8 +386,10 @@ TEST(ParseInterfaces, GrowthNeedsAPreCrackInsideOneBodyWithItsParameters) {
   };
   const std::string xn = kGeometry + "sigma_max = 24e6\ndelta_n = 0.4e-6\n";
   const std::vector<Bad> cases = {
-      {"a cohesive line", replace(g, "law = \"contact\"\n", "sigma_max = 24e6\ndelta_n = 0.4e-6\n") + "toughness = 1e6",
-       {"'interface.w.growth' = \"max_hoop\"", "needs law = \"contact\""}},
+      {"a fault's friction", replace(g, "law = \"contact\"\n", "law = \"slip_weakening\"\nstatic_friction = 0.6\ndynamic_friction = 0.5\ndc = 0.4\ninitial_traction = [-1e6, 0.0]\n") + "toughness = 1e6",
+       {"'interface.w.growth' = \"max_hoop\"", "needs law = \"contact\"", "\"xu_needleman\"", "fault"}},
+      {"a contact crack drawn open", kInside + "drawn_open = true",
+       {"'interface.w.drawn_open' = true", "open already"}},
       {"between two bodies", kGeometry + "law = \"contact\"\ngrowth = \"max_hoop\"\ntoughness = 1e6",
        {"'interface.w.growth' = \"max_hoop\"", "inside one body", "'interface.w.body'"}},
       {"no toughness", g, {"'interface.w.toughness' = (missing)", "K_Ic"}},

@@ -119,13 +119,13 @@ CohesiveInterface make_interface(const InterfaceSpec& spec) {
   c.reversal_streak.assign(n, 0);
   const std::size_t g = nseg * CohesiveInterface::kGauss;
   for (auto* v : {&c.gp_dn, &c.gp_dt, &c.gp_tn, &c.gp_tt}) v->assign(g, 0.0);
-  c.gp_separated.assign(g, spec.precracked ? 1 : 0);
+  c.gp_separated.assign(g, spec.precracked || spec.drawn_open ? 1 : 0);
   c.gp_damage.assign(g, 0.0);
   c.gp_slip.assign(g, 0.0);
   c.gp_state.assign(g, 0.0);
   c.gp_rate.assign(g, 0.0);
   c.gp_normal.assign(g, 0.0);
-  if (spec.precracked) c.node_crack_time.assign(n, 0.0);
+  if (spec.precracked || spec.drawn_open) c.node_crack_time.assign(n, 0.0);
   c.node_rupture_time.assign(n, -1.0);
   c.node_peak_slip_rate.assign(n, 0.0);
   c.node_slip_path.assign(n, 0.0);

@@ -56,6 +56,10 @@ struct InterfaceSpec {
   // No cohesion at all (a pre-crack): every point starts separated; with `contact`, its faces
   // still press and rub on each other.
   bool precracked = false;
+  // A cohesive law drawn open (a cut or notch whose grown segments carry the law; input key
+  // drawn_open): the drawn line's points start separated as a pre-crack's, the segments a
+  // growing crack adds start intact with the law (cohesive/interface_growth.hpp).
+  bool drawn_open = false;
   // Contact of separated points (after separation, and on a pre-crack): faces in compression
   // do not pass through each other; optional Coulomb friction (cohesive/contact.hpp). Without
   // it a separated point carries no traction (SPEC §3, the paper's choice).

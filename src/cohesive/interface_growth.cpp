@@ -89,6 +89,11 @@ void extend_interface(CohesiveInterface& c, LineEnd at, double x, double y, doub
     carry(c.*m, g.*m, gp_shift);
   carry(c.gp_separated, g.gp_separated, gp_shift);
   const std::size_t k = front ? 0 : g.num_nodes() - 1;  // the new node
+  // The new segment's points: separated on a pre-crack (no cohesion), intact with the law on a
+  // cohesive crack (drawn open or not): the process zone ahead is modelled by the law.
+  const std::size_t first_gp = front ? 0 : g.gp_separated.size() - std::size_t(CohesiveInterface::kGauss);
+  for (std::size_t q = first_gp; q < first_gp + std::size_t(CohesiveInterface::kGauss); ++q)
+    g.gp_separated[q] = spec.precracked ? 1 : 0;
   g.ux_up[k] = g.ux_lo[k] = ux;
   g.uy_up[k] = g.uy_lo[k] = uy;
   g.node_crack_time[k] = spec.precracked ? c.time : -1.0;

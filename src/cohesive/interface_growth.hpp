@@ -8,7 +8,8 @@
 // vertices), plus the new end node at reference position (x, y), m, with displacement (ux, uy)
 // on both faces (the material there is intact: no jump). Every existing node and Gauss point
 // keeps its state (displacements, jumps, tractions, law history, crack and rupture times); the
-// new segment's Gauss points start as make_interface makes them (separated on a pre-crack), and
+// new segment's Gauss points start separated on a pre-crack (law contact) and intact on a cohesive
+// crack (drawn_open or not: the law models the process zone), and
 // the new node of a pre-crack counts as cracked at the interface's time. Arc lengths s0 are
 // measured from the new start. One process (no rank ownership).
 #pragma once

@@ -552,8 +552,9 @@ std::vector<KeyDoc> build_schema() {
        "the crack's tips grow by this criterion (docs/fracture.md, \"Growth\"): max_hoop, when "
        "the hoop stress intensity in the maximum hoop stress direction reaches toughness "
        "(Erdogan-Sih); energy, when G = (K_I^2 + K_II^2) / E' reaches fracture_energy; a "
-       "pre-crack (law = \"contact\") drawn inside one body (body = ...), on a uniform grid, "
-       "one process; records K at the tips (stress_intensity)",
+       "crack (law = \"contact\", or a cohesive law that its new segments carry) drawn inside "
+       "one body (body = ...), on a uniform grid, one process; records K at the tips "
+       "(stress_intensity)",
        "\"max_hoop\""},
       {"interface.*.toughness", "number", "Pa m^1/2", "none", "> 0; with growth = max_hoop",
        "K_Ic, the mode-I fracture toughness", "1.0e6"},
@@ -564,6 +565,9 @@ std::vector<KeyDoc> build_schema() {
        "straight on along the crack", "\"max_hoop\""},
       {"interface.*.growth_step", "number", "cells", "0.5", "(0, 0.5]; with growth",
        "the length of one new segment (a tip grows at most one segment per step)", "0.5"},
+      {"interface.*.drawn_open", "boolean", "", "false", "true, false; with law = xu_needleman or bilinear",
+       "the drawn line is a cut (its points start separated, as a pre-crack's) and the segments a "
+       "growing crack adds carry the law", "true"},
       {"interface.*.rupture_slip_rate", "number", "m/s", "0.001", "> 0",
        "a node's rupture time is the first time its slip rate exceeds this "
        "(interface_nodes.csv)",

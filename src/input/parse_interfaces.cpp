@@ -313,10 +313,31 @@ void parse_stress_intensity(Section& f, InterfaceSpec& is) {
   }
 }
 
-// growth, toughness, fracture_energy, growth_direction, growth_step (fracture/
-// growth_criterion.hpp; solver/crack_growth.hpp): a pre-crack drawn inside one body, with at
-// least one tip, on a uniform grid. Growth reads K at the tips, so it records them too
-// (stress_intensity).
+// The peak normal traction of a crack's cohesive law (its strength), or 0 for a law that is not
+// a crack's (contact: none; a fault's friction).
+double cohesive_strength(const InterfaceSpec& is) {
+  if (is.precracked) return 0.0;
+  if (const auto* x = std::get_if<XuNeedleman>(&is.law)) return x->sigma_max;
+  if (const auto* b = std::get_if<BilinearLaw>(&is.law)) return b->sigma_max;
+  return 0.0;
+}
+
+// drawn_open: a cohesive crack whose drawn line is a cut (its points start separated) and whose
+// grown segments carry the law.
+void parse_drawn_open(Section& f, InterfaceSpec& is) {
+  is.drawn_open = f.boolean("drawn_open", false);
+  if (!is.drawn_open) return;
+  if (is.precracked)
+    fail(f.key("drawn_open"), "true", "law = \"contact\" is open already (drawn_open is for a cohesive law: "
+                                      "xu_needleman or bilinear)");
+  if (cohesive_strength(is) <= 0.0)
+    fail(f.key("drawn_open"), "true", "is for a crack's cohesive law (xu_needleman or bilinear), not a fault's friction");
+}
+
+// growth, toughness, fracture_energy, growth_direction, growth_step
+// (fracture/growth_criterion.hpp; solver/crack_growth.hpp): a crack (law contact, or a cohesive
+// law that its new segments carry) drawn inside one body, with at least one tip, on a uniform
+// grid. Growth reads K at the tips, so it records them too (stress_intensity).
 void parse_growth(Section& f, InterfaceSpec& is, const Case& c) {
   GrowthLaw& g = is.growth;
   const std::string criterion = f.string("growth", "none", {"none", "max_hoop", "energy"});
@@ -329,10 +350,11 @@ void parse_growth(Section& f, InterfaceSpec& is, const Case& c) {
     return;
   }
   const std::string shown = "\"" + criterion + "\"";
-  if (!is.precracked)
+  const double strength = cohesive_strength(is);
+  if (!is.precracked && strength <= 0.0)
     fail(f.key("growth"), shown,
-         "grows a pre-crack: needs law = \"contact\" (a crack with no cohesion whose faces only "
-         "touch); cohesive lines do not grow off their line yet");
+         "grows a crack: needs law = \"contact\" (no cohesion), \"xu_needleman\" or \"bilinear\" "
+         "(new segments carry the law); a fault's friction does not grow off its line");
   if (!f.has("body"))
     fail(f.key("growth"), shown,
          fmt::format("grows a crack drawn inside one body: give '{}' (the body it lies in) instead "
@@ -348,17 +370,18 @@ void parse_growth(Section& f, InterfaceSpec& is, const Case& c) {
     fail(f.key("growth"), shown,
          "needs a crack tip: an end of the line inside the body (the line runs from edge to edge, "
          "or is closed, so nothing is left to grow into)");
+  auto refuse = [&](const char* key, const char* why) {
+    if (f.has(key)) fail(f.key(key), show(*f.node(key)), why);
+  };
   if (g.criterion == GrowthCriterion::max_hoop) {
-    if (f.has("fracture_energy"))
-      fail(f.key("fracture_energy"), show(*f.node("fracture_energy")), "is for growth = \"energy\"; growth = \"max_hoop\" takes toughness");
+    refuse("fracture_energy", "is for growth = \"energy\"; growth = \"max_hoop\" takes toughness");
     if (!f.has("toughness"))
       fail(f.key("toughness"), "(missing)", "required with growth = \"max_hoop\": K_Ic, Pa m^1/2, > 0");
     g.toughness = f.number("toughness", 0.0);
     if (!(g.toughness > 0.0) || !std::isfinite(g.toughness))
       fail(f.key("toughness"), g.toughness, "must be > 0 (K_Ic, Pa m^1/2)");
   } else {
-    if (f.has("toughness"))
-      fail(f.key("toughness"), show(*f.node("toughness")), "is for growth = \"max_hoop\"; growth = \"energy\" takes fracture_energy");
+    refuse("toughness", "is for growth = \"max_hoop\"; growth = \"energy\" takes fracture_energy");
     if (!f.has("fracture_energy"))
       fail(f.key("fracture_energy"), "(missing)", "required with growth = \"energy\": G_c, J/m^2, > 0");
     g.fracture_energy = f.number("fracture_energy", 0.0);
@@ -467,6 +490,7 @@ void parse_interfaces(Section& top, Case& c, ParseContext& ctx) {
       parse_interface_geometry(f, is, c, &up, &lo);
     }
     parse_interface_law(f, is, c);
+    parse_drawn_open(f, is);
     parse_stress_intensity(f, is);
     parse_growth(f, is, c);
     check_no_crossing(f, is, c);

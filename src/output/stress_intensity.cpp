@@ -34,7 +34,8 @@ std::vector<TipFrame> crack_tips(const Case& c, const RunState& s, std::size_t k
                                  const CrackTracker& tracker) {
   const CohesiveInterface& in = s.interface(k);
   std::vector<TipFrame> tips;
-  if (!c.interfaces[k].precracked) {
+  const InterfaceSpec& is = c.interfaces[k];
+  if (!is.precracked && !is.drawn_open && !is.growth.on()) {  // a cohesive line's running tip
     const double at = tracker.samples().empty() ? 0.0 : tracker.samples().back().tip;
     tips.push_back(along_line(in, at));
     return tips;
