@@ -78,3 +78,27 @@ TEST(GrowthCriterion, EnergyThresholdStraightDirectionAndClosedTips) {
 
 }  // namespace
 }  // namespace rupture
+
+namespace rupture {
+namespace {
+
+// The cohesive criterion reads the end segment through its law: a cohesive end grows once past
+// the peak, never before, whatever K; a cut (no cohesion at the end) grows once pulled open.
+TEST(GrowthCriterion, CohesiveGrowsPastThePeakOrFromAPulledCut) {
+  GrowthLaw law;
+  law.criterion = GrowthCriterion::cohesive;
+  EXPECT_TRUE(decide_growth(law, 0.0, 0.0, 1.0, CrackFront::softening).grow);
+  EXPECT_TRUE(decide_growth(law, -1e6, 0.0, 1.0, CrackFront::softening).grow);  // the law decides
+  EXPECT_FALSE(decide_growth(law, 1e9, 1e9, 1.0, CrackFront::loading).grow);
+  EXPECT_TRUE(decide_growth(law, 1.0, 0.0, 1.0, CrackFront::open).grow);
+  EXPECT_FALSE(decide_growth(law, -1.0, 5.0, 1.0, CrackFront::open).grow);  // a closed cut
+  EXPECT_FALSE(decide_growth(law, 0.0, 5.0, 1.0, CrackFront::open).grow);
+  // The direction is the crack's rule as for the other criteria.
+  const GrowthDecision d = decide_growth(law, 1e-12, 1.0, 1.0, CrackFront::softening);
+  EXPECT_NEAR(d.angle * 180.0 / std::numbers::pi, -70.5288, 1e-3);
+  law.direction = GrowthDirection::straight;
+  EXPECT_EQ(decide_growth(law, 1e-12, 1.0, 1.0, CrackFront::softening).angle, 0.0);
+}
+
+}  // namespace
+}  // namespace rupture

@@ -340,6 +340,8 @@ namespace {
 const std::string kInside = "body = \"upper\"\npoints = [[0.002, 0.002], [0.005, 0.002]]\nsegments = 3\nlaw = \"contact\"\n";
 const std::string kCohesive = "body = \"upper\"\npoints = [[0.002, 0.002], [0.005, 0.002]]\nsegments = 3\n"
                               "sigma_max = 24e6\ndelta_n = 0.4e-6\ndrawn_open = true\n";
+const std::string kBilinear = "body = \"upper\"\npoints = [[0.002, 0.002], [0.005, 0.002]]\nsegments = 3\n"
+                              "law = \"bilinear\"\nsigma_max = 24e6\ntau_max = 24e6\ndelta_nc = 4e-6\ndrawn_open = true\n";
 const std::string kJoined = "\n[interface.join]\nupper_body = \"upper.below.w\"\nlower_body = \"lower\"\ny = 0.0\nstart = 0.0\n"
                             "end = 0.008\nsegments = 8\nsigma_max = 24e6\ndelta_n = 0.4e-6\n";
 
@@ -377,6 +379,7 @@ TEST(ParseInterfaces, GrowthNeedsAPreCrackInsideOneBodyWithItsParameters) {
   EXPECT_FALSE(co.precracked);
   EXPECT_EQ(co.growth.criterion, GrowthCriterion::energy);
   EXPECT_FALSE(parse_grown(kCohesive).growth.on());  // a cohesive crack drawn open need not grow
+  EXPECT_EQ(parse_grown(kBilinear + "growth = \"cohesive\"").growth.criterion, GrowthCriterion::cohesive);
   const InterfaceSpec hoop = parse_grown(kCohesive + "growth = \"max_hoop\"\ntoughness = 1e6");
   EXPECT_EQ(hoop.growth.criterion, GrowthCriterion::max_hoop);  // a cohesive crack by a K criterion
   struct Bad {
@@ -388,6 +391,12 @@ TEST(ParseInterfaces, GrowthNeedsAPreCrackInsideOneBodyWithItsParameters) {
   const std::vector<Bad> cases = {
       {"a fault's friction", replace(g, "law = \"contact\"\n", "law = \"slip_weakening\"\nstatic_friction = 0.6\ndynamic_friction = 0.5\ndc = 0.4\ninitial_traction = [-1e6, 0.0]\n") + "toughness = 1e6",
        {"'interface.w.growth' = \"max_hoop\"", "needs law = \"contact\"", "\"xu_needleman\"", "fault"}},
+      {"cohesive growth of a pre-crack", kInside + "growth = \"cohesive\"",
+       {"'interface.w.growth' = \"cohesive\"", "needs law = \"bilinear\"", "no strength"}},
+      {"cohesive growth with Xu-Needleman", kCohesive + "growth = \"cohesive\"",
+       {"'interface.w.growth' = \"cohesive\"", "needs law = \"bilinear\"", "lag"}},
+      {"toughness with cohesive growth", kBilinear + "growth = \"cohesive\"\ntoughness = 1e6",
+       {"'interface.w.toughness' = 1000000", "growth = \"cohesive\" reads the law's strength"}},
       {"a contact crack drawn open", kInside + "drawn_open = true",
        {"'interface.w.drawn_open' = true", "open already"}},
       {"between two bodies", kGeometry + "law = \"contact\"\ngrowth = \"max_hoop\"\ntoughness = 1e6",

@@ -548,10 +548,12 @@ std::vector<KeyDoc> build_schema() {
        "the J domains' outer radii (circles about the tip; inner radius: "
        "half of each)",
        "[4.0, 6.0, 8.0]"},
-      {"interface.*.growth", "string", "", "none", "none, max_hoop, energy",
+      {"interface.*.growth", "string", "", "none", "none, max_hoop, energy, cohesive",
        "the crack's tips grow by this criterion (docs/fracture.md, \"Growth\"): max_hoop, when "
        "the hoop stress intensity in the maximum hoop stress direction reaches toughness "
-       "(Erdogan-Sih); energy, when G = (K_I^2 + K_II^2) / E' reaches fracture_energy; a "
+       "(Erdogan-Sih); energy, when G = (K_I^2 + K_II^2) / E' reaches fracture_energy; "
+       "cohesive (law = bilinear), when the last segment is past the law's peak traction, or a "
+       "cut's tip is pulled open; a "
        "crack (law = \"contact\", or a cohesive law that its new segments carry) drawn inside "
        "one body (body = ...), on a uniform grid, one process; records K at the tips "
        "(stress_intensity)",

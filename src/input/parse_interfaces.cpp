@@ -313,13 +313,10 @@ void parse_stress_intensity(Section& f, InterfaceSpec& is) {
   }
 }
 
-// The peak normal traction of a crack's cohesive law (its strength), or 0 for a law that is not
-// a crack's (contact: none; a fault's friction).
-double cohesive_strength(const InterfaceSpec& is) {
-  if (is.precracked) return 0.0;
-  if (const auto* x = std::get_if<XuNeedleman>(&is.law)) return x->sigma_max;
-  if (const auto* b = std::get_if<BilinearLaw>(&is.law)) return b->sigma_max;
-  return 0.0;
+// Whether the interface's law is a crack's cohesive law (Xu-Needleman or bilinear; not contact,
+// which has no cohesion, nor a fault's friction).
+bool cohesive_crack_law(const InterfaceSpec& is) {
+  return !is.precracked && (std::holds_alternative<XuNeedleman>(is.law) || std::holds_alternative<BilinearLaw>(is.law));
 }
 
 // drawn_open: a cohesive crack whose drawn line is a cut (its points start separated) and whose
@@ -330,7 +327,7 @@ void parse_drawn_open(Section& f, InterfaceSpec& is) {
   if (is.precracked)
     fail(f.key("drawn_open"), "true", "law = \"contact\" is open already (drawn_open is for a cohesive law: "
                                       "xu_needleman or bilinear)");
-  if (cohesive_strength(is) <= 0.0)
+  if (!cohesive_crack_law(is))
     fail(f.key("drawn_open"), "true", "is for a crack's cohesive law (xu_needleman or bilinear), not a fault's friction");
 }
 
@@ -340,21 +337,27 @@ void parse_drawn_open(Section& f, InterfaceSpec& is) {
 // grid. Growth reads K at the tips, so it records them too (stress_intensity).
 void parse_growth(Section& f, InterfaceSpec& is, const Case& c) {
   GrowthLaw& g = is.growth;
-  const std::string criterion = f.string("growth", "none", {"none", "max_hoop", "energy"});
-  g.criterion = criterion == "max_hoop" ? GrowthCriterion::max_hoop
-                : criterion == "energy" ? GrowthCriterion::energy
-                                        : GrowthCriterion::none;
+  const std::string criterion = f.string("growth", "none", {"none", "max_hoop", "energy", "cohesive"});
+  g.criterion = criterion == "max_hoop"   ? GrowthCriterion::max_hoop
+                : criterion == "energy"   ? GrowthCriterion::energy
+                : criterion == "cohesive" ? GrowthCriterion::cohesive
+                                          : GrowthCriterion::none;
   if (!g.on()) {
     for (const char* key : {"toughness", "fracture_energy", "growth_direction", "growth_step"})
-      if (f.has(key)) fail(f.key(key), show(*f.node(key)), "needs growth = \"max_hoop\" or \"energy\"");
+      if (f.has(key)) fail(f.key(key), show(*f.node(key)), "needs growth = \"max_hoop\", \"energy\" or \"cohesive\"");
     return;
   }
   const std::string shown = "\"" + criterion + "\"";
-  const double strength = cohesive_strength(is);
-  if (!is.precracked && strength <= 0.0)
+  if (!is.precracked && !cohesive_crack_law(is))
     fail(f.key("growth"), shown,
          "grows a crack: needs law = \"contact\" (no cohesion), \"xu_needleman\" or \"bilinear\" "
          "(new segments carry the law); a fault's friction does not grow off its line");
+  if (g.criterion == GrowthCriterion::cohesive && !std::holds_alternative<BilinearLaw>(is.law))
+    fail(f.key("growth"), shown,
+         "reads the crack's cohesive law (a new segment once the last is past its peak traction): "
+         "needs law = \"bilinear\", whose elastic branch ends at lambda0 (Xu-Needleman's compliant "
+         "rise lets the line lag its process zone, docs/fracture.md; grow it by \"energy\" or "
+         "\"max_hoop\"); law = \"contact\" has no strength");
   if (!f.has("body"))
     fail(f.key("growth"), shown,
          fmt::format("grows a crack drawn inside one body: give '{}' (the body it lies in) instead "
@@ -380,6 +383,9 @@ void parse_growth(Section& f, InterfaceSpec& is, const Case& c) {
     g.toughness = f.number("toughness", 0.0);
     if (!(g.toughness > 0.0) || !std::isfinite(g.toughness))
       fail(f.key("toughness"), g.toughness, "must be > 0 (K_Ic, Pa m^1/2)");
+  } else if (g.criterion == GrowthCriterion::cohesive) {
+    refuse("toughness", "is for growth = \"max_hoop\"; growth = \"cohesive\" reads the law's strength");
+    refuse("fracture_energy", "is for growth = \"energy\"; growth = \"cohesive\" reads the law's strength");
   } else {
     refuse("toughness", "is for growth = \"max_hoop\"; growth = \"energy\" takes fracture_energy");
     if (!f.has("fracture_energy"))
