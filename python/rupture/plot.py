@@ -13,7 +13,8 @@ reader per file) and writes PNGs to DIR/figures/:
   tau_max_fringes.png   tau_max = (sigma_1 - sigma_2)/2 around the running crack tip (SPEC
                         E13, the paper's Fig. 7 look: banded contours read like isochromatics),
                         drawn where the particles are (their own extent: holes stay holes),
-                        every running tip marked where it is
+                        every running tip marked where it is, and the path of every crack
+                        that grows (crack_path_NAME.csv) as far as it had grown then
   cohesive_profiles.png tangential and normal cohesive tractions and nodal forces along the
                         interface at several output times (the paper's Fig. 12)
 With --compare DIR2 [DIR3 ...], crack_tip.png overlays the tip histories of every run (grid
@@ -283,6 +284,48 @@ def tip_at(tip, t):
     return x, y, running, d
 
 
+def crack_paths(run):
+    """The paths of the cracks that grow: {name: [(times, xs, ys) per grown end]}, each end's
+    vertices in the order they were made (time 0 for the drawn line's end vertex), in reference
+    coordinates (docs/fracture.md, "Growth"); the drawn line itself under the key (name, "drawn")
+    as (xs, ys). Only interfaces that wrote crack_path_NAME.csv with rows."""
+    paths = {}
+    for name, spec in (run.case.get("interface") or {}).items():
+        rows = optional_table(run, f"crack_path_{name}.csv")
+        if not isinstance(spec, dict) or rows is None or not len(rows["time"]):
+            continue
+        points = spec.get("points")
+        if points is None and all(k in spec for k in ("y", "start", "end")):  # the horizontal form
+            points = [[spec["start"], spec["y"]], [spec["end"], spec["y"]]]
+        if not points:
+            continue
+        drawn = np.array(points, dtype=float)
+        ends = []
+        for end, (x0, y0) in ((0, drawn[0]), (1, drawn[-1])):
+            mine = rows["end"] == end
+            if mine.any():
+                ends.append((np.concatenate([[0.0], rows["time"][mine]]), np.concatenate([[x0], rows["x"][mine]]),
+                             np.concatenate([[y0], rows["y"][mine]])))
+        paths[name] = ends
+        paths[(name, "drawn")] = (drawn[:, 0], drawn[:, 1])
+    return paths
+
+
+def grown_tips(paths, t):
+    """[(name, x, y, running, direction)] of every grown end at time t (as tip_at gives a
+    tracked tip): its last vertex made by t, running once it has grown, the direction of its last
+    segment."""
+    tips = []
+    for name, ends in paths.items():
+        if isinstance(name, tuple):
+            continue
+        for times, xs, ys in ends:
+            k = int(np.searchsorted(times, t, side="right")) - 1
+            d = np.array([xs[k] - xs[k - 1], ys[k] - ys[k - 1]]) if k >= 1 else np.array([1.0, 0.0])
+            tips.append((name, float(xs[k]), float(ys[k]), k >= 1, d / max(np.linalg.norm(d), 1e-300)))
+    return tips
+
+
 def box_any(mask, a, b):
     """mask dilated by a pixels along the first axis and b along the second (box sums)."""
     n0, n1 = mask.shape
@@ -327,16 +370,19 @@ def fill_empty(image, allowed, passes):
     return image
 
 
-def fringe_panel(snap, tracks, width):
+def fringe_panel(snap, tracks, width, paths=None):
     """One panel's image: tau_max (MPa) per pixel around the running tip, its edges, the tips
     at the snapshot's time. The window spans 0.32 x 0.32 of the domain's width, centred 0.04 of
     it behind the leading running tip (the first interface's while none runs): for the paper's
-    plate 25 mm behind to 15 mm ahead of the tip, 20 mm either side of the crack line."""
+    plate 25 mm behind to 15 mm ahead of the tip, 20 mm either side of the crack line. A crack
+    that grows (paths: crack_paths) has its tips where its path ends at that time (its tracked
+    tip follows the drawn line only)."""
     pos, tau, t = snap["position"], snap["tau_max"], snap.time
     x, y = pos[:, 0], pos[:, 1]
     names = snap.names()
     half = snap["half_size"] if "half_size" in names else None
-    tips = [(name,) + tip_at(tip, t) for name, tip in tracks]
+    paths = paths or {}
+    tips = grown_tips(paths, t) + [(name,) + tip_at(tip, t) for name, tip in tracks if name not in paths]
     lead = next((tp for tp in tips if tp[3]), tips[0] if tips else None)
     if lead is not None:
         _, tx, ty, _, d = lead
@@ -382,6 +428,7 @@ def plot_fringes(run, out, max_panels=4):
         return
     sc = scale_of(run)
     tracks = tip_tracks(run)
+    paths = crack_paths(run)
     mach = optional_table(run, "mach_angle.csv")
     width = sc.size
     grid = run.case.get("grid", {})
@@ -391,7 +438,7 @@ def plot_fringes(run, out, max_panels=4):
     # the second half of the run.
     half = list(range(len(snaps) // 2, len(snaps))) or list(range(len(snaps)))
     pick = list(dict.fromkeys(half[int(round(i))] for i in np.linspace(0, len(half) - 1, min(max_panels, len(half)))))
-    panels = [fringe_panel(snaps[k], tracks, width) for k in pick]
+    panels = [fringe_panel(snaps[k], tracks, width, paths) for k in pick]
     # One colour scale across the panels (the paper's Fig. 7): the largest 99.5th percentile.
     top = max(np.nanpercentile(p[4], 99.5) for p in panels)
     levels = np.linspace(0, top, 16)
@@ -402,6 +449,13 @@ def plot_fringes(run, out, max_panels=4):
         xc, yc = 0.5 * (xe[1:] + xe[:-1]), 0.5 * (ye[1:] + ye[:-1])
         cs = ax.contourf(f * xc, f * yc, image.T, levels=levels, cmap="gray_r", extend="max")
         ax.contour(f * xc, f * yc, image.T, levels=levels, colors="k", linewidths=0.3)
+        for name, ends in paths.items():  # every growing crack: drawn, then grown by time t
+            if isinstance(name, tuple):
+                ax.plot(f * ends[0], f * ends[1], "b-", lw=1.0)
+                continue
+            for times, xs, ys in ends:
+                made = times <= t
+                ax.plot(f * xs[made], f * ys[made], "b-", lw=1.4)
         for name, tx, ty, _, _ in tips:  # every running tip, where it is (E10)
             ax.plot([f * tx], [f * ty], "r^", ms=7)
             if len(tracks) > 1:
@@ -430,7 +484,7 @@ def plot_fringes(run, out, max_panels=4):
     axes[0][0].set_ylabel(f"y ({sc.lname})")
     fig.colorbar(cs, ax=axes[0].tolist(), shrink=0.8, label=r"$\tau_{max}$ (MPa)")
     fig.suptitle(r"$\tau_{max} = (\sigma_1-\sigma_2)/2$ around the crack tip (red: running tips, E10; "
-                 r"red lines: measured shear Mach fronts, E12)")
+                 r"red lines: measured shear Mach fronts, E12" + ("; blue: crack paths" if paths else "") + ")")
     save(fig, out)
 
 

@@ -117,3 +117,33 @@ def test_a_fault_run_is_drawn_in_km_and_s(tmp_path):
     assert (sc.lname, sc.tname, sc.vname) == ("km", "s", "km/s")
     plot.main([r.dir])
     assert os.path.exists(os.path.join(r.dir, "figures", "crack_tip.png"))
+
+
+def test_fringes_follow_a_crack_that_grows(tmp_path):
+    """examples/crack_growth_disc.toml to 12 us: each tip's path in the figure is the drawn end
+    and then crack_path_crack.csv's vertices of that end up to the panel's time, and the panel's
+    tips are where those paths end (running), not where the crack tracker puts them (the drawn
+    line's end)."""
+    disc = os.path.join(ROOT, "examples", "crack_growth_disc.toml")
+    r = rupture.run(disc, tmp_path / "disc", set={"time.end": 12e-6, "output.snapshot_interval": 6e-6})
+    assert r.status == "completed", r.message
+    rows = r.table("crack_path_crack.csv")
+    assert len(rows["time"]) >= 4, "the crack grows by 12 us (the example's expectation)"
+    paths = plot.crack_paths(r)
+    drawn = np.array(r.case["interface"]["crack"]["points"])
+    assert np.allclose(np.column_stack(paths[("crack", "drawn")]), drawn)
+    ends = paths["crack"]
+    assert len(ends) == 2
+    for end, (times, xs, ys) in enumerate(ends):
+        mine = rows["end"] == end
+        assert (xs[0], ys[0]) == tuple(drawn[0 if end == 0 else -1])
+        assert np.array_equal(xs[1:], rows["x"][mine]) and np.array_equal(ys[1:], rows["y"][mine])
+        assert np.all(np.diff(times) >= 0)
+    snap = r.snapshots[-1]
+    t, tips, xe, ye, image = plot.fringe_panel(snap, plot.tip_tracks(r), 0.084, paths)
+    assert len(tips) == 2
+    for end, (name, tx, ty, running, _) in enumerate(tips):
+        mine = (rows["end"] == end) & (rows["time"] <= t)
+        assert running and (tx, ty) == (rows["x"][mine][-1], rows["y"][mine][-1]), (end, tx, ty)
+    plot.main([r.dir])
+    assert os.path.getsize(os.path.join(r.dir, "figures", "tau_max_fringes.png")) > 10000
