@@ -53,6 +53,7 @@ class SnapshotWriter {
   void write(const Particles& p, const std::vector<ElasticStiffness>& stiffness, double time,
              long step);
   const std::vector<std::string>& files() const { return files_; }
+  const std::vector<double>& times() const { return times_; }  // each file's time, s
   // After a resume: the snapshots whose files are gone from the run directory (deleted by
   // hand) leave the index, so particles.xdmf names only files that exist; returns their names.
   // Rank 0 looks, every rank learns it (collective).

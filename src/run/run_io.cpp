@@ -14,6 +14,7 @@
 #include "core/atomic_file.hpp"
 #include "core/errors.hpp"
 #include "core/fault_injection.hpp"
+#include "output/crack_xdmf.hpp"
 #include "output/csv_units.hpp"
 #include "output/interface_csv.hpp"
 #include "parallel/halo.hpp"
@@ -246,6 +247,7 @@ void write_record_files(RunIo& io) {
   write_stations(io.dir, io.c.stations, io.probes, io.ctx.stations);
   write_stress_intensity(io.dir, io.c, io.ctx.tips);
   write_crack_paths(io.dir, io.c, io.ctx.growth);
+  if (io.ctx.snapshots && io.comm.rank() == 0) write_cracks_xdmf(io.dir, io.c, io.ctx.growth, io.ctx.snapshots->times());
 }
 
 }  // namespace rupture

@@ -1,0 +1,65 @@
+// rupture/output/crack_xdmf.cpp
+#include "output/crack_xdmf.hpp"
+
+#include <fmt/format.h>
+
+#include "core/atomic_file.hpp"
+
+namespace rupture {
+
+std::vector<std::array<double, 2>> crack_path_at(const Case& c, std::size_t k, const CrackGrowthRecord& growth,
+                                                 double t) {
+  const Polyline drawn = c.interfaces[k].geometry();
+  const std::vector<double>& r = growth.rows;
+  std::vector<std::array<double, 2>> start, path;
+  for (std::size_t i = 0; i + kGrowthColumns <= r.size() && r[i] <= t; i += kGrowthColumns)
+    if (r[i + 2] == 0.0) start.push_back({r[i + 3], r[i + 4]});
+  // The start's vertices were put in front one by one: the last made is the path's first.
+  path.assign(start.rbegin(), start.rend());
+  for (std::size_t v = 0; v < drawn.num_vertices(); ++v) path.push_back({drawn.x[v], drawn.y[v]});
+  for (std::size_t i = 0; i + kGrowthColumns <= r.size() && r[i] <= t; i += kGrowthColumns)
+    if (r[i + 2] == 1.0) path.push_back({r[i + 3], r[i + 4]});
+  return path;
+}
+
+std::string cracks_xdmf(const Case& c, const std::vector<CrackGrowthRecord>& growth,
+                        const std::vector<double>& times) {
+  std::string grids;
+  for (std::size_t k = 0; k < c.interfaces.size() && k < growth.size(); ++k) {
+    if (!c.interfaces[k].growth.on()) continue;
+    grids += fmt::format("    <Grid Name=\"crack_{}\" GridType=\"Collection\" CollectionType=\"Temporal\">\n",
+                         c.interface_names[k]);
+    for (std::size_t j = 0; j < times.size(); ++j) {
+      const std::vector<std::array<double, 2>> p = crack_path_at(c, k, growth[k], times[j]);
+      std::string cells, points;
+      for (std::size_t v = 0; v + 1 < p.size(); ++v) cells += fmt::format(" {} {}", v, v + 1);
+      for (const auto& q : p) points += fmt::format(" {:.9e} {:.9e} 0", q[0], q[1]);
+      grids += fmt::format(
+          "      <Grid Name=\"step{}\" GridType=\"Uniform\">\n"
+          "        <Time Value=\"{:.9e}\"/>\n"
+          "        <Topology TopologyType=\"Polyline\" NumberOfElements=\"{}\" NodesPerElement=\"2\">\n"
+          "          <DataItem Dimensions=\"{} 2\" NumberType=\"Int\" Format=\"XML\">{}</DataItem>\n"
+          "        </Topology>\n"
+          "        <Geometry GeometryType=\"XYZ\">\n"
+          "          <DataItem Dimensions=\"{} 3\" NumberType=\"Float\" Precision=\"8\" Format=\"XML\">{}</DataItem>\n"
+          "        </Geometry>\n"
+          "      </Grid>\n",
+          j, times[j], p.size() - 1, p.size() - 1, cells, p.size(), points);
+    }
+    grids += "    </Grid>\n";
+  }
+  if (grids.empty() || times.empty()) return "";
+  return "<?xml version=\"1.0\" ?>\n"
+         "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
+         "<Xdmf Version=\"3.0\">\n"
+         "  <Domain>\n" +
+         grids + "  </Domain>\n</Xdmf>\n";
+}
+
+void write_cracks_xdmf(const std::string& dir, const Case& c, const std::vector<CrackGrowthRecord>& growth,
+                       const std::vector<double>& times) {
+  const std::string x = cracks_xdmf(c, growth, times);
+  if (!x.empty()) write_file_atomic(dir + "/cracks.xdmf", x);
+}
+
+}  // namespace rupture
