@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cohesive/crack_tip.hpp"
+#include "cohesive/interface_growth.hpp"
 #include "solver/cohesive_step.hpp"
 
 using namespace rupture;
@@ -228,6 +229,39 @@ TEST(CrackTip, node_crack_time_is_interpolated_inside_the_step) {
 // node k at s = k/4 mm) cracks from node 12 (s = 3 mm) outwards at v both ways: at time t the
 // tip is at s = 3 mm + v t and the back tip at 3 mm - v t (node resolution), continuing past
 // node 0 to negative s; a single stretch, whose ends agree with the tips.
+// A line that grows (solver/crack_growth.hpp): follow() places arc lengths on the grown line
+// (the new end node's position is its own), and moves the recorded samples by the length added
+// at the start, so a sample's tip is the same material point before and after; a resumed run's
+// samples (already in the grown frame) stay.
+TEST(CrackTip, a_grown_line_keeps_its_samples_on_the_same_points) {
+  CohesiveInterface c = line(0.01, 10);
+  for (std::size_t k = 0; k <= 4; ++k) c.node_crack_time[k] = 0.0;  // cracked from 0 to 4 mm
+  CrackTracker t(c);
+  t.sample(c, 1e-6);
+  ASSERT_NEAR(t.samples()[0].tip, 0.004, 1e-15);
+  double x0, y0, x, y;
+  t.position(t.samples()[0].tip, x0, y0);
+  extend_interface(c, LineEnd::start, -0.0005, 0.0003, 0.0, 0.0);  // 0.583 mm added at the start
+  extend_interface(c, LineEnd::end, 0.0105, 0.0, 0.0, 0.0);
+  const double added = std::hypot(0.0005, 0.0003);
+  t.follow(c, true);
+  EXPECT_NEAR(t.samples()[0].tip, 0.004 + added, 1e-15);
+  EXPECT_NEAR(t.samples()[0].stretch_begin[0], added, 1e-15);
+  t.position(t.samples()[0].tip, x, y);
+  EXPECT_NEAR(x, x0, 1e-15);
+  EXPECT_NEAR(y, y0, 1e-15);
+  t.position(c.s0.back(), x, y);
+  EXPECT_EQ(x, 0.0105);
+  t.position(0.0, x, y);
+  EXPECT_EQ(x, -0.0005);
+  EXPECT_EQ(y, 0.0003);
+  // Resumed: the samples are the checkpoint's (grown frame); only the nodes are taken again.
+  CrackTracker r(line(0.01, 10));
+  r.follow(c, false);
+  r.position(c.s0.back(), x, y);
+  EXPECT_EQ(x, 0.0105);
+}
+
 TEST(CrackTip, a_crack_on_a_closed_line_runs_both_ways_through_node_zero) {
   InterfaceSpec spec;
   spec.line.x = {0.0, 0.004, 0.004, 0.0};

@@ -375,8 +375,8 @@ def fringe_panel(snap, tracks, width, paths=None):
     at the snapshot's time. The window spans 0.32 x 0.32 of the domain's width, centred 0.04 of
     it behind the leading running tip (the first interface's while none runs): for the paper's
     plate 25 mm behind to 15 mm ahead of the tip, 20 mm either side of the crack line. A crack
-    that grows (paths: crack_paths) has its tips where its path ends at that time (its tracked
-    tip follows the drawn line only)."""
+    that grows (paths: crack_paths) has its tips where its path ends at that time, every grown
+    end (the tracker follows one tip, the separated one furthest along the line)."""
     pos, tau, t = snap["position"], snap["tau_max"], snap.time
     x, y = pos[:, 0], pos[:, 1]
     names = snap.names()

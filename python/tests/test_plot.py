@@ -122,8 +122,7 @@ def test_a_fault_run_is_drawn_in_km_and_s(tmp_path):
 def test_fringes_follow_a_crack_that_grows(tmp_path):
     """examples/crack_growth_disc.toml to 12 us: each tip's path in the figure is the drawn end
     and then crack_path_crack.csv's vertices of that end up to the panel's time, and the panel's
-    tips are where those paths end (running), not where the crack tracker puts them (the drawn
-    line's end)."""
+    tips are where those paths end (running), both of them."""
     disc = os.path.join(ROOT, "examples", "crack_growth_disc.toml")
     r = rupture.run(disc, tmp_path / "disc", set={"time.end": 12e-6, "output.snapshot_interval": 6e-6})
     assert r.status == "completed", r.message

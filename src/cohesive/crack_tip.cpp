@@ -29,6 +29,24 @@ CrackTracker::CrackTracker(const CohesiveInterface& c, double end_tolerance, dou
       length_(c.closed ? c.length() : 0.0),
       end_tolerance_(end_tolerance) {}
 
+void CrackTracker::follow(const CohesiveInterface& c, bool shift_samples) {
+  double shift = 0.0;
+  if (shift_samples && !x0_.empty())  // the old start among the new nodes: its new arc length
+    for (std::size_t j = 0; j < c.x0.size(); ++j)
+      if (c.x0[j] == x0_[0] && c.y0[j] == y0_[0]) {
+        shift = c.s0[j];
+        break;
+      }
+  x0_ = c.x0, y0_ = c.y0, s0_ = c.s0;
+  if (shift == 0.0) return;
+  for (CrackSample& s : samples_) {
+    if (s.stretch_begin.empty()) continue;  // nothing separated: tip and back stay at 0
+    s.tip += shift, s.back += shift;
+    for (double& b : s.stretch_begin) b += shift;
+    for (double& e : s.stretch_end) e += shift;
+  }
+}
+
 void CrackTracker::position(double s, double& x, double& y) const {
   if (s0_.empty()) {
     x = y = NAN;

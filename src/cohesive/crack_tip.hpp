@@ -148,6 +148,12 @@ class CrackTracker {
   void write(const std::string& dir, const std::string& suffix, double c_r, double c_s) const;
   // Position (x, y) of arc length s: a node's own coordinates at a node, else interpolated.
   void position(double s, double& x, double& y) const;
+  // The interface's line has grown (solver/crack_growth.hpp): its nodes are taken again to
+  // place arc lengths, and, with shift_samples, the recorded ones move by the length the line
+  // gained at its start since (arc lengths run from the line's start: a segment added there
+  // moves every node along). A resumed run's samples are in the grown line's frame already
+  // (shift_samples false).
+  void follow(const CohesiveInterface& c, bool shift_samples);
 
  private:
   friend struct CheckpointAccess;  // every member below must also be written in run/checkpoint.cpp

@@ -96,7 +96,11 @@ RunResult run_case(const Case& c, const RunOptions& options) {
       const bool synced = synchronized(s);
       // Crack growth (solver/crack_growth.hpp): the tips read, and grown, after the step and
       // before the outputs and the checkpoint see it.
-      if (synced && growing) grow_cracks(c, s, ctx.growth);
+      if (synced && growing) {
+        grow_cracks(c, s, ctx.growth);
+        for (std::size_t k = 0; k < ctx.cracks.size() && k < c.interfaces.size(); ++k)
+          if (c.interfaces[k].growth.on()) ctx.cracks[k].follow(s.interface(k), true);
+      }
       for (const std::unique_ptr<Output>& out : outputs.each_step) {
         if ((synced || !out->needs_synchronized_state()) && out->due(s.time, eps, last))
           out->write(s.time, eps, last);

@@ -153,6 +153,10 @@ void resume_from_checkpoint(RunContext& ctx, const RunOptions& options) {
     split_over_ranks(ctx.s, comm, {false, nullptr});  // one process's checkpoint: its particles split
   }
   ++ctx.segments;
+  // The trackers place arc lengths on the grown lines (regrown by the restore), their samples
+  // as the checkpoint holds them.
+  for (std::size_t k = 0; k < ctx.cracks.size() && k < ctx.growth.size(); ++k)
+    if (ctx.growth[k].grown()) ctx.cracks[k].follow(ctx.s.interface(k), false);
   if (ctx.snapshots) {  // snapshot files deleted since: particles.xdmf names only what exists
     const std::vector<std::string> gone = ctx.snapshots->drop_missing_files();
     if (!gone.empty() && writer)
