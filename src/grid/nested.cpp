@@ -132,8 +132,13 @@ NestedGrid make_nested_grid(const double min[2], const double max[2], double coa
     for (std::size_t b = 0; b < boxes.size(); ++b) {
       if (box_level[b] < l) continue;
       for (int d = 0; d < 2; ++d) {
-        const long lo = floor_to(long(std::floor((boxes[b].min[d] - min[d]) / finest + 1e-9)), parent);
-        const long hi = ceil_to(long(std::ceil((boxes[b].max[d] - min[d]) / finest - 1e-9)), parent);
+        // In finest units, bounded in floating point to a few frames' widths either side: a box
+        // edge far outside (input may put one at 1e300 m) gives a value a long holds, and one
+        // beyond the frame anyway, not an overflowed conversion (UBSan, fuzz_case_toml).
+        const double far = 2.0 * double(outer_hi[d] - outer_lo);
+        auto units = [&](double v) { return long(std::clamp(v, -far, 1.5 * far)); };
+        const long lo = floor_to(units(std::floor((boxes[b].min[d] - min[d]) / finest + 1e-9)), parent);
+        const long hi = ceil_to(units(std::ceil((boxes[b].max[d] - min[d]) / finest - 1e-9)), parent);
         lev.lo[d] = any ? std::min(lev.lo[d], lo) : lo;
         lev.hi[d] = any ? std::max(lev.hi[d], hi) : hi;
       }
