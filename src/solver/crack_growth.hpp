@@ -7,7 +7,9 @@
 // cells in the criterion's direction (reference coordinates, where the cut is a property of the
 // material), and the body's split follows it exactly as the input split it:
 //  - the interface gets the segment (cohesive/interface_growth.hpp), its new node displaced as
-//    the tip node (the mean of its faces);
+//    the tip node (the mean of its faces); on a cohesive crack the segment carries the law
+//    (intact), and the cohesive criterion reads the end segment's state through it
+//    (crack_front: past the law's peak at its far Gauss point, or open);
 //  - the tie beyond that tip becomes the stretches of the new segment's straight extension
 //    inside the body, and the tied grid nodes are found again (bonded_nodes);
 //  - the particles of the two parts that lie between the old extension and the new one (the
