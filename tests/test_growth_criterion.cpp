@@ -3,7 +3,10 @@
 //    (a scan of the exact field) and where the shear tau_rtheta vanishes; K_eq is that maximum;
 //  - pure mode II: theta_c = -70.53 degrees and K_eq = (2 / sqrt 3) K_II, the Erdogan-Sih ratio
 //    K_IIc / K_Ic = sqrt(3) / 2;
-//  - the thresholds of both criteria, the straight direction, and a closed tip that stays.
+//  - the thresholds of both criteria, the straight direction, and a closed tip that stays;
+//  - the kinked crack's intensities are the Williams field's hoop and shear stress intensities
+//    on the kink's line; a weak plane ahead: in pure mode II the crack stays on it iff its G_c
+//    is below 3/4 of the bulk's (He & Hutchinson's competition with G(theta_c) / G_0 = 4/3).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -74,6 +77,71 @@ TEST(GrowthCriterion, EnergyThresholdStraightDirectionAndClosedTips) {
   // Faces pressed together (K_I < 0) do not grow, however large K_II.
   EXPECT_FALSE(decide_growth(law, -0.1 * K, 10.0 * K, E).grow);
   EXPECT_FALSE(decide_growth(GrowthLaw{}, K * 10.0, 0.0, E).grow);  // no criterion
+}
+
+TEST(GrowthCriterion, KinkedIntensitiesAreTheWilliamsFieldOnTheKinksLine) {
+  for (const double KII : {0.0, 0.3, 1.0, -2.0})
+    for (int i = -17; i <= 17; ++i) {
+      const double t = kPi * i / 18.0, KI = 1.0;
+      const KinkIntensities k = kinked_intensities(KI, KII, t);
+      EXPECT_NEAR(k.k_I, hoop_stress_intensity(KI, KII, t), 1e-12) << KII << " " << t;
+      EXPECT_NEAR(k.k_II, shear_intensity(KI, KII, t), 1e-12) << KII << " " << t;
+    }
+  const KinkIntensities s = kinked_intensities(0.7, -0.2, 0.0);
+  EXPECT_DOUBLE_EQ(s.k_I, 0.7);
+  EXPECT_DOUBLE_EQ(s.k_II, -0.2);
+}
+
+TEST(GrowthCriterion, WeakPlaneInPureModeTwoHoldsTheCrackBelowThreeQuartersOfTheBulkToughness) {
+  GrowthLaw law;
+  law.criterion = GrowthCriterion::energy;
+  law.fracture_energy = 100.0;  // J/m^2, the bulk's
+  const double E = 5e9, KII = std::sqrt(110.0 * E);  // G_0 = 110 J/m^2; G(theta_c) = 146.7
+  for (const double ratio : {0.5, 0.74, 0.76, 1.0}) {
+    law.plane_fracture_energy = ratio * law.fracture_energy;
+    const GrowthDecision d = decide_growth(law, 0.0, KII, E, CrackFront::open, true);
+    EXPECT_TRUE(d.grow) << ratio;
+    if (ratio < 0.75) {
+      EXPECT_EQ(d.angle, 0.0) << ratio;
+      EXPECT_NEAR(d.driving, 110.0, 1e-9);
+      EXPECT_EQ(d.critical, law.plane_fracture_energy);
+    } else {
+      EXPECT_NEAR(d.angle * 180.0 / kPi, -70.5288, 1e-3) << ratio;
+      EXPECT_NEAR(d.driving, 110.0 * 4.0 / 3.0, 1e-9);
+      EXPECT_EQ(d.critical, law.fracture_energy);
+    }
+    // Off the plane, a kink at theta_c reads the G that made it kink and runs straight on; with
+    // no kink (phi = 0) it kinks now, with the same G(theta_c).
+    const double tc = -70.5288 * kPi / 180.0;
+    const GrowthDecision off = decide_growth(law, -0.5 * KII, KII, E, CrackFront::open, false, tc);
+    EXPECT_TRUE(off.grow);
+    EXPECT_NEAR(off.angle, tc, 1e-5);
+    EXPECT_NEAR(off.driving, 110.0 * 4.0 / 3.0, 1e-5);
+    EXPECT_EQ(off.critical, 100.0);
+    const GrowthDecision straight = decide_growth(law, -0.5 * KII, KII, E, CrackFront::open, false, 0.0);
+    EXPECT_NEAR(straight.driving, 110.0 * 4.0 / 3.0, 1e-9);
+    EXPECT_NEAR(straight.angle, tc, 1e-5);
+  }
+  // Below both thresholds: no growth; a shear crack pressed shut (K_I < 0) runs along the plane.
+  law.plane_fracture_energy = 50.0;
+  EXPECT_FALSE(decide_growth(law, 0.0, std::sqrt(49.0 * E), E, CrackFront::open, true).grow);
+  const GrowthDecision closed = decide_growth(law, -0.1 * KII, KII, E, CrackFront::open, true);
+  EXPECT_TRUE(closed.grow);
+  EXPECT_EQ(closed.angle, 0.0);
+  // Pressed shut with a plane as tough as the bulk: the closed flaw kinks as in pure mode II
+  // (K_I read as 0; the faces' pressure is not a singular field).
+  law.plane_fracture_energy = law.fracture_energy;
+  const GrowthDecision wing = decide_growth(law, -3.0 * KII, KII, E, CrackFront::open, true);
+  EXPECT_TRUE(wing.grow);
+  EXPECT_NEAR(wing.angle * 180.0 / kPi, -70.5288, 1e-3);
+  EXPECT_NEAR(wing.driving, 110.0 * 4.0 / 3.0, 1e-9);
+  law.plane_fracture_energy = 50.0;
+  // Mode I: both ways lie straight ahead; the weaker plane's threshold decides.
+  const double KI = std::sqrt(60.0 * E);
+  const GrowthDecision m1 = decide_growth(law, KI, 0.0, E, CrackFront::open, true);
+  EXPECT_TRUE(m1.grow);
+  EXPECT_EQ(m1.angle, 0.0);
+  EXPECT_EQ(m1.critical, 50.0);
 }
 
 }  // namespace

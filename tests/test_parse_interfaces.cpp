@@ -382,6 +382,10 @@ TEST(ParseInterfaces, GrowthNeedsAPreCrackInsideOneBodyWithItsParameters) {
   EXPECT_EQ(parse_grown(kBilinear + "growth = \"cohesive\"").growth.criterion, GrowthCriterion::cohesive);
   const InterfaceSpec hoop = parse_grown(kCohesive + "growth = \"max_hoop\"\ntoughness = 1e6");
   EXPECT_EQ(hoop.growth.criterion, GrowthCriterion::max_hoop);  // a cohesive crack by a K criterion
+  // A weak plane ahead: its G_c beside the bulk's.
+  const InterfaceSpec plane = parse_grown(kInside + "growth = \"energy\"\nfracture_energy = 52.2\nplane_fracture_energy = 26.1");
+  EXPECT_EQ(plane.growth.plane_fracture_energy, 26.1);
+  EXPECT_EQ(energy.growth.plane_fracture_energy, 0.0);  // none by default
   struct Bad {
     const char* name;
     std::string lines;
@@ -409,6 +413,14 @@ TEST(ParseInterfaces, GrowthNeedsAPreCrackInsideOneBodyWithItsParameters) {
       {"a step above half a cell", g + "toughness = 1e6\ngrowth_step = 0.6",
        {"'interface.w.growth_step' = 0.6", "(0, 0.5]", "half a cell"}},
       {"a zero step", g + "toughness = 1e6\ngrowth_step = 0.0", {"'interface.w.growth_step' = 0", "(0, 0.5]"}},
+      {"a weak plane with max_hoop", g + "toughness = 1e6\nplane_fracture_energy = 10.0",
+       {"'interface.w.plane_fracture_energy' = 10", "needs growth = \"energy\""}},
+      {"a weak plane going straight", kInside + "growth = \"energy\"\nfracture_energy = 1.0\nplane_fracture_energy = 0.5\ngrowth_direction = \"straight\"",
+       {"'interface.w.plane_fracture_energy' = 0.5", "growth_direction = \"max_hoop\""}},
+      {"a zero weak plane", kInside + "growth = \"energy\"\nfracture_energy = 1.0\nplane_fracture_energy = 0.0",
+       {"'interface.w.plane_fracture_energy' = 0", "must be > 0"}},
+      {"a weak plane without growth", kInside + "plane_fracture_energy = 1.0",
+       {"'interface.w.plane_fracture_energy' = 1", "needs growth"}},
       {"toughness without growth", kInside + "toughness = 1e6", {"'interface.w.toughness' = 1000000", "needs growth"}},
       {"an unknown criterion", kInside + "growth = \"kink\"", {"'interface.w.growth' = \"kink\"", "max_hoop", "energy"}},
       {"an unknown direction", g + "toughness = 1e6\ngrowth_direction = \"up\"",

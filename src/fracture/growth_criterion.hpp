@@ -15,7 +15,22 @@
 //    exceeds any strength, so the first segment, which then carries at most sigma_max, comes at
 //    once, as Camacho & Ortiz 1996 insert an extrinsic law where the strength is reached);
 //  - direction max_hoop: theta_c (hoop_stress_angle); straight: along the crack.
-// A closed tip (K_I < 0) does not grow by K_Ic, G_c or from a cut. Units: Pa m^1/2, J/m^2, radians.
+//  - a weak plane (energy, plane_fracture_energy > 0): while the tip is still on the drawn
+//    line's straight extension, two ways compete (He & Hutchinson 1989): along the plane, with
+//    G_0 = (K_I+^2 + K_II^2) / E' against the plane's G_c,p, or out of it at theta_c(K_I+, K_II),
+//    with the kinked crack's G(theta_c) = (k_I^2 + k_II^2) / E' (kinked_intensities) against the
+//    bulk's G_c, K_I+ = max(K_I, 0) (a shear crack pressed shut runs or kinks in mode II); the larger
+//    ratio G / G_c wins once it reaches 1. Pure mode II: G(theta_c) / G_0 = 4/3, so the crack
+//    stays on the plane iff G_c,p < 0.75 G_c. Off the plane the tip is a kink at angle phi
+//    (kink: its end segment's direction from the crack's, in which K_I, K_II were read over the
+//    J domains, which see the crack before the kink while the kink is shorter than they are):
+//    its own intensities are k = kinked_intensities(K_I+, K_II, phi); it grows at theta_c(k)
+//    from its end segment (phi + theta_c(k) from the crack's) when the G of that increment,
+//    K_eq(k)^2 / E' (its k_II is 0), reaches the bulk's G_c. At phi = theta_c that is the
+//    G(theta_c) that made it kink (theta_c(k) = 0), so a kink runs on straight; once the kink is
+//    longer than the domains, phi -> 0 and the increment's G is that of max_hoop with K_I+.
+// A closed tip (K_I < 0) does not grow by K_Ic, G_c or from a cut, but for the weak plane's.
+// Units: Pa m^1/2, J/m^2, radians.
 #pragma once
 
 namespace rupture {
@@ -28,6 +43,7 @@ struct GrowthLaw {
   GrowthDirection direction = GrowthDirection::max_hoop;
   double toughness = 0.0;        // K_Ic, Pa m^1/2 (max_hoop)
   double fracture_energy = 0.0;  // G_c, J/m^2 (energy)
+  double plane_fracture_energy = 0.0;  // G_c,p of the weak plane ahead, J/m^2 (energy; 0: none)
   double step = 0.5;             // length of one growth step, in cells (0, 0.5]
   bool on() const { return criterion != GrowthCriterion::none; }
 };
@@ -35,6 +51,16 @@ struct GrowthLaw {
 // The hoop stress intensity sigma_thetatheta sqrt(2 pi r) of the Williams field at angle theta
 // from the crack line, Pa m^1/2.
 double hoop_stress_intensity(double K_I, double K_II, double theta);
+
+// The stress intensities at the tip of a short kink at angle theta from a crack with K_I, K_II
+// (Cotterell & Rice 1980's first-order result for a kink much shorter than the crack; the
+// stresses of the Williams field resolved on the kink's line): k_I = 1/4 [3 cos(t/2) + cos(3t/2)] K_I
+// - 3/4 [sin(t/2) + sin(3t/2)] K_II, k_II = 1/4 [sin(t/2) + sin(3t/2)] K_I + 1/4 [cos(t/2)
+// + 3 cos(3t/2)] K_II. At theta_c, k_I is the hoop intensity and k_II = 0.
+struct KinkIntensities {
+  double k_I = 0.0, k_II = 0.0;  // Pa m^1/2
+};
+KinkIntensities kinked_intensities(double K_I, double K_II, double theta);
 
 // What the cohesive criterion reads at the end of the line (solver/crack_growth.cpp).
 enum class CrackFront {
@@ -51,8 +77,11 @@ struct GrowthDecision {
 };
 
 // e_prime: E (plane stress) or E / (1 - nu^2) (plane strain), Pa. front: the end segment's
-// state (read by the cohesive criterion only).
+// state (read by the cohesive criterion only). on_plane: the tip lies on the weak plane (the
+// drawn line's straight extension; read only with plane_fracture_energy); kink: off the plane,
+// the end segment's angle from the direction K was read in (radians, ccw; the same use).
 GrowthDecision decide_growth(const GrowthLaw& law, double K_I, double K_II, double e_prime,
-                             CrackFront front = CrackFront::open);
+                             CrackFront front = CrackFront::open, bool on_plane = false,
+                             double kink = 0.0);
 
 }  // namespace rupture

@@ -562,6 +562,13 @@ std::vector<KeyDoc> build_schema() {
        "K_Ic, the mode-I fracture toughness", "1.0e6"},
       {"interface.*.fracture_energy", "number", "J/m^2", "none", "> 0; with growth = energy",
        "G_c, the critical energy release rate", "200.0"},
+      {"interface.*.plane_fracture_energy", "number", "J/m^2", "none",
+       "> 0; with growth = energy and growth_direction = max_hoop",
+       "G_c of a weak plane: the drawn line's straight extension beyond each tip. A tip still on "
+       "it grows along it when (K_I+^2 + K_II^2) / E' reaches this, or kinks out at the maximum "
+       "hoop stress angle when the kinked crack's G reaches fracture_energy, whichever ratio is "
+       "larger (He & Hutchinson; docs/fracture.md, \"A weak plane ahead\")",
+       "26.1"},
       {"interface.*.growth_direction", "string", "", "max_hoop", "max_hoop, straight; with growth",
        "the direction of a new segment: the maximum hoop stress direction from K_I, K_II, or "
        "straight on along the crack", "\"max_hoop\""},

@@ -343,7 +343,7 @@ void parse_growth(Section& f, InterfaceSpec& is, const Case& c) {
                 : criterion == "cohesive" ? GrowthCriterion::cohesive
                                           : GrowthCriterion::none;
   if (!g.on()) {
-    for (const char* key : {"toughness", "fracture_energy", "growth_direction", "growth_step"})
+    for (const char* key : {"toughness", "fracture_energy", "plane_fracture_energy", "growth_direction", "growth_step"})
       if (f.has(key)) fail(f.key(key), show(*f.node(key)), "needs growth = \"max_hoop\", \"energy\" or \"cohesive\"");
     return;
   }
@@ -396,6 +396,17 @@ void parse_growth(Section& f, InterfaceSpec& is, const Case& c) {
   }
   const std::string dir = f.string("growth_direction", "max_hoop", {"max_hoop", "straight"});
   g.direction = dir == "straight" ? GrowthDirection::straight : GrowthDirection::max_hoop;
+  if (f.has("plane_fracture_energy")) {
+    if (g.criterion != GrowthCriterion::energy)
+      fail(f.key("plane_fracture_energy"), show(*f.node("plane_fracture_energy")),
+           "is a weak plane's G_c, weighed against fracture_energy: needs growth = \"energy\"");
+    if (g.direction != GrowthDirection::max_hoop)
+      fail(f.key("plane_fracture_energy"), show(*f.node("plane_fracture_energy")),
+           "needs growth_direction = \"max_hoop\" (the way out of the plane it competes with)");
+    g.plane_fracture_energy = f.number("plane_fracture_energy", 0.0);
+    if (!(g.plane_fracture_energy > 0.0) || !std::isfinite(g.plane_fracture_energy))
+      fail(f.key("plane_fracture_energy"), g.plane_fracture_energy, "must be > 0 (G_c of the weak plane, J/m^2)");
+  }
   g.step = f.number("growth_step", 0.5);
   if (!(g.step > 0.0 && g.step <= 0.5))
     fail(f.key("growth_step"), g.step,

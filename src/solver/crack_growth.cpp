@@ -70,6 +70,39 @@ CrackFront crack_front(const CohesiveInterface& in, LineEnd end) {
   return past ? CrackFront::softening : CrackFront::loading;
 }
 
+// The weak plane at a tip (GrowthLaw::plane_fracture_energy): the drawn line's direction at
+// that end (unit, pointing out of the line), and whether the tip is still on its straight
+// extension: none of the tip's segments so far turned (their angles are exactly 0, the plane's
+// own steps being laid along this direction).
+struct WeakPlane {
+  bool on = false;
+  double dx = 0.0, dy = 0.0;
+};
+WeakPlane weak_plane(const InterfaceSpec& drawn, const CrackGrowthRecord& record, LineEnd end) {
+  WeakPlane w;
+  if (drawn.growth.plane_fracture_energy <= 0.0) return w;
+  const double end_column = end == LineEnd::start ? 0.0 : 1.0;
+  const std::vector<double>& r = record.rows;
+  for (std::size_t i = 0; i + kGrowthColumns <= r.size(); i += kGrowthColumns)
+    if (r[i + 2] == end_column && r[i + 5] != 0.0) return w;
+  const Polyline line = drawn.geometry();
+  const std::size_t n = line.num_vertices();
+  const std::size_t a = end == LineEnd::start ? 1 : n - 2, b = end == LineEnd::start ? 0 : n - 1;
+  const double lx = line.x[b] - line.x[a], ly = line.y[b] - line.y[a], l = std::hypot(lx, ly);
+  w.on = true, w.dx = lx / l, w.dy = ly / l;
+  return w;
+}
+
+// The end piece's direction at a tip from the chord's (the frame K is read in), radians ccw.
+double end_piece_turn(const InterfaceSpec& spec, const CrackTip& tip, double h) {
+  for (const CrackTip& e : precrack_tips(spec, 1e-6 * h))
+    if (e.end == tip.end) {
+      const TipFrame &a = tip.frame, &b = e.frame;
+      return std::atan2(a.e1x * b.e1y - a.e1y * b.e1x, a.e1x * b.e1x + a.e1y * b.e1y);
+    }
+  return 0.0;
+}
+
 }  // namespace
 
 double CrackGrowthRecord::length() const {
@@ -176,11 +209,14 @@ void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& rec
       const std::vector<TipIntegrals>& r = readings[t];
       double KI = 0.0, KII = 0.0;
       for (const TipIntegrals& d : r) KI += d.K_I / double(r.size()), KII += d.K_II / double(r.size());
-      const GrowthDecision g = decide_growth(is.growth, KI, KII, mat.e_prime, crack_front(L.interfaces[slot], tips[t].end));
+      const WeakPlane plane = weak_plane(is, records[k], tips[t].end);
+      const GrowthDecision g = decide_growth(is.growth, KI, KII, mat.e_prime, crack_front(L.interfaces[slot], tips[t].end),
+                                             plane.on, end_piece_turn(L.interfaces[slot].spec, tips[t], h));
       if (!g.grow) continue;
       const TipFrame& f = tips[t].frame;
       const double cs = std::cos(g.angle), sn = std::sin(g.angle);
-      const double dx = cs * f.e1x - sn * f.e1y, dy = sn * f.e1x + cs * f.e1y;
+      double dx = cs * f.e1x - sn * f.e1y, dy = sn * f.e1x + cs * f.e1y;
+      if (plane.on && g.angle == 0.0) dx = plane.dx, dy = plane.dy;  // along the plane, exactly
       const double step = is.growth.step * h;
       double x = f.x + step * dx, y = f.y + step * dy;
       // A segment that would leave the body ends on its edge.

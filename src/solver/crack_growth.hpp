@@ -5,7 +5,9 @@
 // outer domain's radius: the crack as the domains see it) and the crack's GrowthLaw decides
 // (fracture/growth_criterion.hpp). A tip that grows gets one straight segment of growth.step
 // cells in the criterion's direction (reference coordinates, where the cut is a property of the
-// material), and the body's split follows it exactly as the input split it:
+// material; a tip on its weak plane, plane_fracture_energy, tells the criterion so, and a step
+// along the plane is laid on the drawn line's direction exactly), and the body's split follows
+// it exactly as the input split it:
 //  - the interface gets the segment (cohesive/interface_growth.hpp), its new node displaced as
 //    the tip node (the mean of its faces); on a cohesive crack the segment carries the law
 //    (intact), and the cohesive criterion reads the end segment's state through it
