@@ -1,5 +1,6 @@
 // rupture/input/case_toml.cpp
 #include "input/case_toml.hpp"
+#include "input/parameters.hpp"
 
 #include <fmt/format.h>
 #include <toml++/toml.h>
@@ -322,6 +323,7 @@ Case parse_case(const std::string& toml_text, const std::vector<std::string>& ov
                                  src.begin.column, e.description()));
   }
   for (const std::string& o : overrides) apply_override(root, o);
+  substitute_parameters(root);  // after --set, so a parameter set there moves what uses it
   // Relative table_file paths start at the case file's directory (the working directory for
   // text that came from no file).
   std::string case_dir;

@@ -111,6 +111,15 @@ std::vector<KeyDoc> build_schema() {
        "name of the case, printed by rupture check and kept in run.json's input echo",
        "\"Rosakis 1999 intersonic shear crack\""},
 
+      {"parameters", "table", "", "none", "numbers, each named by a letter or '_' then letters, digits, '_'",
+       "Named numbers the case's values can be computed from: a string value beginning with '=' "
+       "anywhere in the case (but the title) is an arithmetic expression of them (+ - * / ^, "
+       "parentheses, pi, sqrt sin cos tan atan exp log abs), replaced by its value before the case "
+       "is read (after --set, so `--set parameters.NAME=VALUE` moves every value that uses it). "
+       "A whole result becomes an integer. Example: [parameters] offset = 0.5, and "
+       "points = [[\"=0.128 - offset * 0.1016\", 0.0], ...].",
+       ""},
+
       {"model", "table", "", "optional", "", "The 2D idealisation.", ""},
       {"model.plane", "string", "", "\"strain\"", "\"strain\", \"stress\"",
        "plane strain (eps_zz = 0, sigma_zz = nu (sxx + syy) kept) or plane stress (sigma_zz = 0)",
