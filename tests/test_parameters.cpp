@@ -93,6 +93,10 @@ TEST(Parameters, ACaseTakesItsValuesFromItsParametersAndSetMovesThem) {
   ASSERT_EQ(c.interfaces.size(), 1u);
   EXPECT_EQ(c.interfaces[0].segments, 19);  // 0.019 / 1e-3, within round-off of 19: an integer
   EXPECT_DOUBLE_EQ(c.interfaces[0].line.x[0], 0.128 - 0.5 * 0.1016);
+  // A parameter may be an expression of others, written in any order.
+  const Case chained = parse_case(kCase, {"parameters.offset=\"=a_half + quarter\"", "parameters.quarter=\"=a_half / 2\"",
+                                          "parameters.a_half=0.5"});
+  EXPECT_DOUBLE_EQ(chained.interfaces[0].line.x[0], 0.128 - 0.75 * 0.1016);
   const Case moved = parse_case(kCase, {"parameters.offset=0.75"});
   EXPECT_DOUBLE_EQ(moved.interfaces[0].line.x[0], 0.128 - 0.75 * 0.1016);
   EXPECT_DOUBLE_EQ(moved.interfaces[0].line.x[1], 0.128 - 0.75 * 0.1016);
@@ -110,7 +114,11 @@ TEST(Parameters, BadParametersAreNamed) {
     }
     return std::string();
   };
-  EXPECT_NE(error({"parameters.offset=\"=h\""}).find("'parameters.offset' = \"=h\": must be a finite number"),
+  EXPECT_NE(error({"parameters.offset=true"}).find("'parameters.offset' = true: must be a finite number"),
+            std::string::npos);
+  EXPECT_NE(error({"parameters.offset=\"=2 * b\"", "parameters.b=\"=offset\""}).find("depend on one another in a circle"),
+            std::string::npos);
+  EXPECT_NE(error({"parameters.offset=\"=2 * nope\""}).find("'parameters.offset' = \"=2 * nope\": the expression: unknown name 'nope'"),
             std::string::npos);
   EXPECT_NE(error({"parameters.pi=3"}).find("'pi' is the constant"), std::string::npos);
   EXPECT_NE(error({"parameters=3"}).find("'parameters' = 3: must be a table"), std::string::npos);

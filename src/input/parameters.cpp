@@ -211,6 +211,7 @@ void substitute_parameters(toml::table& root) {
   if (toml::node* p = root.get("parameters")) {
     toml::table* t = p->as_table();
     if (!t) fail("parameters", show(*p), "must be a table of named numbers ([parameters] with NAME = value)");
+    std::map<std::string, std::string> pending;  // name -> expression (without '='), by name
     for (auto&& [k, v] : *t) {
       const std::string name(k.str());
       const std::string key = "parameters." + printable(name);
@@ -218,10 +219,36 @@ void substitute_parameters(toml::table& root) {
       for (char c : name) word = word && (std::isalnum(static_cast<unsigned char>(c)) || c == '_');
       if (!word) fail(key, show(v), "a parameter's name is a letter or '_' followed by letters, digits or '_'");
       if (name == "pi") fail(key, show(v), "'pi' is the constant 3.14159...; name the parameter otherwise");
+      if (const toml::value<std::string>* e = v.as_string(); e && !e->get().empty() && e->get()[0] == '=') {
+        pending[name] = e->get().substr(1);
+        continue;
+      }
       const std::optional<double> x = v.value<double>();
       if (!(v.is_floating_point() || v.is_integer()) || !x || !std::isfinite(*x))
-        fail(key, show(v), "must be a finite number (parameters are numbers; expressions use them)");
+        fail(key, show(v), "must be a finite number, or an '='-expression of the other parameters");
       names[name] = *x;
+    }
+    // A parameter may be an expression of others, in any order: resolved in passes, each taking
+    // those whose names are all known by then; what is left depends on itself.
+    while (!pending.empty()) {
+      std::map<std::string, double> done;
+      for (const auto& [name, text] : pending) {
+        try {
+          done[name] = evaluate_expression(text, names, "parameters." + name);
+        } catch (const InputError&) {
+        }
+      }
+      if (done.empty()) {
+        const auto& [name, text] = *pending.begin();
+        std::string others;
+        for (const auto& [n, e] : pending) others += (others.empty() ? "" : ", ") + n;
+        std::map<std::string, double> all = names;
+        for (const auto& [n, e] : pending) all[n] = 0.0;
+        evaluate_expression(text, all, "parameters." + name);  // its own error, if it has one
+        fail("parameters." + name, "\"=" + text + "\"",
+             "the parameters " + others + " depend on one another in a circle");
+      }
+      for (const auto& [name, v] : done) names[name] = v, pending.erase(name);
     }
   }
   walk(root, "", names, 0);

@@ -1,6 +1,6 @@
 // rupture/input/parameters.hpp
-// Named parameters of a case (docs/input.md, "[parameters]"): a [parameters] table of numbers,
-// and any string value of the case that begins with '=' is an arithmetic expression of them,
+// Named parameters of a case (docs/input.md, "[parameters]"): a [parameters] table of numbers
+// (or '='-expressions of the others, in any order, no circles), and any string value of the case that begins with '=' is an arithmetic expression of them,
 // replaced by its value before the case is read, so one `--set parameters.NAME=VALUE` moves
 // every quantity that depends on it (a notch's offset as a fraction of the span, say).
 //   expression := term {('+' | '-') term};  term := factor {('*' | '/') factor}
@@ -25,7 +25,7 @@ namespace rupture {
 double evaluate_expression(std::string_view text, const std::map<std::string, double>& names,
                            const std::string& key);
 
-// Reads root's [parameters] (each a finite number) and replaces every '='-string elsewhere in
+// Reads root's [parameters] (each a finite number, or an expression of the others) and replaces every '='-string elsewhere in
 // root (except title) by its value.
 void substitute_parameters(toml::table& root);
 

@@ -200,18 +200,27 @@ void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& rec
       std::size_t index;
     };
     std::vector<Grow> grow;
+    // The cohesive criterion cannot grow a tip whose end segment is still loading, whatever K:
+    // such a tip is not read (the J domains are most of what growth costs a step).
+    std::vector<CrackFront> fronts(tips.size());
+    std::vector<char> read(tips.size());
+    for (std::size_t t = 0; t < tips.size(); ++t) {
+      fronts[t] = crack_front(L.interfaces[slot], tips[t].end);
+      read[t] = is.growth.criterion != GrowthCriterion::cohesive || fronts[t] != CrackFront::loading;
+    }
     // The tips are read side by side (each read only looks at the level).
     std::vector<std::vector<TipIntegrals>> readings(tips.size());
 #pragma omp parallel for schedule(static, 1)
     for (std::size_t t = 0; t < tips.size(); ++t)
-      readings[t] = read_tip(L, L.interfaces[slot].spec, tips[t].frame, mat, s.time, initial);
+      if (read[t]) readings[t] = read_tip(L, L.interfaces[slot].spec, tips[t].frame, mat, s.time, initial);
     for (std::size_t t = 0; t < tips.size(); ++t) {
+      if (!read[t]) continue;
       const std::vector<TipIntegrals>& r = readings[t];
       double KI = 0.0, KII = 0.0;
       for (const TipIntegrals& d : r) KI += d.K_I / double(r.size()), KII += d.K_II / double(r.size());
       const WeakPlane plane = weak_plane(is, records[k], tips[t].end);
-      const GrowthDecision g = decide_growth(is.growth, KI, KII, mat.e_prime, crack_front(L.interfaces[slot], tips[t].end),
-                                             plane.on, end_piece_turn(L.interfaces[slot].spec, tips[t], h));
+      const GrowthDecision g = decide_growth(is.growth, KI, KII, mat.e_prime, fronts[t], plane.on,
+                                             end_piece_turn(L.interfaces[slot].spec, tips[t], h));
       if (!g.grow) continue;
       const TipFrame& f = tips[t].frame;
       const double cs = std::cos(g.angle), sn = std::sin(g.angle);
