@@ -219,8 +219,10 @@ void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& rec
       double KI = 0.0, KII = 0.0;
       for (const TipIntegrals& d : r) KI += d.K_I / double(r.size()), KII += d.K_II / double(r.size());
       const WeakPlane plane = weak_plane(is, records[k], tips[t].end);
-      const GrowthDecision g = decide_growth(is.growth, KI, KII, mat.e_prime, fronts[t], plane.on,
-                                             end_piece_turn(L.interfaces[slot].spec, tips[t], h));
+      // The end piece's turn is read only by the weak plane's criterion (off the plane).
+      const double kink = is.growth.plane_fracture_energy > 0.0 && !plane.on
+                              ? end_piece_turn(L.interfaces[slot].spec, tips[t], h) : 0.0;
+      const GrowthDecision g = decide_growth(is.growth, KI, KII, mat.e_prime, fronts[t], plane.on, kink);
       if (!g.grow) continue;
       const TipFrame& f = tips[t].frame;
       const double cs = std::cos(g.angle), sn = std::sin(g.angle);
