@@ -67,6 +67,38 @@ void set_up_loads(State& s, const Loads& loads, double cell_size, const Particle
   }
 }
 
+namespace {
+
+// A node the bonded tie makes one continuum (solver/cohesive_step.hpp: both fields' copies hold
+// the summed mass and momentum, hence one velocity) is prescribed on both copies when the region
+// reaches either: prescribing one copy alone leaves the other, the same material point, moving
+// freely, and the tie then sums a prescribed and a free momentum each step (seen as an energy
+// blow-up beside a tie under a load at the mid-span). The impulse acts on the summed mass once,
+// so its work is counted on one copy.
+void both_copies_of_tied_nodes(State& s, long stamp) {
+  LoadState& L = s.loads;
+  const GridFields& G = s.fields;
+  for (const BondedTie& b : s.bonded)
+    for (const std::size_t n : b.nodes) {
+      const std::size_t iu = G.index(b.upper_field, n), il = G.index(b.lower_field, n);
+      const bool up = L.node_stamp[iu] == stamp, lo = L.node_stamp[il] == stamp;
+      if (up == lo) {
+        if (!up) continue;
+        for (LoadState::RegionNode& e : L.region_nodes)
+          if (e.node == il) e.work = false;
+        continue;
+      }
+      const std::size_t from = up ? iu : il, to = up ? il : iu;
+      int region = 0;
+      for (const LoadState::RegionNode& e : L.region_nodes)
+        if (e.node == from) region = e.region;
+      L.node_stamp[to] = stamp;
+      L.region_nodes.push_back({to, region, false});
+    }
+}
+
+}  // namespace
+
 void prepare_loads(State& s) {
   LoadState& L = s.loads;
   if (L.spec.tractions.empty() && L.spec.velocity_regions.empty() && L.spec.point_forces.empty())
@@ -118,19 +150,21 @@ void prepare_loads(State& s) {
         L.region_nodes.push_back({i, int(r)});
         if (distributed) L.node_region[i] = int(r);
       });
-  if (!distributed) return;
-  // Distributed: a halo node is listed on every rank holding it, with the lowest region any
-  // rank's particles give it (the one that lists it first on one process).
-  halo_lowest_region(s, L.node_region, L.region_changed);
-  for (const std::size_t e : L.region_changed) {
-    if (L.node_stamp[e] != stamp) {
-      L.node_stamp[e] = stamp;
-      L.region_nodes.push_back({e, L.node_region[e]});
-      continue;
+  if (distributed) {
+    // Distributed: a halo node is listed on every rank holding it, with the lowest region any
+    // rank's particles give it (the one that lists it first on one process).
+    halo_lowest_region(s, L.node_region, L.region_changed);
+    for (const std::size_t e : L.region_changed) {
+      if (L.node_stamp[e] != stamp) {
+        L.node_stamp[e] = stamp;
+        L.region_nodes.push_back({e, L.node_region[e]});
+        continue;
+      }
+      for (LoadState::RegionNode& n : L.region_nodes)
+        if (n.node == e) n.region = L.node_region[e];
     }
-    for (LoadState::RegionNode& n : L.region_nodes)
-      if (n.node == e) n.region = L.node_region[e];
   }
+  both_copies_of_tied_nodes(s, stamp);
 }
 
 void add_external_forces(State& s) {
@@ -236,7 +270,7 @@ void apply_velocity_regions(State& s) {
     const double jump = v1 - (G.vel_x[e.node] * dx + G.vel_y[e.node] * dy);
     // Impulse m jump along d, acting at the mean prescribed speed (as apply_velocity_bcs, E14);
     // distributed: a shared node's work counted once.
-    if (!s.halo || counts_node(s, field_of(G, e.node), grid_node_of(G, e.node)))
+    if (e.work && (!s.halo || counts_node(s, field_of(G, e.node), grid_node_of(G, e.node))))
       s.external_work += m * jump * 0.5 * (v0 + v1);
     G.vel_x[e.node] += jump * dx;
     G.vel_y[e.node] += jump * dy;

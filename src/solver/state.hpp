@@ -97,6 +97,7 @@ struct LoadState {
   struct RegionNode {
     std::size_t node;  // field offset + node index
     int region;
+    bool work = true;  // counted in the external work (a tied node's second copy is not)
   };
   std::vector<RegionNode> region_nodes;  // nodes the region particles touch this step
   std::vector<long> node_stamp;          // per field node: step + 1 when listed
