@@ -12,13 +12,16 @@
 //    the tip node (the mean of its faces); on a cohesive crack the segment carries the law
 //    (intact), and the cohesive criterion reads the end segment's state through it
 //    (crack_front: past the law's peak at its far Gauss point, or open);
-//  - the tie beyond that tip becomes the stretches of the new segment's straight extension
-//    inside the body, and the tied grid nodes are found again (bonded_nodes);
-//  - the particles of the two parts that lie between the old extension and the new one (the
-//    wedge the turn sweeps, by reference position) change field, so each part is again the
-//    material on its side of the extended cut; the strips' node rows per field take each
-//    flipped particle's row, and the windows are re-measured (no re-sort: the order, hence the
-//    round-off, stays the last sort's).
+//  - the tie beyond that tip becomes the new cut's stretches inside the body, and the tied grid
+//    nodes are found again (bonded_nodes). The cut: the new segment's straight extension; with
+//    several cracks drawn in one body, two cells along the segment's direction and then on in
+//    the tie's old direction (the drawn line's), so a turned crack's tie does not cross
+//    another crack's (a node two ties reach would join three fields);
+//  - the particles of the two parts that lie between the old cut and the new one (by reference
+//    position) change field, so each part is again the material on its side of the crack and
+//    its cut; the strips' node rows per field take each flipped particle's row, and the
+//    windows are re-measured (no re-sort: the order, hence the round-off, stays the last
+//    sort's).
 // A tip whose segment would leave the body ends on its edge: no tie is left there, the cut is
 // through, and the pieces separate. A tip that comes within a cell of the edge cuts through to
 // its nearest point the same way (the ligament left is below what the grid resolves). One process and one level (input/ refuses the others).
