@@ -3,11 +3,26 @@
 // plain parallel loops over every field's nodes.
 #include "solver/grid_update.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "solver/rank_exchange.hpp"
 
 namespace rupture {
+
+namespace {
+
+// Whether a node's work is counted here: once per node over the ranks (counts_node), and once
+// per tied node (solver/cohesive_step.hpp: both fields' copies hold the summed mass and are
+// driven alike, so the impulse on that mass is counted on the upper field's copy only).
+bool counts_work(const State& s, int field, std::size_t node) {
+  for (const BondedTie& b : s.bonded)
+    if (b.lower_field == field && std::binary_search(b.nodes.begin(), b.nodes.end(), node)) return false;
+  return counts_node(s, field, node);
+}
+
+}  // namespace
+
 namespace {
 
 // Velocity-BC time function values at the start and end of the step.
@@ -74,7 +89,7 @@ void apply_absorbing_edges(State& s) {
     const double vx1 = vn1 * a.nx + vt1 * tx, vy1 = vn1 * a.ny + vt1 * ty;
     // The dashpot's impulse m (v - v_free) on a node moving at the step's mean velocity: its
     // (negative) work is external work (E14), as for a prescribed velocity.
-    if (counts_node(s, a.field, a.node))  // distributed: a shared node's work counted once
+    if (counts_work(s, a.field, a.node))  // a shared or tied node's work counted once
       s.external_work += m * ((vx1 - G.vel_x[i]) * 0.5 * (vx0 + vx1) +
                               (vy1 - G.vel_y[i]) * 0.5 * (vy0 + vy1));
     G.dvel_x[i] += vx1 - G.vel_x[i], G.dvel_y[i] += vy1 - G.vel_y[i];
@@ -97,7 +112,7 @@ void apply_velocity_bcs(State& s, const std::vector<unsigned char>* only) {
     double& dvel = (e.component == 0 ? G.dvel_x : G.dvel_y)[i];
     // The constraint's impulse m (V^{n+1} - v_free) acts on a node moving at the mean
     // prescribed velocity over the step: its work is the external work of SPEC E14.
-    if (counts_node(s, e.field, e.node)) s.external_work += m * (v1 - vel) * 0.5 * (v0 + v1);
+    if (counts_work(s, e.field, e.node)) s.external_work += m * (v1 - vel) * 0.5 * (v0 + v1);
     dvel += v1 - vel;
     vel = v1;
   }
