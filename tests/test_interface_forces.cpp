@@ -260,3 +260,46 @@ TEST(InterfaceForces, linear_jump_gives_the_consistent_nodal_forces) {
     expect_forces(t, want_x, zero, "bilinear, linear tangential jump");
   }
 }
+
+// Contact on light faces (docs/fracture.md): a pre-crack pressed shut (jump -1e-8 m) with its
+// faces of normal mass takes the full penalty, Tn = kn Dn, each node -Tn L / 2; with its upper
+// field's nodal masses scaled down (a face hanging on nodes its field barely reaches) the penalty
+// is scaled by the face's mass over light_face_mass (a quarter of rho h^2 / 2), so each node's
+// force and stiffness (the step bound's term) drop by that ratio; a face of normal mass is above
+// the threshold.
+TEST(InterfaceForces, a_light_face_meets_the_contact_penalty_in_proportion_to_its_mass) {
+  const double kn = 1e14;
+  State s = two_bodies(fmt::format("law = \"contact\"\ncontact = true\ncontact_stiffness = {}", kn));
+  CohesiveInterface& c0 = s.interfaces.at(0);
+  EXPECT_NEAR(c0.light_face_mass, 0.25 * 0.5 * 1246.0 * kH * kH, 1e-15) << "a quarter of rho h^2 / 2";
+  const double dn = -1e-8;
+  auto pressed = [&](double mass_factor, double& force, double& stiffness, double& face_mass) {
+    State t = s;
+    CohesiveInterface& c = t.interfaces.at(0);
+    for (std::size_t k = 0; k < 2; ++k) c.uy_up[k] = 0.5 * dn, c.uy_lo[k] = -0.5 * dn;
+    build_scatter_plan(t);
+    fit_field_windows(t);
+    particles_to_grid(t, false);
+    const int up = c.spec.upper_field;
+    for (int j = 0; j < t.grid.nodes_y(); ++j)
+      for (int i = 0; i < t.grid.nodes_x(); ++i)
+        if (t.fields.holds(up, i, j)) t.fields.mass[t.fields.index(up, i, j)] *= mass_factor;
+    update_face_stencils(t);
+    evaluate_interface(c, 1e-9, 0.0);
+    force = c.fy_node[0], stiffness = c.stiffness_node[0];
+    face_mass = std::min(c.face_up[0].mass, c.face_lo[0].mass);
+  };
+  double f1, k1, m1, f2, k2, m2;
+  pressed(1.0, f1, k1, m1);
+  EXPECT_GT(m1, c0.light_face_mass) << "a face of normal mass is above the threshold";
+  EXPECT_NEAR(f1, -kn * dn * 0.5 * kLength, 1e-12 * std::fabs(f1)) << "full penalty";
+  pressed(1e-3, f2, k2, m2);
+  ASSERT_LT(m2, c0.light_face_mass);
+  const double ratio = m2 / c0.light_face_mass;
+  EXPECT_NEAR(f2, ratio * f1, 1e-12 * std::fabs(f1)) << "force scaled by M / light_face_mass";
+  EXPECT_NEAR(k2, ratio * k1, 1e-12 * k1) << "stiffness (the step bound's term) scaled alike";
+  // The step bound's term 2 k w / M of the light face is at most that of a face at the threshold.
+  EXPECT_LE(2.0 * k2 / m2, 2.0 * k1 / c0.light_face_mass * (1 + 1e-12));
+  std::printf("light face: M = %.3g kg/m (normal %.3g, threshold %.3g), force %.4g -> %.4g N/m\n", m2, m1,
+              c0.light_face_mass, f1, f2);
+}

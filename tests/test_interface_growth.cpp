@@ -24,6 +24,7 @@ CohesiveInterface precrack() {
   for (std::size_t i = 0; i < c.gp_dn.size(); ++i) c.gp_dn[i] = 1e-3 * double(i), c.gp_slip[i] = double(i);
   c.time = 2.5e-6;
   c.work = 3.0;
+  c.light_face_mass = 1.5e-4;
   return c;
 }
 
@@ -56,6 +57,7 @@ TEST(InterfaceGrowth, NewSegmentAtTheEndKeepsEveryStateAndHasTheAskedGeometry) {
   EXPECT_NEAR(c.seg_nx[s], -std::sin(th), 1e-14);
   EXPECT_NEAR(c.seg_ny[s], std::cos(th), 1e-14);
   EXPECT_NEAR(c.length(), before.length() + a, 1e-14);
+  EXPECT_EQ(c.light_face_mass, before.light_face_mass);
   EXPECT_EQ(c.ux_up[n], 0.25);
   EXPECT_EQ(c.ux_lo[n], 0.25);
   EXPECT_EQ(c.uy_up[n], -0.05);

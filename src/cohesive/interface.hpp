@@ -91,6 +91,7 @@ struct InterfaceSpec {
 struct FaceStencil {
   std::size_t node[4];  // grid index, field offset included
   double c[4];
+  double mass = 0.0;  // the face's mass, sum of bilinear weight x nodal mass, kg/m
 };
 
 // Every member must also be written in run/checkpoint.cpp (restart is bitwise), except `spec`,
@@ -144,6 +145,10 @@ struct CohesiveInterface {
   std::vector<double> stiffness_node;
   std::vector<double> seg_ka, seg_kb;         // per-segment end stiffnesses (scratch)
   std::vector<FaceStencil> face_up, face_lo;  // this step's face stencils (derived, not state)
+  // Contact on light faces (solver/cohesive_step.cpp, light_face_scale): a face of less mass
+  // than this, kg/m, has its contact penalty scaled by its mass over it. Set at set-up from the
+  // case (a quarter of rho h^2 / 2, the face mass the set-up's step bound assumes; 0: none).
+  double light_face_mass = 0.0;
   std::vector<double> jump_before;            // |jump| at the start of the step (scratch), m
   // Instability watch (solver/cohesive_step.cpp): the last step's jump increment per node, m,
   // for how many steps in a row the increment has reversed and grown, and its size when that

@@ -99,6 +99,7 @@ void extend_interface(CohesiveInterface& c, LineEnd at, double x, double y, doub
   g.node_crack_time[k] = spec.precracked ? c.time : -1.0;
   g.time = c.time;
   g.work = c.work;
+  g.light_face_mass = c.light_face_mass;  // from the case at set-up
   c = std::move(g);
 }
 

@@ -133,8 +133,9 @@ void fields(A& a, StepLimits& l) {
   a("dt", l.dt);
 }
 
-// `spec` comes from the case (gp_law and node_law with it); face_up/face_lo, jump_before, seg_ka/seg_kb are per-step
-// scratch, recomputed before they are read.
+// `spec` comes from the case (gp_law and node_law with it), light_face_mass from the case at
+// set-up; face_up/face_lo, jump_before, seg_ka/seg_kb are per-step scratch, recomputed before
+// they are read.
 template <class A>
 void fields(A& a, CohesiveInterface& c) {
   a("x0", c.x0);

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <type_traits>
 #include <cmath>
 #include <variant>
 
@@ -60,6 +61,7 @@ inline FaceStencil face_stencil(const State& s, int field, double x, double y) {
     }
   const double inv = sum > 0.0 ? 1.0 / sum : 0.0;
   for (double& c : f.c) c *= inv;
+  f.mass = sum;
   return f;
 }
 
@@ -73,6 +75,20 @@ inline bool face_inside(const Grid& g, double x, double y) {
 }  // namespace
 
 namespace {
+
+// A face lighter than light_face_mass meets the contact penalty in proportion to its mass. The
+// penalty's share of the step bound is 2 k w / M for a face of mass M (solver/time_step.cpp), so
+// it stays below four times the one the set-up assumes (M = rho h^2 / 2, light_face_mass a
+// quarter of it) and contact never cuts the step below half the set-up's cohesive bound; a
+// face of normal mass keeps the full penalty (a light one closes at the frequency of a face of
+// the threshold's mass under the full penalty, twice a normal face's). Faces on a sliver of material or on the outer side of a grown crack's bend
+// carry a thousandth of a normal face's mass, and their full penalty cut the step 20-fold or
+// more (docs/fracture.md, "Contact on light faces"). 1 where the faces are not known yet.
+double light_face_scale(const CohesiveInterface& c, std::size_t k) {
+  if (c.light_face_mass <= 0.0 || c.face_up.size() != c.num_nodes() || !c.knows(k)) return 1.0;
+  const double m = std::min(c.face_up[k].mass, c.face_lo[k].mass);
+  return m < c.light_face_mass ? m / c.light_face_mass : 1.0;
+}
 
 // The Gauss-point and node loops of evaluate_interface for one law type (dispatched once per
 // interface: no law test inside the loops; what differs between laws is asked of the law,
@@ -94,6 +110,10 @@ void evaluate_with(CohesiveInterface& c, const Law& law, double t, double t_befo
     // The segment's frame: normal n, tangent t = (n_y, -n_x) (exactly +y, +x on a line drawn in
     // +x).
     const double nx = c.seg_nx[s], ny = c.seg_ny[s], tx = ny, ty = -nx;
+    const double scale = contact || std::is_same_v<Law, ContactLaw>
+                             ? std::min(light_face_scale(c, s), light_face_scale(c, e)) : 1.0;
+    ContactLaw light = contact_law;
+    light.stiffness *= scale, light.tangential_stiffness *= scale;  // 0 stays "as the normal"
     const double jx_a = c.jump_x(s), jx_b = c.jump_x(e);
     const double jy_a = c.jump_y(s), jy_b = c.jump_y(e);
     double fa_n = 0, fa_t = 0, fb_n = 0, fb_t = 0, ka = 0, kb = 0;
@@ -111,10 +131,16 @@ void evaluate_with(CohesiveInterface& c, const Law& law, double t, double t_befo
       if (!c.gp_separated[i] && L.separates_at(dn, dt, c.spec.separation_factor))
         c.gp_separated[i] = 1, h.slip = dt;
       if (!c.gp_separated[i]) {
-        r = L.respond(dn, dt, h);  // E7-E8; stiffness: the E6 bound (solver/time_step.hpp)
+        if constexpr (std::is_same_v<Law, ContactLaw>) {  // a pre-crack's own law is contact
+          ContactLaw light_law = L;
+          light_law.stiffness *= scale, light_law.tangential_stiffness *= scale;
+          r = (scale < 1.0 ? light_law : L).respond(dn, dt, h);
+        } else {
+          r = L.respond(dn, dt, h);  // E7-E8; stiffness: the E6 bound (solver/time_step.hpp)
+        }
         if (L.separated(h)) c.gp_separated[i] = 1, h.slip = dt, r = {0.0, 0.0, 0.0};
       } else if (contact) {
-        r = contact_law.respond(dn, dt, h);
+        r = (scale < 1.0 ? light : contact_law).respond(dn, dt, h);
       }
       c.gp_damage[i] = h.damage, c.gp_slip[i] = h.slip, c.gp_state[i] = h.state, c.gp_rate[i] = h.rate;
       c.gp_normal[i] = h.normal_seen;
