@@ -15,7 +15,10 @@
 //                           So the region's material moves rigidly along d; material within
 //                           one GIMP stencil (about a cell) outside it shares those nodes and is
 //                           dragged with it, as next to a driven edge. A node touched by two
-//                           regions follows the first in input order.
+//                           regions follows the first in input order. A tied node (the bonded
+//                           tie of an interface, solver/cohesive_step.hpp: one continuum) is
+//                           prescribed on both its fields' copies when the region reaches either,
+//                           its work counted once.
 //   prescribe_region_velocity: the same component on a velocity array (MUSL re-mapped, USF t^n).
 //   external_force_work:    E14 work of the forces over the step, dt sum_i f_i.(v_i^n+v_i^{n+1})/2,
 //                           the kinetic energy the nodal update gives them.
