@@ -22,6 +22,7 @@
 #include "solver/state.hpp"
 #include "solver/step.hpp"
 #include "support.hpp"
+#include "support_run.hpp"
 
 using namespace rupture;
 
@@ -57,18 +58,8 @@ std::string strip_with(const std::string& loads) {
   return t.substr(0, b) + loads + "\n" + t.substr(o);
 }
 
-double energy_error(const State& s) {
-  const double total = kinetic_energy(s.particles) + strain_energy(s.particles, s.stiffness);
-  return std::fabs(s.initial_energy + s.external_work - total) /
-         (s.initial_energy + std::fabs(s.external_work));
-}
-
-void run_to(State& s, double end) {
-  while (s.time < end - 1e-6 * s.dt) {
-    s.dt_cap = end - s.time;
-    step(s);
-  }
-}
+using test::energy_error;
+using test::run_to;
 
 }  // namespace
 
