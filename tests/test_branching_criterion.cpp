@@ -17,7 +17,11 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-WaveSpeeds plane_strain(double nu) { return {std::sqrt(2.0 * (1.0 - nu) / (1.0 - 2.0 * nu)), 1.0}; }
+WaveSpeeds plane_strain(double nu) {
+  WaveSpeeds w{};
+  w.dilatational = std::sqrt(2.0 * (1.0 - nu) / (1.0 - 2.0 * nu)), w.shear = 1.0;
+  return w;
+}
 
 TEST(BranchingCriterion, SlowTipIsTheWilliamsField) {
   const WaveSpeeds w = plane_strain(0.25);

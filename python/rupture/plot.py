@@ -301,11 +301,23 @@ def crack_paths(run):
             continue
         drawn = np.array(points, dtype=float)
         ends = []
+        own = rows["tip"] < 2  # tips 2, 3, ...: branches split off a tip (end 2, 3: the splits)
         for end, (x0, y0) in ((0, drawn[0]), (1, drawn[-1])):
-            mine = rows["end"] == end
+            mine = (rows["end"] == end) & own
             if mine.any():
                 ends.append((np.concatenate([[0.0], rows["time"][mine]]), np.concatenate([[x0], rows["x"][mine]]),
                              np.concatenate([[y0], rows["y"][mine]])))
+        # Each branch from the tip it split off (the split row before its first segment).
+        split, born = None, {}
+        for i in range(len(rows["time"])):
+            if rows["end"][i] >= 2:
+                split = (rows["time"][i], rows["x"][i], rows["y"][i])
+            elif rows["tip"][i] >= 2 and split is not None:
+                born.setdefault(int(rows["tip"][i]), split)
+        for label, (t0, x0, y0) in sorted(born.items()):
+            mine = (rows["tip"] == label) & (rows["end"] < 2)
+            ends.append((np.concatenate([[t0], rows["time"][mine]]), np.concatenate([[x0], rows["x"][mine]]),
+                         np.concatenate([[y0], rows["y"][mine]])))
         paths[name] = ends
         paths[(name, "drawn")] = (drawn[:, 0], drawn[:, 1])
     return paths

@@ -78,6 +78,9 @@ struct InterfaceSpec {
   std::vector<double> j_domains{4.0, 6.0, 8.0};
   // A pre-crack's tips grow by this criterion (solver/crack_growth.hpp; off: they stay).
   GrowthLaw growth;
+  // The velocity fields kept for the wedges of growth.max_branches branch events, in order
+  // (input/: named NAME.branchK; no particles until a tip splits, solver/crack_branching.hpp).
+  std::vector<int> branch_fields;
 
   Polyline geometry() const;                     // line, or its horizontal form
   std::vector<Polyline> tie_geometries() const;  // bonded_lines, or the horizontal form (none

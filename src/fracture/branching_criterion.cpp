@@ -10,7 +10,7 @@ namespace {
 
 // 4 a_d a_s - (1 + a_s^2)^2 (Rayleigh's function, Freund's D(v)).
 double rayleigh_function(double v, const WaveSpeeds& w) {
-  const double ad = std::sqrt(1.0 - v * v / (w.c_d * w.c_d)), as2 = 1.0 - v * v / (w.c_s * w.c_s);
+  const double ad = std::sqrt(1.0 - v * v / (w.dilatational * w.dilatational)), as2 = 1.0 - v * v / (w.shear * w.shear);
   return 4.0 * ad * std::sqrt(as2) - (1.0 + as2) * (1.0 + as2);
 }
 
@@ -18,8 +18,8 @@ double rayleigh_function(double v, const WaveSpeeds& w) {
 
 double rayleigh_speed(const WaveSpeeds& w) {
   // D > 0 just above v = 0 (D ~ 2 (1 - c_s^2/c_d^2) v^2/c_s^2) and D = -1 at c_s.
-  double lo = 1e-3 * w.c_s, hi = w.c_s;
-  for (int i = 0; i < 200 && hi - lo > 1e-14 * w.c_s; ++i) {
+  double lo = 1e-3 * w.shear, hi = w.shear;
+  for (int i = 0; i < 200 && hi - lo > 1e-14 * w.shear; ++i) {
     const double mid = 0.5 * (lo + hi);
     (rayleigh_function(mid, w) > 0.0 ? lo : hi) = mid;
   }
@@ -30,7 +30,7 @@ AngularStress running_mode_one(double theta, double v, const WaveSpeeds& w) {
   // Freund (1990) eq. 4.3.11: with a_d,s = sqrt(1 - v^2/c_d,s^2), the point (r cos t, r sin t)
   // seen in the scaled coordinates (x, a y): gamma = sqrt(1 - (v sin t / c)^2) = r_d,s / r,
   // tan theta_d,s = a_d,s tan theta.
-  const double ad = std::sqrt(1.0 - v * v / (w.c_d * w.c_d)), as = std::sqrt(1.0 - v * v / (w.c_s * w.c_s));
+  const double ad = std::sqrt(1.0 - v * v / (w.dilatational * w.dilatational)), as = std::sqrt(1.0 - v * v / (w.shear * w.shear));
   const double D = 4.0 * ad * as - (1.0 + as * as) * (1.0 + as * as);
   const double c = std::cos(theta), s = std::sin(theta);
   const double td = std::atan2(ad * s, c), ts = std::atan2(as * s, c);

@@ -10,14 +10,12 @@
 // wave speed of the plane problem: sqrt((lambda + 2 mu) / rho) in plane strain,
 // sqrt(E / (rho (1 - nu^2))) in plane stress).
 #pragma once
+#include "material/elastic.hpp"
 
 namespace rupture {
 
-// The wave speeds the moving-tip field depends on, m/s: dilatational c_d (of the plane
-// problem), shear c_s; c_R is found from them (Rayleigh's equation).
-struct WaveSpeeds {
-  double c_d = 0.0, c_s = 0.0;
-};
+// The field depends on the wave speeds (material/elastic.hpp): dilatational c_d of the plane
+// problem and shear c_s; c_R is found from them here.
 
 // The Rayleigh wave speed: the root in (0, c_s) of 4 a_d a_s - (1 + a_s^2)^2 = 0.
 double rayleigh_speed(const WaveSpeeds& w);

@@ -37,6 +37,8 @@ namespace rupture {
 
 enum class GrowthCriterion { none, max_hoop, energy, cohesive };
 enum class GrowthDirection { max_hoop, straight };
+// When a growing tip splits in two (fracture/branching_criterion.hpp; solver/crack_branching.hpp).
+enum class BranchCriterion { none, yoffe };
 
 struct GrowthLaw {
   GrowthCriterion criterion = GrowthCriterion::none;
@@ -45,6 +47,8 @@ struct GrowthLaw {
   double fracture_energy = 0.0;  // G_c, J/m^2 (energy)
   double plane_fracture_energy = 0.0;  // G_c,p of the weak plane ahead, J/m^2 (energy; 0: none)
   double step = 0.5;             // length of one growth step, in cells (0, 0.5]
+  BranchCriterion branching = BranchCriterion::none;
+  int max_branches = 0;          // how many times the crack's tips may split (each: a new field)
   bool on() const { return criterion != GrowthCriterion::none; }
 };
 

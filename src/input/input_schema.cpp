@@ -583,6 +583,15 @@ std::vector<KeyDoc> build_schema() {
        "straight on along the crack", "\"max_hoop\""},
       {"interface.*.growth_step", "number", "cells", "0.5", "(0, 0.5]; with growth",
        "the length of one new segment (a tip grows at most one segment per step)", "0.5"},
+      {"interface.*.branching", "string", "", "none", "none, yoffe; with growth = energy or max_hoop",
+       "when a growing tip splits in two: yoffe, once the tip's speed (over the outer J domain's "
+       "radius of path) reaches the speed where the running mode-I field's largest hoop stress "
+       "leaves the crack's axis (Yoffe 1951; Freund 1990), the two new tips leaving at the angles "
+       "of that maximum (docs/fracture.md, \"Branching\")",
+       "\"yoffe\""},
+      {"interface.*.max_branches", "integer", "", "1", "1 to 8; with branching",
+       "how many times the crack's tips may split (each split keeps a velocity field, NAME.branchK, "
+       "for the wedge between its two tips)", "1"},
       {"interface.*.drawn_open", "boolean", "", "false", "true, false; with law = xu_needleman or bilinear",
        "the drawn line is a cut (its points start separated, as a pre-crack's) and the segments a "
        "growing crack adds carry the law", "true"},

@@ -272,10 +272,14 @@ void renumber_fields(Case& c) {
     int& k = number[std::size_t(b.field)];
     if (k < 0) k = int(names.size()), names.push_back(c.field_names[std::size_t(b.field)]);
   }
+  // The fields kept for branches' wedges (no body yet) after every body's, in input order.
+  for (const InterfaceSpec& i : c.interfaces)
+    for (const int f : i.branch_fields) number[std::size_t(f)] = int(names.size()), names.push_back(c.field_names[std::size_t(f)]);
   for (BodySpec& b : c.bodies) b.field = number[std::size_t(b.field)];
   for (InterfaceSpec& i : c.interfaces) {
     i.upper_field = number[std::size_t(i.upper_field)];
     i.lower_field = number[std::size_t(i.lower_field)];
+    for (int& f : i.branch_fields) f = number[std::size_t(f)];
   }
   c.field_names = names;
 }

@@ -335,6 +335,8 @@ void parse_drawn_open(Section& f, InterfaceSpec& is) {
 // (fracture/growth_criterion.hpp; solver/crack_growth.hpp): a crack (law contact, or a cohesive
 // law that its new segments carry) drawn inside one body, with at least one tip, on a uniform
 // grid. Growth reads K at the tips, so it records them too (stress_intensity).
+void parse_branching(Section& f, GrowthLaw& g);
+
 void parse_growth(Section& f, InterfaceSpec& is, const Case& c) {
   GrowthLaw& g = is.growth;
   const std::string criterion = f.string("growth", "none", {"none", "max_hoop", "energy", "cohesive"});
@@ -343,7 +345,8 @@ void parse_growth(Section& f, InterfaceSpec& is, const Case& c) {
                 : criterion == "cohesive" ? GrowthCriterion::cohesive
                                           : GrowthCriterion::none;
   if (!g.on()) {
-    for (const char* key : {"toughness", "fracture_energy", "plane_fracture_energy", "growth_direction", "growth_step"})
+    for (const char* key : {"toughness", "fracture_energy", "plane_fracture_energy", "growth_direction", "growth_step",
+                            "branching", "max_branches"})
       if (f.has(key)) fail(f.key(key), show(*f.node(key)), "needs growth = \"max_hoop\", \"energy\" or \"cohesive\"");
     return;
   }
@@ -413,6 +416,45 @@ void parse_growth(Section& f, InterfaceSpec& is, const Case& c) {
          "must be in (0, 0.5] (cells): a tip grows at most half a cell at a time, so a segment "
          "never jumps over the grid nodes that carry the fields on either side");
   is.stress_intensity = true;
+  parse_branching(f, g);
+}
+
+// branching, max_branches (fracture/branching_criterion.hpp; solver/crack_branching.hpp).
+void parse_branching(Section& f, GrowthLaw& g) {
+  const std::string b = f.string("branching", "none", {"none", "yoffe"});
+  g.branching = b == "yoffe" ? BranchCriterion::yoffe : BranchCriterion::none;
+  if (g.branching == BranchCriterion::none) {
+    if (f.has("max_branches"))
+      fail(f.key("max_branches"), show(*f.node("max_branches")), "needs branching = \"yoffe\"");
+    return;
+  }
+  if (g.criterion == GrowthCriterion::cohesive)
+    fail(f.key("branching"), "\"" + b + "\"",
+         "needs growth = \"energy\" or \"max_hoop\" (Yoffe's criterion reads the running tip's K field; "
+         "the cohesive criterion reads the line's state)");
+  const double n = f.number("max_branches", 1.0);
+  if (!(n >= 1.0 && n <= 8.0 && n == std::floor(n)))
+    fail(f.key("max_branches"), n,
+         "must be a whole number from 1 to 8 (each branch event keeps a velocity field for the "
+         "wedge between the two new tips)");
+  g.max_branches = int(n);
+}
+
+// The fields the branch events' wedges will take, named NAME.branchK (K = 1, 2, ...).
+void reserve_branch_fields(Section& f, InterfaceSpec& is, Case& c, const std::string& name) {
+  for (int k = 1; k <= is.growth.max_branches; ++k) {
+    const std::string field = fmt::format("{}.branch{}", name, k);
+    if (std::find(c.field_names.begin(), c.field_names.end(), field) != c.field_names.end())
+      fail(f.key("max_branches"), is.growth.max_branches,
+           fmt::format("the branches' wedges take fields named \"{}\", but that is already a field "
+                       "name: rename that field",
+                       field));
+    if (c.field_names.size() >= 255)
+      fail(f.key("max_branches"), is.growth.max_branches,
+           "each branch event keeps a velocity field, and there are 255 already (at most 255)");
+    is.branch_fields.push_back(int(c.field_names.size()));
+    c.field_names.push_back(field);
+  }
 }
 
 }  // namespace
@@ -510,6 +552,7 @@ void parse_interfaces(Section& top, Case& c, ParseContext& ctx) {
     parse_drawn_open(f, is);
     parse_stress_intensity(f, is);
     parse_growth(f, is, c);
+    reserve_branch_fields(f, is, c, name);
     check_no_crossing(f, is, c);
     c.interfaces.push_back(is);
     c.interface_names.push_back(name);

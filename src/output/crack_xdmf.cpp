@@ -13,13 +13,31 @@ std::vector<std::array<double, 2>> crack_path_at(const Case& c, std::size_t k, c
   const std::vector<double>& r = growth.rows;
   std::vector<std::array<double, 2>> start, path;
   for (std::size_t i = 0; i + kGrowthColumns <= r.size() && r[i] <= t; i += kGrowthColumns)
-    if (r[i + 2] == 0.0) start.push_back({r[i + 3], r[i + 4]});
+    if (r[i + 2] == 0.0 && r[i + 1] < 2.0) start.push_back({r[i + 3], r[i + 4]});
   // The start's vertices were put in front one by one: the last made is the path's first.
   path.assign(start.rbegin(), start.rend());
   for (std::size_t v = 0; v < drawn.num_vertices(); ++v) path.push_back({drawn.x[v], drawn.y[v]});
   for (std::size_t i = 0; i + kGrowthColumns <= r.size() && r[i] <= t; i += kGrowthColumns)
-    if (r[i + 2] == 1.0) path.push_back({r[i + 3], r[i + 4]});
+    if (r[i + 2] == 1.0 && r[i + 1] < 2.0) path.push_back({r[i + 3], r[i + 4]});
   return path;
+}
+
+std::vector<std::vector<std::array<double, 2>>> crack_branches_at(const CrackGrowthRecord& growth, double t) {
+  const std::vector<double>& r = growth.rows;
+  std::vector<std::vector<std::array<double, 2>>> branches;
+  std::array<double, 2> split{};
+  for (std::size_t i = 0; i + kGrowthColumns <= r.size() && r[i] <= t; i += kGrowthColumns) {
+    if (r[i + 2] >= kSplitAtStart) {
+      split = {r[i + 3], r[i + 4]};
+      continue;
+    }
+    if (r[i + 1] < 2.0) continue;
+    const std::size_t b = std::size_t(r[i + 1]) - 2;
+    if (b >= branches.size()) branches.resize(b + 1);
+    if (branches[b].empty()) branches[b].push_back(split);  // its first row follows its split
+    branches[b].push_back({r[i + 3], r[i + 4]});
+  }
+  return branches;
 }
 
 std::string cracks_xdmf(const Case& c, const std::vector<CrackGrowthRecord>& growth,
@@ -30,10 +48,16 @@ std::string cracks_xdmf(const Case& c, const std::vector<CrackGrowthRecord>& gro
     grids += fmt::format("    <Grid Name=\"crack_{}\" GridType=\"Collection\" CollectionType=\"Temporal\">\n",
                          c.interface_names[k]);
     for (std::size_t j = 0; j < times.size(); ++j) {
-      const std::vector<std::array<double, 2>> p = crack_path_at(c, k, growth[k], times[j]);
+      // The path and its branches, each a chain of two-node cells over the shared points.
+      std::vector<std::vector<std::array<double, 2>>> chains{crack_path_at(c, k, growth[k], times[j])};
+      for (auto& b : crack_branches_at(growth[k], times[j])) chains.push_back(std::move(b));
       std::string cells, points;
-      for (std::size_t v = 0; v + 1 < p.size(); ++v) cells += fmt::format(" {} {}", v, v + 1);
-      for (const auto& q : p) points += fmt::format(" {:.9e} {:.9e} 0", q[0], q[1]);
+      std::size_t n = 0, segments = 0;
+      for (const auto& chain : chains) {
+        for (std::size_t v = 0; v + 1 < chain.size(); ++v) cells += fmt::format(" {} {}", n + v, n + v + 1), ++segments;
+        for (const auto& q : chain) points += fmt::format(" {:.9e} {:.9e} 0", q[0], q[1]);
+        n += chain.size();
+      }
       grids += fmt::format(
           "      <Grid Name=\"step{}\" GridType=\"Uniform\">\n"
           "        <Time Value=\"{:.9e}\"/>\n"
@@ -44,7 +68,7 @@ std::string cracks_xdmf(const Case& c, const std::vector<CrackGrowthRecord>& gro
           "          <DataItem Dimensions=\"{} 3\" NumberType=\"Float\" Precision=\"8\" Format=\"XML\">{}</DataItem>\n"
           "        </Geometry>\n"
           "      </Grid>\n",
-          j, times[j], p.size() - 1, p.size() - 1, cells, p.size(), points);
+          j, times[j], segments, segments, cells, n, points);
     }
     grids += "    </Grid>\n";
   }

@@ -410,8 +410,9 @@ void check_growth_rows(const std::vector<CrackGrowthRecord>& growth, const std::
       throw InputError(fmt::format("checkpoint '{}': run.growth[{}].rows.length = {}: must be a multiple of {} (whole rows)",
                                    origin, k, r.size(), kGrowthColumns));
     for (std::size_t i = 0; i < r.size(); i += kGrowthColumns)
-      if (r[i + 2] != 0.0 && r[i + 2] != 1.0)
-        throw InputError(fmt::format("checkpoint '{}': run.growth[{}].rows[{}] = {}: must be 0 or 1 (the end of the line the segment grew at)",
+      if (r[i + 2] != 0.0 && r[i + 2] != 1.0 && r[i + 2] != kSplitAtStart && r[i + 2] != kSplitAtStart + 1.0)
+        throw InputError(fmt::format("checkpoint '{}': run.growth[{}].rows[{}] = {}: must be 0 or 1 (the end of the line the segment grew at) "
+                                     "or 2 or 3 (the end whose tip split)",
                                      origin, k, i + 2, r[i + 2]));
   }
 }

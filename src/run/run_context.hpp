@@ -59,7 +59,7 @@ struct RunContext {
   std::vector<CrackGrowthRecord> growth;  // per interface: its grown segments (solver/crack_growth.hpp)
   // Set by the run's set-up: lays recorded segments on the case's interfaces again (a restore
   // calls it before it reads the state that holds their nodes; solver/crack_growth.hpp).
-  std::function<void(RunState&, const std::vector<CrackGrowthRecord>&)> regrow;
+  std::function<void(RunState&, std::vector<CrackGrowthRecord>&)> regrow;
   int interface_files = 0;   // interface/*.csv written so far
   double wall_before = 0.0;  // wall seconds of earlier segments (resumed runs)
   int segments = 1;          // 1 + number of resumptions

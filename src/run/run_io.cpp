@@ -129,7 +129,10 @@ void write_interfaces(RunIo& io) {
     const int number = io.ctx.interface_files;
     fs::create_directories(dir + "/interface");
     for (std::size_t k = 0; k < s.num_interfaces(); ++k) {
-      const std::string named = fmt::format("{}/interface/{}_{:06d}.csv", dir, names[k], number);
+      // Branches split off growing cracks (solver/crack_branching.hpp) come after the case's
+      // interfaces: branch1, branch2, ... in the order they split off.
+      const std::string name = k < names.size() ? names[k] : fmt::format("branch{}", k - names.size() + 1);
+      const std::string named = fmt::format("{}/interface/{}_{:06d}.csv", dir, name, number);
       if (k > 0 || names[0] == "interface") {
         write_interface_csv(named, s.interface(k), s.time);
         continue;

@@ -91,7 +91,7 @@ std::vector<StationProbe> set_up(RunContext& r, const Case& c, const std::string
   r.tip_schedule = Schedule(tips ? c.output.crack_sample_interval : 0.0);
   r.tips.assign(c.interfaces.size(), TipSeries{});
   r.growth.assign(c.interfaces.size(), CrackGrowthRecord{});
-  r.regrow = [&c](RunState& state, const std::vector<CrackGrowthRecord>& grown) { regrow_cracks(c, state, grown); };
+  r.regrow = [&c](RunState& state, std::vector<CrackGrowthRecord>& grown) { regrow_cracks(c, state, grown); };
   return probes;
 }
 

@@ -12,33 +12,13 @@
 #include "core/errors.hpp"
 #include "geometry/shape.hpp"
 #include "solver/cohesive_step.hpp"
+#include "solver/crack_branching.hpp"
+#include "solver/crack_cut.hpp"
 
 namespace rupture {
 namespace {
 
 constexpr double kDegree = 180.0 / std::numbers::pi;
-
-// The body the crack was drawn in: its shape and cut-outs, without the cuts of lines.
-Region crack_body(const Case& c, std::size_t k) {
-  const Region& r = c.bodies[std::size_t(c.interfaces[k].upper_body)].region;
-  return Region{r.outer, r.minus};
-}
-
-// A frame around the body, the line and p with room to spare (as input/ frames a split).
-Box cut_frame(const Region& body, const Polyline& line, const Point& p, double h) {
-  Box f = bounding_box(body);
-  auto take = [&](double x, double y) {
-    f.min[0] = std::min(f.min[0], x), f.max[0] = std::max(f.max[0], x);
-    f.min[1] = std::min(f.min[1], y), f.max[1] = std::max(f.max[1], y);
-  };
-  for (std::size_t i = 0; i < line.num_vertices(); ++i) take(line.x[i], line.y[i]);
-  take(p.x, p.y);
-  const double pad = 3.0 * h + 0.01 * std::max(f.max[0] - f.min[0], f.max[1] - f.min[1]);  // > the tie's lead
-  for (int d = 0; d < 2; ++d) f.min[d] -= pad, f.max[d] += pad;
-  return f;
-}
-
-bool near(const Point& a, double x, double y, double tol) { return std::hypot(a.x - x, a.y - y) <= tol; }
 
 // The nearest point of the body's edge within `within` of p (rays every 15 degrees), if any.
 bool nearest_edge(const Region& body, const Point& p, double within, Point& at) {
@@ -101,11 +81,6 @@ double end_piece_turn(const InterfaceSpec& spec, const CrackTip& tip, double h) 
       return std::atan2(a.e1x * b.e1y - a.e1y * b.e1x, a.e1x * b.e1x + a.e1y * b.e1y);
     }
   return 0.0;
-}
-
-Point unit(const Point& from, const Point& to) {
-  const double l = std::hypot(to.x - from.x, to.y - from.y);
-  return {(to.x - from.x) / l, (to.y - from.y) / l};
 }
 
 // Which side of the frame a point on its edge lies on (0..3: x min, x max, y min, y max).
@@ -178,6 +153,12 @@ double CrackGrowthRecord::length() const {
   return l;
 }
 
+int CrackGrowthRecord::branches() const {
+  int n = 0;
+  for (std::size_t i = 0; i + kGrowthColumns <= rows.size(); i += kGrowthColumns) n += rows[i + 2] >= kSplitAtStart;
+  return n;
+}
+
 bool add_crack_segment(const Case& c, std::size_t k, State& L, std::size_t slot,
                        const CrackTip& tip, double x, double y, bool flip_particles) {
   CohesiveInterface& in = L.interfaces[slot];
@@ -213,27 +194,14 @@ bool add_crack_segment(const Case& c, std::size_t k, State& L, std::size_t slot,
         wb.min[0] = std::min(wb.min[0], q.x), wb.max[0] = std::max(wb.max[0], q.x),
         wb.min[1] = std::min(wb.min[1], q.y), wb.max[1] = std::max(wb.max[1], q.y);
     if (frame_side(frame, old_cut.back()) != frame_side(frame, new_cut.back())) wb = frame;
-    Particles& P = L.particles;
-    ScatterPlan& plan = L.plan;
+    const Particles& P = L.particles;
     const std::uint8_t up = std::uint8_t(in.spec.upper_field), lo = std::uint8_t(in.spec.lower_field);
-    const std::size_t fields = std::size_t(L.fields.num_fields);
-    const int cy = L.grid.y.cells;
     for (std::size_t q = 0; q < P.size(); ++q) {
       if (P.field[q] != up && P.field[q] != lo) continue;
       const double px = P.x0[q], py = P.y0[q];
       if (px < wb.min[0] || px > wb.max[0] || py < wb.min[1] || py > wb.max[1]) continue;
       if (contains(left_before, px, py) == contains(left_after, px, py)) continue;
-      P.field[q] = P.field[q] == up ? lo : up;
-      // The strips' node rows per field (ScatterPlan::row_lo, row_hi, from the last sort) take
-      // the particle's row now in its new field: the drift since the sort widens them from
-      // there on, as it does for the rows the sort found, so the tile keeps its stencil.
-      if (!plan.rows_known) continue;
-      const auto at = std::upper_bound(plan.strip_begin.begin(), plan.strip_begin.end(), q);
-      const std::size_t strip = std::size_t(at - plan.strip_begin.begin()) - 1;
-      const int row = std::clamp(stencil_first(L.grid.y, P.y[q], P.half_y[q]), 0, cy - 1);
-      const std::size_t e = strip * fields + P.field[q];
-      plan.row_lo[e] = std::min(plan.row_lo[e], row);
-      plan.row_hi[e] = std::max(plan.row_hi[e], row);
+      move_particle_to_field(L, q, P.field[q] == up ? lo : up);
     }
     L.window_drift = INFINITY;  // the windows: measure the particles again
   }
@@ -272,81 +240,186 @@ bool add_crack_segment(const Case& c, std::size_t k, State& L, std::size_t slot,
   return edge;
 }
 
+namespace {
+
+// The crack's lines on its level: its own (branch -1; its tips labelled by their index among
+// its tips) and its branches' (branch b; the tip labelled 2 + b).
+struct CrackLine {
+  std::size_t slot;
+  int branch;
+};
+std::vector<CrackLine> crack_lines(const RunState& s, std::size_t k, const CrackGrowthRecord& record) {
+  std::vector<CrackLine> lines{{s.interface_slots[k], -1}};
+  for (std::size_t b = 0; b < record.branch_slots.size(); ++b) lines.push_back({record.branch_slots[b], int(b)});
+  return lines;
+}
+
+// Whether record row i belongs to the tip (label, end): a branch's tip by its label, the
+// crack's own by its end (its label, the index among its tips, changes when the other stops).
+bool row_of_tip(const std::vector<double>& r, std::size_t i, int label, LineEnd end) {
+  if (r[i + 2] >= kSplitAtStart) return false;
+  if (label >= 2) return r[i + 1] == double(label);
+  return r[i + 1] < 2.0 && r[i + 2] == (end == LineEnd::start ? 0.0 : 1.0);
+}
+
+
+// Splits the tip g grows at into two branches at +-g.split from its growth direction (each a
+// growth step long, ending on the body's edge at most), and records the split and the two
+// first segments. False (nothing done) where a branch would leave the body at once.
+template <class Grow>
+bool split_tip(const Case& c, std::size_t k, RunState& s, int level, std::size_t slot, const CrackTip& tip,
+               const Grow& g, CrackGrowthRecord& record) {
+  const State& L = s.levels[std::size_t(level)];
+  const double h = L.grid.cell_size(), step = c.interfaces[k].growth.step * h;
+  const Region body = crack_body(c, k);
+  const TipFrame& f = tip.frame;
+  const double axis = g.angle;
+  Point end[2];
+  for (int b = 0; b < 2; ++b) {
+    const double t = axis + (b == 0 ? g.split : -g.split), cs = std::cos(t), sn = std::sin(t);
+    const Point to{f.x + step * (cs * f.e1x - sn * f.e1y), f.y + step * (sn * f.e1x + cs * f.e1y)};
+    const std::vector<Stretch> in_body = inside_stretches(body, {f.x, f.y}, to);
+    if (in_body.empty() || std::hypot(in_body[0].from.x - f.x, in_body[0].from.y - f.y) > 1e-6 * h) return false;
+    end[b] = in_body[0].to;
+    if (std::hypot(end[b].x - f.x, end[b].y - f.y) <= 1e-6 * h) return false;
+  }
+  const std::size_t n = record.branch_slots.size();
+  const std::array<std::size_t, 2> slots = split_crack_tip(c, k, s, level, slot, tip, end[0].x, end[0].y, end[1].x,
+                                                           end[1].y, c.interfaces[k].branch_fields[n / 2], true);
+  const double column = kSplitAtStart + (tip.end == LineEnd::start ? 0.0 : 1.0);
+  record.rows.insert(record.rows.end(), {s.time, double(g.label), column, f.x, f.y, g.split * kDegree, 0.0, g.K_I, g.K_II});
+  for (int b = 0; b < 2; ++b) {
+    record.branch_slots.push_back(slots[std::size_t(b)]);
+    const double len = std::hypot(end[b].x - f.x, end[b].y - f.y);
+    const double turn = (axis + (b == 0 ? g.split : -g.split)) * kDegree;
+    record.rows.insert(record.rows.end(),
+                       {s.time, double(2 + n + std::size_t(b)), 1.0, end[b].x, end[b].y, turn, len, g.K_I, g.K_II});
+  }
+  return true;
+}
+}  // namespace
+
+double tip_speed(const CrackGrowthRecord& record, int label, LineEnd end, double now, double window) {
+  const std::vector<double>& r = record.rows;
+  double grown = 0.0;
+  for (std::size_t i = r.size(); i >= kGrowthColumns;) {
+    i -= kGrowthColumns;
+    if (!row_of_tip(r, i, label, end)) continue;
+    // The window starts where this row's segment starts: its time is the row before's for
+    // the same tip, or (its first) this row's own; the speed is the path since then over time.
+    grown += r[i + 6];
+    if (grown < window) continue;
+    for (std::size_t j = i; j >= kGrowthColumns;) {
+      j -= kGrowthColumns;
+      if (row_of_tip(r, j, label, end)) return now > r[j] ? (grown) / (now - r[j]) : 0.0;
+    }
+    return 0.0;  // the first segments: no time before them to measure from
+  }
+  return 0.0;
+}
+
 void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& records) {
   records.resize(c.interfaces.size());
   for (std::size_t k = 0; k < c.interfaces.size(); ++k) {
     const InterfaceSpec& is = c.interfaces[k];
     if (!is.growth.on()) continue;
-    State& L = s.levels[std::size_t(s.interface_levels[k])];
-    const std::size_t slot = s.interface_slots[k];
+    const int level = s.interface_levels[k];
+    State& L = s.levels[std::size_t(level)];
     const double h = L.grid.cell_size();
     const TipMaterial mat = tip_material(c, k);
     const std::vector<InitialStrain> initial = initial_field_strains(c);
+    const std::vector<CrackLine> lines = crack_lines(s, k, records[k]);
     // Read every tip first, then grow: one tip's segment does not change another's reading.
     // The frame K is read in and the kink turns from: the crack as the outer J domain sees it
     // (the chord over its radius; a kink shorter than that is not yet the crack's direction).
-    const std::vector<CrackTip> tips = precrack_tips(L.interfaces[slot].spec, 1e-6 * h, is.j_domains.back() * h);
-    struct Grow {
+    struct Tip {
+      std::size_t line;
       CrackTip tip;
-      double x, y, angle, K_I, K_II;
-      std::size_t index;
+      int label;
+      CrackFront front;
+      bool read;
     };
-    std::vector<Grow> grow;
-    // The cohesive criterion cannot grow a tip whose end segment is still loading, whatever K:
-    // such a tip is not read (the J domains are most of what growth costs a step).
-    std::vector<CrackFront> fronts(tips.size());
-    std::vector<char> read(tips.size());
-    for (std::size_t t = 0; t < tips.size(); ++t) {
-      fronts[t] = crack_front(L.interfaces[slot], tips[t].end);
-      read[t] = is.growth.criterion != GrowthCriterion::cohesive || fronts[t] != CrackFront::loading;
+    std::vector<Tip> tips;
+    for (std::size_t l = 0; l < lines.size(); ++l) {
+      const CohesiveInterface& in = L.interfaces[lines[l].slot];
+      const std::vector<CrackTip> t = precrack_tips(in.spec, 1e-6 * h, is.j_domains.back() * h);
+      for (std::size_t i = 0; i < t.size(); ++i) {
+        // The cohesive criterion cannot grow a tip whose end segment is still loading, whatever
+        // K: such a tip is not read (the J domains are most of what growth costs a step).
+        const CrackFront front = crack_front(in, t[i].end);
+        tips.push_back({l, t[i], lines[l].branch < 0 ? int(i) : 2 + lines[l].branch, front,
+                        is.growth.criterion != GrowthCriterion::cohesive || front != CrackFront::loading});
+      }
     }
     // The tips are read side by side (each read only looks at the level).
     std::vector<std::vector<TipIntegrals>> readings(tips.size());
 #pragma omp parallel for schedule(static, 1)
     for (std::size_t t = 0; t < tips.size(); ++t)
-      if (read[t]) readings[t] = read_tip(L, L.interfaces[slot].spec, tips[t].frame, mat, s.time, initial);
+      if (tips[t].read)
+        readings[t] = read_tip(L, L.interfaces[lines[tips[t].line].slot].spec, tips[t].tip.frame, mat, s.time, initial);
+    struct Grow {
+      std::size_t line;
+      CrackTip tip;
+      double x, y, angle, K_I, K_II;
+      int label;
+      double split = 0.0;  // > 0: the tip splits, its branches at +-split from the direction above
+    };
+    std::vector<Grow> grow;
+    const Region body = crack_body(c, k);
+    std::size_t splits = std::size_t(records[k].branches());
     for (std::size_t t = 0; t < tips.size(); ++t) {
-      if (!read[t]) continue;
+      if (!tips[t].read) continue;
       const std::vector<TipIntegrals>& r = readings[t];
+      const InterfaceSpec& spec = L.interfaces[lines[tips[t].line].slot].spec;
       double KI = 0.0, KII = 0.0;
       for (const TipIntegrals& d : r) KI += d.K_I / double(r.size()), KII += d.K_II / double(r.size());
-      const WeakPlane plane = weak_plane(is, records[k], tips[t].end);
+      const WeakPlane plane = tips[t].label < 2 ? weak_plane(is, records[k], tips[t].tip.end) : WeakPlane{};
       // The end piece's turn is read only by the weak plane's criterion (off the plane).
       const double kink = is.growth.plane_fracture_energy > 0.0 && !plane.on
-                              ? end_piece_turn(L.interfaces[slot].spec, tips[t], h) : 0.0;
-      const GrowthDecision g = decide_growth(is.growth, KI, KII, mat.e_prime, fronts[t], plane.on, kink);
+                              ? end_piece_turn(spec, tips[t].tip, h) : 0.0;
+      const GrowthDecision g = decide_growth(is.growth, KI, KII, mat.e_prime, tips[t].front, plane.on, kink);
       if (!g.grow) continue;
-      const TipFrame& f = tips[t].frame;
+      const TipFrame& f = tips[t].tip.frame;
       const double cs = std::cos(g.angle), sn = std::sin(g.angle);
       double dx = cs * f.e1x - sn * f.e1y, dy = sn * f.e1x + cs * f.e1y;
       if (plane.on && g.angle == 0.0) dx = plane.dx, dy = plane.dy;  // along the plane, exactly
       const double step = is.growth.step * h;
       double x = f.x + step * dx, y = f.y + step * dy;
       // A segment that would leave the body ends on its edge.
-      const std::vector<Stretch> in_body = inside_stretches(crack_body(c, k), {f.x, f.y}, {x, y});
+      const std::vector<Stretch> in_body = inside_stretches(body, {f.x, f.y}, {x, y});
       if (in_body.empty() || std::hypot(in_body[0].from.x - f.x, in_body[0].from.y - f.y) > 1e-6 * h)
         continue;  // the tip is on the edge already
       x = in_body[0].to.x, y = in_body[0].to.y;
       if (std::hypot(x - f.x, y - f.y) <= 1e-6 * h) continue;
-      grow.push_back({tips[t], x, y, g.angle, KI, KII, t});
+      Grow gr{tips[t].line, tips[t].tip, x, y, g.angle, KI, KII, tips[t].label};
+      // A tip that grows may split instead (Yoffe): at its speed over the outer domain's radius
+      // of path, while the crack has fields kept for the wedges.
+      if (is.growth.branching == BranchCriterion::yoffe && splits < is.branch_fields.size()) {
+        const double v = tip_speed(records[k], tips[t].label, tips[t].tip.end, s.time, is.j_domains.back() * h);
+        const BranchDecision b = decide_branching(v, crack_wave_speeds(c, k));
+        if (b.branch) gr.split = b.angle, ++splits;
+      }
+      grow.push_back(gr);
     }
     // The end first: a new segment at the start shifts nothing the end's tip needs, and the
     // other way round, but each reads the line as it is now.
     for (const Grow& g : grow) {
+      const std::size_t slot = lines[g.line].slot;
       const std::vector<CrackTip> now = precrack_tips(L.interfaces[slot].spec, 1e-6 * h);
       const auto it = std::find_if(now.begin(), now.end(), [&](const CrackTip& t) { return t.end == g.tip.end; });
       if (it == now.end()) continue;
-      const bool through = add_crack_segment(c, k, L, slot, *it, g.x, g.y, true);
       const double end_column = g.tip.end == LineEnd::start ? 0.0 : 1.0;
+      if (g.split > 0.0 && split_tip(c, k, s, level, slot, *it, g, records[k])) continue;
+      const bool through = add_crack_segment(c, k, L, slot, *it, g.x, g.y, true);
       const double len = std::hypot(g.x - g.tip.frame.x, g.y - g.tip.frame.y);
       records[k].rows.insert(records[k].rows.end(),
-                             {s.time, double(g.index), end_column, g.x, g.y, g.angle * kDegree, len, g.K_I, g.K_II});
+                             {s.time, double(g.label), end_column, g.x, g.y, g.angle * kDegree, len, g.K_I, g.K_II});
       // A free surface less than a cell away: the ligament left holds fewer than two particles
       // across and cannot carry a field of its own on the grid (nor can a J domain cut by the
       // edge read the tip), so the crack cuts through to the nearest point of the edge, in
       // segments of at most the growth step (a junction: the tie there is gone).
       Point edge;
-      if (through || !nearest_edge(crack_body(c, k), {g.x, g.y}, h, edge)) continue;
+      if (through || !nearest_edge(body, {g.x, g.y}, h, edge)) continue;
       for (int piece = 0; piece < 4; ++piece) {
         const std::vector<CrackTip> tip = precrack_tips(L.interfaces[slot].spec, 1e-6 * h);
         const auto at = std::find_if(tip.begin(), tip.end(), [&](const CrackTip& t) { return t.end == g.tip.end; });
@@ -359,28 +432,54 @@ void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& rec
         const double turn = std::atan2(f.e1x * dy - f.e1y * dx, f.e1x * dx + f.e1y * dy);
         const bool done = add_crack_segment(c, k, L, slot, *at, x, y, true);
         records[k].rows.insert(records[k].rows.end(),
-                               {s.time, double(g.index), end_column, x, y, turn * kDegree, l, g.K_I, g.K_II});
+                               {s.time, double(g.label), end_column, x, y, turn * kDegree, l, g.K_I, g.K_II});
         if (done || l == left) break;
       }
     }
   }
 }
 
-void regrow_cracks(const Case& c, RunState& s, const std::vector<CrackGrowthRecord>& records) {
+void regrow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& records) {
   for (std::size_t k = 0; k < records.size() && k < c.interfaces.size(); ++k) {
-    State& L = s.levels[std::size_t(s.interface_levels[k])];
-    const std::size_t slot = s.interface_slots[k];
+    const int level = s.interface_levels[k];
+    State& L = s.levels[std::size_t(level)];
     const double h = L.grid.cell_size();
     const std::vector<double>& r = records[k].rows;
+    records[k].branch_slots.clear();
     for (std::size_t i = 0; i + kGrowthColumns <= r.size(); i += kGrowthColumns) {
-      const LineEnd end = r[i + 2] == 0.0 ? LineEnd::start : LineEnd::end;
+      const int label = int(r[i + 1]);
+      const bool split = r[i + 2] >= kSplitAtStart;
+      const std::size_t b = std::size_t(label >= 2 ? label - 2 : 0);
+      if (label >= 2 && b >= records[k].branch_slots.size())
+        throw InputError(fmt::format("checkpoint: run.growth[{}] row {}: tip {} is a branch that has not split off "
+                                     "(the checkpoint is not of this case)", k, i / kGrowthColumns, label));
+      const std::size_t slot = label >= 2 ? records[k].branch_slots[b] : s.interface_slots[k];
       const std::vector<CrackTip> now = precrack_tips(L.interfaces[slot].spec, 1e-6 * h);
-      const auto it = std::find_if(now.begin(), now.end(), [&](const CrackTip& t) { return t.end == end; });
+      // The tip the row grew (or split): a branch's one tip, or the crack's at the row's end.
+      const double column = split ? r[i + 2] - kSplitAtStart : r[i + 2];
+      const LineEnd at = label >= 2 ? LineEnd::end : column == 0.0 ? LineEnd::start : LineEnd::end;
+      const auto it = std::find_if(now.begin(), now.end(), [&](const CrackTip& t) { return t.end == at; });
       if (it == now.end())
         throw InputError(fmt::format("checkpoint: run.growth[{}] row {}: the crack has no tip at its {} to grow "
                                      "from (the checkpoint is not of this case)",
-                                     k, i / kGrowthColumns, end == LineEnd::start ? "start" : "end"));
-      add_crack_segment(c, k, L, slot, *it, r[i + 3], r[i + 4], false);
+                                     k, i / kGrowthColumns, at == LineEnd::start ? "start" : "end"));
+      if (!split) {
+        add_crack_segment(c, k, L, slot, *it, r[i + 3], r[i + 4], false);
+        continue;
+      }
+      // A split: the next two rows are its branches' first segments.
+      const std::size_t n = records[k].branch_slots.size();
+      if (i + 3 * kGrowthColumns > r.size() || n / 2 >= c.interfaces[k].branch_fields.size())
+        throw InputError(fmt::format("checkpoint: run.growth[{}] row {}: a split without its two branches, or "
+                                     "more splits than the crack's max_branches (the checkpoint is not of this case)",
+                                     k, i / kGrowthColumns));
+      const std::size_t a = i + kGrowthColumns, bb = i + 2 * kGrowthColumns;
+      const std::array<std::size_t, 2> slots =
+          split_crack_tip(c, k, s, level, slot, *it, r[a + 3], r[a + 4], r[bb + 3], r[bb + 4],
+                          c.interfaces[k].branch_fields[n / 2], false);
+      records[k].branch_slots.push_back(slots[0]);
+      records[k].branch_slots.push_back(slots[1]);
+      i += 2 * kGrowthColumns;
     }
   }
 }

@@ -35,22 +35,34 @@
 
 namespace rupture {
 
-// Per row: time (s), tip (its index among the crack's tips, as in stress_intensity_NAME.csv),
-// end (0: the line's start, 1: its end), x, y (the new vertex, reference position, m), angle
-// (degrees, counterclockwise from the crack's direction at the tip, the chord above, to the new
-// segment; the first row's: from the drawn crack's direction), length (of
-// the segment, m), K_I, K_II (Pa m^1/2, what the criterion read).
+// Per row: time (s), tip (its index among the crack's tips, as in stress_intensity_NAME.csv;
+// 2 + b: the tip of branch b, solver/crack_branching.hpp), end (0: the line's start, 1: its
+// end; 2, 3: the tip at the line's start, end split there), x, y (the new vertex, reference
+// position, m; a split: the tip), angle (degrees, counterclockwise from the crack's direction at
+// the tip, the chord above, to the new segment; the first row's: from the drawn crack's
+// direction; a split: the half angle between its branches), length (of the segment, m; a split:
+// 0), K_I, K_II (Pa m^1/2, what the criterion read). A split row is followed by its two
+// branches' first segments (tips 2 + b, 3 + b: left, right of the running direction).
 inline constexpr std::size_t kGrowthColumns = 9;
+inline constexpr double kSplitAtStart = 2.0;  // end column of a split (+1: at the line's end)
 
-// One interface's growth (checkpointed); empty rows: it has not grown.
+// One interface's growth (checkpointed: the rows); empty rows: it has not grown.
 struct CrackGrowthRecord {
   std::vector<double> rows;
+  // The slots of its branches on its level, in tip-label order (derived from the rows: by the
+  // splits as they happen, by regrow_cracks on a restore).
+  std::vector<std::size_t> branch_slots;
   bool grown() const { return !rows.empty(); }
   double initiation_time() const { return grown() ? rows[0] : -1.0; }  // s
   double initial_angle() const { return grown() ? rows[5] : 0.0; }     // degrees
-  double length() const;                                              // grown length, m
-  int branches() const { return 0; }  // tips that split (branching: not yet)
+  double length() const;                                              // grown length, m (branches too)
+  int branches() const;                                               // how many times a tip split
 };
+
+// The speed of a tip (label and end as in the rows), m/s: the path it grew over the last
+// `window` (m, at least) divided by the time from that stretch's start to `now`; 0 before it
+// has grown that far.
+double tip_speed(const CrackGrowthRecord& record, int label, LineEnd end, double now, double window);
 
 // Reads every growing crack's tips and grows those the criterion lets grow (at most one segment
 // per tip and call). records: one per interface (resized).
@@ -59,7 +71,7 @@ void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& rec
 // A restored run: lays the recorded segments on the interfaces again (their geometry, the ties
 // and the tied nodes; the particles' fields and the interfaces' state come from the
 // checkpoint), so the run continues on the grown cracks.
-void regrow_cracks(const Case& c, RunState& s, const std::vector<CrackGrowthRecord>& records);
+void regrow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& records);
 
 // One segment on level L's interface `slot` at `tip`, ending at (x, y) (reference position):
 // the interface, the tie and, with flip_particles, the wedge's particles. `tip` as

@@ -1,0 +1,32 @@
+// rupture/solver/crack_cut.hpp
+// The geometry a growing crack's cut is made of, shared by growth and branching
+// (solver/crack_growth.cpp, solver/crack_branching.cpp): the body the crack was drawn in, a
+// frame around it for the cuts to run out to, and moving a particle to another velocity field
+// between sorts. Reference coordinates, m.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+
+#include "geometry/shape.hpp"
+#include "input/case.hpp"
+#include "solver/state.hpp"
+
+namespace rupture {
+
+// The body crack k was drawn in: its shape and cut-outs, without the cuts of lines.
+Region crack_body(const Case& c, std::size_t k);
+
+// A frame around the body, the line and p with room to spare (more than a tie's lead).
+Box cut_frame(const Region& body, const Polyline& line, const Point& p, double h);
+
+inline bool near(const Point& a, double x, double y, double tol) { return std::hypot(a.x - x, a.y - y) <= tol; }
+
+// The unit vector from `from` to `to`.
+Point unit(const Point& from, const Point& to);
+
+// Particle q of level L goes to `field`: the strips' node rows per field (ScatterPlan::row_lo,
+// row_hi, from the last sort) take its row in the new field, so the tile keeps its stencil; the
+// caller sets L.window_drift = INFINITY once it has moved them (the windows are measured again).
+void move_particle_to_field(State& L, std::size_t q, std::uint8_t field);
+
+}  // namespace rupture
