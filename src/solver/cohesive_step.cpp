@@ -329,26 +329,108 @@ std::vector<std::size_t> bonded_nodes(const Grid& g, const InterfaceSpec& spec) 
   return out;
 }
 
-void tie_bonded_nodes(State& s, TieWhat what) {
-  GridFields& G = s.fields;
-  for (const BondedTie& b : s.bonded) {
-    const int up = b.upper_field, lo = b.lower_field;
-    auto tie = [&](std::vector<double>& v, std::size_t n) {
-      const std::size_t iu = G.index(up, n), il = G.index(lo, n);  // in both windows
-      v[iu] = v[il] = v[iu] + v[il];
-    };
-    for (std::size_t n : b.nodes) {
-      if (what == TieWhat::mass_momentum) {
-        for (auto* v : {&G.mass, &G.mom_x, &G.mom_y}) tie(*v, n);
-      } else if (what == TieWhat::force) {
-        tie(G.force_x, n);
-        tie(G.force_y, n);
-      } else {
-        tie(G.remap_x, n);
-        tie(G.remap_y, n);
+namespace {
+
+// A node two ties reach, with its fields joined: the groups of fields its ties connect (a
+// junction where a crack split, solver/crack_branching.hpp: left part, wedge and right part are
+// one body ahead of both new tips). group[f] = the group's smallest field, -1 if untied.
+struct JunctionNode {
+  std::size_t node;
+  std::vector<int> fields;  // the fields its ties join, each once
+  std::vector<int> group;   // per entry of fields: its group's first entry
+};
+
+// The nodes in more than one tie sharing a field; marks them in `shared` (per tie, per node).
+std::vector<JunctionNode> junction_nodes(const State& s, std::vector<std::vector<char>>& shared) {
+  std::vector<std::pair<std::size_t, std::size_t>> at;  // (node, tie)
+  for (std::size_t t = 0; t < s.bonded.size(); ++t)
+    for (const std::size_t n : s.bonded[t].nodes) at.push_back({n, t});
+  std::vector<JunctionNode> out;
+  shared.assign(s.bonded.size(), {});
+  if (s.bonded.size() < 2) return out;
+  std::sort(at.begin(), at.end());
+  for (std::size_t i = 0; i < at.size();) {
+    std::size_t j = i + 1;
+    while (j < at.size() && at[j].first == at[i].first) ++j;
+    if (j - i > 1) {
+      JunctionNode J{at[i].first, {}, {}};
+      for (std::size_t e = i; e < j; ++e)
+        for (const int f : {s.bonded[at[e].second].upper_field, s.bonded[at[e].second].lower_field})
+          if (std::find(J.fields.begin(), J.fields.end(), f) == J.fields.end()) J.fields.push_back(f);
+      // Two ties of disjoint field pairs (four fields) stay two pairs: only ties that share a
+      // field join. Union of the pairs by relabelling to the smallest entry.
+      const std::size_t m = J.fields.size();
+      J.group.resize(m);
+      for (std::size_t a = 0; a < m; ++a) J.group[a] = int(a);
+      auto find = [&](int a) {
+        while (J.group[std::size_t(a)] != a) a = J.group[std::size_t(a)];
+        return a;
+      };
+      for (std::size_t e = i; e < j; ++e) {
+        const BondedTie& b = s.bonded[at[e].second];
+        const int a = int(std::find(J.fields.begin(), J.fields.end(), b.upper_field) - J.fields.begin());
+        const int c = int(std::find(J.fields.begin(), J.fields.end(), b.lower_field) - J.fields.begin());
+        const int ra = find(a), rc = find(c);
+        J.group[std::size_t(std::max(ra, rc))] = std::min(ra, rc);
+      }
+      for (std::size_t a = 0; a < m; ++a) J.group[a] = find(int(a));
+      if (m < 2 * (j - i)) {  // some ties share a field: the node is joined here, not pairwise
+        for (std::size_t e = i; e < j; ++e) {
+          std::vector<char>& mark = shared[at[e].second];
+          const std::vector<std::size_t>& nodes = s.bonded[at[e].second].nodes;
+          mark.resize(nodes.size(), 0);
+          mark[std::size_t(std::lower_bound(nodes.begin(), nodes.end(), at[i].first) - nodes.begin())] = 1;
+        }
+        out.push_back(std::move(J));
       }
     }
+    i = j;
   }
+  return out;
+}
+
+}  // namespace
+
+void tie_bonded_nodes(State& s, TieWhat what) {
+  GridFields& G = s.fields;
+  // Nodes where ties sharing a field meet (a split crack's junction) sum every field the ties
+  // join, once; any other tied node sums its tie's two fields (two ties of one pair of fields
+  // at a node are one tie: bonded_nodes lists the node once).
+  std::vector<std::vector<char>> shared;
+  const std::vector<JunctionNode> junctions = junction_nodes(s, shared);
+  auto each = [&](auto&& tie) {
+    if (what == TieWhat::mass_momentum) {
+      for (auto* v : {&G.mass, &G.mom_x, &G.mom_y}) tie(*v);
+    } else if (what == TieWhat::force) {
+      tie(G.force_x);
+      tie(G.force_y);
+    } else {
+      tie(G.remap_x);
+      tie(G.remap_y);
+    }
+  };
+  for (std::size_t t = 0; t < s.bonded.size(); ++t) {
+    const BondedTie& b = s.bonded[t];
+    const int up = b.upper_field, lo = b.lower_field;
+    const std::vector<char>& skip = shared[t];
+    for (std::size_t i = 0; i < b.nodes.size(); ++i) {
+      if (!skip.empty() && skip[i]) continue;
+      const std::size_t n = b.nodes[i];
+      const std::size_t iu = G.index(up, n), il = G.index(lo, n);  // in both windows
+      each([&](std::vector<double>& v) { v[iu] = v[il] = v[iu] + v[il]; });
+    }
+  }
+  for (const JunctionNode& J : junctions)
+    each([&](std::vector<double>& v) {
+      for (std::size_t a = 0; a < J.fields.size(); ++a) {
+        if (J.group[a] != int(a)) continue;  // each group once, from its first field
+        double sum = 0.0;
+        for (std::size_t e = 0; e < J.fields.size(); ++e)
+          if (J.group[e] == int(a)) sum += v[G.index(J.fields[e], J.node)];
+        for (std::size_t e = 0; e < J.fields.size(); ++e)
+          if (J.group[e] == int(a)) v[G.index(J.fields[e], J.node)] = sum;
+      }
+    });
 }
 
 namespace {

@@ -30,11 +30,9 @@ WaveSpeeds crack_wave_speeds(const Case& c, std::size_t k) {
   return wave_speeds(c.materials[std::size_t(c.bodies[std::size_t(c.interfaces[k].upper_body)].material)], c.plane);
 }
 
-std::array<std::size_t, 2> split_crack_tip(const Case& c, std::size_t k, RunState& s, int level,
-                                           std::size_t slot, const CrackTip& tip, double left_x,
-                                           double left_y, double right_x, double right_y,
-                                           int wedge_field, bool flip_particles) {
-  State& L = s.levels[std::size_t(level)];
+std::array<std::size_t, 2> split_crack_tip(const Case& c, std::size_t k, State& L, std::size_t slot,
+                                           const CrackTip& tip, double left_x, double left_y, double right_x,
+                                           double right_y, int wedge_field, bool flip_particles) {
   const double h = L.grid.cell_size(), tol = 1e-6 * h;
   const Point a{tip.frame.x, tip.frame.y}, pl{left_x, left_y}, pr{right_x, right_y};
   const Point dl = unit(a, pl), dr = unit(a, pr);
@@ -101,8 +99,6 @@ std::array<std::size_t, 2> split_crack_tip(const Case& c, std::size_t k, RunStat
     L.bonded.push_back({sp.upper_field, sp.lower_field, bonded_nodes(L.grid, sp)});
     L.interfaces.push_back(std::move(ci));
     slots[std::size_t(b)] = L.interfaces.size() - 1;
-    s.interface_levels.push_back(level);
-    s.interface_slots.push_back(slots[std::size_t(b)]);
   }
   return slots;
 }

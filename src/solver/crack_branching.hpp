@@ -12,9 +12,10 @@
 //    there was intact), their segments separated on a pre-crack and intact on a cohesive crack.
 //  - W is the crack's next kept field (InterfaceSpec::branch_fields): the particles of L and R
 //    between the two cuts (by reference position) move to it.
-// The new interfaces are registered in the RunState (interface_levels, interface_slots) after
-// the case's: they are in the energy balance, the interface files and checkpoints; their
-// growth is recorded in the parent crack's CrackGrowthRecord (tip labels 2, 3, ...).
+// The caller registers the new interfaces in the RunState (interface_levels, interface_slots)
+// after the case's, so that they are in the energy balance, the interface files and
+// checkpoints; their growth is recorded in the parent crack's CrackGrowthRecord (tip labels
+// 2, 3, ...; solver/crack_growth.hpp).
 // Units: m.
 #pragma once
 #include <array>
@@ -24,20 +25,20 @@
 #include "cohesive/interface_growth.hpp"
 #include "fracture/branching_criterion.hpp"
 #include "input/case.hpp"
-#include "solver/run_state.hpp"
+#include "solver/state.hpp"
 
 namespace rupture {
 
 // The wave speeds of the material crack k runs in (plane strain or stress as the case).
 WaveSpeeds crack_wave_speeds(const Case& c, std::size_t k);
 
-// Splits `tip` of the interface at (level, slot) of crack k: left branch to (left_x, left_y),
+// Splits `tip` of the interface at `slot` of level L (crack k's or one of its branches): left
+// branch (counterclockwise from the running direction) to (left_x, left_y),
 // right branch to (right_x, right_y) (reference positions, inside the body), the wedge in
 // `wedge_field`; with flip_particles the wedge's particles move to it (a restored run takes
 // fields from its checkpoint). Returns the slots of the left and right branches on the level.
-std::array<std::size_t, 2> split_crack_tip(const Case& c, std::size_t k, RunState& s, int level,
-                                           std::size_t slot, const CrackTip& tip, double left_x,
-                                           double left_y, double right_x, double right_y,
-                                           int wedge_field, bool flip_particles);
+std::array<std::size_t, 2> split_crack_tip(const Case& c, std::size_t k, State& L, std::size_t slot,
+                                           const CrackTip& tip, double left_x, double left_y, double right_x,
+                                           double right_y, int wedge_field, bool flip_particles);
 
 }  // namespace rupture

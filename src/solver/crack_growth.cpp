@@ -269,8 +269,7 @@ bool row_of_tip(const std::vector<double>& r, std::size_t i, int label, LineEnd 
 template <class Grow>
 bool split_tip(const Case& c, std::size_t k, RunState& s, int level, std::size_t slot, const CrackTip& tip,
                const Grow& g, CrackGrowthRecord& record) {
-  const State& L = s.levels[std::size_t(level)];
-  const double h = L.grid.cell_size(), step = c.interfaces[k].growth.step * h;
+  const double h = s.levels[std::size_t(level)].grid.cell_size(), step = c.interfaces[k].growth.step * h;
   const Region body = crack_body(c, k);
   const TipFrame& f = tip.frame;
   const double axis = g.angle;
@@ -284,8 +283,10 @@ bool split_tip(const Case& c, std::size_t k, RunState& s, int level, std::size_t
     if (std::hypot(end[b].x - f.x, end[b].y - f.y) <= 1e-6 * h) return false;
   }
   const std::size_t n = record.branch_slots.size();
-  const std::array<std::size_t, 2> slots = split_crack_tip(c, k, s, level, slot, tip, end[0].x, end[0].y, end[1].x,
-                                                           end[1].y, c.interfaces[k].branch_fields[n / 2], true);
+  const std::array<std::size_t, 2> slots =
+      split_crack_tip(c, k, s.levels[std::size_t(level)], slot, tip, end[0].x, end[0].y, end[1].x, end[1].y,
+                      c.interfaces[k].branch_fields[n / 2], true);
+  for (const std::size_t b : slots) s.interface_levels.push_back(level), s.interface_slots.push_back(b);
   const double column = kSplitAtStart + (tip.end == LineEnd::start ? 0.0 : 1.0);
   record.rows.insert(record.rows.end(), {s.time, double(g.label), column, f.x, f.y, g.split * kDegree, 0.0, g.K_I, g.K_II});
   for (int b = 0; b < 2; ++b) {
@@ -297,6 +298,18 @@ bool split_tip(const Case& c, std::size_t k, RunState& s, int level, std::size_t
   }
   return true;
 }
+// The shortest distance from p to the polyline, m.
+double distance_to_line(const Polyline& line, const Point& p) {
+  double best = INFINITY;
+  for (std::size_t i = 0; i + 1 < line.num_vertices(); ++i) {
+    const double ax = line.x[i], ay = line.y[i], bx = line.x[i + 1] - ax, by = line.y[i + 1] - ay;
+    const double l2 = bx * bx + by * by;
+    const double u = l2 > 0.0 ? std::clamp(((p.x - ax) * bx + (p.y - ay) * by) / l2, 0.0, 1.0) : 0.0;
+    best = std::min(best, std::hypot(p.x - ax - u * bx, p.y - ay - u * by));
+  }
+  return best;
+}
+
 }  // namespace
 
 double tip_speed(const CrackGrowthRecord& record, int label, LineEnd end, double now, double window) {
@@ -377,8 +390,14 @@ void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& rec
       // The end piece's turn is read only by the weak plane's criterion (off the plane).
       const double kink = is.growth.plane_fracture_energy > 0.0 && !plane.on
                               ? end_piece_turn(spec, tips[t].tip, h) : 0.0;
-      const GrowthDecision g = decide_growth(is.growth, KI, KII, mat.e_prime, tips[t].front, plane.on, kink);
+      GrowthDecision g = decide_growth(is.growth, KI, KII, mat.e_prime, tips[t].front, plane.on, kink);
       if (!g.grow) continue;
+      // A branch whose sibling's line is still inside its outer J domain runs straight on: the
+      // domain integrals assume one crack in the domain, and their K_II is the sibling's faces'.
+      const int label = tips[t].label;
+      if (label >= 2 && distance_to_line(L.interfaces[records[k].branch_slots[std::size_t((label - 2) ^ 1)]].spec.geometry(),
+                                         {tips[t].tip.frame.x, tips[t].tip.frame.y}) < is.j_domains.back() * h)
+        g.angle = 0.0;
       const TipFrame& f = tips[t].tip.frame;
       const double cs = std::cos(g.angle), sn = std::sin(g.angle);
       double dx = cs * f.e1x - sn * f.e1y, dy = sn * f.e1x + cs * f.e1y;
@@ -475,8 +494,9 @@ void regrow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& r
                                      k, i / kGrowthColumns));
       const std::size_t a = i + kGrowthColumns, bb = i + 2 * kGrowthColumns;
       const std::array<std::size_t, 2> slots =
-          split_crack_tip(c, k, s, level, slot, *it, r[a + 3], r[a + 4], r[bb + 3], r[bb + 4],
+          split_crack_tip(c, k, L, slot, *it, r[a + 3], r[a + 4], r[bb + 3], r[bb + 4],
                           c.interfaces[k].branch_fields[n / 2], false);
+      for (const std::size_t b : slots) s.interface_levels.push_back(level), s.interface_slots.push_back(b);
       records[k].branch_slots.push_back(slots[0]);
       records[k].branch_slots.push_back(slots[1]);
       i += 2 * kGrowthColumns;
