@@ -298,6 +298,10 @@ bool split_tip(const Case& c, std::size_t k, RunState& s, int level, std::size_t
   }
   return true;
 }
+// The smallest outer J domain radius a branch near its sibling is read with, in cells: the
+// smallest of the default domains (4, 6, 8 cells), with which every reading is made.
+constexpr double kSmallestDomain = 4.0;
+
 // The shortest distance from p to the polyline, m.
 double distance_to_line(const Polyline& line, const Point& p) {
   double best = INFINITY;
@@ -351,25 +355,44 @@ void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& rec
       int label;
       CrackFront front;
       bool read;
+      double domains = 1.0;  // the J domains' scale (a branch near its sibling; 0: too near to read K_II)
     };
     std::vector<Tip> tips;
+    const double r_out = is.j_domains.back() * h;
     for (std::size_t l = 0; l < lines.size(); ++l) {
       const CohesiveInterface& in = L.interfaces[lines[l].slot];
-      const std::vector<CrackTip> t = precrack_tips(in.spec, 1e-6 * h, is.j_domains.back() * h);
+      const std::vector<CrackTip> t = precrack_tips(in.spec, 1e-6 * h, r_out);
       for (std::size_t i = 0; i < t.size(); ++i) {
         // The cohesive criterion cannot grow a tip whose end segment is still loading, whatever
         // K: such a tip is not read (the J domains are most of what growth costs a step).
         const CrackFront front = crack_front(in, t[i].end);
-        tips.push_back({l, t[i], lines[l].branch < 0 ? int(i) : 2 + lines[l].branch, front,
-                        is.growth.criterion != GrowthCriterion::cohesive || front != CrackFront::loading});
+        Tip tip{l, t[i], lines[l].branch < 0 ? int(i) : 2 + lines[l].branch, front,
+                is.growth.criterion != GrowthCriterion::cohesive || front != CrackFront::loading};
+        // A branch whose sibling's line passes inside its outer J domain: the domain integrals
+        // assume one crack in the domain, so its domains shrink to keep the sibling out, down to
+        // an outer radius of kSmallestDomain cells; nearer than that it is not steered (below).
+        if (lines[l].branch >= 0) {
+          const std::size_t sibling = records[k].branch_slots[std::size_t(lines[l].branch ^ 1)];
+          const double d = distance_to_line(L.interfaces[sibling].spec.geometry(), {t[i].frame.x, t[i].frame.y});
+          if (d < r_out) tip.domains = d >= kSmallestDomain * h ? d / r_out : 0.0;
+        }
+        tips.push_back(tip);
       }
     }
     // The tips are read side by side (each read only looks at the level).
     std::vector<std::vector<TipIntegrals>> readings(tips.size());
 #pragma omp parallel for schedule(static, 1)
-    for (std::size_t t = 0; t < tips.size(); ++t)
-      if (tips[t].read)
-        readings[t] = read_tip(L, L.interfaces[lines[tips[t].line].slot].spec, tips[t].tip.frame, mat, s.time, initial);
+    for (std::size_t t = 0; t < tips.size(); ++t) {
+      if (!tips[t].read) continue;
+      const InterfaceSpec& spec = L.interfaces[lines[tips[t].line].slot].spec;
+      if (tips[t].domains == 1.0) {
+        readings[t] = read_tip(L, spec, tips[t].tip.frame, mat, s.time, initial);
+        continue;
+      }
+      InterfaceSpec near_sibling = spec;
+      for (double& r : near_sibling.j_domains) r *= std::max(tips[t].domains, kSmallestDomain * h / r_out);
+      readings[t] = read_tip(L, near_sibling, tips[t].tip.frame, mat, s.time, initial);
+    }
     struct Grow {
       std::size_t line;
       CrackTip tip;
@@ -392,12 +415,9 @@ void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& rec
                               ? end_piece_turn(spec, tips[t].tip, h) : 0.0;
       GrowthDecision g = decide_growth(is.growth, KI, KII, mat.e_prime, tips[t].front, plane.on, kink);
       if (!g.grow) continue;
-      // A branch whose sibling's line is still inside its outer J domain runs straight on: the
-      // domain integrals assume one crack in the domain, and their K_II is the sibling's faces'.
-      const int label = tips[t].label;
-      if (label >= 2 && distance_to_line(L.interfaces[records[k].branch_slots[std::size_t((label - 2) ^ 1)]].spec.geometry(),
-                                         {tips[t].tip.frame.x, tips[t].tip.frame.y}) < is.j_domains.back() * h)
-        g.angle = 0.0;
+      // A branch whose sibling's line is nearer than the smallest domain runs straight on: its
+      // K_II would be the sibling's faces'.
+      if (tips[t].domains == 0.0) g.angle = 0.0;
       const TipFrame& f = tips[t].tip.frame;
       const double cs = std::cos(g.angle), sn = std::sin(g.angle);
       double dx = cs * f.e1x - sn * f.e1y, dy = sn * f.e1x + cs * f.e1y;
