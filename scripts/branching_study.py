@@ -34,11 +34,9 @@ for h in sizes:
     nan = float("nan")
     if len(split):
         ts, xs, half = d["time"][split[0]], d["x"][split[0]], d["angle"][split[0]]
-        window = 8 * h  # the outer J domain's radius (j_domains default 4, 6, 8 cells)
+        speed = d["speed"][split[0]]  # as the criterion measured it (crack_path's speed column)
         before = t <= ts
         tb, xb = t[before], x[before]
-        j = np.nonzero(xb <= xb[-1] - window + 1e-12)[0]
-        speed = (xb[-1] - xb[j[-1]]) / (ts - tb[j[-1]]) if len(j) else nan
         # Largest speed over 2 mm of path before the split.
         peak = 0.0
         for i in range(len(xb)):

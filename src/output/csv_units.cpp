@@ -63,6 +63,17 @@ const std::vector<CsvColumn>& csv_columns() {
       {"stations/*.csv", "ux", "m", "body station: the particle's displacement since t = 0"},
       {"stations/*.csv", "uy", "m", "body station: the particle's displacement since t = 0"},
       {"stations/*.csv", "jump_rate", "m/s", "fault station: the last step's tangential jump increment over its dt (the stick spring's elastic jump included)"},
+      // solver/crack_growth.hpp: the paths of growing cracks
+      {"crack_path_*.csv", "time", "s", "when the segment was made (or the tip split)"},
+      {"crack_path_*.csv", "tip", "-", "the crack's tip (0, 1: its own; 2, 3, ...: a branch's)"},
+      {"crack_path_*.csv", "end", "-", "0, 1: a segment at the line's start, end; 2, 3: the tip there split"},
+      {"crack_path_*.csv", "x", "m", "the new vertex (a split: the tip), reference position"},
+      {"crack_path_*.csv", "y", "m", "the new vertex (a split: the tip), reference position"},
+      {"crack_path_*.csv", "angle", "deg", "from the crack's direction to the segment (a split: the half angle)"},
+      {"crack_path_*.csv", "length", "m", "of the segment (a split: 0)"},
+      {"crack_path_*.csv", "K_I", "Pa m^1/2", "what the criterion read"},
+      {"crack_path_*.csv", "K_II", "Pa m^1/2", "what the criterion read"},
+      {"crack_path_*.csv", "speed", "m/s", "the tip's speed over the outer J domain's radius of path (0 until it grew that far)"},
       // cohesive/mach_angle.cpp (SPEC E12)
       {"mach_angle*.csv", "time", "s", "reading time"},
       {"mach_angle*.csv", "tip_x", "m", "x of the tip"},

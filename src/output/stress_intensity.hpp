@@ -42,7 +42,8 @@ void sample_stress_intensity(const Case& c, RunState& s, const std::vector<Crack
 void write_stress_intensity(const std::string& dir, const Case& c,
                             const std::vector<TipSeries>& series);
 // DIR/crack_path_NAME.csv of every growing crack (solver/crack_growth.hpp: one row per grown
-// segment, its new vertex; the path is the drawn line with these vertices added at its ends).
+// segment, its new vertex, or split; the path is the drawn line with these vertices added at
+// its ends), with the tip's speed then in a last column, speed (m/s, tip_speed).
 void write_crack_paths(const std::string& dir, const Case& c,
                        const std::vector<CrackGrowthRecord>& growth);
 

@@ -316,16 +316,17 @@ double distance_to_line(const Polyline& line, const Point& p) {
 
 }  // namespace
 
-double tip_speed(const CrackGrowthRecord& record, int label, LineEnd end, double now, double window) {
+double tip_speed(const CrackGrowthRecord& record, int label, LineEnd end, double now, double window,
+                 std::size_t rows) {
   const std::vector<double>& r = record.rows;
   double grown = 0.0;
-  for (std::size_t i = r.size(); i >= kGrowthColumns;) {
+  for (std::size_t i = std::min(r.size(), rows * kGrowthColumns); i >= kGrowthColumns;) {
     i -= kGrowthColumns;
     if (!row_of_tip(r, i, label, end)) continue;
     // The window starts where this row's segment starts: its time is the row before's for
     // the same tip, or (its first) this row's own; the speed is the path since then over time.
     grown += r[i + 6];
-    if (grown < window) continue;
+    if (grown < window * (1.0 - 1e-9)) continue;  // whole segments summing to the window, to round-off
     for (std::size_t j = i; j >= kGrowthColumns;) {
       j -= kGrowthColumns;
       if (row_of_tip(r, j, label, end)) return now > r[j] ? (grown) / (now - r[j]) : 0.0;

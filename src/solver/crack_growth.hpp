@@ -61,8 +61,9 @@ struct CrackGrowthRecord {
 
 // The speed of a tip (label and end as in the rows), m/s: the path it grew over the last
 // `window` (m, at least) divided by the time from that stretch's start to `now`; 0 before it
-// has grown that far.
-double tip_speed(const CrackGrowthRecord& record, int label, LineEnd end, double now, double window);
+// has grown that far. From the first `rows` rows only (the speed when the last of them was made).
+double tip_speed(const CrackGrowthRecord& record, int label, LineEnd end, double now, double window,
+                 std::size_t rows = std::size_t(-1));
 
 // Reads every growing crack's tips and grows those the criterion lets grow (at most one segment
 // per tip and call). records: one per interface (resized).

@@ -84,7 +84,7 @@ def speed_at(now, rows):
     grown = 0.0
     for j in range(rows - 1, -1, -1):
         grown += length[j]
-        if grown >= 8 * h - 1e-15:
+        if grown >= 8 * h * (1 - 1e-9):
             return grown / (now - t[j - 1]) if j >= 1 and now > t[j - 1] else 0.0
     return 0.0
 
