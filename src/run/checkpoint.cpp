@@ -173,6 +173,7 @@ void fields(A& a, CohesiveInterface& c) {
   a("work", c.work);
 }
 
+// Derived and not stored: junctions (rebuilt from bonded at the first tie).
 // Rebuilt from the case by make_state() and not stored: grid, stiffness, boundary, absorbing, bonded,
 // cohesive_safety, loads (LoadState: particle ids from the t = 0 particles; indices, region
 // nodes and forces are rebuilt after the restored sort and in every step; the loads' work is

@@ -331,34 +331,38 @@ std::vector<std::size_t> bonded_nodes(const Grid& g, const InterfaceSpec& spec) 
 
 namespace {
 
-// A node two ties reach, with its fields joined: the groups of fields its ties connect (a
-// junction where a crack split, solver/crack_branching.hpp: left part, wedge and right part are
-// one body ahead of both new tips). group[f] = the group's smallest field, -1 if untied.
-struct JunctionNode {
-  std::size_t node;
-  std::vector<int> fields;  // the fields its ties join, each once
-  std::vector<int> group;   // per entry of fields: its group's first entry
-};
+// The ties' signature: their field pairs and nodes (FNV-1a over the values).
+std::uint64_t tie_signature(const std::vector<BondedTie>& ties) {
+  std::uint64_t h = 1469598103934665603ull;
+  auto mix = [&](std::uint64_t v) { h = (h ^ v) * 1099511628211ull; };
+  mix(ties.size());
+  for (const BondedTie& b : ties) {
+    mix(std::uint64_t(b.upper_field)), mix(std::uint64_t(b.lower_field)), mix(b.nodes.size());
+    for (const std::size_t n : b.nodes) mix(n);
+  }
+  return h;
+}
 
-// The nodes in more than one tie sharing a field; marks them in `shared` (per tie, per node).
-std::vector<JunctionNode> junction_nodes(const State& s, std::vector<std::vector<char>>& shared) {
+// The nodes in more than one tie where the ties share a field, and which ties' nodes they are.
+void find_junctions(const std::vector<BondedTie>& ties, TieJunctions& out) {
+  out.nodes.clear();
+  out.shared.assign(ties.size(), {});
+  if (ties.size() < 2) return;
   std::vector<std::pair<std::size_t, std::size_t>> at;  // (node, tie)
-  for (std::size_t t = 0; t < s.bonded.size(); ++t)
-    for (const std::size_t n : s.bonded[t].nodes) at.push_back({n, t});
-  std::vector<JunctionNode> out;
-  shared.assign(s.bonded.size(), {});
-  if (s.bonded.size() < 2) return out;
+  for (std::size_t t = 0; t < ties.size(); ++t)
+    for (const std::size_t n : ties[t].nodes) at.push_back({n, t});
   std::sort(at.begin(), at.end());
   for (std::size_t i = 0; i < at.size();) {
     std::size_t j = i + 1;
     while (j < at.size() && at[j].first == at[i].first) ++j;
     if (j - i > 1) {
-      JunctionNode J{at[i].first, {}, {}};
+      TieJunction J;
+      J.node = at[i].first;
       for (std::size_t e = i; e < j; ++e)
-        for (const int f : {s.bonded[at[e].second].upper_field, s.bonded[at[e].second].lower_field})
+        for (const int f : {ties[at[e].second].upper_field, ties[at[e].second].lower_field})
           if (std::find(J.fields.begin(), J.fields.end(), f) == J.fields.end()) J.fields.push_back(f);
-      // Two ties of disjoint field pairs (four fields) stay two pairs: only ties that share a
-      // field join. Union of the pairs by relabelling to the smallest entry.
+      // Ties of disjoint field pairs (two cracks' ties crossing, four fields) stay pairs: only
+      // ties that share a field join. Union of the pairs, each group labelled by its first entry.
       const std::size_t m = J.fields.size();
       J.group.resize(m);
       for (std::size_t a = 0; a < m; ++a) J.group[a] = int(a);
@@ -366,27 +370,24 @@ std::vector<JunctionNode> junction_nodes(const State& s, std::vector<std::vector
         while (J.group[std::size_t(a)] != a) a = J.group[std::size_t(a)];
         return a;
       };
+      auto entry = [&](int f) { return int(std::find(J.fields.begin(), J.fields.end(), f) - J.fields.begin()); };
       for (std::size_t e = i; e < j; ++e) {
-        const BondedTie& b = s.bonded[at[e].second];
-        const int a = int(std::find(J.fields.begin(), J.fields.end(), b.upper_field) - J.fields.begin());
-        const int c = int(std::find(J.fields.begin(), J.fields.end(), b.lower_field) - J.fields.begin());
-        const int ra = find(a), rc = find(c);
+        const int ra = find(entry(ties[at[e].second].upper_field)), rc = find(entry(ties[at[e].second].lower_field));
         J.group[std::size_t(std::max(ra, rc))] = std::min(ra, rc);
       }
       for (std::size_t a = 0; a < m; ++a) J.group[a] = find(int(a));
       if (m < 2 * (j - i)) {  // some ties share a field: the node is joined here, not pairwise
         for (std::size_t e = i; e < j; ++e) {
-          std::vector<char>& mark = shared[at[e].second];
-          const std::vector<std::size_t>& nodes = s.bonded[at[e].second].nodes;
+          const std::vector<std::size_t>& nodes = ties[at[e].second].nodes;
+          std::vector<char>& mark = out.shared[at[e].second];
           mark.resize(nodes.size(), 0);
-          mark[std::size_t(std::lower_bound(nodes.begin(), nodes.end(), at[i].first) - nodes.begin())] = 1;
+          mark[std::size_t(std::lower_bound(nodes.begin(), nodes.end(), J.node) - nodes.begin())] = 1;
         }
-        out.push_back(std::move(J));
+        out.nodes.push_back(std::move(J));
       }
     }
     i = j;
   }
-  return out;
 }
 
 }  // namespace
@@ -396,8 +397,14 @@ void tie_bonded_nodes(State& s, TieWhat what) {
   // Nodes where ties sharing a field meet (a split crack's junction) sum every field the ties
   // join, once; any other tied node sums its tie's two fields (two ties of one pair of fields
   // at a node are one tie: bonded_nodes lists the node once).
-  std::vector<std::vector<char>> shared;
-  const std::vector<JunctionNode> junctions = junction_nodes(s, shared);
+  if (s.bonded.size() >= 2) {
+    const std::uint64_t sig = tie_signature(s.bonded);
+    if (sig != s.junctions.signature || s.junctions.shared.size() != s.bonded.size())
+      find_junctions(s.bonded, s.junctions), s.junctions.signature = sig;
+  } else if (!s.junctions.nodes.empty() || !s.junctions.shared.empty()) {
+    s.junctions = TieJunctions{};
+  }
+  const TieJunctions& junctions = s.junctions;
   auto each = [&](auto&& tie) {
     if (what == TieWhat::mass_momentum) {
       for (auto* v : {&G.mass, &G.mom_x, &G.mom_y}) tie(*v);
@@ -412,15 +419,15 @@ void tie_bonded_nodes(State& s, TieWhat what) {
   for (std::size_t t = 0; t < s.bonded.size(); ++t) {
     const BondedTie& b = s.bonded[t];
     const int up = b.upper_field, lo = b.lower_field;
-    const std::vector<char>& skip = shared[t];
+    const std::vector<char>* skip = t < junctions.shared.size() ? &junctions.shared[t] : nullptr;
     for (std::size_t i = 0; i < b.nodes.size(); ++i) {
-      if (!skip.empty() && skip[i]) continue;
+      if (skip && !skip->empty() && (*skip)[i]) continue;
       const std::size_t n = b.nodes[i];
       const std::size_t iu = G.index(up, n), il = G.index(lo, n);  // in both windows
       each([&](std::vector<double>& v) { v[iu] = v[il] = v[iu] + v[il]; });
     }
   }
-  for (const JunctionNode& J : junctions)
+  for (const TieJunction& J : junctions.nodes)
     each([&](std::vector<double>& v) {
       for (std::size_t a = 0; a < J.fields.size(); ++a) {
         if (J.group[a] != int(a)) continue;  // each group once, from its first field

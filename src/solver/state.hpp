@@ -117,6 +117,20 @@ struct BondedTie {
   bool operator==(const BondedTie&) const = default;
 };
 
+// Grid nodes where ties that share a field meet (a split crack's junction; solver/
+// cohesive_step.cpp, tie_bonded_nodes): each sums every field its ties join, once. Derived from
+// State::bonded, rebuilt when its signature changes (not stored).
+struct TieJunction {
+  std::size_t node = 0;
+  std::vector<int> fields;  // the fields its ties join, each once
+  std::vector<int> group;   // per entry of fields: the first entry of its group (ties sharing a field)
+};
+struct TieJunctions {
+  std::uint64_t signature = 0;          // of the bonded ties it was built from
+  std::vector<TieJunction> nodes;
+  std::vector<std::vector<char>> shared;  // per tie, per node: 1 where it is a junction's
+};
+
 // Every member must also be written in run/checkpoint.cpp (restart is bitwise), or be listed
 // there as rebuilt from the case or per-step scratch.
 struct State {
@@ -131,6 +145,7 @@ struct State {
   ScatterPlan plan;
   std::vector<CohesiveInterface> interfaces;
   std::vector<BondedTie> bonded;  // per interface: its tied grid nodes (solver/cohesive_step.hpp)
+  TieJunctions junctions;         // derived from bonded (not stored)
   LoadState loads;  // [loads] (bc/loads.hpp): tractions, body forces, velocity regions
 
   Scheme scheme = Scheme::MUSL;
