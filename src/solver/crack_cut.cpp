@@ -31,6 +31,17 @@ Point unit(const Point& from, const Point& to) {
   return {(to.x - from.x) / l, (to.y - from.y) / l};
 }
 
+double distance_to_line(const Polyline& line, const Point& p) {
+  double best = INFINITY;
+  for (std::size_t i = 0; i + 1 < line.num_vertices(); ++i) {
+    const double ax = line.x[i], ay = line.y[i], bx = line.x[i + 1] - ax, by = line.y[i + 1] - ay;
+    const double l2 = bx * bx + by * by;
+    const double u = l2 > 0.0 ? std::clamp(((p.x - ax) * bx + (p.y - ay) * by) / l2, 0.0, 1.0) : 0.0;
+    best = std::min(best, std::hypot(p.x - ax - u * bx, p.y - ay - u * by));
+  }
+  return best;
+}
+
 void move_particle_to_field(State& L, std::size_t q, std::uint8_t field) {
   Particles& P = L.particles;
   P.field[q] = field;

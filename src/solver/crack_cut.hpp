@@ -24,6 +24,9 @@ inline bool near(const Point& a, double x, double y, double tol) { return std::h
 // The unit vector from `from` to `to`.
 Point unit(const Point& from, const Point& to);
 
+// The shortest distance from p to the polyline, m.
+double distance_to_line(const Polyline& line, const Point& p);
+
 // Particle q of level L goes to `field`: the strips' node rows per field (ScatterPlan::row_lo,
 // row_hi, from the last sort) take its row in the new field, so the tile keeps its stencil; the
 // caller sets L.window_drift = INFINITY once it has moved them (the windows are measured again).

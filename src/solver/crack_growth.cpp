@@ -147,18 +147,6 @@ std::vector<Point> current_cut(const InterfaceSpec& spec, const Box& frame, cons
 
 }  // namespace
 
-double CrackGrowthRecord::length() const {
-  double l = 0.0;
-  for (std::size_t i = 0; i + kGrowthColumns <= rows.size(); i += kGrowthColumns) l += rows[i + 6];
-  return l;
-}
-
-int CrackGrowthRecord::branches() const {
-  int n = 0;
-  for (std::size_t i = 0; i + kGrowthColumns <= rows.size(); i += kGrowthColumns) n += rows[i + 2] >= kSplitAtStart;
-  return n;
-}
-
 bool add_crack_segment(const Case& c, std::size_t k, State& L, std::size_t slot,
                        const CrackTip& tip, double x, double y, bool flip_particles) {
   CohesiveInterface& in = L.interfaces[slot];
@@ -254,15 +242,6 @@ std::vector<CrackLine> crack_lines(const RunState& s, std::size_t k, const Crack
   return lines;
 }
 
-// Whether record row i belongs to the tip (label, end): a branch's tip by its label, the
-// crack's own by its end (its label, the index among its tips, changes when the other stops).
-bool row_of_tip(const std::vector<double>& r, std::size_t i, int label, LineEnd end) {
-  if (r[i + 2] >= kSplitAtStart) return false;
-  if (label >= 2) return r[i + 1] == double(label);
-  return r[i + 1] < 2.0 && r[i + 2] == (end == LineEnd::start ? 0.0 : 1.0);
-}
-
-
 // Splits the tip g grows at into two branches at +-g.split from its growth direction (each a
 // growth step long, ending on the body's edge at most), and records the split and the two
 // first segments. False (nothing done) where a branch would leave the body at once.
@@ -298,43 +277,12 @@ bool split_tip(const Case& c, std::size_t k, RunState& s, int level, std::size_t
   }
   return true;
 }
+
 // The smallest outer J domain radius a branch near its sibling is read with, in cells: the
 // smallest of the default domains (4, 6, 8 cells), with which every reading is made.
 constexpr double kSmallestDomain = 4.0;
 
-// The shortest distance from p to the polyline, m.
-double distance_to_line(const Polyline& line, const Point& p) {
-  double best = INFINITY;
-  for (std::size_t i = 0; i + 1 < line.num_vertices(); ++i) {
-    const double ax = line.x[i], ay = line.y[i], bx = line.x[i + 1] - ax, by = line.y[i + 1] - ay;
-    const double l2 = bx * bx + by * by;
-    const double u = l2 > 0.0 ? std::clamp(((p.x - ax) * bx + (p.y - ay) * by) / l2, 0.0, 1.0) : 0.0;
-    best = std::min(best, std::hypot(p.x - ax - u * bx, p.y - ay - u * by));
-  }
-  return best;
-}
-
 }  // namespace
-
-double tip_speed(const CrackGrowthRecord& record, int label, LineEnd end, double now, double window,
-                 std::size_t rows) {
-  const std::vector<double>& r = record.rows;
-  double grown = 0.0;
-  for (std::size_t i = std::min(r.size(), rows * kGrowthColumns); i >= kGrowthColumns;) {
-    i -= kGrowthColumns;
-    if (!row_of_tip(r, i, label, end)) continue;
-    // The window starts where this row's segment starts: its time is the row before's for
-    // the same tip, or (its first) this row's own; the speed is the path since then over time.
-    grown += r[i + 6];
-    if (grown < window * (1.0 - 1e-9)) continue;  // whole segments summing to the window, to round-off
-    for (std::size_t j = i; j >= kGrowthColumns;) {
-      j -= kGrowthColumns;
-      if (row_of_tip(r, j, label, end)) return now > r[j] ? (grown) / (now - r[j]) : 0.0;
-    }
-    return 0.0;  // the first segments: no time before them to measure from
-  }
-  return 0.0;
-}
 
 void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& records) {
   records.resize(c.interfaces.size());
