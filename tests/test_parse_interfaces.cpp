@@ -436,5 +436,38 @@ TEST(ParseInterfaces, GrowthNeedsAPreCrackInsideOneBodyWithItsParameters) {
   }
 }
 
+TEST(ParseInterfaces, BranchingKeepsAFieldPerSplitAndNeedsAKCriterion) {
+  const Case c = parse_case(case_with(kInside + "growth = \"energy\"\nfracture_energy = 3.0\nbranching = \"yoffe\"\n"
+                                                "max_branches = 2" + kJoined));
+  const InterfaceSpec& w = c.interfaces.at(0);
+  EXPECT_EQ(w.growth.branching, BranchCriterion::yoffe);
+  EXPECT_EQ(w.growth.max_branches, 2);
+  // Two kept fields, after every body's, named after the crack; no body holds them.
+  ASSERT_EQ(w.branch_fields.size(), 2u);
+  const std::size_t n = c.field_names.size();
+  EXPECT_EQ(w.branch_fields[0], int(n) - 2);
+  EXPECT_EQ(w.branch_fields[1], int(n) - 1);
+  EXPECT_EQ(c.field_names[n - 2], "w.branch1");
+  EXPECT_EQ(c.field_names[n - 1], "w.branch2");
+  for (const BodySpec& b : c.bodies) EXPECT_LT(b.field, int(n) - 2) << b.name;
+  EXPECT_EQ(parse_grown(kInside + "growth = \"energy\"\nfracture_energy = 3.0\nbranching = \"yoffe\"").growth.max_branches, 1);
+  EXPECT_TRUE(parse_grown(kInside + "growth = \"energy\"\nfracture_energy = 3.0").branch_fields.empty());
+  const std::string e = kInside + "growth = \"energy\"\nfracture_energy = 3.0\n";
+  const std::vector<std::pair<std::string, std::vector<std::string>>> cases = {
+      {kInside + "branching = \"yoffe\"", {"'interface.w.branching' = \"yoffe\"", "needs growth"}},
+      {e + "max_branches = 2", {"'interface.w.max_branches' = 2", "needs branching = \"yoffe\""}},
+      {e + "branching = \"fork\"", {"'interface.w.branching' = \"fork\"", "yoffe"}},
+      {e + "branching = \"yoffe\"\nmax_branches = 0", {"'interface.w.max_branches' = 0", "1 to 8"}},
+      {e + "branching = \"yoffe\"\nmax_branches = 1.5", {"'interface.w.max_branches' = 1.5", "whole number"}},
+      {kBilinear + "growth = \"cohesive\"\nbranching = \"yoffe\"",
+       {"'interface.w.branching' = \"yoffe\"", "needs growth = \"energy\" or \"max_hoop\""}},
+  };
+  for (const auto& [lines, expect] : cases) {
+    const std::string msg = growth_error(lines);
+    EXPECT_FALSE(msg.empty()) << lines << ": no error raised";
+    for (const std::string& s : expect) EXPECT_NE(msg.find(s), std::string::npos) << "'" << s << "' not in: " << msg;
+  }
+}
+
 }  // namespace
 }  // namespace rupture
