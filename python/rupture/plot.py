@@ -326,16 +326,21 @@ def crack_paths(run):
 def grown_tips(paths, t):
     """[(name, x, y, running, direction)] of every grown end at time t (as tip_at gives a
     tracked tip): its last vertex made by t, running once it has grown, the direction of its last
-    segment."""
-    tips = []
+    segment; the one whose last vertex was made latest first (a branch's after a split)."""
+    tips, made = [], []
     for name, ends in paths.items():
         if isinstance(name, tuple):
             continue
         for times, xs, ys in ends:
             k = int(np.searchsorted(times, t, side="right")) - 1
+            if k < 0:  # a branch not split off yet
+                continue
             d = np.array([xs[k] - xs[k - 1], ys[k] - ys[k - 1]]) if k >= 1 else np.array([1.0, 0.0])
             tips.append((name, float(xs[k]), float(ys[k]), k >= 1, d / max(np.linalg.norm(d), 1e-300)))
-    return tips
+            made.append(float(times[k]) if k >= 1 else -np.inf)
+    # The tip that grew last first (after a split, a branch's rather than the stopped tip's).
+    order = sorted(range(len(tips)), key=lambda i: -made[i])
+    return [tips[i] for i in order]
 
 
 def box_any(mask, a, b):
