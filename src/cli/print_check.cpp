@@ -45,6 +45,10 @@ void print_check(const std::string& path, const Case& c) {
     fmt::print("body {} (field {} \"{}\"): {} particles\n", c.bodies[b].name, c.bodies[b].field,
                c.field_names[std::size_t(c.bodies[b].field)],
                s.particles_per_body[b]);
+  for (std::size_t k = 0; k < c.interfaces.size(); ++k)
+    for (const int f : c.interfaces[k].branch_fields)
+      fmt::print("field {} \"{}\": kept for the wedge of a split of interface {} (no particles until then)\n", f,
+                 c.field_names[std::size_t(f)], c.interface_names[k]);
   fmt::print("dt={:.6e}\n", s.dt);
   fmt::print("dt_cfl_limit={:.6e}\n", s.dt_cfl);
   fmt::print("dt_bulk_limit={:.6e}\n", s.dt_bulk);
