@@ -1,6 +1,7 @@
 // rupture/solver/crack_branching.cpp
 #include "solver/crack_branching.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "cohesive/interface.hpp"
