@@ -2,7 +2,10 @@
 //  - the stress equals C : sym(grad u) (stress and displacement forms agree), both plane modes;
 //  - the gradient is that of the displacement (central differences);
 //  - equilibrium div sigma = 0 (central differences of the stress);
-//  - the crack faces (theta = +-pi) are traction-free and open as the mode says.
+//  - the crack faces (theta = +-pi) are traction-free and open as the mode says;
+//  - the stresses ahead of the tip and around it are Anderson's Table 2.1 forms evaluated with
+//    sin and cos of theta / 2 and 3 theta / 2 directly (the code derives the latter by the
+//    triple-angle identities, both modes from one sine and cosine).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -71,6 +74,27 @@ TEST(NearTipField, faces_are_traction_free_and_open_by_the_mode) {
       EXPECT_NEAR(up.u1 - lo.u1, jump, 1e-6 * jump);
       EXPECT_NEAR(up.u2 - lo.u2, 0.0, 1e-6 * jump);
     }
+  }
+}
+
+TEST(NearTipField, stresses_are_andersons_table_at_every_angle) {
+  const double mu = 2e9, kappa = 1.8, r = 2e-3, pi = std::numbers::pi;
+  const double a = 1.0 / std::sqrt(2.0 * pi * r);
+  for (int i = -24; i <= 24; ++i) {
+    const double th = i == -24 ? -pi + 1e-12 : i * pi / 24.0;
+    const double s = std::sin(0.5 * th), c = std::cos(0.5 * th), s3 = std::sin(1.5 * th), c3 = std::cos(1.5 * th);
+    NearTipField I, II;
+    williams_fields(r * std::cos(th), r * std::sin(th), mu, kappa, I, II);
+    EXPECT_NEAR(I.s11, a * c * (1.0 - s * s3), 1e-13 * a) << th;
+    EXPECT_NEAR(I.s22, a * c * (1.0 + s * s3), 1e-13 * a) << th;
+    EXPECT_NEAR(I.s12, a * s * c * c3, 1e-13 * a) << th;
+    EXPECT_NEAR(II.s11, -a * s * (2.0 + c * c3), 1e-13 * a) << th;
+    EXPECT_NEAR(II.s22, a * s * c * c3, 1e-13 * a) << th;
+    EXPECT_NEAR(II.s12, a * c * (1.0 - s * s3), 1e-13 * a) << th;
+    // The one-mode call gives the same numbers.
+    const NearTipField one = williams_field(CrackMode::sliding, r * std::cos(th), r * std::sin(th), mu, kappa);
+    EXPECT_EQ(one.u1_2, II.u1_2);
+    EXPECT_EQ(one.s11, II.s11);
   }
 }
 

@@ -86,6 +86,8 @@ void print_run_result(const Case& c, const RunResult& r, const std::string& out_
   fmt::print("wall_seconds={:.3f}\n", r.wall_seconds);
   fmt::print("particle_updates_per_second={:.4e}\n", r.particle_updates_per_second);
   fmt::print("cohesive_seconds={:.3f}\n", r.cohesive_seconds);
+  if (std::any_of(c.interfaces.begin(), c.interfaces.end(), [](const InterfaceSpec& i) { return i.growth.on(); }))
+    fmt::print("growth_seconds={:.3f}\n", r.growth_seconds);
   if (r.ranks > 1) {  // distributed: how the particles were split, and how often they moved
     fmt::print("ranks={}\n", r.ranks);
     fmt::print("particles_per_rank={}\n", fmt::join(r.particles_per_rank, ","));

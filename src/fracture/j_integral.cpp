@@ -45,7 +45,7 @@ PointTerms point_terms(const DomainPoint& p, const Rotation& R, const TipFrame& 
                        const TipMaterial& m) {
   PointTerms t;
   R.vec(p.x - tip.x, p.y - tip.y, t.x1, t.x2);
-  t.r = std::hypot(t.x1, t.x2);
+  t.r = std::sqrt(t.x1 * t.x1 + t.x2 * t.x2);  // m (not hypot: slow, and lengths here are far from overflow)
   double e11, e12, e21, e22, u12, u22, w12, w22;
   R.ten(p.sxx, p.sxy, p.sxy, p.syy, t.s11, t.s12, t.s21, t.s22);
   R.ten(p.exx, p.exy, p.exy, p.eyy, e11, e12, e21, e22);
@@ -56,8 +56,7 @@ PointTerms point_terms(const DomainPoint& p, const Rotation& R, const TipFrame& 
   t.W = 0.5 * (t.s11 * e11 + t.s22 * e22 + 2.0 * t.s12 * e12);
   t.T = 0.5 * p.density * (t.v1 * t.v1 + t.v2 * t.v2);
   t.area = p.area, t.density = p.density;
-  for (int k = 0; k < 2; ++k)
-    t.f[k] = williams_field(k == 0 ? CrackMode::opening : CrackMode::sliding, t.x1, t.x2, m.mu, m.kappa);
+  williams_fields(t.x1, t.x2, m.mu, m.kappa, t.f[0], t.f[1]);
   return t;
 }
 
@@ -142,7 +141,7 @@ std::vector<TipIntegrals> tip_integrals(const std::vector<DomainPoint>& points, 
   for (std::size_t i = 0; i < points.size(); ++i) {
     double x1, x2;
     R.vec(points[i].x - tip.x, points[i].y - tip.y, x1, x2);
-    if (std::hypot(x1, x2) < reach) inside.push_back(i);
+    if (x1 * x1 + x2 * x2 < reach * reach) inside.push_back(i);
   }
   // The points' terms side by side (each its own; the sums below stay in one order, so the
   // result does not depend on the threads). A caller already inside a parallel region (several

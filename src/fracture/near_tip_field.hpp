@@ -28,5 +28,7 @@ double kolosov_kappa(double poisson_ratio, PlaneMode mode);
 // The unit-K field of `mode` at (x1, x2) in the tip frame (r > 0; theta in (-pi, pi], the upper
 // face at +pi), for shear modulus mu (Pa) and kappa.
 NearTipField williams_field(CrackMode mode, double x1, double x2, double mu, double kappa);
+// Both modes' at one point (the trigonometry evaluated once).
+void williams_fields(double x1, double x2, double mu, double kappa, NearTipField& opening, NearTipField& sliding);
 
 }  // namespace rupture

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <omp.h>
+
 namespace rupture {
 
 namespace {
@@ -18,8 +20,11 @@ struct LocalNodes {
   }
 };
 
-// The distance of (x, y) from the tip.
-double tip_distance(const TipFrame& t, double x, double y) { return std::hypot(x - t.x, y - t.y); }
+// The squared distance of (x, y) from the tip (a glibc hypot per point cost a tenth of the read).
+double tip_distance2(const TipFrame& t, double x, double y) {
+  const double dx = x - t.x, dy = y - t.y;
+  return dx * dx + dy * dy;
+}
 
 }  // namespace
 
@@ -45,36 +50,65 @@ void tip_domain_points(const Grid& g, const GridFields& fields, const Particles&
   // (a node's support is one cell plus a particle half-width).
   const double r_points = reach + h, r_map = reach + 3.0 * h;
   // Every particle is looked at (squared distances: a hypot per particle cost more than the
-  // integrals, when growth reads the tips every step).
-  std::vector<std::size_t> mapped;
+  // integrals, when growth reads the tips every step), by contiguous chunks side by side, joined
+  // in particle order (the maps' sums below are then the same on any number of threads).
+  // Scratch kept by the calling thread between reads (a fresh allocation every step page-faults
+  // in), named by references: inside the parallel loops a thread_local name would be each
+  // thread's own.
+  thread_local std::vector<std::size_t> kept_mapped, kept_near;
+  thread_local std::vector<Stencil1D> kept_sx, kept_sy;
+  thread_local LocalNodes kept_nodes;
+  std::vector<std::size_t>&mapped = kept_mapped, &near = kept_near;
+  std::vector<Stencil1D>&msx = kept_sx, &msy = kept_sy;
+  LocalNodes& L = kept_nodes;
+  mapped.clear(), near.clear();
   const double r2 = r_map * r_map, tx = tip.x, ty = tip.y;
   const double* __restrict px = P.x.data();
   const double* __restrict py = P.y.data();
-  for (std::size_t p = 0; p < P.size(); ++p) {
-    const double dx = px[p] - tx, dy = py[p] - ty;
-    if (dx * dx + dy * dy < r2) mapped.push_back(p);
+  const std::size_t np = P.size();
+#pragma omp parallel if (np > 16384)
+  {
+    std::vector<std::size_t> mine;
+    const std::size_t threads = std::size_t(omp_get_num_threads()), t = std::size_t(omp_get_thread_num());
+    const std::size_t from = np * t / threads, to = np * (t + 1) / threads;
+    for (std::size_t p = from; p < to; ++p) {
+      const double dx = px[p] - tx, dy = py[p] - ty;
+      if (dx * dx + dy * dy < r2) mine.push_back(p);
+    }
+#pragma omp for ordered schedule(static, 1)
+    for (std::size_t k = 0; k < threads; ++k) {
+#pragma omp ordered
+      mapped.insert(mapped.end(), mine.begin(), mine.end());
+    }
   }
   if (mapped.empty()) return;
-  LocalNodes L;
+  // Each mapped particle's GIMP stencils, once: the maps and the points' gradients use them.
+  const long nm = long(mapped.size());
+  msx.resize(mapped.size()), msy.resize(mapped.size());
+#pragma omp parallel for schedule(static) if (nm > 512)
+  for (long k = 0; k < nm; ++k) {
+    const std::size_t p = mapped[std::size_t(k)];
+    stencil(g.x, P.x[p], P.half_x[p], msx[std::size_t(k)]);
+    stencil(g.y, P.y[p], P.half_y[p], msy[std::size_t(k)]);
+  }
   L.fields = fields.num_fields;
   int imin = g.nodes_x(), imax = -1, jmin = g.nodes_y(), jmax = -1;
-  for (std::size_t p : mapped) {
-    const int i = stencil_first(g.x, P.x[p], P.half_x[p]), j = stencil_first(g.y, P.y[p], P.half_y[p]);
+  for (std::size_t k = 0; k < mapped.size(); ++k) {
+    const int i = msx[k].first, j = msy[k].first;
     imin = std::min(imin, i), imax = std::max(imax, i + 2), jmin = std::min(jmin, j), jmax = std::max(jmax, j + 2);
   }
   L.i0 = imin, L.j0 = jmin, L.nx = imax - imin + 1, L.ny = jmax - jmin + 1;
   const std::size_t size = std::size_t(L.fields) * std::size_t(L.nx) * std::size_t(L.ny);
   for (auto* v : {&L.m, &L.ux, &L.uy, &L.vx, &L.vy}) v->assign(size, 0.0);
-  Stencil1D sx, sy;
-  for (std::size_t p : mapped) {
-    stencil(g.x, P.x[p], P.half_x[p], sx);
-    stencil(g.y, P.y[p], P.half_y[p], sy);
+  for (std::size_t k = 0; k < mapped.size(); ++k) {
+    const std::size_t p = mapped[k];
+    const Stencil1D &sx = msx[k], &sy = msy[k];
     const double ux = P.x[p] - P.x0[p], uy = P.y[p] - P.y0[p];
     for (int b = 0; b < 3; ++b)
       for (int a = 0; a < 3; ++a) {
         const double w = P.mass[p] * sx.s[a] * sy.s[b];
-        const std::size_t k = L.at(P.field[p], sx.first + a, sy.first + b);
-        L.m[k] += w, L.ux[k] += w * ux, L.uy[k] += w * uy, L.vx[k] += w * P.vx[p], L.vy[k] += w * P.vy[p];
+        const std::size_t n = L.at(P.field[p], sx.first + a, sy.first + b);
+        L.m[n] += w, L.ux[n] += w * ux, L.uy[n] += w * uy, L.vx[n] += w * P.vx[p], L.vy[n] += w * P.vy[p];
       }
   }
   // Tied nodes: one body, both fields hold the sums.
@@ -90,18 +124,16 @@ void tip_domain_points(const Grid& g, const GridFields& fields, const Particles&
       const double inv = 1.0 / L.m[k];
       L.ux[k] *= inv, L.uy[k] *= inv, L.vx[k] *= inv, L.vy[k] *= inv;
     }
-  std::vector<std::size_t> near;
-  for (std::size_t p : mapped)
-    if (tip_distance(tip, P.x[p], P.y[p]) < r_points) near.push_back(p);
+  for (std::size_t k = 0; k < mapped.size(); ++k)
+    if (tip_distance2(tip, P.x[mapped[k]], P.y[mapped[k]]) < r_points * r_points) near.push_back(k);
   out.resize(near.size());
   // Each point's gradients from the maps, side by side (each writes its own point).
   const long n = long(near.size());
+  const double inv_dt = dt > 0.0 ? 1.0 / dt : 0.0;
 #pragma omp parallel for schedule(static) if (n > 256)
   for (long q = 0; q < n; ++q) {
-    const std::size_t p = near[std::size_t(q)];
-    Stencil1D qx, qy;
-    stencil(g.x, P.x[p], P.half_x[p], qx);
-    stencil(g.y, P.y[p], P.half_y[p], qy);
+    const std::size_t k = near[std::size_t(q)], p = mapped[k];
+    const Stencil1D &qx = msx[k], &qy = msy[k];
     const int f = P.field[p];
     DomainPoint d{};
     d.x = P.x[p], d.y = P.y[p];
@@ -115,13 +147,13 @@ void tip_domain_points(const Grid& g, const GridFields& fields, const Particles&
     for (int b = 0; b < 3; ++b)
       for (int a = 0; a < 3; ++a) {
         const int i = qx.first + a, j = qy.first + b;
-        const std::size_t k = L.at(f, i, j);
+        const std::size_t e = L.at(f, i, j);
         const double gx = qx.ds[a] * qy.s[b], gy = qx.s[a] * qy.ds[b], w = qx.s[a] * qy.s[b];
-        d.ux_x += L.ux[k] * gx, d.ux_y += L.ux[k] * gy, d.uy_x += L.uy[k] * gx, d.uy_y += L.uy[k] * gy;
-        d.vx_x += L.vx[k] * gx, d.vx_y += L.vx[k] * gy, d.vy_x += L.vy[k] * gx, d.vy_y += L.vy[k] * gy;
+        d.ux_x += L.ux[e] * gx, d.ux_y += L.ux[e] * gy, d.uy_x += L.uy[e] * gx, d.uy_y += L.uy[e] * gy;
+        d.vx_x += L.vx[e] * gx, d.vx_y += L.vx[e] * gy, d.vy_x += L.vy[e] * gx, d.vy_y += L.vy[e] * gy;
         if (dt > 0.0 && fields.holds(f, i, j)) {
-          const std::size_t e = fields.index(f, i, j);
-          d.ax += w * fields.dvel_x[e] / dt, d.ay += w * fields.dvel_y[e] / dt;
+          const std::size_t v = fields.index(f, i, j);
+          d.ax += w * fields.dvel_x[v] * inv_dt, d.ay += w * fields.dvel_y[v] * inv_dt;
         }
       }
     if (std::size_t(f) < initial.size()) {

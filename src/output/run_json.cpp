@@ -100,6 +100,7 @@ std::string run_json(const Case& c, const CaseSummary& s, const RunRecord& r) {
   t.insert("flip", c.solver.flip);
   t.insert("wall_seconds", r.wall_seconds);
   t.insert("cohesive_seconds", r.cohesive_seconds);
+  t.insert("growth_seconds", r.growth_seconds);
   t.insert("particle_updates_per_second", finite(r.particle_updates_per_second));
   toml::table speeds;
   for (std::size_t k = 0; k < c.materials.size(); ++k) {

@@ -38,6 +38,7 @@ struct RunRecord {
   double simulated_time = 0.0;    // s
   double wall_seconds = 0.0;
   double cohesive_seconds = 0.0;  // part of wall_seconds spent in the cohesive phases
+  double growth_seconds = 0.0;    // part of wall_seconds spent in crack growth (tips read, segments laid)
   double particle_updates_per_second = 0.0;
   int threads = 1;
   int ranks = 1;  // processes of a distributed run (mpirun -n N)

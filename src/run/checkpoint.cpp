@@ -463,6 +463,7 @@ void fields(A& a, RunContext& c) {
   a("schedule.tips", c.tip_schedule);
   a("interface_files", c.interface_files);
   a("wall_before", c.wall_before);
+  a("growth_seconds", c.growth_seconds);
   a("segments", c.segments);
   a("run_id", c.run_id);
 }

@@ -388,6 +388,7 @@ void check_restored(const RunContext& ctx, const CheckpointBaseline& fresh, cons
   ck.at_least("run.eps", ctx.eps, 0.0);
   ck.count("run.interface_files", ctx.interface_files, 0, 1L << 30, "files written");
   ck.at_least("run.wall_before", ctx.wall_before, 0.0);
+  ck.at_least("run.growth_seconds", ctx.growth_seconds, 0.0);
   ck.count("run.segments", ctx.segments, 1, 1L << 30, "1 + resumptions");
 }
 

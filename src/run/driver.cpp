@@ -7,6 +7,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
 #include <fmt/format.h>
 
@@ -97,9 +98,11 @@ RunResult run_case(const Case& c, const RunOptions& options) {
       // Crack growth (solver/crack_growth.hpp): the tips read, and grown, after the step and
       // before the outputs and the checkpoint see it.
       if (synced && growing) {
+        const auto t0 = std::chrono::steady_clock::now();
         grow_cracks(c, s, ctx.growth);
         for (std::size_t k = 0; k < ctx.cracks.size() && k < c.interfaces.size(); ++k)
           if (c.interfaces[k].growth.on()) ctx.cracks[k].follow(s.interface(k), true);
+        ctx.growth_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       }
       for (const std::unique_ptr<Output>& out : outputs.each_step) {
         if ((synced || !out->needs_synchronized_state()) && out->due(s.time, eps, last))

@@ -62,6 +62,7 @@ struct RunResult {
   double wall_seconds = 0.0;           // s
   double particle_updates_per_second = 0.0;
   double cohesive_seconds = 0.0;       // wall time in the cohesive phases, s
+  double growth_seconds = 0.0;         // wall time in crack growth (tips read, segments laid), s
   double energy_balance_error = 0.0;   // relative, largest over the history after 1 us
   double energy_balance_error_final = 0.0;  // relative, last history sample
   std::vector<CrackSummary> cracks;    // one per cohesive interface

@@ -62,6 +62,7 @@ struct RunContext {
   std::function<void(RunState&, std::vector<CrackGrowthRecord>&)> regrow;
   int interface_files = 0;   // interface/*.csv written so far
   double wall_before = 0.0;  // wall seconds of earlier segments (resumed runs)
+  double growth_seconds = 0.0;  // wall time in crack growth (tips read, segments laid), whole run, s
   int segments = 1;          // 1 + number of resumptions
   std::string run_id;        // the run's identity (run.json "run_id"): a resume checks it
 };

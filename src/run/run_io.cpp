@@ -206,6 +206,7 @@ void fill_record(RunIo& io) {
   r.particle_updates_per_second =
       r.wall_seconds > 0 ? double(io.total_particles) * double(s.step) / r.wall_seconds : 0.0;
   r.cohesive_seconds = s.cohesive_seconds;
+  r.growth_seconds = io.ctx.growth_seconds;
   r.kinetic_energy = e.kinetic;
   r.strain_energy = e.strain;
   r.external_work = e.external_work;

@@ -80,6 +80,7 @@ void add_totals(RunIo& io, RunResult& result, long first_step) {
   result.energy_balance_error = record.energy_balance_error;
   result.energy_balance_error_final = record.energy_balance_error_final;
   result.cohesive_seconds = s.cohesive_seconds;
+  result.growth_seconds = record.growth_seconds;
   if (s.halo) {
     result.migrations = halo_of(s).migrations;
     const long steps = std::max(1L, s.step - first_step);  // this process's steps

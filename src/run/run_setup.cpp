@@ -67,11 +67,11 @@ std::vector<StationProbe> set_up(RunContext& r, const Case& c, const std::string
   const Grid& g = s.run_grid();
   for (std::size_t k = 0; k < s.num_interfaces(); ++k) {
     const CohesiveInterface& ci = s.interface(k);
-    // The cell width along the line at node k (the width in the line's direction).
-    auto cell_along = [&](std::size_t k) {
-      const int i = std::clamp(g.x.cell_of(ci.x0[k]), 0, g.x.cells - 1);
-      const int j = std::clamp(g.y.cell_of(ci.y0[k]), 0, g.y.cells - 1);
-      return std::fabs(ci.node_ny[k]) * g.x.width(i) + std::fabs(ci.node_nx[k]) * g.y.width(j);
+    // The cell width along the line at node n (the width in the line's direction).
+    auto cell_along = [&](std::size_t n) {
+      const int i = std::clamp(g.x.cell_of(ci.x0[n]), 0, g.x.cells - 1);
+      const int j = std::clamp(g.y.cell_of(ci.y0[n]), 0, g.y.cells - 1);
+      return std::fabs(ci.node_ny[n]) * g.x.width(i) + std::fabs(ci.node_nx[n]) * g.y.width(j);
     };
     // Two cells at the end of the cohesive line; a daughter crack needs an intact ligament of
     // one cell (the smaller at the line's two ends) between it and the main crack.

@@ -184,14 +184,21 @@ bool add_crack_segment(const Case& c, std::size_t k, State& L, std::size_t slot,
     if (frame_side(frame, old_cut.back()) != frame_side(frame, new_cut.back())) wb = frame;
     const Particles& P = L.particles;
     const std::uint8_t up = std::uint8_t(in.spec.upper_field), lo = std::uint8_t(in.spec.lower_field);
-    for (std::size_t q = 0; q < P.size(); ++q) {
+    // Which change sides, looked at side by side; then moved in particle order.
+    std::vector<std::uint8_t> flips(P.size(), 0);
+    const long np = long(P.size());
+#pragma omp parallel for schedule(static) if (np > 16384)
+    for (long i = 0; i < np; ++i) {
+      const std::size_t q = std::size_t(i);
       if (P.field[q] != up && P.field[q] != lo) continue;
       const double px = P.x0[q], py = P.y0[q];
       if (px < wb.min[0] || px > wb.max[0] || py < wb.min[1] || py > wb.max[1]) continue;
-      if (contains(left_before, px, py) == contains(left_after, px, py)) continue;
-      move_particle_to_field(L, q, P.field[q] == up ? lo : up);
+      flips[q] = contains(left_before, px, py) != contains(left_after, px, py);
     }
-    L.window_drift = INFINITY;  // the windows: measure the particles again
+    bool moved = false;
+    for (std::size_t q = 0; q < P.size(); ++q)
+      if (flips[q]) move_particle_to_field(L, q, P.field[q] == up ? lo : up), moved = true;
+    if (moved) L.window_drift = INFINITY;  // the windows: measure the particles again
   }
   // The segment, its new node displaced as the tip node.
   const std::size_t tip_node = tip.end == LineEnd::start ? 0 : in.num_nodes() - 1;
@@ -328,19 +335,27 @@ void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& rec
         tips.push_back(tip);
       }
     }
-    // The tips are read side by side (each read only looks at the level).
+    // Several tips are read side by side (each read only looks at the level). One tip is read
+    // outside any parallel region: its read's own loops over its points are then parallel (a
+    // region nested in a one-thread region costs libgomp a new team every time: ten times the
+    // read on the Kalthoff-Winkler case).
     std::vector<std::vector<TipIntegrals>> readings(tips.size());
-#pragma omp parallel for schedule(static, 1)
-    for (std::size_t t = 0; t < tips.size(); ++t) {
-      if (!tips[t].read) continue;
+    const auto read = [&](std::size_t t) {
+      if (!tips[t].read) return;
       const InterfaceSpec& spec = L.interfaces[lines[tips[t].line].slot].spec;
       if (tips[t].domains == 1.0) {
         readings[t] = read_tip(L, spec, tips[t].tip.frame, mat, s.time, initial);
-        continue;
+        return;
       }
       InterfaceSpec near_sibling = spec;
       for (double& r : near_sibling.j_domains) r *= std::max(tips[t].domains, kSmallestDomain * h / r_out);
       readings[t] = read_tip(L, near_sibling, tips[t].tip.frame, mat, s.time, initial);
+    };
+    if (tips.size() == 1) {
+      read(0);
+    } else {
+#pragma omp parallel for schedule(static, 1)
+      for (std::size_t t = 0; t < tips.size(); ++t) read(t);
     }
     struct Grow {
       std::size_t line;
@@ -465,7 +480,7 @@ void regrow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& r
       const std::array<std::size_t, 2> slots =
           split_crack_tip(c, k, L, slot, *it, r[a + 3], r[a + 4], r[bb + 3], r[bb + 4],
                           c.interfaces[k].branch_fields[n / 2], false);
-      for (const std::size_t b : slots) s.interface_levels.push_back(level), s.interface_slots.push_back(b);
+      for (const std::size_t sl : slots) s.interface_levels.push_back(level), s.interface_slots.push_back(sl);
       records[k].branch_slots.push_back(slots[0]);
       records[k].branch_slots.push_back(slots[1]);
       i += 2 * kGrowthColumns;
