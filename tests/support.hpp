@@ -1,5 +1,8 @@
-// Shared helpers for tests: a small valid case as TOML text, with hooks to modify it.
+// Shared helpers for tests: small valid cases as TOML text (a strip; two bodies with an interface),
+// with hooks to modify them.
 #pragma once
+#include <gtest/gtest.h>
+
 #include <string>
 
 namespace rupture::test {
@@ -45,6 +48,45 @@ velocity = 1.0
 [output]
 history_interval = 0.1e-6
 )";
+}
+
+// Two bodies of their own fields, upper [0, 8] x [0, 4] mm over lower [0, 8] x [-4, 0] mm,
+// with [interface.w] holding `lines`.
+inline std::string case_with(const std::string& lines) {
+  return std::string(R"(
+title = "interface parsing"
+[model]
+plane = "strain"
+)") + test::kHomaliteToml +
+         R"(
+[grid]
+min = [0.0, -0.004]
+max = [0.008, 0.004]
+cell_size = 1e-3
+[bodies.upper]
+material = "homalite"
+min = [0.0, 0.0]
+max = [0.008, 0.004]
+[bodies.lower]
+material = "homalite"
+min = [0.0, -0.004]
+max = [0.008, 0.0]
+[interface.w]
+)" + lines + R"(
+[time]
+end = 1e-6
+)";
+}
+
+// The upper body over the lower one along y = 0, x in [2, 6] mm (case_with's [interface.w]).
+inline const std::string kGeometry = "upper_body = \"upper\"\nlower_body = \"lower\"\ny = 0.0\nstart = 0.002\nend = 0.006\nsegments = 3\n";
+
+// `text` with its first `from` replaced (the test's own setup must hold `from`).
+inline std::string replace(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << "test setup: '" << from << "' not in the lines";
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
 }
 
 }  // namespace rupture::test

@@ -27,39 +27,9 @@ using namespace rupture;
 
 namespace {
 
-// Two bodies of their own fields, upper [0, 8] x [0, 4] mm over lower [0, 8] x [-4, 0] mm,
-// joined by [interface.w] along y = 0 with `lines` (the law and its keys).
-std::string case_with(const std::string& lines) {
-  return std::string(R"(
-title = "law registry"
-[model]
-plane = "strain"
-)") + test::kHomaliteToml +
-         R"(
-[grid]
-min = [0.0, -0.004]
-max = [0.008, 0.004]
-cell_size = 1e-3
-[bodies.upper]
-material = "homalite"
-min = [0.0, 0.0]
-max = [0.008, 0.004]
-[bodies.lower]
-material = "homalite"
-min = [0.0, -0.004]
-max = [0.008, 0.0]
-[interface.w]
-upper_body = "upper"
-lower_body = "lower"
-y = 0.0
-start = 0.002
-end = 0.006
-segments = 3
-)" + lines + R"(
-[time]
-end = 1e-6
-)";
-}
+// Two bodies of their own fields joined by [interface.w] along y = 0 (tests/support.hpp) with
+// `lines` (the law and its keys).
+std::string case_with(const std::string& lines) { return test::case_with(test::kGeometry + lines); }
 
 std::string error_of(const std::string& lines) {
   try {

@@ -62,6 +62,13 @@ double cell_penalty_stiffness(const Case& c, const InterfaceSpec& is);
 void fail_on_invalid(Section& f, const std::string& problem,
                      const std::map<std::string, std::string>& keys);
 void parse_interfaces(Section& top, Case& c, ParseContext& ctx);
+// The crack keys of an [interface] table (input/parse_crack_growth.cpp), in this order, after the
+// law and geometry: drawn_open; stress_intensity and j_domains; growth and its parameters,
+// branching; the fields the branches' wedges will take (NAME.branchK, appended to c's fields).
+void parse_drawn_open(Section& f, InterfaceSpec& is);
+void parse_stress_intensity(Section& f, InterfaceSpec& is);
+void parse_growth(Section& f, InterfaceSpec& is, const Case& c);
+void reserve_branch_fields(Section& f, InterfaceSpec& is, Case& c, const std::string& name);
 // The bodies the name `s.key(key)` stands for (ParseContext::body_parts); an unknown name is an
 // InputError listing the names allowed, with the nearest as a hint.
 const std::vector<int>& named_bodies(Section& s, const std::string& key, const std::string& name,
