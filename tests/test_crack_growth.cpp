@@ -15,8 +15,10 @@
 #include "cohesive/interface_growth.hpp"
 #include "geometry/shape.hpp"
 #include "input/case_toml.hpp"
+#include "solver/cohesive_step.hpp"
 #include "solver/crack_growth.hpp"
 #include "solver/energy.hpp"
+#include "solver/nested_state.hpp"
 #include "solver/state.hpp"
 #include "solver/step.hpp"
 #include "support.hpp"
@@ -28,8 +30,9 @@ namespace {
 constexpr double kH = 0.5e-3;  // m
 
 // A 20 x 10 mm block with cuts up from its bottom edge, 3 mm deep, at each x of `cuts` (m),
-// pressed down at the top between them and held at the bottom corners.
-Case block_with_cuts(const std::vector<double>& cuts) {
+// pressed down at the top between them and held at the bottom corners. `refine`: keys added to
+// [grid] and tables after it (nested levels), with one step for every level.
+Case block_with_cuts(const std::vector<double>& cuts, const std::string& refine = "") {
   std::string interfaces;
   for (std::size_t k = 0; k < cuts.size(); ++k)
     interfaces += fmt::format(R"([interface.cut{0}]
@@ -47,6 +50,7 @@ min = [0.0, 0.0]
 max = [0.02, 0.01]
 cell_size = {1}
 particles_per_cell = 2
+{3}
 [bodies.block]
 material = "homalite"
 min = [0.0, 0.0]
@@ -74,8 +78,10 @@ component = "y"
 velocity = 0.0
 [time]
 end = 40e-6
+{4}
 )",
-                                test::kHomaliteToml, kH, interfaces));
+                                test::kHomaliteToml, kH, interfaces, refine,
+                                refine.empty() ? "" : "subcycling = \"none\""));
 }
 
 // Grows interface `k`'s upper tip by one segment of `length` at `degrees` from its direction.
@@ -102,12 +108,10 @@ std::vector<Point> cut_of(const InterfaceSpec& spec, const Box& frame) {
 
 // Particles of the crack's two fields on the wrong side of its cut: each side's should all hold
 // one field, the other side's the other one.
-int misplaced(const State& s, std::size_t k) {
-  const InterfaceSpec& spec = s.interfaces[k].spec;
+int misplaced(const InterfaceSpec& spec, const Particles& P) {
   const Box frame{{-0.001, -0.001}, {0.021, 0.011}};
   const Shape left = left_part(frame, cut_of(spec, frame));
   int left_up = 0, left_lo = 0, right_up = 0, right_lo = 0;
-  const Particles& P = s.particles;
   for (std::size_t p = 0; p < P.size(); ++p) {
     if (P.field[p] != spec.upper_field && P.field[p] != spec.lower_field) continue;
     const bool up = P.field[p] == spec.upper_field, is_left = contains(left, P.x0[p], P.y0[p]);
@@ -115,6 +119,7 @@ int misplaced(const State& s, std::size_t k) {
   }
   return std::min(left_up + right_lo, left_lo + right_up);
 }
+int misplaced(const State& s, std::size_t k) { return misplaced(s.interfaces[k].spec, s.particles); }
 
 }  // namespace
 
@@ -160,4 +165,50 @@ TEST(CrackGrowth, two_cracks_in_one_body_keep_their_ties_apart_and_the_energy_ba
   EXPECT_LT(err, 0.01) << "energy balance";
   std::printf("two cracks: tie %.3f mm from the other's at the closest, energy error %.3e after %ld steps\n",
               closest * 1e3, err, s.step);
+}
+
+// Nested levels: the cut and the block above it on 0.5 mm cells, the rest of the block on 1 mm
+// (left and right of x = 6 .. 14 mm). A segment turned by 60 degrees sends its new tie out to the
+// block's side through the coarse level, so particles there change sides too, and each level
+// ties the new extension on its own lattice. Without the other levels (the one-grid call) the
+// coarse level keeps particles on the wrong side: the check can fail.
+TEST(CrackGrowth, on_nested_levels_every_level_follows_the_turned_cut) {
+  const Case c = block_with_cuts({0.01025}, R"(coarse_cell_size = 1e-3
+refinement = "nested"
+[grid.refine.tip]
+min = [0.006, 0.0]
+max = [0.014, 0.01]
+level = 1)");
+  for (const bool all_levels : {true, false}) {
+    RunState s = make_nested_state(c);
+    ASSERT_EQ(s.levels.size(), 2u);
+    ASSERT_EQ(s.interface_levels[0], 1);
+    State& fine = s.levels[1];
+    State& coarse = s.levels[0];
+    const std::size_t slot = s.interface_slots[0];
+    int coarse_particles = 0;
+    for (const std::uint8_t f : coarse.particles.field) coarse_particles += f <= 1;
+    ASSERT_GT(coarse_particles, 0);
+    const InterfaceSpec& spec = fine.interfaces[slot].spec;
+    EXPECT_EQ(misplaced(spec, fine.particles) + misplaced(spec, coarse.particles), 0) << "as drawn";
+    const std::vector<State*> others = all_levels ? std::vector<State*>{&coarse} : std::vector<State*>{};
+    for (const double deg : {-60.0, 0.0}) {
+      const std::vector<CrackTip> tips = precrack_tips(spec, 1e-6 * kH);
+      ASSERT_EQ(tips.size(), 1u);
+      const TipFrame& f = tips[0].frame;
+      const double a = deg * std::numbers::pi / 180.0;
+      const double dx = std::cos(a) * f.e1x - std::sin(a) * f.e1y, dy = std::sin(a) * f.e1x + std::cos(a) * f.e1y;
+      add_crack_segment(c, 0, fine, slot, tips[0], f.x + 0.5 * kH * dx, f.y + 0.5 * kH * dy, true, others);
+    }
+    if (all_levels) {
+      EXPECT_EQ(misplaced(spec, fine.particles), 0);
+      EXPECT_EQ(misplaced(spec, coarse.particles), 0) << "the coarse level follows the cut";
+      // Each level's tie is the new extension's, on its own lattice (case interface 0).
+      EXPECT_EQ(fine.bonded[0].nodes, bonded_nodes(fine.grid, spec));
+      EXPECT_EQ(coarse.bonded[0].nodes, bonded_nodes(coarse.grid, spec));
+      EXPECT_FALSE(coarse.bonded[0].nodes.empty());
+    } else {
+      EXPECT_GT(misplaced(spec, coarse.particles), 0) << "the test would see a level left behind";
+    }
+  }
 }

@@ -233,11 +233,13 @@ std::string input_echo(const toml::table& root, const ParseContext& ctx) {
 
 // time.subcycling's default, once the whole case is known: per-level steps where they are
 // verified (docs/performance.md "Per-level time steps": MUSL, velocity conditions, interfaces
-// on one level), one dt for every level elsewhere. Given explicitly, "levels" keeps its
-// named refusals (solver/nested_state.cpp check_nested_support).
+// on one level, no crack that grows: docs/fracture.md "Growth on nested levels"), one dt for
+// every level elsewhere. Given explicitly, "levels" keeps its named refusals
+// (solver/nested_state.cpp check_nested_support).
 void set_default_subcycling(Case& c) {
   if (c.time.subcycling_given || !c.grid.nested) return;
   bool verified = c.solver.scheme == Scheme::MUSL && c.loads.empty() && c.absorbing_edges.empty();
+  for (const InterfaceSpec& spec : c.interfaces) verified = verified && !spec.growth.on();
   if (verified && c.interfaces.size() > 1) {
     const NestedGrid g = make_nested_grid(c.grid.min, c.grid.max, c.grid.coarse_cell_size, c.grid.cell_size,
                                           refine_boxes(c.grid), std::max(0.0, c.grid.margin));

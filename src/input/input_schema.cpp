@@ -231,9 +231,9 @@ std::vector<KeyDoc> build_schema() {
        "true"},
       {"time.subcycling", "string", "",
        "depends: \"levels\" on nested levels where verified (solver.scheme = \"MUSL\", no [loads], no "
-       "[absorbing], interfaces on one level), else \"none\"",
+       "[absorbing], interfaces on one level, no growing crack), else \"none\"",
        "\"none\" or \"levels\" (needs grid.refinement = \"nested\" and solver.scheme = \"MUSL\"; "
-       "not with [loads], [absorbing] or interfaces on two levels)",
+       "not with [loads], [absorbing], interfaces on two levels or a growing crack)",
        "per-level time steps: each nested level steps at its own CFL step (2^k finest steps, "
        "docs/performance.md); the interface's level and finer ones every finest step", "\"none\""},
 
@@ -564,7 +564,8 @@ std::vector<KeyDoc> build_schema() {
        "cohesive (law = bilinear), when the last segment is past the law's peak traction, or a "
        "cut's tip is pulled open; a "
        "crack (law = \"contact\", or a cohesive law that its new segments carry) drawn inside "
-       "one body (body = ...), on a uniform grid, one process; records K at the tips "
+       "one body (body = ...), on a uniform grid or nested levels (one step for all; the path "
+       "inside the level that holds the crack), one process; records K at the tips "
        "(stress_intensity)",
        "\"max_hoop\""},
       {"interface.*.toughness", "number", "Pa m^1/2", "none", "> 0; with growth = max_hoop",
@@ -583,7 +584,7 @@ std::vector<KeyDoc> build_schema() {
        "straight on along the crack", "\"max_hoop\""},
       {"interface.*.growth_step", "number", "cells", "0.5", "(0, 0.5]; with growth",
        "the length of one new segment (a tip grows at most one segment per step)", "0.5"},
-      {"interface.*.branching", "string", "", "none", "none, yoffe; with growth = energy or max_hoop",
+      {"interface.*.branching", "string", "", "none", "none, yoffe; with growth = energy or max_hoop, on a uniform grid",
        "when a growing tip splits in two: yoffe, once the tip's speed (over the outer J domain's "
        "radius of path) reaches the speed where the running mode-I field's largest hoop stress "
        "leaves the crack's axis (Yoffe 1951; Freund 1990), the two new tips leaving at the angles "

@@ -24,7 +24,7 @@ bool cohesive_crack_law(const InterfaceSpec& is) {
 }
 
 // branching, max_branches (fracture/branching_criterion.hpp; solver/crack_branching.hpp).
-void parse_branching(Section& f, GrowthLaw& g) {
+void parse_branching(Section& f, GrowthLaw& g, const Case& c) {
   const std::string b = f.string("branching", "none", {"none", "yoffe"});
   g.branching = b == "yoffe" ? BranchCriterion::yoffe : BranchCriterion::none;
   if (g.branching == BranchCriterion::none) {
@@ -32,6 +32,10 @@ void parse_branching(Section& f, GrowthLaw& g) {
       fail(f.key("max_branches"), show(*f.node("max_branches")), "needs branching = \"yoffe\"");
     return;
   }
+  if (c.grid.refined())
+    fail(f.key("branching"), "\"" + b + "\"",
+         "needs a uniform grid: a branch's ties and its wedge's field are laid on one grid (a crack "
+         "on nested levels grows, but does not split yet)");
   if (g.criterion == GrowthCriterion::cohesive)
     fail(f.key("branching"), "\"" + b + "\"",
          "needs growth = \"energy\" or \"max_hoop\" (Yoffe's criterion reads the running tip's K field; "
@@ -113,10 +117,10 @@ void parse_growth(Section& f, InterfaceSpec& is, const Case& c) {
          fmt::format("grows a crack drawn inside one body: give '{}' (the body it lies in) instead "
                      "of upper_body and lower_body",
                      f.key("body")));
-  if (c.grid.refined())
+  if (c.grid.refined() && !c.grid.nested)
     fail(f.key("growth"), shown,
-         "needs a uniform grid (no [grid.refine] boxes): a grown segment is measured in cells and "
-         "its tie and the flipped particles live on one level");
+         "needs a uniform grid or nested levels (grid.refinement = \"nested\"): on a graded grid a "
+         "grown segment, measured in cells, would change its length along the way");
   if (!is.stretches.empty())
     fail(f.key("growth"), shown, "is not allowed with stretches (their arc lengths would move as the crack grows)");
   if (precrack_tips(is, 1e-6 * c.grid.cell_size).empty())
@@ -163,7 +167,7 @@ void parse_growth(Section& f, InterfaceSpec& is, const Case& c) {
          "must be in (0, 0.5] (cells): a tip grows at most half a cell at a time, so a segment "
          "never jumps over the grid nodes that carry the fields on either side");
   is.stress_intensity = true;
-  parse_branching(f, g);
+  parse_branching(f, g, c);
 }
 
 // The fields the branch events' wedges will take, named NAME.branchK (K = 1, 2, ...).

@@ -65,7 +65,7 @@ std::array<std::size_t, 2> split_crack_tip(const Case& c, std::size_t k, State& 
       if (P.field[q] != left && P.field[q] != right) continue;
       if (contains(wedge, P.x0[q], P.y0[q])) move_particle_to_field(L, q, std::uint8_t(wedge_field));
     }
-    L.window_drift = INFINITY;  // the windows: measure the particles again
+    measure_windows_again(L);
   }
   // The two branches, their nodes displaced as the tip node.
   const CohesiveInterface& from = L.interfaces[slot];

@@ -57,4 +57,9 @@ void move_particle_to_field(State& L, std::size_t q, std::uint8_t field) {
   plan.row_hi[e] = std::max(plan.row_hi[e], row);
 }
 
+// A fresh or restored state's mark (solver/field_windows.cpp measures when the last check was not
+// the previous step): not a drift, so nothing checkpointed reads it, and nested levels' particles
+// are not moved between levels for it.
+void measure_windows_again(State& L) { L.windows_checked_step = -2; }
+
 }  // namespace rupture

@@ -29,7 +29,8 @@ double distance_to_line(const Polyline& line, const Point& p);
 
 // Particle q of level L goes to `field`: the strips' node rows per field (ScatterPlan::row_lo,
 // row_hi, from the last sort) take its row in the new field, so the tile keeps its stencil; the
-// caller sets L.window_drift = INFINITY once it has moved them (the windows are measured again).
+// caller calls measure_windows_again(L) once it has moved them.
+void measure_windows_again(State& L);  // the next step measures the fields' windows from the particles
 void move_particle_to_field(State& L, std::size_t q, std::uint8_t field);
 
 }  // namespace rupture

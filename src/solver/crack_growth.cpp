@@ -148,7 +148,8 @@ std::vector<Point> current_cut(const InterfaceSpec& spec, const Box& frame, cons
 }  // namespace
 
 bool add_crack_segment(const Case& c, std::size_t k, State& L, std::size_t slot,
-                       const CrackTip& tip, double x, double y, bool flip_particles) {
+                       const CrackTip& tip, double x, double y, bool flip_particles,
+                       const std::vector<State*>& others) {
   CohesiveInterface& in = L.interfaces[slot];
   const double h = L.grid.cell_size(), tol = 1e-6 * h;
   const Point a{tip.frame.x, tip.frame.y}, p{x, y};
@@ -182,23 +183,27 @@ bool add_crack_segment(const Case& c, std::size_t k, State& L, std::size_t slot,
         wb.min[0] = std::min(wb.min[0], q.x), wb.max[0] = std::max(wb.max[0], q.x),
         wb.min[1] = std::min(wb.min[1], q.y), wb.max[1] = std::max(wb.max[1], q.y);
     if (frame_side(frame, old_cut.back()) != frame_side(frame, new_cut.back())) wb = frame;
-    const Particles& P = L.particles;
     const std::uint8_t up = std::uint8_t(in.spec.upper_field), lo = std::uint8_t(in.spec.lower_field);
-    // Which change sides, looked at side by side; then moved in particle order.
-    std::vector<std::uint8_t> flips(P.size(), 0);
-    const long np = long(P.size());
+    const auto flip_level = [&](State& S) {
+      const Particles& P = S.particles;
+      // Which change sides, looked at side by side; then moved in particle order.
+      std::vector<std::uint8_t> flips(P.size(), 0);
+      const long np = long(P.size());
 #pragma omp parallel for schedule(static) if (np > 16384)
-    for (long i = 0; i < np; ++i) {
-      const std::size_t q = std::size_t(i);
-      if (P.field[q] != up && P.field[q] != lo) continue;
-      const double px = P.x0[q], py = P.y0[q];
-      if (px < wb.min[0] || px > wb.max[0] || py < wb.min[1] || py > wb.max[1]) continue;
-      flips[q] = contains(left_before, px, py) != contains(left_after, px, py);
-    }
-    bool moved = false;
-    for (std::size_t q = 0; q < P.size(); ++q)
-      if (flips[q]) move_particle_to_field(L, q, P.field[q] == up ? lo : up), moved = true;
-    if (moved) L.window_drift = INFINITY;  // the windows: measure the particles again
+      for (long i = 0; i < np; ++i) {
+        const std::size_t q = std::size_t(i);
+        if (P.field[q] != up && P.field[q] != lo) continue;
+        const double px = P.x0[q], py = P.y0[q];
+        if (px < wb.min[0] || px > wb.max[0] || py < wb.min[1] || py > wb.max[1]) continue;
+        flips[q] = contains(left_before, px, py) != contains(left_after, px, py);
+      }
+      bool moved = false;
+      for (std::size_t q = 0; q < P.size(); ++q)
+        if (flips[q]) move_particle_to_field(S, q, P.field[q] == up ? lo : up), moved = true;
+      if (moved) measure_windows_again(S);
+    };
+    flip_level(L);
+    for (State* S : others) flip_level(*S);
   }
   // The segment, its new node displaced as the tip node.
   const std::size_t tip_node = tip.end == LineEnd::start ? 0 : in.num_nodes() - 1;
@@ -231,7 +236,10 @@ bool add_crack_segment(const Case& c, std::size_t k, State& L, std::size_t slot,
     }
   in.spec.bonded_lines = ties;
   in.spec.bonded = !ties.empty();
-  L.bonded[slot].nodes = bonded_nodes(L.grid, in.spec);
+  // One grid: the level's ties follow its interfaces (slot); nested levels: every level has one
+  // per case interface (k).
+  L.bonded[others.empty() ? slot : k].nodes = bonded_nodes(L.grid, in.spec);
+  for (State* S : others) S->bonded[k].nodes = bonded_nodes(S->grid, in.spec);
   return edge;
 }
 
@@ -285,6 +293,37 @@ bool split_tip(const Case& c, std::size_t k, RunState& s, int level, std::size_t
   return true;
 }
 
+// The run's levels other than `level` (nested levels; none on one grid).
+std::vector<State*> other_levels(RunState& s, int level) {
+  std::vector<State*> others;
+  if (s.joined())
+    for (std::size_t l = 0; l < s.levels.size(); ++l)
+      if (int(l) != level) others.push_back(&s.levels[l]);
+  return others;
+}
+
+// On nested levels a tip is read from its level's particles and lattice alone, so every particle
+// its J domains map (within `reach` of the tip, m) must be on that level: the disk must lie inside
+// the level's rectangle (its sides on the domain's edge are open). Else the run stops here, with
+// the place and time: the reading would be wrong, not merely coarse.
+void check_tip_on_level(const Case& c, std::size_t k, const RunState& s, int level, const TipFrame& f,
+                        double reach) {
+  if (!s.joined()) return;
+  const Level& lv = s.grid.levels[std::size_t(level)];
+  const double p[2] = {f.x, f.y};
+  for (int d = 0; d < 2; ++d) {
+    const double lo = s.grid.min[d] + double(lv.lo[d]) * s.grid.finest;
+    const double hi = s.grid.min[d] + double(lv.hi[d]) * s.grid.finest;
+    if ((lv.outer_lo[d] || p[d] - reach >= lo) && (lv.outer_hi[d] || p[d] + reach <= hi)) continue;
+    throw SimulationError(fmt::format(
+        "crack growth: interface '{}' has its tip at ({:.6g}, {:.6g}) m at t = {:.6g} s, within {:.3g} m "
+        "(its J domains and the particles they map) of the border of nested level {} ({} from {:.6g} to "
+        "{:.6g} m): a tip is read on the level that holds its crack; widen that level's [grid.refine] box "
+        "to hold the crack's path",
+        c.interface_names[k], f.x, f.y, s.time, reach, level, d == 0 ? "x" : "y", lo, hi));
+  }
+}
+
 // The smallest outer J domain radius a branch near its sibling is read with, in cells: the
 // smallest of the default domains (4, 6, 8 cells), with which every reading is made.
 constexpr double kSmallestDomain = 4.0;
@@ -335,6 +374,10 @@ void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& rec
         tips.push_back(tip);
       }
     }
+    // The particles a read maps (tip_domain_points: the outer domain and three cells).
+    for (const Tip& t : tips)
+      if (t.read) check_tip_on_level(c, k, s, level, t.tip.frame, r_out + 3.0 * h);
+    const std::vector<State*> others = other_levels(s, level);
     // Several tips are read side by side (each read only looks at the level). One tip is read
     // outside any parallel region: its read's own loops over its points are then parallel (a
     // region nested in a one-thread region costs libgomp a new team every time: ten times the
@@ -413,7 +456,7 @@ void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& rec
       if (it == now.end()) continue;
       const double end_column = g.tip.end == LineEnd::start ? 0.0 : 1.0;
       if (g.split > 0.0 && split_tip(c, k, s, level, slot, *it, g, records[k])) continue;
-      const bool through = add_crack_segment(c, k, L, slot, *it, g.x, g.y, true);
+      const bool through = add_crack_segment(c, k, L, slot, *it, g.x, g.y, true, others);
       const double len = std::hypot(g.x - g.tip.frame.x, g.y - g.tip.frame.y);
       records[k].rows.insert(records[k].rows.end(),
                              {s.time, double(g.label), end_column, g.x, g.y, g.angle * kDegree, len, g.K_I, g.K_II});
@@ -433,7 +476,7 @@ void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& rec
         const double l = std::min(left, is.growth.step * h);
         const double x = l == left ? edge.x : f.x + dx * l / left, y = l == left ? edge.y : f.y + dy * l / left;
         const double turn = std::atan2(f.e1x * dy - f.e1y * dx, f.e1x * dx + f.e1y * dy);
-        const bool done = add_crack_segment(c, k, L, slot, *at, x, y, true);
+        const bool done = add_crack_segment(c, k, L, slot, *at, x, y, true, others);
         records[k].rows.insert(records[k].rows.end(),
                                {s.time, double(g.label), end_column, x, y, turn * kDegree, l, g.K_I, g.K_II});
         if (done || l == left) break;
@@ -448,6 +491,7 @@ void regrow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& r
     State& L = s.levels[std::size_t(level)];
     const double h = L.grid.cell_size();
     const std::vector<double>& r = records[k].rows;
+    const std::vector<State*> others = other_levels(s, level);
     records[k].branch_slots.clear();
     for (std::size_t i = 0; i + kGrowthColumns <= r.size(); i += kGrowthColumns) {
       const int label = int(r[i + 1]);
@@ -467,7 +511,7 @@ void regrow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& r
                                      "from (the checkpoint is not of this case)",
                                      k, i / kGrowthColumns, at == LineEnd::start ? "start" : "end"));
       if (!split) {
-        add_crack_segment(c, k, L, slot, *it, r[i + 3], r[i + 4], false);
+        add_crack_segment(c, k, L, slot, *it, r[i + 3], r[i + 4], false, others);
         continue;
       }
       // A split: the next two rows are its branches' first segments.

@@ -78,8 +78,11 @@ void regrow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& r
 // the interface, the tie and, with flip_particles, the wedge's particles. `tip` as
 // precrack_tips gives it with chord 0: its direction is the end piece's, along which the old
 // extension runs. Returns whether the tip reached the body's edge (no tie left there). For
-// tests and the two functions above.
+// tests and the two functions above. On nested levels `others` are the run's other levels: their
+// particles change sides with L's, and their tie of the case's interface k follows the new one
+// (every level ties every interface's bonded stretches on its own lattice, in case order).
 bool add_crack_segment(const Case& c, std::size_t k, State& L, std::size_t slot,
-                       const CrackTip& tip, double x, double y, bool flip_particles);
+                       const CrackTip& tip, double x, double y, bool flip_particles,
+                       const std::vector<State*>& others = {});
 
 }  // namespace rupture
