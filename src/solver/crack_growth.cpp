@@ -304,13 +304,31 @@ std::vector<State*> other_levels(RunState& s, int level) {
 
 // On nested levels a tip is read from its level's particles and lattice alone, so every particle
 // its J domains map (within `reach` of the tip, m) must be on that level: the disk must lie inside
-// the level's rectangle (its sides on the domain's edge are open). Else the run stops here, with
-// the place and time: the reading would be wrong, not merely coarse.
+// the level's rectangle (its sides on the domain's edge are open) and off the next finer level's
+// (whose particles are that level's). Else the run stops here, with the place and time: the
+// reading would be wrong, not merely coarse.
 void check_tip_on_level(const Case& c, std::size_t k, const RunState& s, int level, const TipFrame& f,
                         double reach) {
   if (!s.joined()) return;
   const Level& lv = s.grid.levels[std::size_t(level)];
   const double p[2] = {f.x, f.y};
+  if (std::size_t(level) + 1 < s.grid.levels.size()) {
+    const Level& fine = s.grid.levels[std::size_t(level) + 1];
+    double lo[2], hi[2], gap2 = 0.0;
+    for (int d = 0; d < 2; ++d) {
+      lo[d] = s.grid.min[d] + double(fine.lo[d]) * s.grid.finest;
+      hi[d] = s.grid.min[d] + double(fine.hi[d]) * s.grid.finest;
+      const double out = std::max({lo[d] - p[d], 0.0, p[d] - hi[d]});
+      gap2 += out * out;
+    }
+    if (gap2 < reach * reach)
+      throw SimulationError(fmt::format(
+          "crack growth: interface '{}' has its tip at ({:.6g}, {:.6g}) m at t = {:.6g} s, within {:.3g} m "
+          "(its J domains and the particles they map) of nested level {}'s box [{:.6g}, {:.6g}] x [{:.6g}, "
+          "{:.6g}] m, whose particles its level {} does not hold: a tip is read on the level that holds its "
+          "crack; keep finer [grid.refine] boxes that far from the crack's path, or put the crack in one",
+          c.interface_names[k], f.x, f.y, s.time, reach, level + 1, lo[0], hi[0], lo[1], hi[1], level));
+  }
   for (int d = 0; d < 2; ++d) {
     const double lo = s.grid.min[d] + double(lv.lo[d]) * s.grid.finest;
     const double hi = s.grid.min[d] + double(lv.hi[d]) * s.grid.finest;

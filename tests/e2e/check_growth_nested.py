@@ -18,8 +18,10 @@ Checks that could fail if growth on the levels were wrong:
   - a box too small to hold the path, [-20, 20] x [-20, 20] mm, stops the run (status failed)
     with a message naming the crack, the level and its border, before a tip's J domains reach
     across it;
+  - a crack on the coarse level with a finer box [30, 70] x [-20, 20] mm beside it stops the run
+    (its tips' domains would reach particles of the finer level) with both levels named;
   - per-level time steps (time.subcycling = "levels") with a growing crack stop before any work
-    with the key named (not verified: docs/fracture.md).
+    with the key named (not supported: docs/fracture.md).
 Usage: check_growth_nested.py RUPTURE WORK_DIR"""
 import json
 import math
@@ -124,6 +126,14 @@ told = [line for line in said.splitlines() if "crack growth" in line]
 print(f"small box: status {status}; {told[0] if told else '(no message)'}")
 if status != "failed" or "interface 'crack'" not in said or "nested level 1" not in said or "[grid.refine]" not in said:
     failures.append("a path leaving the level's box did not stop the run with the crack, level and box named")
+side, pd = run("nested_box_beside", "grid.coarse_cell_size=2e-3", 'grid.refinement="nested"',
+               "grid.refine.box.min=[0.03, -0.02]", "grid.refine.box.max=[0.07, 0.02]", "grid.refine.box.level=1",
+               'time.subcycling="none"')
+status = json.load(open(os.path.join(side, "run.json")))["status"]
+told = [line for line in (pd.stdout + pd.stderr).splitlines() if "crack growth" in line]
+print(f"finer box beside: status {status}; {told[0] if told else '(no message)'}")
+if status != "failed" or not told or "nested level 1's box" not in told[0] or "level 0 does not hold" not in told[0]:
+    failures.append("a crack whose tips' domains reach a finer level's particles did not stop with both levels named")
 sub, pl = run("nested_levels_steps", *(nested(0.04)[:-1] + ['time.subcycling="levels"']))
 told = [line for line in (pl.stdout + pl.stderr).splitlines() if "time.subcycling" in line]
 print(f"per-level steps: exit {pl.returncode}; {told[0] if told else '(no message)'}")
