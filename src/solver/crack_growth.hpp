@@ -24,12 +24,15 @@
 //    sort's).
 // A tip whose segment would leave the body ends on its edge: no tie is left there, the cut is
 // through, and the pieces separate. A tip that comes within a cell of the edge cuts through to
-// its nearest point the same way (the ligament left is below what the grid resolves). One process and one level (input/ refuses the others).
+// its nearest point the same way (the ligament left is below what the grid resolves). One
+// process; one grid, or nested levels with one step for all (the crack read and grown on the
+// level that holds it, the others following its cut; input/ refuses the rest).
 // Units: m, s, degrees in the records.
 #pragma once
 #include <vector>
 
 #include "input/case.hpp"
+#include "solver/crack_segment.hpp"
 #include "solver/crack_tips.hpp"
 #include "solver/run_state.hpp"
 
@@ -73,16 +76,5 @@ void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& rec
 // and the tied nodes; the particles' fields and the interfaces' state come from the
 // checkpoint), so the run continues on the grown cracks.
 void regrow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& records);
-
-// One segment on level L's interface `slot` at `tip`, ending at (x, y) (reference position):
-// the interface, the tie and, with flip_particles, the wedge's particles. `tip` as
-// precrack_tips gives it with chord 0: its direction is the end piece's, along which the old
-// extension runs. Returns whether the tip reached the body's edge (no tie left there). For
-// tests and the two functions above. On nested levels `others` are the run's other levels: their
-// particles change sides with L's, and their tie of the case's interface k follows the new one
-// (every level ties every interface's bonded stretches on its own lattice, in case order).
-bool add_crack_segment(const Case& c, std::size_t k, State& L, std::size_t slot,
-                       const CrackTip& tip, double x, double y, bool flip_particles,
-                       const std::vector<State*>& others = {});
 
 }  // namespace rupture
