@@ -9,10 +9,12 @@
 //    is below 3/4 of the bulk's (He & Hutchinson's competition with G(theta_c) / G_0 = 4/3).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
 #include "fracture/growth_criterion.hpp"
+#include "fracture/j_integral.hpp"
 
 namespace rupture {
 namespace {
@@ -166,6 +168,50 @@ TEST(GrowthCriterion, CohesiveGrowsPastThePeakOrFromAPulledCut) {
   EXPECT_NEAR(d.angle * 180.0 / std::numbers::pi, -70.5288, 1e-3);
   law.direction = GrowthDirection::straight;
   EXPECT_EQ(decide_growth(law, 1e-12, 1.0, 1.0, CrackFront::softening).angle, 0.0);
+}
+
+}  // namespace
+}  // namespace rupture
+
+namespace rupture {
+namespace {
+
+// growth = "prescribed": a tip grows whenever its path plus one step is due by speed (t - start),
+// so N calls at the step's interval grow N steps (a tip that runs at the speed), none before start.
+TEST(GrowthCriterion, prescribed_tip_runs_at_its_speed) {
+  GrowthLaw law;
+  law.criterion = GrowthCriterion::prescribed;
+  law.direction = GrowthDirection::straight;
+  law.speed = 500.0, law.start = 1e-6;
+  const double step = 0.1e-3, dt = 0.03e-6;  // a step every 0.2 us; 6.67 calls per step
+  double grown = 0.0;
+  for (double t = 0.0; t <= 5e-6 + 1e-12; t += dt) {
+    const GrowthDecision d = decide_prescribed(law, 1e6, 0.3e6, grown, step, t);
+    if (t < 1e-6) EXPECT_FALSE(d.grow);
+    EXPECT_EQ(d.angle, 0.0);
+    if (d.grow) grown += step;
+    EXPECT_LE(grown, law.speed * std::max(t - law.start, 0.0) + 1e-15);    // never ahead of the schedule
+    EXPECT_GT(grown + step, law.speed * std::max(t - law.start, 0.0) - dt * law.speed);  // nor a step behind
+  }
+  EXPECT_NEAR(grown, 2.0e-3, step);
+  law.direction = GrowthDirection::max_hoop;
+  EXPECT_NEAR(decide_prescribed(law, 1e6, 0.3e6, 0.0, step, 2e-6).angle, hoop_stress_angle(1e6, 0.3e6), 1e-15);
+  EXPECT_FALSE(decide_growth(law, 1e9, 0.0, 1e9).grow);  // K does not move a prescribed tip
+}
+
+// The energy criterion of a running tip: G = (A_I K_I^2 + A_II K_II^2) / E' (Freund eq. 5.3.10).
+TEST(GrowthCriterion, energy_of_a_running_tip_takes_the_speed_factors) {
+  GrowthLaw law;
+  law.criterion = GrowthCriterion::energy;
+  law.fracture_energy = 100.0;
+  const double Ep = 5e9, KI = 0.6e6, KII = 0.2e6;
+  const RunningTipFactors A{1.5, 1.2};
+  const GrowthDecision still = decide_growth(law, KI, KII, Ep);
+  const GrowthDecision run = decide_growth(law, KI, KII, Ep, CrackFront::open, false, 0.0, A);
+  EXPECT_DOUBLE_EQ(still.driving, (KI * KI + KII * KII) / Ep);
+  EXPECT_DOUBLE_EQ(run.driving, (1.5 * KI * KI + 1.2 * KII * KII) / Ep);
+  EXPECT_FALSE(still.grow);  // 80 J/m^2
+  EXPECT_TRUE(run.grow);     // 113.6 J/m^2
 }
 
 }  // namespace

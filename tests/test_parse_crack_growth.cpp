@@ -158,3 +158,38 @@ TEST(ParseCrackGrowth, BranchingKeepsAFieldPerSplitAndNeedsAKCriterion) {
 
 }  // namespace
 }  // namespace rupture
+
+namespace rupture {
+namespace {
+
+// growth = "prescribed" (a generation-phase run) and running_tip: the speed is required and
+// positive, the criterion's own keys and the prescribed ones do not mix, running_tip needs
+// growth and a speed the running tip's field holds at (below 0.95 c_R of the body).
+TEST(ParseCrackGrowth, PrescribedGrowthAndRunningTip) {
+  const InterfaceSpec p = parse_grown(kInside + "growth = \"prescribed\"\ngrowth_speed = 300.0\ngrowth_start = 1e-6\n"
+                                                "running_tip = true");
+  EXPECT_EQ(p.growth.criterion, GrowthCriterion::prescribed);
+  EXPECT_EQ(p.growth.speed, 300.0);
+  EXPECT_EQ(p.growth.start, 1e-6);
+  EXPECT_TRUE(p.running_tip);
+  EXPECT_TRUE(p.stress_intensity);
+  EXPECT_FALSE(parse_grown(kInside + "growth = \"energy\"\nfracture_energy = 300.0").running_tip);  // the default
+  const auto has = [](const std::string& e, const std::string& part) {
+    EXPECT_NE(e.find(part), std::string::npos) << e;
+  };
+  has(growth_error(kInside + "growth = \"prescribed\""), "interface.w.growth_speed");
+  has(growth_error(kInside + "growth = \"prescribed\"\ngrowth_speed = -3.0"), "must be > 0");
+  has(growth_error(kInside + "growth = \"prescribed\"\ngrowth_speed = 300.0\ngrowth_start = -1.0"), "must be >= 0");
+  has(growth_error(kInside + "growth = \"prescribed\"\ngrowth_speed = 300.0\ntoughness = 1e6"), "takes growth_speed");
+  has(growth_error(kInside + "growth = \"max_hoop\"\ntoughness = 1e6\ngrowth_speed = 300.0"), "is for growth = \"prescribed\"");
+  has(growth_error(kInside + "running_tip = true"), "needs growth");
+  has(growth_error(kInside + "growth = \"prescribed\"\ngrowth_speed = 1e5\nrunning_tip = true"), "c_R");
+  has(growth_error(kInside + "growth = \"prescribed\"\ngrowth_speed = 300.0\nbranching = \"yoffe\""),
+      "interface.w.branching");
+  has(growth_error(kInside + "growth = \"energy\"\nfracture_energy = 300.0\nplane_fracture_energy = 100.0\n"
+                             "running_tip = true"),
+      "interface.w.running_tip");
+}
+
+}  // namespace
+}  // namespace rupture

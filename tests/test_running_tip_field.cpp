@@ -65,7 +65,9 @@ TEST(RunningTipField, gradients_and_the_steady_equation_of_motion) {
         }
       }
       // Not a static balance: at 0.9 c_R the inertia is most of the stress gradient somewhere.
-      if (frac == 0.9) EXPECT_GT(inertia, 0.5);
+      if (frac == 0.9) {
+        EXPECT_GT(inertia, 0.5);
+      }
     }
   }
 }

@@ -78,6 +78,10 @@ struct InterfaceSpec {
   std::vector<double> j_domains{4.0, 6.0, 8.0};
   // A pre-crack's tips grow by this criterion (solver/crack_growth.hpp; off: they stay).
   GrowthLaw growth;
+  // Read a growing tip as running at its speed (fracture/running_tip_field.hpp: the running
+  // tip's auxiliary fields, K of a running tip; the energy criterion's G with Freund's A_I, A_II);
+  // off: every tip read with the stationary forms.
+  bool running_tip = false;
   // The velocity fields kept for the wedges of growth.max_branches branch events, in order
   // (input/: named NAME.branchK; no particles until a tip splits, solver/crack_branching.hpp).
   std::vector<int> branch_fields;

@@ -41,9 +41,9 @@ GrowthDecision decide_on_plane(const GrowthLaw& law, double K_I, double K_II, do
 }  // namespace
 
 GrowthDecision decide_growth(const GrowthLaw& law, double K_I, double K_II, double e_prime,
-                             CrackFront front, bool on_plane, double kink) {
+                             CrackFront front, bool on_plane, double kink, const RunningTipFactors& running) {
   GrowthDecision d;
-  if (!law.on()) return d;
+  if (!law.on() || law.criterion == GrowthCriterion::prescribed) return d;  // K does not move it: decide_prescribed
   if (law.criterion == GrowthCriterion::energy && law.plane_fracture_energy > 0.0) {
     // A crack with a weak plane is a closed flaw's (decide_on_plane): K_I+ = max(K_I, 0) on the
     // plane and off it; off it, the kink's own intensities (header).
@@ -69,12 +69,23 @@ GrowthDecision decide_growth(const GrowthLaw& law, double K_I, double K_II, doub
     d.driving = hoop_stress_intensity(K_I, K_II, hoop);
     d.critical = law.toughness;
   } else {
-    d.driving = (K_I * K_I + K_II * K_II) / e_prime;
+    d.driving = (running.A_I * K_I * K_I + running.A_II * K_II * K_II) / e_prime;
     d.critical = law.fracture_energy;
   }
   // A tip whose faces press together (K_I < 0) stays: the Williams field of a closed crack
   // does not describe it (its faces carry contact instead).
   d.grow = K_I > 0.0 && d.driving >= d.critical;
+  return d;
+}
+
+GrowthDecision decide_prescribed(const GrowthLaw& law, double K_I, double K_II, double grown, double step,
+                                 double time) {
+  GrowthDecision d;
+  if (law.criterion != GrowthCriterion::prescribed) return d;
+  d.angle = law.direction == GrowthDirection::max_hoop ? hoop_stress_angle(K_I, K_II) : 0.0;
+  d.driving = time > law.start ? law.speed * (time - law.start) : 0.0;
+  d.critical = grown + step;
+  d.grow = d.driving >= d.critical * (1.0 - 1e-12);
   return d;
 }
 

@@ -14,6 +14,9 @@
 //    that has let go) grows as soon as it is pulled open (K_I > 0: a sharp tip's stress
 //    exceeds any strength, so the first segment, which then carries at most sigma_max, comes at
 //    once, as Camacho & Ortiz 1996 insert an extrinsic law where the strength is reached);
+//  - criterion prescribed (a generation-phase run: the tip's motion given, the fields it makes
+//    read; decide_prescribed): the tip grows whenever the path it has grown plus one step is
+//    within speed (t - start), so it runs at the given speed from the given time;
 //  - direction max_hoop: theta_c (hoop_stress_angle); straight: along the crack.
 //  - a weak plane (energy, plane_fracture_energy > 0): while the tip is still on the drawn
 //    line's straight extension, two ways compete (He & Hutchinson 1989): along the plane, with
@@ -33,9 +36,11 @@
 // Units: Pa m^1/2, J/m^2, radians.
 #pragma once
 
+#include "fracture/running_tip_field.hpp"
+
 namespace rupture {
 
-enum class GrowthCriterion { none, max_hoop, energy, cohesive };
+enum class GrowthCriterion { none, max_hoop, energy, cohesive, prescribed };
 enum class GrowthDirection { max_hoop, straight };
 // When a growing tip splits in two (fracture/branching_criterion.hpp; solver/crack_branching.hpp).
 enum class BranchCriterion { none, yoffe };
@@ -47,6 +52,8 @@ struct GrowthLaw {
   double fracture_energy = 0.0;  // G_c, J/m^2 (energy)
   double plane_fracture_energy = 0.0;  // G_c,p of the weak plane ahead, J/m^2 (energy; 0: none)
   double step = 0.5;             // length of one growth step, in cells (0, 0.5]
+  double speed = 0.0;            // prescribed: the tip's speed, m/s (> 0)
+  double start = 0.0;            // prescribed: when the tips start to run, s (>= 0)
   BranchCriterion branching = BranchCriterion::none;
   int max_branches = 0;          // how many times the crack's tips may split (each: a new field)
   bool on() const { return criterion != GrowthCriterion::none; }
@@ -84,8 +91,18 @@ struct GrowthDecision {
 // state (read by the cohesive criterion only). on_plane: the tip lies on the weak plane (the
 // drawn line's straight extension; read only with plane_fracture_energy); kink: off the plane,
 // the end segment's angle from the direction K was read in (radians, ccw; the same use).
+// running: a running tip's A_I, A_II (fracture/running_tip_field.hpp; K_I, K_II then read with
+// the running tip's fields): the energy criterion's G = (A_I K_I^2 + A_II K_II^2) / E' (Freund
+// eq. 5.3.10); max_hoop weighs the running tip's K against the same toughness (K_Ic read as the
+// running toughness K_ID, independent of speed).
 GrowthDecision decide_growth(const GrowthLaw& law, double K_I, double K_II, double e_prime,
                              CrackFront front = CrackFront::open, bool on_plane = false,
-                             double kink = 0.0);
+                             double kink = 0.0, const RunningTipFactors& running = {});
+
+// The prescribed criterion at `time` for a tip that has grown `grown` (m) and would grow a step
+// of `step` (m): it grows when grown + step <= speed (time - start) (to round-off), in the
+// law's direction; driving: the path due, critical: the path with the step (m).
+GrowthDecision decide_prescribed(const GrowthLaw& law, double K_I, double K_II, double grown, double step,
+                                 double time);
 
 }  // namespace rupture

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "fracture/near_tip_field.hpp"
+#include "fracture/running_tip_field.hpp"
 
 namespace rupture {
 
@@ -39,7 +40,13 @@ struct PointTerms {
   double s11, s12, s21, s22, u11, u21, w11, w21;
   double v1, v2, a1, a2, W, T, area, density;
   NearTipField f[2];
+  double f11[2][2];  // a running tip's u^a_i,11 per mode (unset for a stationary one), 1/m
 };
+
+// The running tip's speed, or 0 for a stationary one (below kRunningTipSpeed c_s).
+double running_speed(const TipMaterial& m) {
+  return m.speed >= kRunningTipSpeed * m.c_s && m.c_s > 0.0 ? m.speed : 0.0;
+}
 
 PointTerms point_terms(const DomainPoint& p, const Rotation& R, const TipFrame& tip,
                        const TipMaterial& m) {
@@ -56,7 +63,14 @@ PointTerms point_terms(const DomainPoint& p, const Rotation& R, const TipFrame& 
   t.W = 0.5 * (t.s11 * e11 + t.s22 * e22 + 2.0 * t.s12 * e12);
   t.T = 0.5 * p.density * (t.v1 * t.v1 + t.v2 * t.v2);
   t.area = p.area, t.density = p.density;
-  williams_fields(t.x1, t.x2, m.mu, m.kappa, t.f[0], t.f[1]);
+  const double v = running_speed(m);
+  if (v == 0.0) {
+    williams_fields(t.x1, t.x2, m.mu, m.kappa, t.f[0], t.f[1]);
+    return t;
+  }
+  RunningTipField f[2];
+  running_tip_fields(t.x1, t.x2, v, m.mu, WaveSpeeds{m.c_d, m.c_s, 0.0, 0.0}, f[0], f[1]);
+  for (int k = 0; k < 2; ++k) t.f[k] = f[k].f, t.f11[k][0] = f[k].u1_11, t.f11[k][1] = f[k].u2_11;
   return t;
 }
 
@@ -66,6 +80,7 @@ TipIntegrals integrate(const std::vector<PointTerms>& terms, const std::vector<D
   const double width = domain.outer - domain.inner;
   TipIntegrals out;
   double J = 0.0, M[2] = {0.0, 0.0};
+  const double v = running_speed(m);
   for (const PointTerms& t : terms) {
     const double r = t.r, x1 = t.x1, x2 = t.x2;
     if (r >= domain.outer) continue;
@@ -85,12 +100,19 @@ TipIntegrals integrate(const std::vector<PointTerms>& terms, const std::vector<D
     J += t.area * ((s11 * u11 + s21 * u21 - (t.W + t.T)) * q1 + (s12 * u11 + s22 * u21) * q2 +
                    t.density * (t.a1 * u11 + t.a2 * u21 - t.v1 * t.w11 - t.v2 * t.w21) * q);
     for (int k = 0; k < 2; ++k) {
-      if (q1 == 0.0 && q2 == 0.0 && (t.a1 == 0.0 && t.a2 == 0.0)) break;  // nothing to add
+      if (v == 0.0 && q1 == 0.0 && q2 == 0.0 && (t.a1 == 0.0 && t.a2 == 0.0)) break;  // nothing to add
       const NearTipField& f = t.f[k];
       const double cross = s11 * (f.u1_1) + s22 * (f.u2_2) + s12 * (f.u1_2 + f.u2_1);  // sigma : eps^a
       M[k] += t.area * ((s11 * f.u1_1 + s21 * f.u2_1 + f.s11 * u11 + f.s12 * u21 - cross) * q1 +
                         (s12 * f.u1_1 + s22 * f.u2_1 + f.s12 * u11 + f.s22 * u21) * q2 +
                         t.density * (t.a1 * f.u1_1 + t.a2 * f.u2_1) * q);
+      if (v == 0.0) continue;
+      // The running auxiliary field's kinetic terms (u^a_dot = -v u^a_,1): -T's cross term
+      // rho v v_k u^a_k,1 on q_,1, and rho (u^a_ddot_i u_i,1 - v_i u^a_dot_i,1 - u^a_dot_i v_i,1) q.
+      const double g1 = t.f11[k][0], g2 = t.f11[k][1];  // u^a_i,11
+      M[k] += t.area * t.density *
+              (v * (t.v1 * f.u1_1 + t.v2 * f.u2_1) * q1 +
+               (v * v * (g1 * u11 + g2 * u21) + v * (t.v1 * g1 + t.v2 * g2) + v * (f.u1_1 * t.w11 + f.u2_1 * t.w21)) * q);
     }
   }
   // Loaded faces: the boundary term of the divergence theorem that free faces do not have.
@@ -116,15 +138,28 @@ TipIntegrals integrate(const std::vector<PointTerms>& terms, const std::vector<D
     const double lo = std::max(r - 0.5 * f.length, 0.0), hi = r + 0.5 * f.length;
     const double share = 2.0 * (std::sqrt(hi) - std::sqrt(lo)) * std::sqrt(r);  // = l far away
     J -= share * (t1 * u11 + t2 * u21) * q;
-    for (int k = 0; k < 2; ++k) {
-      const NearTipField a =
-          williams_field(k == 0 ? CrackMode::opening : CrackMode::sliding, x1, x2, m.mu, m.kappa);
-      M[k] -= share * (t1 * a.u1_1 + t2 * a.u2_1) * q;
+    NearTipField a[2];
+    if (v == 0.0) {
+      williams_fields(x1, x2, m.mu, m.kappa, a[0], a[1]);
+    } else {
+      RunningTipField rf[2];
+      running_tip_fields(x1, x2, v, m.mu, WaveSpeeds{m.c_d, m.c_s, 0.0, 0.0}, rf[0], rf[1]);
+      a[0] = rf[0].f, a[1] = rf[1].f;
     }
+    for (int k = 0; k < 2; ++k) M[k] -= share * (t1 * a[k].u1_1 + t2 * a[k].u2_1) * q;
   }
   out.J = J;
-  out.K_I = 0.5 * m.e_prime * M[0];
-  out.K_II = 0.5 * m.e_prime * M[1];
+  if (v == 0.0) {
+    out.K_I = 0.5 * m.e_prime * M[0];
+    out.K_II = 0.5 * m.e_prime * M[1];
+    return out;
+  }
+  // J(K + K^a) - J(K) - J(K^a) = 2 K K^a A / E' = v^2 a / (mu c_s^2 D) K K^a per mode.
+  const double ad = std::sqrt(1.0 - v * v / (m.c_d * m.c_d)), as = std::sqrt(1.0 - v * v / (m.c_s * m.c_s));
+  const double D = 4.0 * ad * as - (1.0 + as * as) * (1.0 + as * as);
+  const double scale = m.mu * m.c_s * m.c_s * D / (v * v);
+  out.K_I = scale * M[0] / ad;
+  out.K_II = scale * M[1] / as;
   return out;
 }
 

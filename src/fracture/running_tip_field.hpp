@@ -29,6 +29,10 @@ namespace rupture {
 // the Williams field differs from it by O(v^2 / c^2) = 1e-6 there).
 inline constexpr double kRunningTipSpeed = 1e-3;  // of c_s
 
+// The fastest speed a tip is read at, as a fraction of c_R (the field and A_I, A_II are singular
+// at c_R; at 0.95 c_R, nu = 0.3 plane strain, A_I = 5.7: the reading is ill-conditioned beyond).
+inline constexpr double kRunningTipCap = 0.95;
+
 // The unit-K field and the second derivatives along x1 of its displacement (-: per m).
 struct RunningTipField {
   NearTipField f;

@@ -557,12 +557,13 @@ std::vector<KeyDoc> build_schema() {
        "the J domains' outer radii (circles about the tip; inner radius: "
        "half of each)",
        "[4.0, 6.0, 8.0]"},
-      {"interface.*.growth", "string", "", "none", "none, max_hoop, energy, cohesive",
+      {"interface.*.growth", "string", "", "none", "none, max_hoop, energy, cohesive, prescribed",
        "the crack's tips grow by this criterion (docs/fracture.md, \"Growth\"): max_hoop, when "
        "the hoop stress intensity in the maximum hoop stress direction reaches toughness "
        "(Erdogan-Sih); energy, when G = (K_I^2 + K_II^2) / E' reaches fracture_energy; "
        "cohesive (law = bilinear), when the last segment is past the law's peak traction, or a "
-       "cut's tip is pulled open; a "
+       "cut's tip is pulled open; prescribed, at growth_speed from growth_start (a generation-"
+       "phase run: the motion given, K read); a "
        "crack (law = \"contact\", or a cohesive law that its new segments carry) drawn inside "
        "one body (body = ...), on a uniform grid or nested levels (one step for all; the path "
        "inside the level that holds the crack), one process; records K at the tips "
@@ -582,6 +583,18 @@ std::vector<KeyDoc> build_schema() {
       {"interface.*.growth_direction", "string", "", "max_hoop", "max_hoop, straight; with growth",
        "the direction of a new segment: the maximum hoop stress direction from K_I, K_II, or "
        "straight on along the crack", "\"max_hoop\""},
+      {"interface.*.growth_speed", "number", "m/s", "none", "> 0; with growth = prescribed (below 0.95 c_R with running_tip)",
+       "the tips' speed: a tip grows a segment whenever its grown path plus the segment is within "
+       "growth_speed (t - growth_start)", "300.0"},
+      {"interface.*.growth_start", "number", "s", "0", ">= 0; with growth = prescribed",
+       "when the tips start to run", "1.0e-6"},
+      {"interface.*.running_tip", "boolean", "", "false",
+       "true, false; with growth (not with plane_fracture_energy)",
+       "read a growing tip as running at its speed (over the outer J domain's radius of path): K_I, "
+       "K_II from the interaction integral with the running tip's fields (Freund 1990, sec. 4.3) "
+       "and their kinetic terms, and the energy criterion's G = (A_I K_I^2 + A_II K_II^2) / E' "
+       "(docs/fracture.md, \"A running tip\"); false: the stationary forms at every speed",
+       "true"},
       {"interface.*.growth_step", "number", "cells", "0.5", "(0, 0.5]; with growth",
        "the length of one new segment (a tip grows at most one segment per step)", "0.5"},
       {"interface.*.branching", "string", "", "none", "none, yoffe; with growth = energy or max_hoop, on a uniform grid",

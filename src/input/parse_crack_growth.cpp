@@ -13,6 +13,8 @@
 #include "cohesive/polyline.hpp"
 #include "input/case_parse.hpp"
 #include "input/input_schema.hpp"
+#include "fracture/running_tip_field.hpp"
+#include "material/elastic.hpp"
 
 namespace rupture {
 namespace {
@@ -36,7 +38,7 @@ void parse_branching(Section& f, GrowthLaw& g, const Case& c) {
     fail(f.key("branching"), "\"" + b + "\"",
          "needs a uniform grid: a branch's ties and its wedge's field are laid on one grid (a crack "
          "on nested levels grows, but does not split yet)");
-  if (g.criterion == GrowthCriterion::cohesive)
+  if (g.criterion == GrowthCriterion::cohesive || g.criterion == GrowthCriterion::prescribed)
     fail(f.key("branching"), "\"" + b + "\"",
          "needs growth = \"energy\" or \"max_hoop\" (Yoffe's criterion reads the running tip's K field; "
          "the cohesive criterion reads the line's state)");
@@ -90,15 +92,16 @@ void parse_drawn_open(Section& f, InterfaceSpec& is) {
 // grid. Growth reads K at the tips, so it records them too (stress_intensity).
 void parse_growth(Section& f, InterfaceSpec& is, const Case& c) {
   GrowthLaw& g = is.growth;
-  const std::string criterion = f.string("growth", "none", {"none", "max_hoop", "energy", "cohesive"});
-  g.criterion = criterion == "max_hoop"   ? GrowthCriterion::max_hoop
-                : criterion == "energy"   ? GrowthCriterion::energy
-                : criterion == "cohesive" ? GrowthCriterion::cohesive
-                                          : GrowthCriterion::none;
+  const std::string criterion = f.string("growth", "none", {"none", "max_hoop", "energy", "cohesive", "prescribed"});
+  g.criterion = criterion == "max_hoop"     ? GrowthCriterion::max_hoop
+                : criterion == "energy"     ? GrowthCriterion::energy
+                : criterion == "cohesive"   ? GrowthCriterion::cohesive
+                : criterion == "prescribed" ? GrowthCriterion::prescribed
+                                            : GrowthCriterion::none;
   if (!g.on()) {
     for (const char* key : {"toughness", "fracture_energy", "plane_fracture_energy", "growth_direction", "growth_step",
-                            "branching", "max_branches"})
-      if (f.has(key)) fail(f.key(key), show(*f.node(key)), "needs growth = \"max_hoop\", \"energy\" or \"cohesive\"");
+                            "branching", "max_branches", "running_tip", "growth_speed", "growth_start"})
+      if (f.has(key)) fail(f.key(key), show(*f.node(key)), "needs growth = \"max_hoop\", \"energy\", \"cohesive\" or \"prescribed\"");
     return;
   }
   const std::string shown = "\"" + criterion + "\"";
@@ -137,6 +140,16 @@ void parse_growth(Section& f, InterfaceSpec& is, const Case& c) {
     g.toughness = f.number("toughness", 0.0);
     if (!(g.toughness > 0.0) || !std::isfinite(g.toughness))
       fail(f.key("toughness"), g.toughness, "must be > 0 (K_Ic, Pa m^1/2)");
+  } else if (g.criterion == GrowthCriterion::prescribed) {
+    refuse("toughness", "is for growth = \"max_hoop\"; growth = \"prescribed\" takes growth_speed");
+    refuse("fracture_energy", "is for growth = \"energy\"; growth = \"prescribed\" takes growth_speed");
+    if (!f.has("growth_speed"))
+      fail(f.key("growth_speed"), "(missing)", "required with growth = \"prescribed\": the tips' speed, m/s, > 0");
+    g.speed = f.number("growth_speed", 0.0);
+    if (!(g.speed > 0.0) || !std::isfinite(g.speed))
+      fail(f.key("growth_speed"), g.speed, "must be > 0 (m/s)");
+    g.start = f.number("growth_start", 0.0);
+    if (!(g.start >= 0.0) || !std::isfinite(g.start)) fail(f.key("growth_start"), g.start, "must be >= 0 (s)");
   } else if (g.criterion == GrowthCriterion::cohesive) {
     refuse("toughness", "is for growth = \"max_hoop\"; growth = \"cohesive\" reads the law's strength");
     refuse("fracture_energy", "is for growth = \"energy\"; growth = \"cohesive\" reads the law's strength");
@@ -161,6 +174,10 @@ void parse_growth(Section& f, InterfaceSpec& is, const Case& c) {
     if (!(g.plane_fracture_energy > 0.0) || !std::isfinite(g.plane_fracture_energy))
       fail(f.key("plane_fracture_energy"), g.plane_fracture_energy, "must be > 0 (G_c of the weak plane, J/m^2)");
   }
+  if (g.criterion != GrowthCriterion::prescribed) {
+    refuse("growth_speed", "is for growth = \"prescribed\" (the tips' given speed)");
+    refuse("growth_start", "is for growth = \"prescribed\" (when the tips start to run)");
+  }
   g.step = f.number("growth_step", 0.5);
   if (!(g.step > 0.0 && g.step <= 0.5))
     fail(f.key("growth_step"), g.step,
@@ -168,6 +185,20 @@ void parse_growth(Section& f, InterfaceSpec& is, const Case& c) {
          "never jumps over the grid nodes that carry the fields on either side");
   is.stress_intensity = true;
   parse_branching(f, g, c);
+  is.running_tip = f.boolean("running_tip", false);
+  if (is.running_tip && g.criterion == GrowthCriterion::energy && g.plane_fracture_energy > 0.0)
+    fail(f.key("running_tip"), "true",
+         "is not yet read by the weak plane's criterion (plane_fracture_energy): its kinked "
+         "intensities are those of a stationary tip (Cotterell & Rice)");
+  if (is.running_tip && g.criterion == GrowthCriterion::prescribed) {
+    const BodySpec& b = c.bodies[std::size_t(is.upper_body)];
+    const double cR = wave_speeds(c.materials[std::size_t(b.material)], c.plane).rayleigh;
+    if (g.speed >= kRunningTipCap * cR)
+      fail(f.key("growth_speed"), g.speed,
+           fmt::format("must be below {:.4g} m/s ({} c_R of the body's material) with running_tip = true: "
+                       "the running tip's field is singular at c_R = {:.4g} m/s", kRunningTipCap * cR,
+                       kRunningTipCap, cR));
+  }
 }
 
 // The fields the branch events' wedges will take, named NAME.branchK (K = 1, 2, ...).

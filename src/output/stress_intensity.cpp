@@ -48,7 +48,7 @@ std::vector<TipFrame> crack_tips(const Case& c, const RunState& s, std::size_t k
 }
 
 void sample_stress_intensity(const Case& c, RunState& s, const std::vector<CrackTracker>& trackers,
-                             std::vector<TipSeries>& series) {
+                             const std::vector<CrackGrowthRecord>& growth, std::vector<TipSeries>& series) {
   series.resize(c.interfaces.size());
   for (std::size_t k = 0; k < c.interfaces.size(); ++k) {
     const InterfaceSpec& is = c.interfaces[k];
@@ -58,8 +58,15 @@ void sample_stress_intensity(const Case& c, RunState& s, const std::vector<Crack
     const std::vector<InitialStrain> initial = initial_field_strains(c);
     const std::vector<TipFrame> tips = crack_tips(c, s, k, trackers[k]);
     const double h = L.grid.cell_size();
+    // A running tip's speed: its label and end as growth records them (the drawn line's tips).
+    std::vector<CrackTip> ends;
+    if (is.running_tip && k < growth.size())
+      ends = precrack_tips(s.interface(k).spec, 1e-6 * h, is.j_domains.back() * h);
     for (std::size_t t = 0; t < tips.size(); ++t) {
-      const std::vector<TipIntegrals> r = read_tip(L, is, tips[t], mat, s.time, initial);
+      const TipMaterial m = t < ends.size() ? growing_tip_material(c, k, growth[k], int(t), ends[t].end, s.time,
+                                                                   is.j_domains.back() * h)
+                                            : mat;
+      const std::vector<TipIntegrals> r = read_tip(L, is, tips[t], m, s.time, initial);
       for (std::size_t d = 0; d < r.size(); ++d)
         series[k].rows.insert(series[k].rows.end(),
                               {s.time, double(t), tips[t].x, tips[t].y, is.j_domains[d] * h, r[d].J,

@@ -37,8 +37,9 @@ std::vector<TipFrame> crack_tips(const Case& c, const RunState& s, std::size_t k
                                  const CrackTracker& tracker);
 
 // Appends the rows of every interface with stress_intensity at the state's time.
+// A growing crack with running_tip reads each tip at its speed (growing_tip_material).
 void sample_stress_intensity(const Case& c, RunState& s, const std::vector<CrackTracker>& trackers,
-                             std::vector<TipSeries>& series);
+                             const std::vector<CrackGrowthRecord>& growth, std::vector<TipSeries>& series);
 void write_stress_intensity(const std::string& dir, const Case& c,
                             const std::vector<TipSeries>& series);
 // DIR/crack_path_NAME.csv of every growing crack (solver/crack_growth.hpp: one row per grown

@@ -179,7 +179,7 @@ RunOutputs choose_outputs(RunIo& io) {
     }));
   if (ctx.tip_schedule.interval > 0)  // J and K read the particles near the tips
     add(std::make_unique<ScheduledOutput>(ctx.tip_schedule, true, [&io] {
-      sample_stress_intensity(io.c, io.s, io.ctx.cracks, io.ctx.tips);
+      sample_stress_intensity(io.c, io.s, io.ctx.cracks, io.ctx.growth, io.ctx.tips);
     }));
   add(std::make_unique<ProgressLine>(io));
   add(std::make_unique<RecordFlush>(io));

@@ -189,6 +189,22 @@ constexpr double kSmallestDomain = 4.0;
 
 }  // namespace
 
+TipMaterial growing_tip_material(const Case& c, std::size_t k, const CrackGrowthRecord& record,
+                                 int label, LineEnd end, double now, double window) {
+  TipMaterial m = tip_material(c, k);
+  if (!c.interfaces[k].running_tip) return m;
+  const WaveSpeeds w = crack_wave_speeds(c, k);
+  // The running field holds below c_R, where D -> 0: K = M mu c_s^2 D / (v^2 a) -> 0 and
+  // A -> infinity. A measured speed at or above it (a discrete tip that cuts through to an edge
+  // several segments in one step) is read at kRunningTipCap c_R.
+  const GrowthLaw& g = c.interfaces[k].growth;
+  const double v = g.criterion == GrowthCriterion::prescribed ? (now > g.start ? g.speed : 0.0)
+                                                               : tip_speed(record, label, end, now, window);
+  m.speed = std::min(v, kRunningTipCap * w.rayleigh);
+  m.c_d = w.dilatational, m.c_s = w.shear;
+  return m;
+}
+
 void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& records) {
   records.resize(c.interfaces.size());
   for (std::size_t k = 0; k < c.interfaces.size(); ++k) {
@@ -210,6 +226,7 @@ void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& rec
       CrackFront front;
       bool read;
       double domains = 1.0;  // the J domains' scale (a branch near its sibling; 0: too near to read K_II)
+      TipMaterial mat{};     // with the tip's speed when it is read as running (running_tip)
     };
     std::vector<Tip> tips;
     const double r_out = is.j_domains.back() * h;
@@ -222,6 +239,7 @@ void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& rec
         const CrackFront front = crack_front(in, t[i].end);
         Tip tip{l, t[i], lines[l].branch < 0 ? int(i) : 2 + lines[l].branch, front,
                 is.growth.criterion != GrowthCriterion::cohesive || front != CrackFront::loading};
+        tip.mat = growing_tip_material(c, k, records[k], tip.label, t[i].end, s.time, r_out);
         // A branch whose sibling's line passes inside its outer J domain: the domain integrals
         // assume one crack in the domain, so its domains shrink to keep the sibling out, down to
         // an outer radius of kSmallestDomain cells; nearer than that it is not steered (below).
@@ -246,12 +264,12 @@ void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& rec
       if (!tips[t].read) return;
       const InterfaceSpec& spec = L.interfaces[lines[tips[t].line].slot].spec;
       if (tips[t].domains == 1.0) {
-        readings[t] = read_tip(L, spec, tips[t].tip.frame, mat, s.time, initial);
+        readings[t] = read_tip(L, spec, tips[t].tip.frame, tips[t].mat, s.time, initial);
         return;
       }
       InterfaceSpec near_sibling = spec;
       for (double& r : near_sibling.j_domains) r *= std::max(tips[t].domains, kSmallestDomain * h / r_out);
-      readings[t] = read_tip(L, near_sibling, tips[t].tip.frame, mat, s.time, initial);
+      readings[t] = read_tip(L, near_sibling, tips[t].tip.frame, tips[t].mat, s.time, initial);
     };
     if (tips.size() == 1) {
       read(0);
@@ -279,7 +297,14 @@ void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& rec
       // The end piece's turn is read only by the weak plane's criterion (off the plane).
       const double kink = is.growth.plane_fracture_energy > 0.0 && !plane.on
                               ? end_piece_turn(spec, tips[t].tip, h) : 0.0;
-      GrowthDecision g = decide_growth(is.growth, KI, KII, mat.e_prime, tips[t].front, plane.on, kink);
+      const TipMaterial& tm = tips[t].mat;
+      const RunningTipFactors running =
+          tm.speed > 0.0 ? running_tip_factors(tm.speed, WaveSpeeds{tm.c_d, tm.c_s, 0.0, 0.0}) : RunningTipFactors{};
+      GrowthDecision g =
+          is.growth.criterion == GrowthCriterion::prescribed
+              ? decide_prescribed(is.growth, KI, KII, tip_grown(records[k], tips[t].label, tips[t].tip.end),
+                                  is.growth.step * h, s.time)
+              : decide_growth(is.growth, KI, KII, mat.e_prime, tips[t].front, plane.on, kink, running);
       if (!g.grow) continue;
       // A branch whose sibling's line is nearer than the smallest domain runs straight on: its
       // K_II would be the sibling's faces'.

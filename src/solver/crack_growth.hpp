@@ -68,6 +68,17 @@ struct CrackGrowthRecord {
 double tip_speed(const CrackGrowthRecord& record, int label, LineEnd end, double now, double window,
                  std::size_t rows = std::size_t(-1));
 
+// The path a tip (label and end as in the rows) has grown, m.
+double tip_grown(const CrackGrowthRecord& record, int label, LineEnd end);
+
+// What interface k's tip (label, end) is read with (solver/crack_tips.hpp, tip_material): with
+// running_tip, its speed now (tip_speed over `window`, the outer J domain's radius, m; with
+// growth = "prescribed", the prescribed speed once it runs) and the
+// wave speeds, so a tip that runs is read with the running tip's fields
+// (fracture/j_integral.hpp); without, or before it has grown a window, a stationary tip's.
+TipMaterial growing_tip_material(const Case& c, std::size_t k, const CrackGrowthRecord& record,
+                                 int label, LineEnd end, double now, double window);
+
 // Reads every growing crack's tips and grows those the criterion lets grow (at most one segment
 // per tip and call). records: one per interface (resized).
 void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& records);

@@ -18,6 +18,14 @@ bool row_of_tip(const std::vector<double>& r, std::size_t i, int label, LineEnd 
 
 }  // namespace
 
+double tip_grown(const CrackGrowthRecord& record, int label, LineEnd end) {
+  double l = 0.0;
+  const std::vector<double>& r = record.rows;
+  for (std::size_t i = 0; i + kGrowthColumns <= r.size(); i += kGrowthColumns)
+    if (row_of_tip(r, i, label, end)) l += r[i + 6];
+  return l;
+}
+
 double CrackGrowthRecord::length() const {
   double l = 0.0;
   for (std::size_t i = 0; i + kGrowthColumns <= rows.size(); i += kGrowthColumns) l += rows[i + 6];
