@@ -58,19 +58,19 @@ void sample_stress_intensity(const Case& c, RunState& s, const std::vector<Crack
     const std::vector<InitialStrain> initial = initial_field_strains(c);
     const std::vector<TipFrame> tips = crack_tips(c, s, k, trackers[k]);
     const double h = L.grid.cell_size();
-    // A running tip's speed: its label and end as growth records them (the drawn line's tips).
+    // A growing tip's speed: its label and end as growth records them (the drawn line's tips).
     std::vector<CrackTip> ends;
-    if (is.running_tip && k < growth.size())
-      ends = precrack_tips(s.interface(k).spec, 1e-6 * h, is.j_domains.back() * h);
+    const double window = is.j_domains.back() * h;
+    if (is.growth.on() && k < growth.size()) ends = precrack_tips(s.interface(k).spec, 1e-6 * h, window);
     for (std::size_t t = 0; t < tips.size(); ++t) {
-      const TipMaterial m = t < ends.size() ? growing_tip_material(c, k, growth[k], int(t), ends[t].end, s.time,
-                                                                   is.j_domains.back() * h)
-                                            : mat;
+      const bool grows = t < ends.size();
+      const TipMaterial m = grows ? growing_tip_material(c, k, growth[k], int(t), ends[t].end, s.time, window) : mat;
+      const double speed = grows ? growing_tip_speed(c, k, growth[k], int(t), ends[t].end, s.time, window) : 0.0;
       const std::vector<TipIntegrals> r = read_tip(L, is, tips[t], m, s.time, initial);
       for (std::size_t d = 0; d < r.size(); ++d)
         series[k].rows.insert(series[k].rows.end(),
                               {s.time, double(t), tips[t].x, tips[t].y, is.j_domains[d] * h, r[d].J,
-                               r[d].K_I, r[d].K_II, double(r[d].points)});
+                               r[d].K_I, r[d].K_II, double(r[d].points), speed});
     }
   }
 }
@@ -79,12 +79,12 @@ void write_stress_intensity(const std::string& dir, const Case& c,
                             const std::vector<TipSeries>& series) {
   for (std::size_t k = 0; k < c.interfaces.size() && k < series.size(); ++k) {
     if (!c.interfaces[k].stress_intensity) continue;
-    std::string out = "time,tip,x,y,domain,J,K_I,K_II,points\n";
+    std::string out = "time,tip,x,y,domain,J,K_I,K_II,points,speed\n";
     const std::vector<double>& r = series[k].rows;
     for (std::size_t i = 0; i + kTipColumns <= r.size(); i += kTipColumns)
-      out += fmt::format("{:.9e},{:d},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:d}\n", r[i],
+      out += fmt::format("{:.9e},{:d},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:.9e},{:d},{:.6g}\n", r[i],
                          int(r[i + 1]), r[i + 2], r[i + 3], r[i + 4], r[i + 5], r[i + 6], r[i + 7],
-                         long(r[i + 8]));
+                         long(r[i + 8]), r[i + 9]);
     write_file_atomic(dir + "/stress_intensity_" + c.interface_names[k] + ".csv", out);
   }
 }

@@ -7,7 +7,9 @@
 //  - a cohesive line: the running tip of its crack tracker (cohesive/crack_tip.hpp: the
 //    farthest separated node, the line's start before initiation), direction along the line.
 // Per sample and tip, one row per J domain: time (s), tip (0, 1: which of the tips), x, y (m),
-// domain (its outer radius, m), J (J/m^2), K_I, K_II (Pa m^1/2), points (in the domain).
+// domain (its outer radius, m), J (J/m^2), K_I, K_II (Pa m^1/2), points (in the domain), speed
+// (m/s: a growing crack's tip's, growing_tip_speed; 0 for a crack that does not grow; K is read
+// at it with running_tip = true, below 0.95 c_R).
 // Written to DIR/stress_intensity_NAME.csv atomically at every flush; the rows are
 // checkpointed. One process; on nested levels the level holding the interface.
 #pragma once
@@ -24,7 +26,7 @@ namespace rupture {
 
 struct RunState;
 
-inline constexpr std::size_t kTipColumns = 9;
+inline constexpr std::size_t kTipColumns = 10;
 
 // One interface's rows (checkpointed), kTipColumns per row; empty for interfaces without
 // stress_intensity.

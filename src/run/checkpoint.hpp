@@ -16,7 +16,7 @@
 
 namespace rupture {
 
-inline constexpr int kCheckpointVersion = 18;  // 2: State::strain_work; 3: Mach readings;
+inline constexpr int kCheckpointVersion = 19;  // 2: State::strain_work; 3: Mach readings;
                                               // 4: interface rupture times, peak slip rates;
                                               // 5: nested levels; 6: particles store the
                                               // stress only (no strain, szz, volume);
@@ -40,7 +40,8 @@ inline constexpr int kCheckpointVersion = 18;  // 2: State::strain_work; 3: Mach
                                               // (x0, y0: the J-integral's displacement);
                                               // 17: the grown cracks' segments (run.growth,
                                               // before the state); 18: the wall time in
-                                              // crack growth (run.growth_seconds)
+                                              // crack growth (run.growth_seconds); 19: the
+                                              // tips' speed column (run.tips rows)
 
 std::string checkpoint_path(const std::string& dir);  // DIR/checkpoint/checkpoint.bin
 

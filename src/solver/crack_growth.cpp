@@ -189,6 +189,13 @@ constexpr double kSmallestDomain = 4.0;
 
 }  // namespace
 
+double growing_tip_speed(const Case& c, std::size_t k, const CrackGrowthRecord& record, int label, LineEnd end,
+                         double now, double window) {
+  const GrowthLaw& g = c.interfaces[k].growth;
+  if (g.criterion == GrowthCriterion::prescribed) return now > g.start ? g.speed : 0.0;
+  return tip_speed(record, label, end, now, window);
+}
+
 TipMaterial growing_tip_material(const Case& c, std::size_t k, const CrackGrowthRecord& record,
                                  int label, LineEnd end, double now, double window) {
   TipMaterial m = tip_material(c, k);
@@ -197,10 +204,7 @@ TipMaterial growing_tip_material(const Case& c, std::size_t k, const CrackGrowth
   // The running field holds below c_R, where D -> 0: K = M mu c_s^2 D / (v^2 a) -> 0 and
   // A -> infinity. A measured speed at or above it (a discrete tip that cuts through to an edge
   // several segments in one step) is read at kRunningTipCap c_R.
-  const GrowthLaw& g = c.interfaces[k].growth;
-  const double v = g.criterion == GrowthCriterion::prescribed ? (now > g.start ? g.speed : 0.0)
-                                                               : tip_speed(record, label, end, now, window);
-  m.speed = std::min(v, kRunningTipCap * w.rayleigh);
+  m.speed = std::min(growing_tip_speed(c, k, record, label, end, now, window), kRunningTipCap * w.rayleigh);
   m.c_d = w.dilatational, m.c_s = w.shear;
   return m;
 }

@@ -76,6 +76,10 @@ double tip_grown(const CrackGrowthRecord& record, int label, LineEnd end);
 // growth = "prescribed", the prescribed speed once it runs) and the
 // wave speeds, so a tip that runs is read with the running tip's fields
 // (fracture/j_integral.hpp); without, or before it has grown a window, a stationary tip's.
+// The speed of interface k's tip (label, end) now, m/s: the prescribed one once it runs
+// (growth = "prescribed"), else tip_speed over `window` (m).
+double growing_tip_speed(const Case& c, std::size_t k, const CrackGrowthRecord& record, int label, LineEnd end,
+                         double now, double window);
 TipMaterial growing_tip_material(const Case& c, std::size_t k, const CrackGrowthRecord& record,
                                  int label, LineEnd end, double now, double window);
 
