@@ -18,40 +18,13 @@ import sys
 
 import numpy as np
 
-from freund import check_against_freund
+from freund import check_against_freund, prestressed_edge_crack
 
 rupture, work = sys.argv[1], sys.argv[2]
 os.makedirs(work, exist_ok=True)
 E, nu, rho, s0 = 5.2e9, 0.34, 1246.0, 5e6
-case = f"""title = "edge crack cut into a prestressed plate (Freund by superposition)"
-[model]
-plane = "strain"
-[materials.homalite]
-youngs_modulus = {E!r}
-poisson_ratio = {nu!r}
-density = {rho!r}
-[grid]
-min = [0.0, -0.01]
-max = [0.03, 0.01]
-cell_size = 0.25e-3
-particles_per_cell = 2
-[bodies.plate]
-material = "homalite"
-min = [0.0, -0.01]
-max = [0.03, 0.01]
-stress = [0.0, {s0!r}, 0.0]
-[interface.crack]
-body = "plate"
-points = [[0.0, 0.0], [0.02, 0.0]]
-segments = 80
-law = "contact"
-stress_intensity = true
-[time]
-end = 2.6e-6
-[output]
-history_interval = 0.1e-6
-crack_sample_interval = 0.02e-6
-"""
+case = prestressed_edge_crack("edge crack cut into a prestressed plate (Freund by superposition)", E, nu, rho, s0,
+                              0.03, 0.01, "stress_intensity = true\n", 2.6e-6, 0.02e-6)
 path = os.path.join(work, "prestressed_edge_crack.toml")
 open(path, "w").write(case)
 out = os.path.join(work, "run")

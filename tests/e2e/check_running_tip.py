@@ -25,7 +25,7 @@ import sys
 
 import numpy as np
 
-from freund import freund_k
+from freund import freund_k, prestressed_edge_crack
 
 rupture, work = sys.argv[1], sys.argv[2]
 os.makedirs(work, exist_ok=True)
@@ -53,34 +53,8 @@ cR = rayleigh()
 def case(v, running):
     growth = (f'growth = "prescribed"\ngrowth_speed = {v!r}\ngrowth_direction = "straight"\n'
               f'running_tip = {"true" if running else "false"}\n') if v > 0 else "stress_intensity = true\n"
-    return f"""title = "Freund's running crack: edge crack cut into a prestressed plate, its tip run at {v:.1f} m/s"
-[model]
-plane = "strain"
-[materials.homalite]
-youngs_modulus = {E!r}
-poisson_ratio = {nu!r}
-density = {rho!r}
-[grid]
-min = [0.0, -0.02]
-max = [0.05, 0.02]
-cell_size = 0.25e-3
-particles_per_cell = 2
-[bodies.plate]
-material = "homalite"
-min = [0.0, -0.02]
-max = [0.05, 0.02]
-stress = [0.0, {s0!r}, 0.0]
-[interface.crack]
-body = "plate"
-points = [[0.0, 0.0], [0.02, 0.0]]
-segments = 80
-law = "contact"
-{growth}[time]
-end = 7.5e-6
-[output]
-history_interval = 0.5e-6
-crack_sample_interval = 0.05e-6
-"""
+    return prestressed_edge_crack(f"Freund's running crack: edge crack cut into a prestressed plate, its tip run at "
+                                  f"{v:.1f} m/s", E, nu, rho, s0, 0.05, 0.02, growth, 7.5e-6, 0.05e-6)
 
 
 def mean_ratio(v, running):

@@ -15,6 +15,41 @@ def freund_k(t, p, E, nu, rho):
     return 2 * p * np.sqrt(cD * t * (1 - 2 * nu) / math.pi) / (1 - nu)
 
 
+def prestressed_edge_crack(title, E, nu, rho, s0, width, half_height, crack_keys, end, sample):
+    """The TOML of an edge crack (x = 0 to 20 mm on y = 0, law = "contact") drawn inside a Homalite
+    plate [0, width] x [-half_height, half_height] (m) under sigma_yy = s0, so its faces are
+    released at t = 0 (plane strain, 0.25 mm, 2 particles per cell); crack_keys: the crack's
+    other keys (stress_intensity, growth, ...), one per line."""
+    return f"""title = "{title}"
+[model]
+plane = "strain"
+[materials.homalite]
+youngs_modulus = {E!r}
+poisson_ratio = {nu!r}
+density = {rho!r}
+[grid]
+min = [0.0, {-half_height!r}]
+max = [{width!r}, {half_height!r}]
+cell_size = 0.25e-3
+particles_per_cell = 2
+[bodies.plate]
+material = "homalite"
+min = [0.0, {-half_height!r}]
+max = [{width!r}, {half_height!r}]
+stress = [0.0, {s0!r}, 0.0]
+[interface.crack]
+body = "plate"
+points = [[0.0, 0.0], [0.02, 0.0]]
+segments = 80
+law = "contact"
+{crack_keys}[time]
+end = {end!r}
+[output]
+history_interval = {end / 25!r}
+crack_sample_interval = {sample!r}
+"""
+
+
 def check_against_freund(d, p, E, nu, rho, least_rows, label):
     """Exits 1 (after saying why) unless the rows of `d` follow Freund's K_I(t)."""
     rows = d[(d["time"] >= 1.5e-6) & (d["time"] <= 2.6e-6)]
