@@ -187,7 +187,9 @@ TEST(GrowthCriterion, prescribed_tip_runs_at_its_speed) {
   double grown = 0.0;
   for (double t = 0.0; t <= 5e-6 + 1e-12; t += dt) {
     const GrowthDecision d = decide_prescribed(law, 1e6, 0.3e6, grown, step, t);
-    if (t < 1e-6) EXPECT_FALSE(d.grow);
+    if (t < 1e-6) {
+      EXPECT_FALSE(d.grow);
+    }
     EXPECT_EQ(d.angle, 0.0);
     if (d.grow) grown += step;
     EXPECT_LE(grown, law.speed * std::max(t - law.start, 0.0) + 1e-15);    // never ahead of the schedule

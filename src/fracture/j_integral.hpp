@@ -15,12 +15,11 @@
 // homogeneous linear elastic solid over the domain, with a stress-free reference state; the
 // crack faces inside the domain are straight and traction-free (the form then needs no face
 // term); the tip is stationary, or runs steadily near it at TipMaterial::speed v: then the
-// auxiliary fields are the running tip's, u^a_dot = -v u^a_,1, and M takes their kinetic terms
-//   M += sum_p A_p { rho v v_k u^a_k,1 q_,1 + rho (v^2 u^a_i,11 u_i,1 + v v_i u^a_i,11
-//                    + v u^a_i,1 v_i,1) q }
-// (the bilinear part of J's T and inertia terms; J itself is the running tip's energy release
-// rate as it stands). Units: SI (J in J/m^2,
-// K in Pa sqrt(m)).
+// auxiliary fields are the running tip's, u^a_dot = -v u^a_,1, and M takes its steady form
+//   M = sum_p A_p [sigma_ij u^a_i,1 + sigma^a_ij u_i,1 - (sigma_ij eps^a_ij - rho v v_k u^a_k,1) delta_1j] q_,j
+// (the volume inertia terms, which cancel point by point for a steady field, dropped: their
+// r^-2 products are what a discretely advancing tip gets wrong; theory.md §18a). J itself is the
+// running tip's energy release rate as it stands. Units: SI (J in J/m^2, K in Pa sqrt(m)).
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -72,9 +71,8 @@ struct TipMaterial {
   // A running tip (docs/fracture.md, "A running tip"): its speed along e1 and the solid's wave
   // speeds (dilatational of the plane problem, shear). At speed >= kRunningTipSpeed c_s the
   // auxiliary fields are the running tip's (fracture/running_tip_field.hpp), the interaction
-  // integral takes their kinetic terms (u^a_dot = -v u^a_,1) and
-  // K = M mu c_s^2 D / (v^2 a_d,s), from J(K + K^a) = (A_I K_I^2 + A_II K_II^2) / E'; below,
-  // the stationary forms above, bit for bit.
+  // integral its steady form above and K = M mu c_s^2 D / (v^2 a_d,s), from
+  // J(K + K^a) = (A_I K_I^2 + A_II K_II^2) / E'; below, the stationary forms, bit for bit.
   double speed = 0.0;               // m/s
   double c_d = 0.0, c_s = 0.0;      // m/s
 };

@@ -15,6 +15,40 @@ def freund_k(t, p, E, nu, rho):
     return 2 * p * np.sqrt(cD * t * (1 - 2 * nu) / math.pi) / (1 - nu)
 
 
+def wave_speeds(E, nu, rho):
+    """c_D, c_S and c_R of the plane-strain solid (m/s)."""
+    lam, mu = E * nu / ((1 + nu) * (1 - 2 * nu)), E / (2 * (1 + nu))
+    cD, cS = math.sqrt((lam + 2 * mu) / rho), math.sqrt(mu / rho)
+    lo, hi = 0.5 * cS, cS
+    for _ in range(200):  # Rayleigh's function 4 a_d a_s - (1 + a_s^2)^2 changes sign at c_R
+        v = 0.5 * (lo + hi)
+        ad, a_s = math.sqrt(1 - v * v / cD**2), math.sqrt(1 - v * v / cS**2)
+        if 4 * ad * a_s - (1 + a_s * a_s) ** 2 > 0:
+            lo = v
+        else:
+            hi = v
+    return cD, cS, 0.5 * (lo + hi)
+
+
+def universal_k(v, E, nu, rho, n=200000):
+    """Freund's universal function of a mode-I tip's speed (Dynamic Fracture Mechanics, 1990,
+    sec. 5.3 and 7.4; plane strain): K_I(t, v) = k(v) K_I*(t), K_I* the stationary tip's under the
+    same loading, with
+        k(v) = (1 - v/c_R) S_-(1/v) / sqrt(1 - v/c_D),
+        S_-(z) = exp{-(1/pi) int_a^b atan[4 e^2 sqrt((e^2 - a^2)(b^2 - e^2)) / (b^2 - 2 e^2)^2] de / (e - z)},
+    a = 1/c_D, b = 1/c_S: the minus factor of the Rayleigh function's Wiener-Hopf split
+    R(z) = 2 (b^2 - a^2)(1/c_R^2 - z^2) S_+(z) S_-(z) (midpoint rule, n points; S_+ S_- against R
+    is checked in tests/e2e/check_running_tip.py). k(0) = 1, k(c_R) = 0."""
+    cD, cS, cR = wave_speeds(E, nu, rho)
+    if v <= 0.0:
+        return 1.0
+    a, b = 1 / cD, 1 / cS
+    e = a + (np.arange(n) + 0.5) * (b - a) / n
+    theta = np.arctan2(4 * e * e * np.sqrt((e * e - a * a) * (b * b - e * e)), (b * b - 2 * e * e) ** 2)
+    s_minus = math.exp(-np.sum(theta / (e - 1 / v)) * (b - a) / n / math.pi)
+    return (1 - v / cR) * s_minus / math.sqrt(1 - v / cD)
+
+
 def prestressed_edge_crack(title, E, nu, rho, s0, width, half_height, crack_keys, end, sample):
     """The TOML of an edge crack (x = 0 to 20 mm on y = 0, law = "contact") drawn inside a Homalite
     plate [0, width] x [-half_height, half_height] (m) under sigma_yy = s0, so its faces are
