@@ -591,8 +591,8 @@ std::vector<KeyDoc> build_schema() {
       {"interface.*.running_tip", "boolean", "", "false",
        "true, false; with growth (not with plane_fracture_energy)",
        "read a growing tip as running at its speed (over the outer J domain's radius of path): K_I, "
-       "K_II from the interaction integral with the running tip's fields (Freund 1990, sec. 4.3) "
-       "and their kinetic terms, and the energy criterion's G = (A_I K_I^2 + A_II K_II^2) / E' "
+       "K_II from the interaction integral in its steady form with the running tip's fields "
+       "(Freund 1990, sec. 4.3), and the energy criterion's G = (A_I K_I^2 + A_II K_II^2) / E' "
        "(docs/fracture.md, \"A running tip\"); false: the stationary forms at every speed",
        "true"},
       {"interface.*.growth_step", "number", "cells", "0.5", "(0, 0.5]; with growth",
