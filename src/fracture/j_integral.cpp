@@ -157,12 +157,12 @@ TipIntegrals integrate(const std::vector<PointTerms>& terms, const std::vector<D
     out.K_II = 0.5 * m.e_prime * M[1];
     return out;
   }
-  // J(K + K^a) - J(K) - J(K^a) = 2 K K^a A / E' = v^2 a / (mu c_s^2 D) K K^a per mode.
-  const double ad = std::sqrt(1.0 - v * v / (m.c_d * m.c_d)), as = std::sqrt(1.0 - v * v / (m.c_s * m.c_s));
-  const double D = 4.0 * ad * as - (1.0 + as * as) * (1.0 + as * as);
-  const double scale = m.mu * m.c_s * m.c_s * D / (v * v);
-  out.K_I = scale * M[0] / ad;
-  out.K_II = scale * M[1] / as;
+  // J(K + K^a) - J(K) - J(K^a) = 2 A K K^a / E' per mode, E' / 2 = 2 mu (1 - c_s^2/c_d^2) (theory.md
+  // (18.2)), so K = 2 mu (1 - c_s^2/c_d^2) M / A = mu c_s^2 D M / (v^2 a_d,s).
+  const RunningTipFactors A = running_tip_factors(v, WaveSpeeds{m.c_d, m.c_s, 0.0, 0.0});
+  const double half_e_prime = 2.0 * m.mu * (1.0 - m.c_s * m.c_s / (m.c_d * m.c_d));
+  out.K_I = half_e_prime * M[0] / A.A_I;
+  out.K_II = half_e_prime * M[1] / A.A_II;
   return out;
 }
 
