@@ -30,8 +30,9 @@ std::string show_length(double m) {
 void print_check(const std::string& path, const Case& c) {
   const CaseSummary s = summarize(c);
   fmt::print("case: {}{}\n", path, c.title.empty() ? "" : " (" + c.title + ")");
-  fmt::print("plane {}, scheme {}, flip {:g}\n", c.plane == PlaneMode::strain ? "strain" : "stress",
-             scheme_name(c.solver.scheme), c.solver.flip);
+  fmt::print("plane {}, scheme {}, flip {:g}{}\n", c.plane == PlaneMode::strain ? "strain" : "stress",
+             scheme_name(c.solver.scheme), c.solver.flip,
+             c.solver.mass == MassMatrix::averaged ? ", averaged mass" : "");
   for (std::size_t k = 0; k < c.materials.size(); ++k) {
     const WaveSpeeds& w = s.speeds[k];
     fmt::print(

@@ -16,6 +16,8 @@
 namespace rupture {
 
 enum class Scheme { USF, USL, MUSL };
+// The nodal mass the grid equations use (solver.mass; solver/consistent_mass.hpp).
+enum class MassMatrix { lumped, averaged };
 
 // A body: a region of one material with a uniform initial velocity and stress, mapped to one
 // velocity field. Bodies that share a field are one continuum (one set of grid arrays).
@@ -96,6 +98,7 @@ struct TimeSpec {
 struct SolverSpec {
   Scheme scheme = Scheme::MUSL;
   double flip = 1.0;  // FLIP fraction of the particle velocity update (1 = FLIP, 0 = PIC)
+  MassMatrix mass = MassMatrix::lumped;
   int threads = 0;    // 0 = OpenMP default
   double memory_limit_mib = 0.0;  // largest memory estimate a run may start with (0 = RAM)
 };

@@ -291,7 +291,31 @@ void check_run_limits(const Case& c, const CaseSummary& s) {
 
 }  // namespace
 
+// solver.mass = "averaged" (solver/consistent_mass.hpp) on what it was derived and checked
+// for: one grid level, no velocity region, no interface (the cohesive forces, ties and contact act through the
+// lumped mass of their face nodes, and the levels' transitions condense lumped masses).
+void check_mass_matrix(const Case& c) {
+  if (c.solver.mass != MassMatrix::averaged) return;
+  if (c.grid.nested)
+    fail("solver.mass", "\"averaged\"",
+         "needs one grid level: grid.refinement = \"nested\" runs with the lumped mass (solver.mass = \"lumped\")");
+  // A velocity region prescribes its nodes' velocity along d after the grid update: with the
+  // averaged mass its reaction would already have spread through the solves (a [boundary]
+  // edge's nodes are instead known values of the solves, solver/consistent_mass.hpp).
+  if (!c.loads.velocity_regions.empty())
+    fail("solver.mass", "\"averaged\"",
+         fmt::format("is not available with a velocity region ([loads.{}]): velocity regions run with "
+                     "the lumped mass (solver.mass = \"lumped\")",
+                     c.loads.velocity_regions.front().name));
+  if (!c.interfaces.empty())
+    fail("solver.mass", "\"averaged\"",
+         fmt::format("is not available with an interface ([interface.{}]): interfaces and cracks run with "
+                     "the lumped mass (solver.mass = \"lumped\")",
+                     c.interface_names.front()));
+}
+
 void check_case_consistency(Case& c) {
+  check_mass_matrix(c);
   check_boundary_conflicts(c);
   check_touching_bodies(c);
   if (c.grid.nested) check_nested_support(c);  // what the set-up would refuse, refused here

@@ -120,6 +120,8 @@ void parse_solver(Section& top, Case& c) {
   c.solver.flip = s.number("flip", 1.0);
   if (!(c.solver.flip >= 0 && c.solver.flip <= 1))
     fail(s.key("flip"), c.solver.flip, "must lie in [0, 1] (1 = FLIP, 0 = PIC)");
+  const std::string mass = s.string("mass", "lumped", {"lumped", "averaged"});
+  c.solver.mass = mass == "averaged" ? MassMatrix::averaged : MassMatrix::lumped;
   const long threads = s.integer("threads", 0);
   if (threads < 0 || threads > 1024)
     fail(s.key("threads"), double(threads), "must lie in [0, 1024] (0 = all cores)");

@@ -242,6 +242,13 @@ std::vector<KeyDoc> build_schema() {
        "stress update last with a re-map (MUSL), last (USL) or first (USF)", "\"MUSL\""},
       {"solver.flip", "number", "", "1.0", "[0, 1] (1 = FLIP, 0 = PIC)",
        "FLIP/PIC blend of the particle velocity update", "1.0"},
+      {"solver.mass", "string", "", "\"lumped\"",
+       "\"lumped\", \"averaged\" (\"averaged\": one grid level, one process, no [interface], no velocity region)",
+       "the nodal mass of the grid equations: lumped, or the grid velocity projected with the "
+       "consistent mass and the acceleration taken with the average of the lumped and consistent "
+       "masses, which cancels the leading dispersion error (docs/theory.md §19; the step is "
+       "1/sqrt(2) of the lumped one's)",
+       "\"averaged\""},
       {"solver.threads", "integer", "", "0", "[0, 1024] (0 = all cores)",
        "OpenMP threads (results do not depend on it)", "2"},
       {"solver.memory_limit_mib", "number", "MiB", "0 (the machine's memory)", ">= 0",

@@ -98,6 +98,7 @@ std::string run_json(const Case& c, const CaseSummary& s, const RunRecord& r) {
   t.insert("ranks", r.ranks);
   t.insert("scheme", scheme_name(c.solver.scheme));
   t.insert("flip", c.solver.flip);
+  t.insert("mass", c.solver.mass == MassMatrix::averaged ? "averaged" : "lumped");
   t.insert("wall_seconds", r.wall_seconds);
   t.insert("cohesive_seconds", r.cohesive_seconds);
   t.insert("growth_seconds", r.growth_seconds);

@@ -168,6 +168,7 @@ State make_state_on(const Case& c, Grid grid, const PointFilter* keep, const Poi
   }
   s.scheme = c.solver.scheme;
   s.flip = c.solver.flip;
+  s.mass_matrix = c.solver.mass;
   double min_mass = std::numeric_limits<double>::max();
   for (double m : s.particles.mass) min_mass = std::min(min_mass, m);
   // Only nodes touched by nothing but the extreme tail of a particle (weight < 1e-20) are

@@ -150,6 +150,13 @@ struct State {
 
   Scheme scheme = Scheme::MUSL;
   double flip = 1.0;
+  MassMatrix mass_matrix = MassMatrix::lumped;  // solver.mass
+  // solver.mass = "averaged": the consistent mass's band, 25 per grid element ((dy + 2) 5 +
+  // dx + 2, kg), and the solve's scratch (solver/consistent_mass.hpp); rebuilt every step.
+  struct ConsistentMass {
+    std::vector<double> band, x, r;
+    std::vector<unsigned char> fixed;  // per solved lane: a prescribed value (a [boundary] node)
+  } consistent_mass;
   StepLimits limits;
   double dt = 0.0;       // this step's, set by choose_time_step (solver/time_step.hpp), s
   double dt_cap = INFINITY;     // no step goes past this much time (the driver: time to the end), s

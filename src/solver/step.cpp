@@ -16,6 +16,7 @@
 #include "core/errors.hpp"
 #include "solver/rank_exchange.hpp"
 #include "solver/cohesive_step.hpp"
+#include "solver/consistent_mass.hpp"
 #include "solver/field_windows.hpp"
 #include "solver/levels.hpp"
 #include "solver/load_step.hpp"
@@ -103,6 +104,43 @@ void update_grid(const Levels& L) {
   });
 }
 
+// solver.mass = "averaged" (solver/consistent_mass.hpp, docs/theory.md §19): the consistent
+// mass of this step's stencils, then the velocity at t^n projected with it (v = M_C^-1 p) and
+// the acceleration taken with the averaged mass (a = M_A^-1 f), both written back as lumped
+// momentum and force for the updates that divide by m. With the lumped mass: nothing.
+void averaged_mass(const Levels& L) {
+  each(L, [](State& s) {
+    if (s.mass_matrix != MassMatrix::averaged) return;
+    assemble_consistent_mass(s);
+    solve_momentum_and_force(s);
+  });
+}
+
+// USF: the same two solves, the momentum's before the stress update and the force's after
+// the force scatter (the band from the step's stencils: the particles move at its end).
+void averaged_mass_momentum(const Levels& L) {
+  each(L, [](State& s) {
+    if (s.mass_matrix != MassMatrix::averaged) return;
+    assemble_consistent_mass(s);
+    solve_mass(s, MassSolve::momentum_at_start, s.fields.mom_x.data(), s.fields.mom_y.data());
+  });
+}
+void averaged_mass_force(const Levels& L) {
+  each(L, [](State& s) {
+    if (s.mass_matrix == MassMatrix::averaged)
+      solve_mass(s, MassSolve::force, s.fields.force_x.data(), s.fields.force_y.data());
+  });
+}
+
+// The re-mapped momentum's velocity with the consistent mass (MUSL; the band of this step:
+// the particles have not moved yet).
+void consistent_remap(const Levels& L) {
+  each(L, [](State& s) {
+    if (s.mass_matrix == MassMatrix::averaged)
+      solve_mass(s, MassSolve::momentum_at_end, s.fields.remap_x.data(), s.fields.remap_y.data());
+  });
+}
+
 // MUSL: the re-mapped velocity at t^{n+1} (+ E2) and the regions' prescribed component.
 void remapped_velocity(const Levels& L) {
   each(L, [](State& s) {
@@ -133,11 +171,13 @@ void step_musl(const Levels& L) {
   detail::tie_and_face_stencils(L);           // bonded stretch, face stencils
   common_time_step(L);                        // dt (E6)
   detail::cohesive_forces_and_ties(L);        // E7-E9, bonded stretch
+  averaged_mass(L);                           // solver.mass = "averaged": M_C, M_A (§19)
   update_grid(L);                             // E4 + absorbing edges, E2 velocity BCs, regions
   spread_to_slaves(L, kVelocity);
   update_particle_velocity_and_remap(L.level, L.count);  // FLIP/PIC velocity, re-mapped momentum
   sum_shared_nodes(L, kRemapped);
   condense_to_dofs(L, kRemapped);
+  consistent_remap(L);   // "averaged": the re-mapped velocity with M_C
   remapped_velocity(L);  // bonded stretch, v = p / m, E2 at t^{n+1}, regions
   spread_to_slaves(L, kRemapped);
   detail::gather(L, &GridFields::remap_x, &GridFields::remap_y, G2PMode::stress_and_move);  // E5
@@ -152,6 +192,7 @@ void step_usl(const Levels& L) {
   detail::tie_and_face_stencils(L);
   common_time_step(L);
   detail::cohesive_forces_and_ties(L);
+  averaged_mass(L);
   update_grid(L);
   spread_to_slaves(L, kVelocity);
   detail::gather(L, &GridFields::vel_x, &GridFields::vel_y, G2PMode::stress_velocity_and_move);  // E5
@@ -165,6 +206,7 @@ void step_usf(const Levels& L) {
   condense_to_dofs(L, kMassMomentum);
   detail::tie_and_face_stencils(L);
   common_time_step(L);
+  averaged_mass_momentum(L);  // "averaged": M_C (§19)
   velocity_at_start(L);  // v^n = p / m, E2 at t^n, regions
   spread_to_slaves(L, kRemapped);
   detail::gather(L, &GridFields::remap_x, &GridFields::remap_y, G2PMode::stress_only);  // E5
@@ -173,6 +215,7 @@ void step_usf(const Levels& L) {
   external_forces(L);
   condense_to_dofs(L, kForce);
   detail::cohesive_forces_and_ties(L);
+  averaged_mass_force(L);  // "averaged": M_A (§19)
   update_grid(L);
   spread_to_slaves(L, kVelocity);
   detail::gather(L, &GridFields::vel_x, &GridFields::vel_y, G2PMode::velocity_and_move);
