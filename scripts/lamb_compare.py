@@ -55,6 +55,18 @@ def resample(ts, vs, grid):
     return out
 
 
+def delay(ours, u_ref, dt, window=0.05):
+    """The lag (s) that maximises the cross-correlation of ours with u_ref (equal samples dt):
+    > 0 when ours arrives late."""
+    n = int(round(window / dt))
+    best, best_k = None, 0
+    for k in range(-n, n + 1):
+        c = sum(ours[i + k] * u_ref[i] for i in range(max(0, -k), min(len(u_ref), len(ours) - k)))
+        if best is None or c > best:
+            best, best_k = c, k
+    return best_k * dt
+
+
 def compare(run, ref=DEFAULT_REF, force=1e9):
     """Rows (receiver, component, misfit, (t, u) peak of ours, (t, u) peak of the reference)."""
     t_ref, refs = read_reference(ref)
@@ -88,6 +100,13 @@ def main():
         worst = max(worst, misfit)
         print(f"{name} {comp} {100 * misfit:7.3f}%  {tp:.4f} {up: .4e}  {tr:.4f} {ur: .4e}")
         print(f"lamb.{name}.{comp}.misfit={misfit:.6f}")
+    t_ref, refs = read_reference(a.ref)
+    dt = t_ref[1] - t_ref[0]
+    for name in ("R1", "R2"):
+        s = read_csv(os.path.join(a.run, "stations", name + ".csv"))
+        for comp, key, u_ref in (("ux", "ux", refs[name][0]), ("uz", "uy", refs[name][1])):
+            ours = resample(s["time"], [u / abs(a.force) for u in s[key]], t_ref)
+            print(f"lamb.{name}.{comp}.delay_ms={1e3 * delay(ours, u_ref, dt):.1f}")
     print(f"lamb.largest_misfit={worst:.6f}")
     if a.check is not None and worst > a.check:
         print(f"FAIL: largest misfit {100 * worst:.3f}% exceeds {100 * a.check:.3f}%")

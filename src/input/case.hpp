@@ -121,6 +121,9 @@ struct StationSpec {
   std::string name;
   double x = 0.0, y = 0.0;  // m
   int interface = -1;       // index into Case::interfaces; -1: a body station
+  // A body station's reading (stations.NAME.read): the nearest particle's (false), or a linear
+  // least-squares fit of the particles within a cell of the point, evaluated at the point (true).
+  bool interpolated = false;
 };
 
 struct Case {

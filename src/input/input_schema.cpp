@@ -680,6 +680,11 @@ std::vector<KeyDoc> build_schema() {
        "where the station is", "[4500.0, 0.0]"},
       {"stations.*.interface", "string", "", "none (a body station)", "an [interface] entry",
        "the fault the station lies on", "\"fault\""},
+      {"stations.*.read", "string", "", "\"nearest\"", "\"nearest\", \"interpolated\" (body stations)",
+       "a body station's reading: the particle nearest the point at t = 0, or a linear "
+       "least-squares fit of its body's particles within a cell of the point, evaluated at the "
+       "point (second order; extrapolates to a free surface on the point)",
+       "\"interpolated\""},
 
       {"output", "table", "", "optional", "", "What the run writes, and how often.", ""},
       {"output.history_interval", "number", "s", "depends: time.end / 200",

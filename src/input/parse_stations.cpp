@@ -40,6 +40,11 @@ void parse_stations(Section& top, Case& c) {
                          "{:g} m)",
                          iface, std::max(p.distance, p.beyond), 0.5 * c.grid.cell_size));
     }
+    const std::string read = t.string("read", "nearest", {"nearest", "interpolated"});
+    st.interpolated = read == "interpolated";
+    if (st.interpolated && st.interface >= 0)
+      fail(t.key("read"), "\"interpolated\"",
+           "applies to body stations (a fault station reads its line's two nodes around the point)");
     c.stations.push_back(st);
   }
 }

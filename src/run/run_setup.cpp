@@ -47,21 +47,18 @@ std::vector<StationProbe> set_up(RunContext& r, const Case& c, const std::string
   std::vector<StationProbe> probes;
   if (by_rank) {
     SnapshotRows rows;
-    std::vector<NearestParticle> nearest;
-    for (const StationSpec& st : c.stations) nearest.push_back({st.x, st.y});
+    std::vector<NearestParticle> nearest = station_visitors(c, r.s);
     if (c.output.snapshot_interval > 0 || !c.stations.empty())
       for_each_run_point(c, r.s, [&](double x, double y, std::uint32_t id) {
         if (in_snapshot_region(region, x, y)) rows.add(id);
         for (NearestParticle& n : nearest) n.visit(x, y, id);
       });
     if (c.output.snapshot_interval > 0) r.snapshots = std::make_unique<SnapshotWriter>(dir, std::move(rows), comm);
-    std::vector<std::uint32_t> ids;
-    for (const NearestParticle& n : nearest) ids.push_back(n.id);
-    probes = make_probes(c.stations, r.s, &ids);
+    probes = make_probes(c, r.s, &nearest);
   } else {
     // Which particles the snapshots hold and the stations read (every particle at t = 0).
     if (c.output.snapshot_interval > 0) r.snapshots = std::make_unique<SnapshotWriter>(dir, all_particles(r.s), region, comm);
-    probes = make_probes(c.stations, r.s);
+    probes = make_probes(c, r.s);
   }
   const RunState& s = r.s;
   const Grid& g = s.run_grid();
