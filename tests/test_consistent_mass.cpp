@@ -71,6 +71,16 @@ std::string free_strip_toml(int cells = 8) {
   return text.substr(0, text.find("[boundary.left]"));
 }
 
+// The case's state at t = 0 with its nodal masses and consistent-mass band, as a step has them.
+State with_band(const std::string& toml) {
+  State s = make_state(parse_case(toml));
+  build_scatter_plan(s);
+  fit_field_windows(s);
+  particles_to_grid(s, false);
+  assemble_consistent_mass(s);
+  return s;
+}
+
 // The phase speed of the standing mode over c_D, minus 1: the particles start with
 // v_x = sin(k x), at rest in strain, so the mode's stress sigma_xx ~ cos(k x) sin(omega t)
 // (the stress, not the particles' velocity: FLIP keeps the part of the velocity the grid does
@@ -143,11 +153,7 @@ TEST(ConsistentMass, band_is_symmetric_and_sums_to_the_lumped_mass) {
 }
 
 TEST(ConsistentMass, solves_keep_the_total_and_a_uniform_velocity) {
-  State s = make_state(parse_case(free_strip_toml()));
-  build_scatter_plan(s);
-  fit_field_windows(s);
-  particles_to_grid(s, false);
-  assemble_consistent_mass(s);
+  State s = with_band(free_strip_toml());
   const GridFields& G = s.fields;
   const std::size_t n = G.size();
   // A smooth field and a rough one.
@@ -178,11 +184,7 @@ TEST(ConsistentMass, momentum_solve_inverts_the_consistent_mass_on_a_resolved_wa
   // from b = M_C v the momentum solve gives back v to the sweeps' error, (1 - lambda)^3 =
   // 1.3e-3 (lambda = 0.89, docs/theory.md §19), at the nodes 8 or more from the free ends
   // (whose truncated rows make the error there, and each sweep carries it two nodes in).
-  State s = make_state(parse_case(free_strip_toml(32)));
-  build_scatter_plan(s);
-  fit_field_windows(s);
-  particles_to_grid(s, false);
-  assemble_consistent_mass(s);
+  State s = with_band(free_strip_toml(32));
   const GridFields& G = s.fields;
   const std::size_t n = G.size();
   const double k = 2.0 * M_PI / (8 * kH);
