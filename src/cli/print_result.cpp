@@ -44,7 +44,7 @@ void print_readable_summary(const Case& c, const RunResult& r) {
     const WaveSpeeds w = wave_speeds(lower, c.plane);
     std::string line = fmt::format("# {} {}: ", q.fault ? "fault" : "crack", c.interface_names[i]);
     if (q.grows) {
-      if (!q.grown_length) fmt::print("{}did not grow\n", line);
+      if (q.grown_length == 0.0) fmt::print("{}did not grow\n", line);
       else
         fmt::print("{}grew from {:.4g} {} at {:.2f} degrees to its direction, by {:.4g} {} ({} branches)\n", line,
                    u.tf * q.initiation_time, u.t, q.initial_angle, u.lf * q.grown_length, u.l, q.branches);

@@ -107,17 +107,17 @@ std::vector<StationProbe> make_probes(const Case& c, RunState& s,
     StationProbe p;
     p.interface = st.interface;
     if (st.interface >= 0) {
-      const CohesiveInterface& c = s.interface(std::size_t(st.interface));
-      const double arc = project(c.spec.geometry(), st.x, st.y).s;
+      const CohesiveInterface& fault = s.interface(std::size_t(st.interface));
+      const double arc = project(fault.spec.geometry(), st.x, st.y).s;
       // The node pair around the arc length (open line; a closed one ends on node 0).
-      const std::size_t n = c.num_nodes();
+      const std::size_t n = fault.num_nodes();
       std::size_t a = 0;
-      while (a + 1 < n && c.s0[a + 1] <= arc) ++a;
+      while (a + 1 < n && fault.s0[a + 1] <= arc) ++a;
       p.a = a;
-      p.b = a + 1 < n ? a + 1 : (c.closed ? 0 : a);
-      const double len = p.b == p.a ? 1.0 : (p.b == 0 ? c.length() : c.s0[p.b]) - c.s0[p.a];
-      p.f = p.b == p.a ? 0.0 : std::clamp((arc - c.s0[p.a]) / len, 0.0, 1.0);
-      p.state = std::holds_alternative<RateStateFriction>(c.spec.law);
+      p.b = a + 1 < n ? a + 1 : (fault.closed ? 0 : a);
+      const double len = p.b == p.a ? 1.0 : (p.b == 0 ? fault.length() : fault.s0[p.b]) - fault.s0[p.a];
+      p.f = p.b == p.a ? 0.0 : std::clamp((arc - fault.s0[p.a]) / len, 0.0, 1.0);
+      p.state = std::holds_alternative<RateStateFriction>(fault.spec.law);
     } else {
       const NearestParticle& n = (*visited)[k];
       p.particle_id = n.id;

@@ -350,9 +350,9 @@ void distribute_nested(RunState& n, const Comm& comm, bool fresh, const NestedSp
 }
 
 void Halo::send_to_level_owners(RunState& n) {
-  const Comm& comm = halo_of(n.levels[0]).comm;
+  const Comm& world = halo_of(n.levels[0]).comm;
   constexpr std::size_t kRecord = (Particles::kPacked + 1) * sizeof(double);  // level, particle
-  std::vector<std::vector<unsigned char>> send(std::size_t(comm.size())), recv;
+  std::vector<std::vector<unsigned char>> send(std::size_t(world.size())), recv;
   for (std::size_t l = 0; l < n.levels.size(); ++l) {
     State& s = n.levels[l];
     Halo& h = halo_of(s);
@@ -378,7 +378,7 @@ void Halo::send_to_level_owners(RunState& n) {
     P.move_marked(leaving, gone);
     s.plan.valid = false;
   }
-  comm.all_to_all(send, recv);
+  world.all_to_all(send, recv);
   for (const std::vector<unsigned char>& in : recv)  // in rank order
     for (std::size_t at = 0; at + kRecord <= in.size(); at += kRecord) {
       double rec[Particles::kPacked + 1];
@@ -401,19 +401,19 @@ void Halo::migrate_levels_if_due(RunState& n) {
 }
 
 void Halo::finish_nested_step(RunState& n, const NestedDrift& before) {
-  const Comm& comm = halo_of(n.levels[0]).comm;
+  const Comm& world = halo_of(n.levels[0]).comm;
   std::vector<double> move;
   for (const State& s : n.levels) move.push_back(s.last_move);
-  comm.max(move.data(), int(move.size()));
+  world.max(move.data(), int(move.size()));
   double largest = 0.0;
   for (std::size_t l = 0; l < n.levels.size(); ++l) {
     n.levels[l].window_drift = before.window_drift[l] + move[l];
     largest = std::max(largest, move[l]);
   }
-  std::string failure;
+  std::string found;
   for (State& s : n.levels) {
     halo_of(s).drift += largest;
-    if (failure.empty()) failure = halo_of(s).failure;
+    if (found.empty()) found = halo_of(s).failure;
     halo_of(s).failure.clear();
   }
   // The reaches hold a particle's stencil while it stays within a cell of its block; with
@@ -421,15 +421,15 @@ void Halo::finish_nested_step(RunState& n, const NestedDrift& before) {
   // the bound is checked: past it a scatter would miss the halo. (One dt for every level: the
   // next step begins with the move, as on one grid.)
   const Halo& h = halo_of(n.levels[0]);
-  if (failure.empty() && n.subcycled() && h.drift > kMigrateCells * h.cell)
-    failure = fmt::format("step {}, t = {:.6g} s: particles may have moved {:.3g} finest cells since they last "
-                          "changed rank (the halo holds 1): the per-level time steps kept the levels "
-                          "apart too long; run without time.subcycling",
-                          n.step, n.time, h.drift / h.cell);
-  const int failed = comm.first_with(!failure.empty());
+  if (found.empty() && n.subcycled() && h.drift > kMigrateCells * h.cell)
+    found = fmt::format("step {}, t = {:.6g} s: particles may have moved {:.3g} finest cells since they last "
+                        "changed rank (the halo holds 1): the per-level time steps kept the levels "
+                        "apart too long; run without time.subcycling",
+                        n.step, n.time, h.drift / h.cell);
+  const int failed = world.first_with(!found.empty());
   if (failed < 0) return;
-  const std::string what = comm.broadcast(failure, failed);
-  throw SimulationError(comm.size() > 1 ? fmt::format("{} (rank {})", what, failed) : what);
+  const std::string what = world.broadcast(found, failed);
+  throw SimulationError(world.size() > 1 ? fmt::format("{} (rank {})", what, failed) : what);
 }
 
 RunState make_nested_rank_state(const Case& c, const Comm& comm) {

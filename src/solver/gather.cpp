@@ -250,7 +250,7 @@ void move_particles(Particles& P, std::size_t p, int n, const Gathered& g, doubl
       // floor for the particles inside the grid (u > 0); a non-finite or outside one is
       // diagnosed by the caller, so its column is only kept inside the tolerance here.
       const double u = (x[k] - origin) * inv_h;
-      col[k] = (std::fabs(u) <= DBL_MAX) & (u > 0.0) ? std::floor(u) : lim.col_lo;
+      col[k] = ((std::fabs(u) <= DBL_MAX) & (u > 0.0)) ? std::floor(u) : lim.col_lo;
     }
   }
   // Non-short-circuit tests and an int or-reduction: with && and a bool || reduction GCC 12
