@@ -243,7 +243,7 @@ std::vector<KeyDoc> build_schema() {
       {"solver.flip", "number", "", "1.0", "[0, 1] (1 = FLIP, 0 = PIC)",
        "FLIP/PIC blend of the particle velocity update", "1.0"},
       {"solver.mass", "string", "", "\"lumped\"",
-       "\"lumped\", \"averaged\" (\"averaged\": one grid level, one process, no [interface], no velocity region)",
+       "\"lumped\", \"averaged\" (\"averaged\": one grid level, no [interface], no velocity region)",
        "the nodal mass of the grid equations: lumped, or the grid velocity projected with the "
        "consistent mass and the acceleration taken with the average of the lumped and consistent "
        "masses, which cancels the leading dispersion error (docs/theory.md §19; the step is "

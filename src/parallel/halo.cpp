@@ -232,6 +232,49 @@ void Halo::sum(State& s, std::initializer_list<NodalArray> arrays) {
     }
 }
 
+// halo_sum_lanes: Halo::sum's exchange for `lanes` values per node of a scratch array (each
+// rank's partial products over its own particles), summed in rank order at every halo node.
+void Halo::sum_lanes(const State& s, double* values, int lanes) {
+  Halo& h = *this;
+  const GridFields& G = s.fields;
+  const std::size_t L = std::size_t(lanes), F = std::size_t(G.num_fields);
+  for (std::size_t k = 0; k < h.peers.size(); ++k) {
+    const NodeBox& b = h.peers[k].box;
+    const std::size_t n = std::size_t(b.count()) * F * L;
+    PeerBuffers& buf = h.buffers[k];
+    buf.send.resize(n * sizeof(double));
+    buf.recv.resize(n * sizeof(double));
+    double* out = reinterpret_cast<double*>(buf.send.data());
+    for (std::size_t f = 0; f < F; ++f)
+      for (int j = b.j0; j <= b.j1; ++j)
+        for (int i = b.i0; i <= b.i1; ++i) {
+          const bool held = G.holds(int(f), i, j);
+          const std::size_t e = held ? G.index(int(f), i, j) : 0;
+          for (std::size_t c = 0; c < L; ++c) *out++ = held ? values[L * e + c] : 0.0;
+        }
+  }
+  h.exchange(true);
+  for (std::size_t f = 0; f < F; ++f)
+    for (std::size_t n = 0; n + 1 < h.first.size(); ++n) {
+      if (!G.holds(int(f), h.node_i[n], h.node_j[n])) continue;
+      const std::size_t e = G.index(int(f), h.node_i[n], h.node_j[n]);
+      for (std::size_t c = 0; c < L; ++c) {
+        double sum = 0.0;
+        for (std::size_t t = h.first[n]; t < h.first[n + 1]; ++t) {
+          const Halo::Term& term = h.terms[t];
+          if (term.peer < 0) {
+            sum += values[L * e + c];
+            continue;
+          }
+          const long cnt = h.peers[std::size_t(term.peer)].box.count();
+          sum += read_double(h.buffers[std::size_t(term.peer)].recv,
+                             (f * std::size_t(cnt) + std::size_t(term.place)) * L + c);
+        }
+        values[L * e + c] = sum;
+      }
+    }
+}
+
 void Halo::save(const State& s, std::initializer_list<NodalArray> arrays) {
   Halo& h = *this;
   const GridFields& G = s.fields;

@@ -123,6 +123,7 @@ struct Halo final : RankExchange {
   void sum(State& s, std::initializer_list<NodalArray> arrays) override;
   void save(const State& s, std::initializer_list<NodalArray> arrays) override;
   void sum_added(State& s, std::initializer_list<NodalArray> arrays) override;
+  void sum_lanes(const State& s, double* values, int lanes) override;
   void lowest_region(const State& s, std::vector<int>& mark, std::vector<std::size_t>& changed) override;
   bool counts_node(const State& s, int field, std::size_t node) const override;
   void sync_interface_nodes(State& s, CohesiveInterface& c, std::initializer_list<InterfaceArray> arrays) override;

@@ -204,12 +204,6 @@ std::vector<StationProbe> start_run(RunContext& ctx, const Case& c, const CaseSu
           "only; run this case without mpiexec (or set it to false)",
           c.interface_names[k]));
   }
-  // The averaged mass's solves read every neighbour's value within two nodes, which a rank's
-  // halo does not exchange between sweeps (solver/consistent_mass.hpp).
-  if (comm.distributed() && c.solver.mass == MassMatrix::averaged)
-    throw InputError(
-        "input key 'solver.mass' = \"averaged\": runs on one process only; run this case without "
-        "mpiexec (or set solver.mass = \"lumped\")");
   try {
     std::vector<StationProbe> probes =
         set_up(ctx, c, options.output_dir, options.checkpoint_interval, comm, options.resume);

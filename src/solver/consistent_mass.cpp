@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "solver/rank_exchange.hpp"
 #include "solver/stencil_batch.hpp"
 #include "solver/strip_tile.hpp"
 
@@ -116,7 +117,10 @@ void solve(State& s, double* const* b, const double* alpha, const Known* what) {
   }
   set_known(s, kN, what, x, fixed);
   for (int sweep = 0; sweep < kMassSweeps; ++sweep) {
+    // Each rank's band holds its own particles' products: the partial M x sums over the ranks
+    // at the nodes they share (x is the same on every copy), as the momentum does.
     apply<kN>(s, x, r);
+    halo_sum_lanes(s, r, kN);
     // x += M_L^-1 (b - M x)
 #pragma omp parallel for schedule(static)
     for (long i = 0; i < count; ++i) {

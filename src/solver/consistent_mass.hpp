@@ -8,8 +8,9 @@
 // (Krieg & Key 1973, Marfurt 1984) it is M_A^-1: the (kh)^2 term of the phase error cancels.
 // Both solves are a fixed number of Richardson sweeps preconditioned with M_L, each result
 // written back as lumped-mass momentum or force (M_L x), so the updates that follow (velocity
-// BCs, absorbing edges, regions) divide by m_i as before. Per field; one level, one process
-// (input/case_checks and the run set-up refuse the rest).
+// BCs, absorbing edges, regions) divide by m_i as before. Per field; one level (input/
+// case_checks refuses the rest). Distributed: each rank's band holds its own particles, and
+// every sweep's product sums over the ranks at their shared nodes (halo_sum_lanes).
 #pragma once
 
 #include "solver/state.hpp"

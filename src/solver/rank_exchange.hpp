@@ -10,6 +10,8 @@
 //                        their contributions, in rank order (the same bits on every copy); with
 //                        the mass first it also records which rank counts the node (counts_node);
 //   halo_save/_sum_added the same for what a phase adds to arrays already summed;
+//   halo_sum_lanes       the same for a scratch array of `lanes` values per node (the averaged
+//                        mass's products M x, solver/consistent_mass.hpp);
 //   halo_lowest_region   [loads] velocity regions: every copy of a node prescribed alike;
 //   counts_node          whether this rank counts a node in node-counted sums (edge work);
 //   sync_interface_nodes owners send interface node arrays to the ranks that know the nodes;
@@ -43,6 +45,7 @@ class RankExchange {
   virtual void sum(State& s, std::initializer_list<NodalArray> arrays) = 0;
   virtual void save(const State& s, std::initializer_list<NodalArray> arrays) = 0;
   virtual void sum_added(State& s, std::initializer_list<NodalArray> arrays) = 0;
+  virtual void sum_lanes(const State& s, double* values, int lanes) = 0;
   virtual void lowest_region(const State& s, std::vector<int>& mark, std::vector<std::size_t>& changed) = 0;
   virtual bool counts_node(const State& s, int field, std::size_t node) const = 0;
   virtual void sync_interface_nodes(State& s, CohesiveInterface& c,
@@ -65,6 +68,10 @@ class RankExchange {
 
 inline void halo_sum(State& s, std::initializer_list<NodalArray> arrays) {
   if (s.halo) s.halo->sum(s, arrays);
+}
+// values[lanes * e + c], e a node of the fields (GridFields::index), c < lanes.
+inline void halo_sum_lanes(const State& s, double* values, int lanes) {
+  if (s.halo) s.halo->sum_lanes(s, values, lanes);
 }
 inline void halo_save(State& s, std::initializer_list<NodalArray> arrays) {
   if (s.halo) s.halo->save(s, arrays);
