@@ -89,6 +89,29 @@ double read_double(const std::vector<unsigned char>& buf, std::size_t k) {
   return v;
 }
 
+// The send buffers of Halo::sum and sum_lanes: per peer, field-major, the box's nodes row by
+// row, `per_node` values per node, value(e, v) for node e of the fields (0 where the field has
+// no window: this rank added nothing there); the receive buffers sized alike.
+template <class Value>
+void pack_peer_boxes(Halo& h, const GridFields& G, std::size_t per_node, const Value& value) {
+  const std::size_t F = std::size_t(G.num_fields);
+  for (std::size_t k = 0; k < h.peers.size(); ++k) {
+    const NodeBox& b = h.peers[k].box;
+    const std::size_t n = std::size_t(b.count()) * F * per_node;
+    PeerBuffers& buf = h.buffers[k];
+    buf.send.resize(n * sizeof(double));
+    buf.recv.resize(n * sizeof(double));
+    double* out = reinterpret_cast<double*>(buf.send.data());
+    for (std::size_t f = 0; f < F; ++f)
+      for (int j = b.j0; j <= b.j1; ++j)
+        for (int i = b.i0; i <= b.i1; ++i) {
+          const bool held = G.holds(int(f), i, j);
+          const std::size_t e = held ? G.index(int(f), i, j) : 0;
+          for (std::size_t v = 0; v < per_node; ++v) *out++ = held ? value(e, v) : 0.0;
+        }
+  }
+}
+
 }  // namespace
 
 void Halo::exchange(bool sized) {
@@ -181,23 +204,7 @@ void Halo::sum(State& s, std::initializer_list<NodalArray> arrays) {
   Halo& h = *this;
   GridFields& G = s.fields;
   const std::size_t A = arrays.size(), F = std::size_t(G.num_fields);
-  // Pack: per peer, field-major, the box's nodes row by row, the arrays per node (0 where the
-  // field has no window: this rank added nothing there).
-  for (std::size_t k = 0; k < h.peers.size(); ++k) {
-    const NodeBox& b = h.peers[k].box;
-    const std::size_t n = std::size_t(b.count()) * F * A;
-    PeerBuffers& buf = h.buffers[k];
-    buf.send.resize(n * sizeof(double));
-    buf.recv.resize(n * sizeof(double));
-    double* out = reinterpret_cast<double*>(buf.send.data());
-    for (std::size_t f = 0; f < F; ++f)
-      for (int j = b.j0; j <= b.j1; ++j)
-        for (int i = b.i0; i <= b.i1; ++i) {
-          const bool held = G.holds(int(f), i, j);
-          const std::size_t e = held ? G.index(int(f), i, j) : 0;
-          for (const NodalArray a : arrays) *out++ = held ? (G.*a)[e] : 0.0;
-        }
-  }
+  pack_peer_boxes(h, G, A, [&](std::size_t e, std::size_t a) { return (G.*arrays.begin()[a])[e]; });
   h.exchange(true);
   // Every halo node: the holders' values in rank order (this rank's own in its place). With
   // the mass (the P2G sum), also whether this rank is the lowest that gave the node mass: the
@@ -238,21 +245,7 @@ void Halo::sum_lanes(const State& s, double* values, int lanes) {
   Halo& h = *this;
   const GridFields& G = s.fields;
   const std::size_t L = std::size_t(lanes), F = std::size_t(G.num_fields);
-  for (std::size_t k = 0; k < h.peers.size(); ++k) {
-    const NodeBox& b = h.peers[k].box;
-    const std::size_t n = std::size_t(b.count()) * F * L;
-    PeerBuffers& buf = h.buffers[k];
-    buf.send.resize(n * sizeof(double));
-    buf.recv.resize(n * sizeof(double));
-    double* out = reinterpret_cast<double*>(buf.send.data());
-    for (std::size_t f = 0; f < F; ++f)
-      for (int j = b.j0; j <= b.j1; ++j)
-        for (int i = b.i0; i <= b.i1; ++i) {
-          const bool held = G.holds(int(f), i, j);
-          const std::size_t e = held ? G.index(int(f), i, j) : 0;
-          for (std::size_t c = 0; c < L; ++c) *out++ = held ? values[L * e + c] : 0.0;
-        }
-  }
+  pack_peer_boxes(h, G, L, [&](std::size_t e, std::size_t c) { return values[L * e + c]; });
   h.exchange(true);
   for (std::size_t f = 0; f < F; ++f)
     for (std::size_t n = 0; n + 1 < h.first.size(); ++n) {
