@@ -61,7 +61,9 @@ std::vector<CrackTip> precrack_tips(const InterfaceSpec& is, double tol, double 
 
 void extend_interface(CohesiveInterface& c, LineEnd at, double x, double y, double ux, double uy) {
   if (c.closed) throw std::logic_error("extend_interface: a closed interface has no ends");
-  if (!c.rank_owned.empty()) throw std::logic_error("extend_interface: one process only");
+  // Distributed (rank_owned set): the grown interface starts without ownership; the caller
+  // distributes it again (parallel/halo.hpp, follow_grown_interfaces), every rank having grown
+  // it alike from the whole state.
   InterfaceSpec spec = c.spec;
   Polyline line;
   const bool front = at == LineEnd::start;

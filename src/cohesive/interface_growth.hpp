@@ -11,7 +11,8 @@
 // new segment's Gauss points start separated on a pre-crack (law contact) and intact on a cohesive
 // crack (drawn_open or not: the law models the process zone), and
 // the new node of a pre-crack counts as cracked at the interface's time. Arc lengths s0 are
-// measured from the new start. One process (no rank ownership).
+// measured from the new start. Distributed runs: the grown interface has no rank ownership
+// (every node owned); the caller distributes it again (parallel/halo.hpp).
 #pragma once
 #include <vector>
 

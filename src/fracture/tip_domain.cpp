@@ -43,7 +43,7 @@ void tip_domain_points(const Grid& g, const GridFields& fields, const Particles&
                        const std::vector<ElasticStiffness>& stiffness,
                        const std::vector<TiedFields>& ties, const TipFrame& tip, double reach,
                        double dt, const std::vector<InitialStrain>& initial,
-                       std::vector<DomainPoint>& out) {
+                       std::vector<DomainPoint>& out, const DomainSums& ranks) {
   out.clear();
   const double h = std::max(g.x.h, g.y.h);
   // The points: boxes within reach + a cell. The maps: every particle within two more cells
@@ -81,7 +81,8 @@ void tip_domain_points(const Grid& g, const GridFields& fields, const Particles&
       mapped.insert(mapped.end(), mine.begin(), mine.end());
     }
   }
-  if (mapped.empty()) return;
+  // Distributed: every rank goes on to the sums below, with particles near the tip or not.
+  if (mapped.empty() && !ranks.distributed()) return;
   // Each mapped particle's GIMP stencils, once: the maps and the points' gradients use them.
   const long nm = long(mapped.size());
   msx.resize(mapped.size()), msy.resize(mapped.size());
@@ -97,6 +98,11 @@ void tip_domain_points(const Grid& g, const GridFields& fields, const Particles&
     const int i = msx[k].first, j = msy[k].first;
     imin = std::min(imin, i), imax = std::max(imax, i + 2), jmin = std::min(jmin, j), jmax = std::max(jmax, j + 2);
   }
+  if (ranks.distributed()) {  // the box of every rank's mapped particles
+    imin = int(ranks.min(double(imin))), jmin = int(ranks.min(double(jmin)));
+    imax = -int(ranks.min(-double(imax))), jmax = -int(ranks.min(-double(jmax)));
+    if (imax < 0) return;  // no particle near the tip on any rank
+  }
   L.i0 = imin, L.j0 = jmin, L.nx = imax - imin + 1, L.ny = jmax - jmin + 1;
   const std::size_t size = std::size_t(L.fields) * std::size_t(L.nx) * std::size_t(L.ny);
   for (auto* v : {&L.m, &L.ux, &L.uy, &L.vx, &L.vy}) v->assign(size, 0.0);
@@ -111,6 +117,9 @@ void tip_domain_points(const Grid& g, const GridFields& fields, const Particles&
         L.m[n] += w, L.ux[n] += w * ux, L.uy[n] += w * uy, L.vx[n] += w * P.vx[p], L.vy[n] += w * P.vy[p];
       }
   }
+  // Distributed: a node's sums over every rank's particles, as one process maps them all.
+  if (ranks.distributed())
+    for (auto* v : {&L.m, &L.ux, &L.uy, &L.vx, &L.vy}) ranks.sum(v->data(), v->size());
   // Tied nodes: one body, both fields hold the sums.
   for (const TiedFields& t : ties)
     for (std::size_t n : *t.nodes) {

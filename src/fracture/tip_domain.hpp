@@ -8,9 +8,13 @@
 // (GridFields::dvel / dt). The two fields of a crack meet at tied nodes (bonded stretches: the
 // intact material beyond a tip) as one body there, so the maps sum both fields at those nodes.
 // Contract: every point within `reach` + a cell of the tip (m) is returned; the nodal maps see every particle that reaches their
-// nodes. One process and one level (the caller passes the level holding the tip).
+// nodes. One level (the caller passes the level holding the tip). Distributed runs pass
+// DomainSums: each rank maps its own particles, the maps are summed over the ranks before they
+// are differentiated, and each rank returns its own particles' points (their integrals are sums:
+// the caller sums them over the ranks too).
 #pragma once
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 #include "fracture/j_integral.hpp"
@@ -34,6 +38,14 @@ struct InitialStrain {
   double exx = 0.0, eyy = 0.0, exy = 0.0;
 };
 
+// What the ranks of a distributed run add up (empty functions: one process). `sum`: element-wise
+// sums over the ranks, the same bits on every rank; `min`: the smallest value over the ranks.
+struct DomainSums {
+  std::function<void(double*, std::size_t)> sum;
+  std::function<double(double)> min;
+  bool distributed() const { return bool(sum); }
+};
+
 // dt: the last step's (s; 0 gives zero accelerations). initial: per field (empty: none).
 std::vector<DomainPoint> tip_domain_points(const Grid& g, const GridFields& fields,
                                            const Particles& P,
@@ -47,6 +59,6 @@ void tip_domain_points(const Grid& g, const GridFields& fields, const Particles&
                        const std::vector<ElasticStiffness>& stiffness,
                        const std::vector<TiedFields>& ties, const TipFrame& tip, double reach,
                        double dt, const std::vector<InitialStrain>& initial,
-                       std::vector<DomainPoint>& out);
+                       std::vector<DomainPoint>& out, const DomainSums& ranks = {});
 
 }  // namespace rupture

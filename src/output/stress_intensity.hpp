@@ -11,7 +11,8 @@
 // (m/s: a growing crack's tip's, growing_tip_speed; 0 for a crack that does not grow; K is read
 // at it with running_tip = true, below 0.95 c_R).
 // Written to DIR/stress_intensity_NAME.csv atomically at every flush; the rows are
-// checkpointed. One process; on nested levels the level holding the interface.
+// checkpointed. On nested levels the level holding the interface; distributed, every rank
+// reads the whole domain (solver/crack_tips.hpp) and rank 0 writes.
 #pragma once
 #include <cstddef>
 #include <string>

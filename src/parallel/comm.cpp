@@ -79,6 +79,17 @@ void Comm::sum(double* v, int n) const {
   check(MPI_Allreduce(MPI_IN_PLACE, v, n, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD), "MPI_Allreduce");
 }
 
+void Comm::sum_in_rank_order(double* v, int n) const {
+  if (size_ == 1 || n == 0) return;
+  std::vector<double> all(std::size_t(n) * std::size_t(size_));
+  check(MPI_Allgather(v, n, MPI_DOUBLE, all.data(), n, MPI_DOUBLE, MPI_COMM_WORLD), "MPI_Allgather");
+  for (int i = 0; i < n; ++i) {
+    double total = all[std::size_t(i)];
+    for (int r = 1; r < size_; ++r) total += all[std::size_t(r) * std::size_t(n) + std::size_t(i)];
+    v[i] = total;
+  }
+}
+
 void Comm::max(double* v, int n) const {
   if (size_ == 1 || n == 0) return;
   check(MPI_Allreduce(MPI_IN_PLACE, v, n, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD), "MPI_Allreduce");

@@ -50,6 +50,9 @@ class Comm {
   double sum(double v) const;
   void sum(double* v, int n) const;  // element-wise, in place
   void max(double* v, int n) const;  // element-wise, in place
+  // Element-wise sums added in rank order (0, 1, ...) on every rank: the same bits everywhere,
+  // for sums that decisions every rank must take alike are made from (a crack tip's K).
+  void sum_in_rank_order(double* v, int n) const;
   long sum(long v) const;
   // The lowest rank for which `flag` is true, or -1 when none is.
   int first_with(bool flag) const;

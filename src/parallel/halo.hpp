@@ -134,6 +134,7 @@ struct Halo final : RankExchange {
   void migrate_levels_if_due(RunState& n) override;
   void finish_nested_step(RunState& n, const NestedDrift& before) override;
   double min_over_ranks(double v) const override { return comm.min(v); }
+  void sum_in_rank_order(double* values, std::size_t n) const override { comm.sum_in_rank_order(values, int(n)); }
   bool fixes_windows() const override { return !reaches.empty(); }
 };
 
@@ -257,6 +258,19 @@ void collect_interface_state(State& s);
 void collect_crack_times(State& s);
 void collect_interface_state(RunState& r);
 void collect_crack_times(RunState& r);
+// Crack growth on a distributed run (solver/crack_growth.hpp, which every rank runs alike on the
+// whole interface state: collect_interface_state first). What growth may change, per interface
+// slot: its nodes and its tie lines (a grown segment re-lays the tie beyond its tip, a split its
+// parent's and its branches'). After growth, the slots whose nodes or tie lines changed (and new
+// slots: branches) keep the ties growth laid on every node (State::bonded) as the halo's record
+// of all ties, and the ownership, known nodes, links and this rank's ties are found again
+// (distribute_interfaces).
+struct InterfaceShapes {
+  std::vector<std::size_t> nodes;
+  std::vector<std::vector<Polyline>> ties;
+};
+InterfaceShapes interface_shapes(const State& s);
+void follow_grown_interfaces(State& s, const InterfaceShapes& before);
 // The run's work on interface k (the ranks' parts summed), J/m.
 double interface_work(const RunState& r, std::size_t k);
 

@@ -202,6 +202,40 @@ void collect_crack_times(RunState& r) {
     if (!l.interfaces.empty()) collect_crack_times(l);
 }
 
+InterfaceShapes interface_shapes(const State& s) {
+  InterfaceShapes shapes;
+  for (const CohesiveInterface& c : s.interfaces) {
+    shapes.nodes.push_back(c.num_nodes());
+    shapes.ties.push_back(c.spec.bonded_lines);
+  }
+  return shapes;
+}
+
+void follow_grown_interfaces(State& s, const InterfaceShapes& before) {
+  if (!s.halo) return;
+  Halo& h = halo_of(s);
+  const auto same_lines = [](const std::vector<Polyline>& a, const std::vector<Polyline>& b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t i = 0; i < a.size(); ++i)
+      if (a[i].x != b[i].x || a[i].y != b[i].y) return false;
+    return true;
+  };
+  bool changed = false;
+  h.all_bonded.resize(s.bonded.size());
+  for (std::size_t i = 0; i < s.bonded.size(); ++i) {
+    const bool grown = i >= before.nodes.size() || i >= s.interfaces.size() ||
+                       s.interfaces[i].num_nodes() != before.nodes[i] ||
+                       !same_lines(s.interfaces[i].spec.bonded_lines, before.ties[i]);
+    if (!grown) continue;
+    h.all_bonded[i] = s.bonded[i];  // growth laid it on every node
+    changed = true;
+  }
+  if (!changed) return;
+  s.bonded = h.all_bonded;
+  distribute_interfaces(s);
+  s.windows_checked_step = -2;  // re-fit the windows (flipped particles' fields)
+}
+
 double interface_work(const RunState& r, std::size_t k) { return sum_over_ranks(r, r.interface(k).work); }
 
 }  // namespace rupture

@@ -99,7 +99,15 @@ RunResult run_case(const Case& c, const RunOptions& options) {
       // before the outputs and the checkpoint see it.
       if (synced && growing) {
         const auto t0 = std::chrono::steady_clock::now();
+        // Distributed: every rank grows the same cracks from the whole interface state, the
+        // tips' J domains summed over the ranks (solver/crack_tips.hpp), then each keeps its part.
+        InterfaceShapes before;
+        if (s.halo) {
+          collect_interface_state(s);
+          before = interface_shapes(s.levels[0]);
+        }
         grow_cracks(c, s, ctx.growth);
+        if (s.halo) follow_grown_interfaces(s.levels[0], before);
         for (std::size_t k = 0; k < ctx.cracks.size() && k < c.interfaces.size(); ++k)
           if (c.interfaces[k].growth.on()) ctx.cracks[k].follow(s.interface(k), true);
         ctx.growth_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -275,8 +275,10 @@ void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& rec
       for (double& r : near_sibling.j_domains) r *= std::max(tips[t].domains, kSmallestDomain * h / r_out);
       readings[t] = read_tip(L, near_sibling, tips[t].tip.frame, tips[t].mat, s.time, initial);
     };
-    if (tips.size() == 1) {
-      read(0);
+    // Distributed: one tip after another (each read sums over the ranks; MPI calls stay outside
+    // OpenMP regions).
+    if (tips.size() == 1 || L.halo) {
+      for (std::size_t t = 0; t < tips.size(); ++t) read(t);
     } else {
 #pragma omp parallel for schedule(static, 1)
       for (std::size_t t = 0; t < tips.size(); ++t) read(t);

@@ -6,6 +6,7 @@
 
 #include "fracture/near_tip_field.hpp"
 #include "fracture/tip_domain.hpp"
+#include "solver/rank_exchange.hpp"
 
 namespace rupture {
 
@@ -52,7 +53,13 @@ std::vector<TipIntegrals> read_tip(const State& L, const InterfaceSpec& is, cons
   }
   const double reach = is.j_domains.back() * h;
   thread_local std::vector<DomainPoint> pts;  // kept: its capacity is reused every step
-  tip_domain_points(L.grid, L.fields, L.particles, L.stiffness, ties, tip, reach, L.dt, initial, pts);
+  // Distributed: the maps summed over the ranks, each rank's own particles' points.
+  DomainSums ranks;
+  if (L.halo) {
+    ranks.sum = [&L](double* v, std::size_t n) { sum_over_ranks(L, v, n); };
+    ranks.min = [&L](double v) { return min_over_ranks(L, v); };
+  }
+  tip_domain_points(L.grid, L.fields, L.particles, L.stiffness, ties, tip, reach, L.dt, initial, pts, ranks);
   std::vector<FaceTraction> faces;
   for (std::size_t i = 0; i < pts.size(); ++i) {
     const auto [lo, hi] = carried.equal_range(pts[i].id);
@@ -60,7 +67,16 @@ std::vector<TipIntegrals> read_tip(const State& L, const InterfaceSpec& is, cons
   }
   std::vector<JDomain> domains;
   for (double cells : is.j_domains) domains.push_back({0.5 * cells * h, cells * h});
-  return tip_integrals(pts, tip, domains, material, faces);
+  std::vector<TipIntegrals> r = tip_integrals(pts, tip, domains, material, faces);
+  if (!L.halo) return r;
+  // J and M are sums over the points, K linear in M: the ranks' parts add up to the whole
+  // domain's (the same bits on every rank, so every rank's growth decision is the same).
+  std::vector<double> parts;
+  for (const TipIntegrals& t : r) parts.insert(parts.end(), {t.J, t.K_I, t.K_II, double(t.points)});
+  sum_over_ranks(L, parts.data(), parts.size());
+  for (std::size_t d = 0; d < r.size(); ++d)
+    r[d] = {parts[4 * d], parts[4 * d + 1], parts[4 * d + 2], std::size_t(parts[4 * d + 3])};
+  return r;
 }
 
 }  // namespace rupture

@@ -4,7 +4,8 @@
 //  - read_tip: the tip's domain points from the level's particles and grid (both fields summed
 //    at tied nodes; a prestressed body's initial strain added to the displacement gradient), the traction loads on faces inside the domains (the face term), and one
 //    TipIntegrals per domain of InterfaceSpec::j_domains (outer radius in cells, inner half).
-// One process; the level passed is the one holding the interface.
+// The level passed is the one holding the interface; distributed (State::halo), every rank
+// reads the whole domain's integrals (its maps and sums over the ranks): every rank calls it.
 #pragma once
 #include <vector>
 

@@ -19,6 +19,9 @@
 //   migrate_if_due       particles that left this rank's block go to its owner (and the split
 //                        follows the load: parallel/rebalance.cpp);
 //   finish_distributed_step  the step's drift bound; a failure on any rank stops every rank;
+//   sum_over_ranks       element-wise sums of a few values, added in rank order (the same bits
+//                        on every rank: a crack tip's J-domain maps and integrals, which every
+//                        rank's growth decision reads);
 //   nested_*             the same for nested levels (solver/nested_state.cpp's step);
 //   fail_in_step         a failure found in a phase: thrown at once on one process, kept until
 //                        the step's end on several (every rank takes part in its exchanges).
@@ -57,6 +60,7 @@ class RankExchange {
   virtual void migrate_levels_if_due(RunState& n) = 0;
   virtual void finish_nested_step(RunState& n, const NestedDrift& before) = 0;
   virtual double min_over_ranks(double v) const = 0;
+  virtual void sum_in_rank_order(double* values, std::size_t n) const = 0;
   // A distributed nested level: the split fixed its field windows to its reach.
   virtual bool fixes_windows() const = 0;
 
@@ -99,6 +103,9 @@ inline void finish_distributed_step(State& s, double drift_at_start) {
   if (s.halo) s.halo->finish_step(s, drift_at_start);
 }
 inline double min_over_ranks(const State& s, double v) { return s.halo ? s.halo->min_over_ranks(v) : v; }
+inline void sum_over_ranks(const State& s, double* values, std::size_t n) {
+  if (s.halo) s.halo->sum_in_rank_order(values, n);
+}
 inline void fail_in_step(State& s, const std::string& what) {
   if (!s.halo) throw SimulationError(what);
   if (s.halo->failure.empty()) s.halo->failure = what;

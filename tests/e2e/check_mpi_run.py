@@ -5,8 +5,11 @@ Usage: check_mpi_run.py SERIAL_DIR DISTRIBUTED_DIR RANKS BOUND
 history.csv: the same sample times, and kinetic energy, strain energy and external work equal
 to BOUND relative to each column's largest magnitude; crack_tip.csv and the last interface
 profile, every interface's last profile and crack_tip_NAME.csv and the Mach-angle readings value by value, to BOUND of each column's largest
-magnitude (nan, a side not measured, on both); run.json: status completed, "ranks"
-equal to RANKS, the same steps.
+magnitude (nan, a side not measured, on both); every growing crack's path (crack_path_NAME.csv)
+and every tip's J and K (stress_intensity_NAME.csv) value by value, positions to BOUND of the
+largest coordinate and K_I, K_II of the larger K (a K_II that is round-off of zero in mode I has
+no digits of its own); run.json: status completed, "ranks" equal to RANKS, the same steps, every
+cracks.NAME.KEY to BOUND.
 """
 import csv
 import json
@@ -74,6 +77,28 @@ for name in ["crack_tip.csv", "interface/interface_000004.csv", "mach_angle.csv"
                     continue
                 worst = max(worst, abs(fu - fv) / (scale[k] or 1e-300))
     check(same_shape and worst <= bound, f"{name}: {len(ra_)} rows, largest difference {worst:.2e} of its column's largest value")
+# Crack paths and tips: columns that share a scale (positions; the two K) share it.
+shared = ({"x", "y"}, {"K_I", "K_II"})
+for path in sorted(glob.glob(f"{a_dir}/crack_path_*.csv") + glob.glob(f"{a_dir}/stress_intensity_*.csv")):
+    name = os.path.basename(path)
+    sa = list(csv.DictReader(open(path)))
+    try:
+        sb = list(csv.DictReader(open(f"{b_dir}/{name}")))
+    except FileNotFoundError:
+        check(False, f"{name}: missing from {b_dir}")
+        continue
+    worst = 0.0
+    if sa and len(sa) == len(sb):
+        scale = {col: max(abs(float(r[col])) for r in sa) for col in sa[0].keys()}
+        for group in shared:
+            if group <= scale.keys():
+                top = max(scale[c] for c in group)
+                for c in group:
+                    scale[c] = top
+        for col in sa[0].keys():
+            worst = max(worst, max(abs(float(x[col]) - float(y[col])) for x, y in zip(sa, sb)) / (scale[col] or 1.0))
+    check(len(sa) == len(sb) and worst <= bound,
+          f"{name}: {len(sa)} and {len(sb)} rows, largest difference {worst:.2e} of its column's largest value")
 # Stations: each column to BOUND of its largest magnitude.
 for path in sorted(glob.glob(f"{a_dir}/stations/*.csv")):
     name = os.path.basename(path)
@@ -88,6 +113,9 @@ ra, rb = json.load(open(f"{a_dir}/run.json")), json.load(open(f"{b_dir}/run.json
 check(rb["status"] == "completed", f"status {rb['status']}")
 check(rb.get("ranks") == ranks and ra.get("ranks") == 1, f"ranks {ra.get('ranks')} and {rb.get('ranks')}")
 check(ra["steps"] == rb["steps"], f"steps {ra['steps']} and {rb['steps']}")
+for key in sorted(k for k in ra if k.startswith("cracks.")):
+    x, y = ra[key], rb.get(key)
+    check(y is not None and abs(x - y) <= bound * max(abs(x), 1e-300) if x else y == x, f"{key}: {x} and {y}")
 if "crack" in ra:
     for key in ("initiation_time", "sustained_speed", "final_tip"):
         x, y = ra["crack"][key], rb["crack"][key]

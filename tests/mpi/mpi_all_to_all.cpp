@@ -3,7 +3,8 @@
 // of its own length (0 included, one far longer than the rest) and contents, in rounds of a
 // small chunk (1 byte, 7, 64, 1000 bytes) and of the default one; every rank checks each
 // message it received, byte for byte, and prints `all_to_all ok rounds_checked=K` on rank 0
-// when all of them hold on every rank. Exit 0 then, 1 otherwise.
+// when all of them hold on every rank; Comm::sum_in_rank_order checked alike (the rank-order
+// sums, the same bits on every rank). Exit 0 then, 1 otherwise.
 #include <mpi.h>
 
 #include <fmt/format.h>
@@ -50,6 +51,27 @@ int main(int argc, char** argv) {
           ++bad;
           break;
         }
+      ++checked;
+    }
+  }
+  // Comm::sum_in_rank_order: each element the ranks' values added 0, 1, 2, ... (values whose sum
+  // depends on the order: 1e16 and 1 from different ranks), the same bits on every rank.
+  {
+    const std::vector<double> mine{1e16 * (me % 2 == 0 ? 1.0 : -1.0) + 1.0, 0.1 * (me + 1), me == 0 ? 1e16 : 1.0};
+    std::vector<double> v = mine;
+    world.sum_in_rank_order(v.data(), int(v.size()));
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      double expected = 0.0;
+      for (int q = 0; q < n; ++q) {
+        const double vq[3] = {1e16 * (q % 2 == 0 ? 1.0 : -1.0) + 1.0, 0.1 * (q + 1), q == 0 ? 1e16 : 1.0};
+        expected = q == 0 ? vq[i] : expected + vq[i];
+      }
+      const bool same_everywhere = world.min(v[i]) == world.max(v[i]);
+      if (v[i] != expected || !same_everywhere) {
+        fmt::print("rank {}: sum_in_rank_order element {} = {:.17g}, rank-order sum {:.17g}, same on every rank: {}\n",
+                   me, i, v[i], expected, same_everywhere);
+        ++bad;
+      }
       ++checked;
     }
   }
