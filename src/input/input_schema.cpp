@@ -573,8 +573,7 @@ std::vector<KeyDoc> build_schema() {
        "phase run: the motion given, K read); a "
        "crack (law = \"contact\", or a cohesive law that its new segments carry) drawn inside "
        "one body (body = ...), on a uniform grid or nested levels (one step for all; the path "
-       "inside the level that holds the crack; one process), or on one grid on several "
-       "processes; records K at the tips "
+       "inside the level that holds the crack), on one process or several; records K at the tips "
        "(stress_intensity)",
        "\"max_hoop\""},
       {"interface.*.toughness", "number", "Pa m^1/2", "none", "> 0; with growth = max_hoop",

@@ -259,15 +259,17 @@ void collect_crack_times(State& s);
 void collect_interface_state(RunState& r);
 void collect_crack_times(RunState& r);
 // Crack growth on a distributed run (solver/crack_growth.hpp, which every rank runs alike on the
-// whole interface state: collect_interface_state first). What growth may change, per interface
-// slot: its nodes and its tie lines (a grown segment re-lays the tie beyond its tip, a split its
-// parent's and its branches'). After growth, the slots whose nodes or tie lines changed (and new
-// slots: branches) keep the ties growth laid on every node (State::bonded) as the halo's record
-// of all ties, and the ownership, known nodes, links and this rank's ties are found again
-// (distribute_interfaces).
+// whole interface state: collect_interface_state first). Growth re-lays ties over the whole grid
+// (bonded_nodes): a grown segment the tie beyond its tip, a split its parent's and its
+// branches', on the crack's level and, nested, on every other level. What a level's ties and
+// interfaces were before growth (interface_shapes), and after it: every tie growth re-laid (its
+// interface's nodes or tie lines changed, its node list changed, or it is new: a branch's)
+// becomes the halo's record of that tie, and the ownership, known nodes, links and this rank's
+// ties are found again (distribute_interfaces).
 struct InterfaceShapes {
-  std::vector<std::size_t> nodes;
-  std::vector<std::vector<Polyline>> ties;
+  std::vector<std::size_t> nodes;                  // per interface slot
+  std::vector<std::vector<Polyline>> tie_lines;    // per interface slot
+  std::vector<std::vector<std::size_t>> tie_nodes;  // per tie (State::bonded)
 };
 InterfaceShapes interface_shapes(const State& s);
 void follow_grown_interfaces(State& s, const InterfaceShapes& before);

@@ -206,8 +206,9 @@ InterfaceShapes interface_shapes(const State& s) {
   InterfaceShapes shapes;
   for (const CohesiveInterface& c : s.interfaces) {
     shapes.nodes.push_back(c.num_nodes());
-    shapes.ties.push_back(c.spec.bonded_lines);
+    shapes.tie_lines.push_back(c.spec.bonded_lines);
   }
+  for (const BondedTie& b : s.bonded) shapes.tie_nodes.push_back(b.nodes);
   return shapes;
 }
 
@@ -220,13 +221,14 @@ void follow_grown_interfaces(State& s, const InterfaceShapes& before) {
       if (a[i].x != b[i].x || a[i].y != b[i].y) return false;
     return true;
   };
-  bool changed = false;
+  bool changed = s.interfaces.size() != before.nodes.size();
   h.all_bonded.resize(s.bonded.size());
   for (std::size_t i = 0; i < s.bonded.size(); ++i) {
-    const bool grown = i >= before.nodes.size() || i >= s.interfaces.size() ||
-                       s.interfaces[i].num_nodes() != before.nodes[i] ||
-                       !same_lines(s.interfaces[i].spec.bonded_lines, before.ties[i]);
-    if (!grown) continue;
+    bool relaid = i >= before.tie_nodes.size() || s.bonded[i].nodes != before.tie_nodes[i];
+    if (i < s.interfaces.size() && i < before.nodes.size())
+      relaid = relaid || s.interfaces[i].num_nodes() != before.nodes[i] ||
+               !same_lines(s.interfaces[i].spec.bonded_lines, before.tie_lines[i]);
+    if (!relaid) continue;
     h.all_bonded[i] = s.bonded[i];  // growth laid it on every node
     changed = true;
   }

@@ -101,13 +101,14 @@ RunResult run_case(const Case& c, const RunOptions& options) {
         const auto t0 = std::chrono::steady_clock::now();
         // Distributed: every rank grows the same cracks from the whole interface state, the
         // tips' J domains summed over the ranks (solver/crack_tips.hpp), then each keeps its part.
-        InterfaceShapes before;
+        std::vector<InterfaceShapes> before;
         if (s.halo) {
           collect_interface_state(s);
-          before = interface_shapes(s.levels[0]);
+          for (const State& level : s.levels) before.push_back(interface_shapes(level));
         }
         grow_cracks(c, s, ctx.growth);
-        if (s.halo) follow_grown_interfaces(s.levels[0], before);
+        if (s.halo)
+          for (std::size_t l = 0; l < s.levels.size(); ++l) follow_grown_interfaces(s.levels[l], before[l]);
         for (std::size_t k = 0; k < ctx.cracks.size() && k < c.interfaces.size(); ++k)
           if (c.interfaces[k].growth.on()) ctx.cracks[k].follow(s.interface(k), true);
         ctx.growth_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

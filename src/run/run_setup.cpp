@@ -191,14 +191,6 @@ void prepare_dir(const std::string& dir, const RunOptions& o) {
 std::vector<StationProbe> start_run(RunContext& ctx, const Case& c, const CaseSummary& summary,
                                     const RunOptions& options) {
   const Comm& comm = options.comm;
-  // Growth on several processes: one grid (nested levels grow a crack on every level at once,
-  // which the distributed levels' ties and windows do not follow yet).
-  for (std::size_t k = 0; k < c.interfaces.size(); ++k)
-    if (comm.distributed() && c.interfaces[k].growth.on() && c.grid.nested)
-      throw InputError(fmt::format(
-          "input key 'interface.{}.growth': crack growth on nested levels (grid.refinement = \"nested\") "
-          "runs on one process only; run this case without mpiexec, or on one grid",
-          c.interface_names[k]));
   try {
     std::vector<StationProbe> probes =
         set_up(ctx, c, options.output_dir, options.checkpoint_interval, comm, options.resume);

@@ -24,11 +24,11 @@
 //    sort's).
 // A tip whose segment would leave the body ends on its edge: no tie is left there, the cut is
 // through, and the pieces separate. A tip that comes within a cell of the edge cuts through to
-// its nearest point the same way (the ligament left is below what the grid resolves). One grid
-// (one process or several: every rank runs this alike on the whole interface state, each tip's
-// read summed over the ranks; the driver then distributes the grown interfaces again), or nested
-// levels with one step for all on one process (the crack read and grown on the level that holds
-// it, the others following its cut; input/ and run/ refuse the rest).
+// its nearest point the same way (the ligament left is below what the grid resolves). One grid,
+// or nested levels with one step for all (the crack read and grown on the level that holds it,
+// the others following its cut; input/ refuses the rest); one process or several: every rank
+// runs this alike on the whole interface state, each tip's read summed over the ranks, and the
+// driver then distributes the grown interfaces and ties again (parallel/halo.hpp).
 // Units: m, s, degrees in the records.
 #pragma once
 #include <vector>
