@@ -94,7 +94,9 @@ TEST(CaseSeeding, owned_parts_make_every_particle_once_bit_for_bit) {
       };
       const State s = make_state(c, &share);
       const Particles& P = s.particles;
-      if (part == 3) EXPECT_EQ(P.size(), 0u) << c.title;
+      if (part == 3) {
+        EXPECT_EQ(P.size(), 0u) << c.title;
+      }
       for (std::size_t p = 0; p < P.size(); ++p) {
         const auto it = at.find(P.id[p]);
         ASSERT_NE(it, at.end()) << c.title << ": id " << P.id[p];

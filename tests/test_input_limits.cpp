@@ -240,7 +240,7 @@ TEST(RunLimits, nested_level_checks_of_interfaces_run_at_input) {
 // its ends may lie on the body's edge): straight lines from a 0.5 mm hole's edge to the
 // strip's edge, along x, at 45 degrees and from just inside the material, are accepted.
 TEST(InputMessages, a_crack_may_start_on_the_edge_of_a_hole) {
-  for (const std::string& from : {"[0.0055, 0.001]", "[0.00535355339059327, 0.00135355339059327]", "[0.00551, 0.001]"}) {
+  for (const std::string from : {"[0.0055, 0.001]", "[0.00535355339059327, 0.00135355339059327]", "[0.00551, 0.001]"}) {
     const std::string to = from.find("0.00535") != std::string::npos ? "[0.006, 0.002]" : "[0.01, 0.001]";
     const std::string e = error_of(test::strip_case_toml(),
                                    {"bodies.strip.minus=[{shape=\"circle\", center=[0.005,0.001], radius=0.0005}]",
