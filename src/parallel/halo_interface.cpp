@@ -6,7 +6,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <cstring>
+#include <utility>
 
 #include "core/errors.hpp"
 #include "core/fault_injection.hpp"
@@ -24,16 +26,44 @@ bool near_block(const CellBlock& b, int c, int r, int cells) {
 
 constexpr int kKnownCells = 2;  // a rank knows the nodes whose reference cell is this near its block
 
-// An owner-masked array made whole on every rank: each node's value from its owner (sum of
-// the owner's value and zeros, exact).
-template <class T>
-void whole(const Comm& comm, const std::vector<unsigned char>& owned, std::vector<T>& v, std::size_t per_node) {
-  std::vector<double> buf(v.size(), 0.0);
-  for (std::size_t i = 0; i < v.size(); ++i)
-    if (owned[i / per_node]) buf[i] = double(v[i]);
-  comm.sum(buf.data(), int(buf.size()));
-  for (std::size_t i = 0; i < v.size(); ++i) v[i] = T(buf[i]);
-}
+// Owner-masked arrays made whole on every rank in one reduction: each node's values from its
+// owner (the sum of the owner's value and zeros, exact), `per_node` values per node in each
+// array (1: nodes; kGauss: Gauss points by segment, from the owner of its first node). One
+// reduction for all of them: crack growth collects every synchronized step.
+class WholeArrays {
+ public:
+  void add(std::vector<double>& v, std::size_t per_node) { doubles_.push_back({&v, per_node}); }
+  void add(std::vector<std::uint8_t>& v, std::size_t per_node) { flags_.push_back({&v, per_node}); }
+  void run(const Comm& comm, const std::vector<unsigned char>& owned) {
+    std::size_t n = 0;
+    for (const auto& [v, per] : doubles_) n += v->size();
+    for (const auto& [v, per] : flags_) n += v->size();
+    std::vector<double> buf(n, 0.0);
+    std::size_t at = 0;
+    const auto pack = [&](const auto& list) {
+      for (const auto& [v, per] : list) {
+        for (std::size_t i = 0; i < v->size(); ++i)
+          if (owned[i / per]) buf[at + i] = double((*v)[i]);
+        at += v->size();
+      }
+    };
+    pack(doubles_), pack(flags_);
+    comm.sum(buf.data(), int(buf.size()));
+    at = 0;
+    for (const auto& [v, per] : doubles_) {
+      std::copy(buf.begin() + long(at), buf.begin() + long(at + v->size()), v->begin());
+      at += v->size();
+    }
+    for (const auto& [v, per] : flags_) {
+      for (std::size_t i = 0; i < v->size(); ++i) (*v)[i] = std::uint8_t(buf[at + i]);
+      at += v->size();
+    }
+  }
+
+ private:
+  std::vector<std::pair<std::vector<double>*, std::size_t>> doubles_;
+  std::vector<std::pair<std::vector<std::uint8_t>*, std::size_t>> flags_;
+};
 
 // The rank owning each node of c: the block holding its reference point's cell.
 std::vector<int> node_owners(const Grid& g, const CohesiveInterface& c, const std::vector<CellBlock>& blocks) {
@@ -146,17 +176,18 @@ void collect_interface_state(State& s) {
   if (!s.halo) return;
   const Comm& comm = halo_of(s).comm;
   for (CohesiveInterface& c : s.interfaces) {
-    const std::vector<unsigned char>& o = c.rank_owned;
+    WholeArrays arrays;
     for (auto* v : {&c.ux_up, &c.uy_up, &c.ux_lo, &c.uy_lo, &c.fx_node, &c.fy_node,
                     &c.node_crack_time, &c.node_rupture_time, &c.node_peak_slip_rate,
                     &c.node_slip_path, &c.node_slip_rate, &c.stiffness_node, &c.jump_before})
-      if (v->size() == c.num_nodes()) whole(comm, o, *v, 1);
+      if (v->size() == c.num_nodes()) arrays.add(*v, 1);
     // Gauss points by segment, each from the owner of its first node.
     const std::size_t G = std::size_t(CohesiveInterface::kGauss);
     for (auto* v : {&c.gp_dn, &c.gp_dt, &c.gp_tn, &c.gp_tt, &c.gp_damage, &c.gp_slip, &c.gp_state, &c.gp_rate,
                      &c.gp_normal})
-      whole(comm, o, *v, G);
-    whole(comm, o, c.gp_separated, G);
+      arrays.add(*v, G);
+    arrays.add(c.gp_separated, G);
+    arrays.run(comm, c.rank_owned);
   }
 }
 
@@ -186,10 +217,13 @@ void Halo::check_faces_in_reach(State& s) {
 
 void collect_crack_times(State& s) {
   if (!s.halo) return;
-  for (CohesiveInterface& c : s.interfaces)
+  for (CohesiveInterface& c : s.interfaces) {
+    WholeArrays arrays;
     for (auto* v : {&c.node_crack_time, &c.node_rupture_time, &c.node_peak_slip_rate, &c.ux_up,
                     &c.uy_up, &c.ux_lo, &c.uy_lo})
-      whole(halo_of(s).comm, c.rank_owned, *v, 1);
+      arrays.add(*v, 1);
+    arrays.run(halo_of(s).comm, c.rank_owned);
+  }
 }
 
 void collect_interface_state(RunState& r) {
