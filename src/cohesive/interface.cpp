@@ -165,6 +165,7 @@ double CohesiveInterface::stored_energy() const {
       [&](const auto& law) {
         double e = 0.0;
         for (std::size_t s = 0; s < num_segments(); ++s) {
+          if (!owns(s)) continue;
           const double half = 0.5 * seg_length[s];
           for (int g = 0; g < kGauss; ++g) {
             const std::size_t i = s * kGauss + std::size_t(g);

@@ -190,7 +190,9 @@ struct CohesiveInterface {
   // The node crack criterion (E10): a node has cracked once law.crack_measure(jumps) reaches
   // law.crack_threshold(separation_factor) (Xu-Needleman: |jump| >= 5 delta_t; bilinear:
   // effective opening lambda >= 1, full softening).
-  // Energy stored in intact Gauss points (potential of the law), J/m.
+  // Energy stored in intact Gauss points (potential of the law), J/m. Distributed: the segments
+  // this rank owns (those whose first node it owns, as collect_interface_state takes them), to
+  // be summed over the ranks.
   double stored_energy() const;
 };
 

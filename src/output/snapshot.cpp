@@ -13,6 +13,7 @@
 #include <cerrno>
 #include <cstring>
 #include <stdexcept>
+#include <utility>
 
 #include "core/errors.hpp"
 #include "core/atomic_file.hpp"
@@ -188,17 +189,26 @@ void SnapshotWriter::write(const Particles& p, const std::vector<ElasticStiffnes
   write_xdmf();
 }
 
-// Each rank's selected particles in its own order, written to their rows (the id order of the
-// one-process file) through point selections, collectively.
+// Each rank's selected particles in row order (the id order of the one-process file), written
+// collectively to their rows as a union of hyperslabs, one per run of consecutive rows. (A point
+// selection, element by element, made MPI-IO move every value alone: 2.6 s a snapshot of
+// 116 300 particles on 2 ranks, against 0.2 s in one process.)
 void SnapshotWriter::write_collective(const Particles& p, const std::vector<ElasticStiffness>& stiffness,
                                       double time, long step, const std::string& tmp) {
-  std::vector<hsize_t> rows;
-  std::vector<double> pos, vel, half, tau, sxx, syy, sxy, szz;
-  std::vector<int> body, id, vertex;
+  std::vector<std::pair<hsize_t, std::size_t>> held;  // (row, particle)
   for (std::size_t i = 0; i < p.size(); ++i) {
     const std::int64_t slot = rows_.row(p.id[i]);
-    if (slot < 0) continue;
-    rows.push_back(hsize_t(slot));
+    if (slot >= 0) held.emplace_back(hsize_t(slot), i);
+  }
+  std::sort(held.begin(), held.end());
+  std::vector<std::pair<hsize_t, hsize_t>> runs;  // (first row, rows)
+  std::vector<double> pos, vel, half, tau, sxx, syy, sxy, szz;
+  std::vector<int> body, id, vertex;
+  for (const auto& [slot, i] : held) {
+    if (!runs.empty() && runs.back().first + runs.back().second == slot)
+      ++runs.back().second;
+    else
+      runs.emplace_back(slot, 1);
     id.push_back(int(p.id[i]));
     pos.insert(pos.end(), {p.x[i], p.y[i], 0.0});
     vel.insert(vel.end(), {p.vx[i], p.vy[i], 0.0});
@@ -210,7 +220,7 @@ void SnapshotWriter::write_collective(const Particles& p, const std::vector<Elas
     body.push_back(p.field[i]);
     vertex.push_back(int(slot));
   }
-  const hsize_t m = rows.size(), n = selected_;
+  const hsize_t m = held.size(), n = selected_;
   hid_t fapl = H5Pcreate(H5P_FILE_ACCESS);
   H5Pset_fapl_mpio(fapl, MPI_COMM_WORLD, MPI_INFO_NULL);
   errno = 0;
@@ -224,17 +234,11 @@ void SnapshotWriter::write_collective(const Particles& p, const std::vector<Elas
     const hsize_t dims[2] = {n, cols};
     hid_t space = H5Screate_simple(cols == 1 ? 1 : 2, dims, nullptr);
     hid_t set = H5Dcreate2(file, name, type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-    std::vector<hsize_t> coord;  // (row[, col]) of every element this rank writes
-    coord.reserve(std::size_t(m * cols * (cols == 1 ? 1 : 2)));
-    for (const hsize_t r : rows)
-      for (hsize_t c = 0; c < cols; ++c) {
-        coord.push_back(r);
-        if (cols > 1) coord.push_back(c);
-      }
-    if (m > 0)
-      H5Sselect_elements(space, H5S_SELECT_SET, std::size_t(m * cols), coord.data());
-    else
-      H5Sselect_none(space);
+    H5Sselect_none(space);
+    for (const auto& [first, rows] : runs) {
+      const hsize_t start[2] = {first, 0}, count[2] = {rows, cols};
+      H5Sselect_hyperslab(space, H5S_SELECT_OR, start, nullptr, count, nullptr);
+    }
     const hsize_t count = m * cols;
     hid_t mem = H5Screate_simple(1, &count, nullptr);
     if (m == 0) H5Sselect_none(mem);

@@ -10,7 +10,8 @@
 
 namespace rupture {
 
-// The run's energies at its current time (distributed: every interface node from its owner).
+// The run's energies at its current time (distributed: one sum over the ranks of each rank's
+// particles, owned nodes and owned interface segments).
 EnergySample sample_energy(RunState& s);
 
 // Throws SimulationError when the kinetic + strain energy of sample e exceeds twice the energy
