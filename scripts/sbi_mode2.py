@@ -6,7 +6,9 @@ run on finer grids than the one stored (docs/faults.md, TPV103-2D).
 
 Usage:  scripts/sbi_mode2.py tpv103|tpv101 CELL_M [END_S] [OUT.csv]
 Prints the rupture time (slip rate above 1 mm/s), peak slip rate and final slip at the stations
-0, 2.5, 5, 7.5, 9, 12, 15, 18 km and the arrest position; OUT.csv gets the rupture-time profile.
+0, 2.5, 5, 7.5, 9, 12, 15, 18 km and the arrest position; OUT.csv gets the rupture-time profile
+and OUT_stations.csv every step's time, slip (m), slip rate (m/s) and shear traction (Pa) at
+each station.
 
 Method (Geubelle & Rice 1995; Lapusta et al. 2000). The fault y = 0 is periodic in x over
 L = 72 km. The shear traction is
@@ -191,6 +193,7 @@ def main():
     peak = np.zeros(N)
     stations = [0, 2.5, 5, 7.5, 9, 12, 15, 18]
     idx = [N // 2 + int(round(s * 1e3 / dx)) for s in stations]
+    series = np.zeros((nt, 1 + 3 * len(idx)))
     for n in range(nt):
         t1 = (n + 1) * dt
         # The history part of the convolution (steps before n+1), with slip averaged over each
@@ -216,13 +219,17 @@ def main():
             d1k = np.fft.rfft(d1)
             conv = conv_hist + 0.5 * W[0] * d1k
             f = np.fft.irfft(fac * conv, n=N)
-            V1 = solve(TAU + nuc + f, p1)
+            tau_lock = TAU + nuc + f
+            V1 = solve(tau_lock, p1)
             Vstar = 0.5 * (V + V1)
         delta, psi, V = d1, p1, V1
         hist[n + 1] = d1k
         newly = (V > 1e-3) & np.isinf(rupture_time)
         rupture_time[newly] = t1
         peak = np.maximum(peak, V)
+        series[n, 0] = t1
+        series[n, 1::3], series[n, 2::3] = delta[idx], V[idx]
+        series[n, 3::3] = (tau_lock - eta_rad * V)[idx]
         if (n + 1) % int(round(1.0 / dt)) == 0:
             front = x[np.isfinite(rupture_time)]
             print(f"t = {t1:.2f} s: ruptured to {front.max() / 1e3 if front.size else 0:.2f} km, "
@@ -236,6 +243,8 @@ def main():
     if out:
         np.savetxt(out, np.column_stack([x, rupture_time, peak, delta]), delimiter=",",
                    header="x_m,rupture_time_s,peak_slip_rate_m_s,slip_m", comments="")
+        head = "time_s," + ",".join(f"slip_{s:g}km,slip_rate_{s:g}km,shear_{s:g}km" for s in stations)
+        np.savetxt(out.replace(".csv", "") + "_stations.csv", series, delimiter=",", header=head, comments="")
 
 
 if __name__ == "__main__":
