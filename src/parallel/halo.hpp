@@ -252,12 +252,15 @@ long interface_nodes_sent(const State& s, const std::vector<CellBlock>& blocks, 
 // a diagnosis for the end of the step).
 // Every rank gets every node's and Gauss point's state from its owner (outputs: the interface
 // profiles, crack summaries, stored energy); collect_crack_times: the nodes' crack and rupture
-// times, peak slip rates and faces only (the crack tip samples and crack files).
+// times, peak slip rates and faces only (the crack tip samples and crack files);
+// collect_crack_fronts: the Gauss points' jumps and separated flags only (what growth's reads
+// take of the interface state: solver/crack_growth.hpp, crack_front).
 // On a run: on every level holding interfaces.
 void collect_interface_state(State& s);
 void collect_crack_times(State& s);
 void collect_interface_state(RunState& r);
 void collect_crack_times(RunState& r);
+void collect_crack_fronts(RunState& r);
 // Crack growth on a distributed run (solver/crack_growth.hpp, which every rank runs alike on the
 // whole interface state: collect_interface_state first). Growth re-lays ties over the whole grid
 // (bonded_nodes): a grown segment the tie beyond its tip, a split its parent's and its

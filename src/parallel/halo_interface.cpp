@@ -226,6 +226,18 @@ void collect_crack_times(State& s) {
   }
 }
 
+void collect_crack_fronts(RunState& r) {
+  for (State& l : r.levels) {
+    if (!l.halo) continue;
+    const std::size_t G = std::size_t(CohesiveInterface::kGauss);
+    for (CohesiveInterface& c : l.interfaces) {
+      WholeArrays arrays;
+      arrays.add(c.gp_dn, G), arrays.add(c.gp_dt, G), arrays.add(c.gp_separated, G);
+      arrays.run(halo_of(l).comm, c.rank_owned);
+    }
+  }
+}
+
 void collect_interface_state(RunState& r) {
   for (State& l : r.levels)
     if (!l.interfaces.empty()) collect_interface_state(l);

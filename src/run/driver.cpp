@@ -99,16 +99,18 @@ RunResult run_case(const Case& c, const RunOptions& options) {
       // before the outputs and the checkpoint see it.
       if (synced && growing) {
         const auto t0 = std::chrono::steady_clock::now();
-        // Distributed: every rank grows the same cracks from the whole interface state, the
-        // tips' J domains summed over the ranks (solver/crack_tips.hpp), then each keeps its part.
+        // Distributed: every rank reads the same tips (their J domains summed over the ranks,
+        // solver/crack_tips.hpp; the cracks' end segments from their owners) and takes the same
+        // decisions; before the first segment is laid every rank gathers the whole interface
+        // state and notes the shapes, and after growth each keeps its part.
         std::vector<InterfaceShapes> before;
-        if (s.halo) {
+        if (s.halo) collect_crack_fronts(s);
+        grow_cracks(c, s, ctx.growth, [&] {
+          if (!s.halo) return;
           collect_interface_state(s);
           for (const State& level : s.levels) before.push_back(interface_shapes(level));
-        }
-        grow_cracks(c, s, ctx.growth);
-        if (s.halo)
-          for (std::size_t l = 0; l < s.levels.size(); ++l) follow_grown_interfaces(s.levels[l], before[l]);
+        });
+        for (std::size_t l = 0; l < before.size(); ++l) follow_grown_interfaces(s.levels[l], before[l]);
         for (std::size_t k = 0; k < ctx.cracks.size() && k < c.interfaces.size(); ++k)
           if (c.interfaces[k].growth.on()) ctx.cracks[k].follow(s.interface(k), true);
         ctx.growth_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

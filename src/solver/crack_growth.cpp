@@ -209,8 +209,10 @@ TipMaterial growing_tip_material(const Case& c, std::size_t k, const CrackGrowth
   return m;
 }
 
-void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& records) {
+void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& records,
+                 const std::function<void()>& before_growth) {
   records.resize(c.interfaces.size());
+  bool grown = false;
   for (std::size_t k = 0; k < c.interfaces.size(); ++k) {
     const InterfaceSpec& is = c.interfaces[k];
     if (!is.growth.on()) continue;
@@ -336,6 +338,10 @@ void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& rec
         if (b.branch) gr.split = b.angle, ++splits;
       }
       grow.push_back(gr);
+    }
+    if (!grow.empty() && !grown) {
+      grown = true;
+      if (before_growth) before_growth();
     }
     // The end first: a new segment at the start shifts nothing the end's tip needs, and the
     // other way round, but each reads the line as it is now.

@@ -31,6 +31,7 @@
 // driver then distributes the grown interfaces and ties again (parallel/halo.hpp).
 // Units: m, s, degrees in the records.
 #pragma once
+#include <functional>
 #include <vector>
 
 #include "input/case.hpp"
@@ -86,8 +87,13 @@ TipMaterial growing_tip_material(const Case& c, std::size_t k, const CrackGrowth
                                  int label, LineEnd end, double now, double window);
 
 // Reads every growing crack's tips and grows those the criterion lets grow (at most one segment
-// per tip and call). records: one per interface (resized).
-void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& records);
+// per tip and call). records: one per interface (resized). The reads need, of the interface
+// state, only the particles and each crack's end segments (crack_front); `before_growth`, when
+// given, is called once, before the first segment of the call is laid, and not at all when
+// nothing grows (a distributed run gathers the whole interface state there: every rank takes
+// the same decisions, so every rank calls it at the same point).
+void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& records,
+                 const std::function<void()>& before_growth = {});
 
 // A restored run: lays the recorded segments on the interfaces again (their geometry, the ties
 // and the tied nodes; the particles' fields and the interfaces' state come from the
