@@ -261,8 +261,8 @@ void collect_crack_times(State& s);
 void collect_interface_state(RunState& r);
 void collect_crack_times(RunState& r);
 void collect_crack_fronts(RunState& r);
-// Crack growth on a distributed run (solver/crack_growth.hpp, which every rank runs alike on the
-// whole interface state: collect_interface_state first). Growth re-lays ties over the whole grid
+// Crack growth on a distributed run (solver/crack_growth.hpp, which every rank runs alike:
+// collect_crack_fronts for the reads, collect_interface_state once something is to grow). Growth re-lays ties over the whole grid
 // (bonded_nodes): a grown segment the tie beyond its tip, a split its parent's and its
 // branches', on the crack's level and, nested, on every other level. What a level's ties and
 // interfaces were before growth (interface_shapes), and after it: every tie growth re-laid (its
