@@ -5,6 +5,8 @@ references (uguca), written here from its equations, so that the references' own
 run on finer grids than the one stored (docs/faults.md, TPV103-2D).
 
 Usage:  scripts/sbi_mode2.py tpv103|tpv101 CELL_M [END_S] [OUT.csv]
+Needs numpy and mpmath (Debian: python3-numpy, python3-mpmath; the kernel is computed once, about
+4 minutes, and cached in /tmp).
 Prints the rupture time (slip rate above 1 mm/s), peak slip rate and final slip at the stations
 0, 2.5, 5, 7.5, 9, 12, 15, 18 km and the arrest position; OUT.csv gets the rupture-time profile
 and OUT_stations.csv every step's time, slip (m), slip rate (m/s) and shear traction (Pa) at
@@ -46,7 +48,7 @@ T_CUT = 100.0
 
 
 def kernel_table(eta, dT=0.01):
-    """C(T) on [0, T_CUT] and its running integral, cached beside this script's output."""
+    """C(T) on [0, T_CUT] (rows T, C), computed once and cached in /tmp."""
     cache = f"/tmp/sbi_mode2_kernel_eta{eta:.6f}_dT{dT}.npy"
     if os.path.exists(cache):
         return np.load(cache)
@@ -116,26 +118,22 @@ def main():
     block_len = [int(hist_len[j0:j1].max()) for j0, j1 in blocks]
     fac = -0.5 * MU * k  # f_k = fac * conv
 
-    # Friction parameters along the fault.
+    # Friction parameters along the fault: the benchmarks' taper B(x) (1 within W = 15 km, 0
+    # beyond W + w = 18 km) raises a (and, TPV103, V_w) outside.
+    if case not in ("tpv101", "tpv103"):
+        sys.exit(f"unknown case {case}")
     B, DC = (0.014, 0.4) if case == "tpv103" else (0.012, 0.02)
+    Bx = np.zeros(N)
+    W_, w_ = 15e3, 3e3
+    Bx[ax <= W_] = 1.0
+    mid = (ax > W_) & (ax < W_ + w_)
+    Bx[mid] = 0.5 * (1 + np.tanh(w_ / (ax[mid] - W_ - w_) + w_ / (ax[mid] - W_)))
     if case == "tpv103":
-        Bx = np.zeros(N)
-        W_, w_ = 15e3, 3e3
-        Bx[ax <= W_] = 1.0
-        mid = (ax > W_) & (ax < W_ + w_)
-        Bx[mid] = 0.5 * (1 + np.tanh(w_ / (ax[mid] - W_ - w_) + w_ / (ax[mid] - W_)))
         a = 0.01 + 0.01 * (1 - Bx)
         Vw = 0.1 + 0.9 * (1 - Bx)
         fw = 0.2
-    elif case == "tpv101":
-        Bx = np.zeros(N)
-        W_, w_ = 15e3, 3e3
-        Bx[ax <= W_] = 1.0
-        mid = (ax > W_) & (ax < W_ + w_)
-        Bx[mid] = 0.5 * (1 + np.tanh(w_ / (ax[mid] - W_ - w_) + w_ / (ax[mid] - W_)))
-        a = 0.008 + 0.008 * (1 - Bx)
     else:
-        sys.exit(f"unknown case {case}")
+        a = 0.008 + 0.008 * (1 - Bx)
     V_ini = 1e-12 if case == "tpv101" else 1e-16
     eta_rad = MU / (2 * CS)
     R_nuc, T_nuc, dtau_nuc = 3e3, 1.0, (25e6 if case == "tpv101" else 45e6)

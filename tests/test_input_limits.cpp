@@ -158,19 +158,55 @@ TEST(RunLimits, absurd_materials_times_and_sizes_are_refused_before_any_work) {
   // 3.8e9 steps of the strip (dt = 7.9e-8 s) are allowed, 5.1e9 are not: the bound is 2^52 x 1e-6.
   EXPECT_EQ(error_of(base, {"time.end=300.0"}), "");
   EXPECT_NE(error_of(base, {"time.end=400.0"}).find("at most 4.504e+09"), std::string::npos);
-  const std::string memory = error_of(base, {"solver.memory_limit_mib=0.001"});
-  EXPECT_NE(memory.find("'solver.memory_limit_mib' = 0.001"), std::string::npos) << memory;
+  // The strip's grid alone (at least 21 x 5 nodes, 11 doubles each: 0.009 MiB) fits in 0.02 MiB;
+  // with its 320 particles the case does not.
+  const std::string memory = error_of(base, {"solver.memory_limit_mib=0.02"});
+  EXPECT_NE(memory.find("'solver.memory_limit_mib' = 0.02"), std::string::npos) << memory;
   EXPECT_NE(memory.find("the case needs about"), std::string::npos) << memory;
+  // Below the grid's own size the grid is refused first (check_grid_limits), before anything
+  // counts particles.
+  const std::string grid = error_of(base, {"solver.memory_limit_mib=0.001"});
+  EXPECT_NE(grid.find("'solver.memory_limit_mib' = 0.001"), std::string::npos) << grid;
+  EXPECT_NE(grid.find("the grid alone (at least 105 nodes"), std::string::npos) << grid;
   EXPECT_EQ(error_of(base, {"solver.memory_limit_mib=1000"}), "");
   EXPECT_NE(error_of(base, {"solver.memory_limit_mib=-1"}).find("must be >= 0"), std::string::npos);
 }
 
 // 80 000 x 16 000 cells at 2 x 2: 5.12e9 particles, past the 32-bit ids (refused before the
-// memory check, which would refuse it too).
+// memory check, which would refuse it too; the rectangle's count needs no walk, so the grid's
+// early check refuses it).
 TEST(RunLimits, particle_counts_past_32_bit_ids_are_refused) {
   const std::string e = error_of(test::strip_case_toml(), {"grid.cell_size=1.25e-7", "time.end=1e-9"});
   EXPECT_NE(e.find("'grid.cell_size' = 1.25e-07"), std::string::npos) << e;
   EXPECT_NE(e.find("the case seeds 5120000000 particles; at most 2^32 - 1"), std::string::npos) << e;
+}
+
+// A shaped body on a grid far beyond the memory: refused by the grid alone, at once, not after
+// walking its 2e8 seed points (a disc of 40 mm in a 0.1 m square at 10 um cells, 2 x 2 per
+// cell; 8400 MiB of grid against a limit of 1000).
+TEST(RunLimits, a_shaped_body_on_an_absurd_grid_is_refused_by_the_grid_before_its_particles_are_counted) {
+  const std::string disc = R"(
+[model]
+plane = "strain"
+[materials.m]
+youngs_modulus = 5.2e9
+poisson_ratio = 0.34
+density = 1246.0
+[grid]
+min = [0.0, 0.0]
+max = [0.1, 0.1]
+cell_size = 1e-5
+[bodies.disc]
+material = "m"
+shape = "circle"
+center = [0.05, 0.05]
+radius = 0.04
+[time]
+end = 1e-9
+)";
+  const std::string e = error_of(disc, {"solver.memory_limit_mib=1000"});
+  EXPECT_NE(e.find("'solver.memory_limit_mib' = 1000"), std::string::npos) << e;
+  EXPECT_NE(e.find("the grid alone (at least 100020001 nodes"), std::string::npos) << e;
 }
 
 TEST(RunLimits, a_long_run_warns_with_its_count_beyond_what_a_long_holds) {

@@ -291,6 +291,46 @@ void check_run_limits(const Case& c, const CaseSummary& s) {
 
 }  // namespace
 
+void check_grid_limits(const Case& c) {
+  // At least the nodes of a uniform grid of the coarsest cells (graded and nested grids hold
+  // more), counted without building the grid: a grid of 2e9 cells along one axis is refused
+  // before its axes are allocated.
+  const double h0 = c.grid.refined() ? c.grid.coarse_cell_size : c.grid.cell_size;
+  const double nodes = (std::round((c.grid.max[0] - c.grid.min[0]) / h0) + 1.0) *
+                       (std::round((c.grid.max[1] - c.grid.min[1]) / h0) + 1.0);
+  if (nodes * 3.0 >= 4294967296.0)
+    fail("grid.cell_size", c.grid.cell_size,
+         fmt::format("the grid has at least {:.0f} nodes; the particle sort numbers 3 per node in 32 bits "
+                     "(at most {:.0f}): use a coarser grid or nested levels", nodes, 4294967296.0 / 3.0));
+  // The particles of the plain rectangles on a uniform grid, counted exactly without a walk
+  // (at least the case's particles): past the 32-bit ids, refused as check_run_limits would.
+  if (!c.grid.refined()) {
+    const double ppc = c.grid.particles_per_cell, h = c.grid.cell_size;
+    double particles = 0.0;
+    bool all = true;
+    for (const BodySpec& b : c.bodies) {
+      if (!b.plain_rectangle()) {
+        all = false;
+        continue;
+      }
+      particles += std::round((b.max[0] - b.min[0]) / h) * std::round((b.max[1] - b.min[1]) / h) * ppc * ppc;
+    }
+    if (particles > 4294967295.0)
+      fail("grid.cell_size", c.grid.cell_size,
+           fmt::format("the case seeds {}{:.0f} particles; at most 2^32 - 1 (32-bit particle ids)",
+                       all ? "" : "at least ", particles));
+  }
+  const double grid_mib = nodes * 11.0 * sizeof(double) / (1024.0 * 1024.0);
+  const double machine = machine_memory_bytes() / (1024.0 * 1024.0);
+  const double limit = c.solver.memory_limit_mib > 0 ? c.solver.memory_limit_mib : machine;
+  if (limit > 0 && grid_mib > limit)
+    fail("solver.memory_limit_mib", limit,
+         fmt::format("the grid alone (at least {:.0f} nodes, grid.cell_size = {:g} m) needs about {:.0f} MiB "
+                     "and this machine has {:.0f} MiB; use a coarser grid.cell_size, nested levels, more "
+                     "ranks, or set solver.memory_limit_mib above the estimate to run anyway",
+                     nodes, c.grid.cell_size, grid_mib, machine));
+}
+
 // solver.mass = "averaged" (solver/consistent_mass.hpp) on what it was derived and checked
 // for: one grid level, no velocity region, no interface (the cohesive forces, ties and contact act through the
 // lumped mass of their face nodes, and the levels' transitions condense lumped masses).

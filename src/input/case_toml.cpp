@@ -268,6 +268,7 @@ Case build_case(const toml::table& root, const std::string& case_dir) {
   parse_bodies(top, c, ctx);
   parse_time(top, c);
   parse_solver(top, c);
+  check_grid_limits(c);  // before anything walks the bodies' seed points
   // Before the tables that name bodies: a line inside a body splits it into parts, and a
   // condition or load naming the body acts on all of them.
   parse_interfaces(top, c, ctx);

@@ -2,8 +2,9 @@
 """`mpirun -n N rupture run` writes the run directory one process writes, to round-off.
 
 Usage: check_mpi_run.py SERIAL_DIR DISTRIBUTED_DIR RANKS BOUND
-history.csv: the same sample times, and kinetic energy, strain energy and external work equal
-to BOUND relative to each column's largest magnitude; crack_tip.csv and the last interface
+history.csv: the same sample times, and kinetic energy, strain energy, external work and (where
+the run has interfaces) the cohesive stored and dissipated energies equal to BOUND relative to
+each column's largest magnitude; crack_tip.csv and the last interface
 profile, every interface's last profile and crack_tip_NAME.csv and the Mach-angle readings value by value, to BOUND of each column's largest
 magnitude (nan, a side not measured, on both); every growing crack's path (crack_path_NAME.csv)
 and every tip's J and K (stress_intensity_NAME.csv) value by value, positions to BOUND of the
@@ -33,7 +34,9 @@ def rows(d):
 
 a, b = rows(a_dir), rows(b_dir)
 check(len(a) == len(b) and len(a) > 2, f"{len(a)} and {len(b)} history samples")
-for col in ("time", "kinetic_energy", "strain_energy", "external_work"):
+for col in ("time", "kinetic_energy", "strain_energy", "external_work", "cohesive_stored", "cohesive_dissipated"):
+    if col not in a[0]:
+        continue
     scale = max(abs(float(r[col])) for r in a) or 1.0
     diff = max(abs(float(x[col]) - float(y[col])) for x, y in zip(a, b))
     check(diff <= bound * scale, f"{col}: largest difference {diff / scale:.2e} of its largest value (bound {bound:g})")
