@@ -7,6 +7,7 @@
 #include <cmath>
 #include <map>
 #include <optional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -246,6 +247,19 @@ double machine_memory_bytes() {
   return pages > 0 && page > 0 ? double(pages) * double(page) : 0.0;
 }
 
+// An estimate of `mib` MiB (`what` needs it; `detail` says of what) above solver.memory_limit_mib,
+// or the machine's memory when that is 0: refused, naming the key.
+void check_memory(const Case& c, double mib, const std::string& what, const std::string& detail) {
+  const double machine = machine_memory_bytes() / (1024.0 * 1024.0);
+  const double limit = c.solver.memory_limit_mib > 0 ? c.solver.memory_limit_mib : machine;
+  if (limit > 0 && mib > limit)
+    fail("solver.memory_limit_mib", limit,
+         fmt::format("{} needs about {:.0f} MiB{} and this machine has {:.0f} MiB; use a coarser "
+                     "grid.cell_size, nested levels, more ranks, or set solver.memory_limit_mib above "
+                     "the estimate to run anyway",
+                     what, mib, detail, machine));
+}
+
 // Finite but absurd inputs: what the run derives from them must be finite and in range
 // before any allocation or step (wave speeds, the step, the step count, memory, 32-bit ids).
 void check_run_limits(const Case& c, const CaseSummary& s) {
@@ -278,15 +292,8 @@ void check_run_limits(const Case& c, const CaseSummary& s) {
     fail("grid.cell_size", c.grid.cell_size,
          fmt::format("the grid has {} nodes; the particle sort numbers 3 per node in 32 bits (at most "
                      "{:.0f}): use a coarser grid or nested levels", s.nodes, 4294967296.0 / 3.0));
-  const double estimate = double(s.memory_bytes) / (1024.0 * 1024.0);
-  const double machine = machine_memory_bytes() / (1024.0 * 1024.0);
-  const double limit = c.solver.memory_limit_mib > 0 ? c.solver.memory_limit_mib : machine;
-  if (limit > 0 && estimate > limit)
-    fail("solver.memory_limit_mib", limit,
-         fmt::format("the case needs about {:.0f} MiB (memory_estimate_mib: particles, grid fields, "
-                     "interfaces) and this machine has {:.0f} MiB; use a coarser grid.cell_size, "
-                     "nested levels, more ranks, or set solver.memory_limit_mib above the estimate "
-                     "to run anyway", estimate, machine));
+  check_memory(c, double(s.memory_bytes) / (1024.0 * 1024.0), "the case",
+               " (memory_estimate_mib: particles, grid fields, interfaces)");
 }
 
 }  // namespace
@@ -320,15 +327,10 @@ void check_grid_limits(const Case& c) {
            fmt::format("the case seeds {}{:.0f} particles; at most 2^32 - 1 (32-bit particle ids)",
                        all ? "" : "at least ", particles));
   }
-  const double grid_mib = nodes * 11.0 * sizeof(double) / (1024.0 * 1024.0);
-  const double machine = machine_memory_bytes() / (1024.0 * 1024.0);
-  const double limit = c.solver.memory_limit_mib > 0 ? c.solver.memory_limit_mib : machine;
-  if (limit > 0 && grid_mib > limit)
-    fail("solver.memory_limit_mib", limit,
-         fmt::format("the grid alone (at least {:.0f} nodes, grid.cell_size = {:g} m) needs about {:.0f} MiB "
-                     "and this machine has {:.0f} MiB; use a coarser grid.cell_size, nested levels, more "
-                     "ranks, or set solver.memory_limit_mib above the estimate to run anyway",
-                     nodes, c.grid.cell_size, grid_mib, machine));
+  check_memory(c, nodes * 11.0 * sizeof(double) / (1024.0 * 1024.0),
+               fmt::format("the grid alone (at least {:.0f} nodes, grid.cell_size = {:g} m)", nodes,
+                           c.grid.cell_size),
+               "");
 }
 
 // solver.mass = "averaged" (solver/consistent_mass.hpp) on what it was derived and checked
