@@ -509,3 +509,41 @@ TEST(Geometry, polygons_sharing_an_edge_through_seed_points_own_each_point_once)
   for (int k = 0; h / 4 + k * h / 2 < c * L; ++k) expected_on_edge += h / 4 + k * h / 2 > 0;
   EXPECT_EQ(on_edge, expected_on_edge);
 }
+
+// The walk-free lower bound on a region's particles (particles/seed.hpp) holds for every kind of
+// shape, with cut-outs and off the grid lines, and closes on the count as the cells shrink (its
+// deficit is the boundary's strip, first order in s).
+TEST(Geometry, seed_points_at_least_bounds_the_walked_count_from_below) {
+  const double L = 0.04;
+  const double dmin[2] = {0.0, 0.0}, dmax[2] = {L, L};
+  const std::vector<Point> pentagon = {{0.004, 0.005}, {0.033, 0.003}, {0.036, 0.021}, {0.02, 0.036}, {0.012, 0.02}};
+  const std::vector<std::pair<const char*, Region>> regions = {
+      {"rectangle off the grid lines", {rectangle(0.0031, 0.0027, 0.0347, 0.0219), {}}},
+      {"circle", {circle(0.0203, 0.0197, 0.0131), {}}},
+      {"flat ellipse", {ellipse(0.021, 0.019, 0.017, 0.002, 25), {}}},
+      {"polygon with a hole", {polygon(pentagon), {ellipse(0.021, 0.017, 0.006, 0.003, -20)}}},
+      {"rectangle with a notch and a hole",
+       {rectangle(0.002, 0.002, 0.038, 0.03), {rectangle(0.019, 0.0, 0.0213, 0.008), circle(0.01, 0.02, 0.004)}}},
+  };
+  for (const auto& [name, region] : regions) {
+    double deficit_before = 0.0;
+    for (int cells : {20, 40, 80, 160, 320}) {
+      const double h = L / cells;
+      const Grid g = make_uniform_grid(dmin, dmax, h);
+      const double walked = double(count_seed_points(g, region, 2));
+      const double bound = seed_points_at_least(region, h / 2);
+      std::printf("%-34s h = %6.3f mm: %8.0f particles, at least %8.0f\n", name, 1e3 * h, walked, bound);
+      EXPECT_LE(bound, walked) << name << " at h = " << h;
+      const double deficit = (walked - bound) / walked;
+      if (cells == 320) {
+        EXPECT_GT(bound, 0.75 * walked) << name << ": the bound does not close on the count";
+        // First order: halving h halves the deficit (0.5, and the strip's curvature terms).
+        EXPECT_LT(deficit, 0.6 * deficit_before) << name << ": the deficit does not fall as h";
+      }
+      deficit_before = deficit;
+    }
+  }
+  Region cut{rectangle(0.0, 0.0, 0.01, 0.01), {}};
+  cut.sides.push_back({circle(0.0, 0.0, 0.005), true});
+  EXPECT_EQ(seed_points_at_least(cut, 1e-4), 0.0);  // cut by a line: no bound claimed
+}

@@ -158,11 +158,18 @@ TEST(RunLimits, absurd_materials_times_and_sizes_are_refused_before_any_work) {
   // 3.8e9 steps of the strip (dt = 7.9e-8 s) are allowed, 5.1e9 are not: the bound is 2^52 x 1e-6.
   EXPECT_EQ(error_of(base, {"time.end=300.0"}), "");
   EXPECT_NE(error_of(base, {"time.end=400.0"}).find("at most 4.504e+09"), std::string::npos);
-  // The strip's grid alone (at least 21 x 5 nodes, 11 doubles each: 0.009 MiB) fits in 0.02 MiB;
-  // with its 320 particles the case does not.
-  const std::string memory = error_of(base, {"solver.memory_limit_mib=0.02"});
-  EXPECT_NE(memory.find("'solver.memory_limit_mib' = 0.02"), std::string::npos) << memory;
-  EXPECT_NE(memory.find("the case needs about"), std::string::npos) << memory;
+  // The strip's grid alone (at least 21 x 5 nodes, 11 doubles each: 0.009 MiB) fits in 0.02
+  // MiB; with its 320 particles (122 bytes each) not, and that is known before any walk
+  // (0.046 MiB); the whole case's estimate (every field's window, the sort's scratch: 0.062 MiB)
+  // is above 0.05, where the walk-free bound fits.
+  const std::string particles = error_of(base, {"solver.memory_limit_mib=0.02"});
+  EXPECT_NE(particles.find("'solver.memory_limit_mib' = 0.02"), std::string::npos) << particles;
+  EXPECT_NE(particles.find("the grid with its particles (exactly 320 particles, at least 105 nodes"),
+            std::string::npos) << particles;
+  EXPECT_NE(particles.find("needs about 0.046 MiB"), std::string::npos) << particles;
+  const std::string memory = error_of(base, {"solver.memory_limit_mib=0.05"});
+  EXPECT_NE(memory.find("'solver.memory_limit_mib' = 0.05"), std::string::npos) << memory;
+  EXPECT_NE(memory.find("the case needs about 0.062 MiB"), std::string::npos) << memory;
   // Below the grid's own size the grid is refused first (check_grid_limits), before anything
   // counts particles.
   const std::string grid = error_of(base, {"solver.memory_limit_mib=0.001"});
@@ -207,6 +214,12 @@ end = 1e-9
   const std::string e = error_of(disc, {"solver.memory_limit_mib=1000"});
   EXPECT_NE(e.find("'solver.memory_limit_mib' = 1000"), std::string::npos) << e;
   EXPECT_NE(e.find("the grid alone (at least 100020001 nodes"), std::string::npos) << e;
+  // With room for the grid (8400 MiB) but not for the disc's 2.0e8 particles (at least
+  // pi 0.04^2 / (5 um)^2 = 2.011e8 less the boundary strip's 1.2e5, 122 bytes each: 23 000 MiB more), refused
+  // by the particles' walk-free bound, still before any walk (the walk took minutes).
+  const std::string p = error_of(disc, {"solver.memory_limit_mib=9000"});
+  EXPECT_NE(p.find("'solver.memory_limit_mib' = 9000"), std::string::npos) << p;
+  EXPECT_NE(p.find("the grid with its particles (at least 2009"), std::string::npos) << p;
 }
 
 TEST(RunLimits, a_long_run_warns_with_its_count_beyond_what_a_long_holds) {

@@ -156,6 +156,27 @@ double area(const Shape& s) {
   return 0.0;
 }
 
+double perimeter_at_most(const Shape& s) {
+  switch (s.kind) {
+    case ShapeKind::rectangle:
+      return 2.0 * ((s.max[0] - s.min[0]) + (s.max[1] - s.min[1]));
+    case ShapeKind::polygon: {
+      double p = 0.0;
+      for (std::size_t i = 0; i < s.vertices.size(); ++i) {
+        const Point &a = s.vertices[i], &b = s.vertices[(i + 1) % s.vertices.size()];
+        p += std::hypot(b.x - a.x, b.y - a.y);
+      }
+      return p;
+    }
+    case ShapeKind::circle:
+      return 2.0 * std::numbers::pi * s.radii[0];
+    case ShapeKind::ellipse:
+      // The root mean square radius bounds the mean radius (Cauchy-Schwarz on the length's integral).
+      return std::numbers::pi * std::sqrt(2.0 * (s.radii[0] * s.radii[0] + s.radii[1] * s.radii[1]));
+  }
+  return 0.0;
+}
+
 std::optional<std::pair<int, int>> polygon_self_intersection(const std::vector<Point>& v) {
   const int n = int(v.size());
   for (int i = 0; i < n; ++i)

@@ -61,6 +61,9 @@ bool boxes_overlap(const Box& a, const Box& b, double gap = 0.0);  // closer tha
 double signed_area(const std::vector<Point>& vertices);
 // The exact area of the shape, m^2 (a polygon: |signed_area|).
 double area(const Shape& s);
+// The length of the shape's boundary, m: exact, but for an ellipse an upper bound,
+// pi sqrt(2 (a^2 + b^2)) (at most 11 % above the exact length, at a flat ellipse).
+double perimeter_at_most(const Shape& s);
 
 // Edges are numbered by their first vertex: edge i runs from vertex i to vertex i + 1 (mod n).
 // Returns the first pair (i < j) of edges that cross or touch, other than adjacent edges

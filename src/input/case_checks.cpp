@@ -254,10 +254,11 @@ void check_memory(const Case& c, double mib, const std::string& what, const std:
   const double limit = c.solver.memory_limit_mib > 0 ? c.solver.memory_limit_mib : machine;
   if (limit > 0 && mib > limit)
     fail("solver.memory_limit_mib", limit,
-         fmt::format("{} needs about {:.0f} MiB{} and this machine has {:.0f} MiB; use a coarser "
+         fmt::format("{} needs about {} MiB{} and this machine has {:.0f} MiB; use a coarser "
                      "grid.cell_size, nested levels, more ranks, or set solver.memory_limit_mib above "
                      "the estimate to run anyway",
-                     what, mib, detail, machine));
+                     what, mib >= 10.0 ? fmt::format("{:.0f}", mib) : fmt::format("{:.2g}", mib), detail,
+                     machine));
 }
 
 // Finite but absurd inputs: what the run derives from them must be finite and in range
@@ -309,28 +310,37 @@ void check_grid_limits(const Case& c) {
     fail("grid.cell_size", c.grid.cell_size,
          fmt::format("the grid has at least {:.0f} nodes; the particle sort numbers 3 per node in 32 bits "
                      "(at most {:.0f}): use a coarser grid or nested levels", nodes, 4294967296.0 / 3.0));
-  // The particles of the plain rectangles on a uniform grid, counted exactly without a walk
-  // (at least the case's particles): past the 32-bit ids, refused as check_run_limits would.
+  // The particles on a uniform grid, without a walk: the plain rectangles' exactly, every other
+  // body's at least (seed_points_at_least: areas and perimeters), so at least the case's.
+  // Past the 32-bit ids, refused as check_run_limits would; with the grid, within the memory.
+  double particles = 0.0;
+  bool exact = true;
   if (!c.grid.refined()) {
     const double ppc = c.grid.particles_per_cell, h = c.grid.cell_size;
-    double particles = 0.0;
-    bool all = true;
     for (const BodySpec& b : c.bodies) {
-      if (!b.plain_rectangle()) {
-        all = false;
-        continue;
+      if (b.plain_rectangle()) {
+        particles += std::round((b.max[0] - b.min[0]) / h) * std::round((b.max[1] - b.min[1]) / h) * ppc * ppc;
+      } else {
+        exact = false;
+        particles += seed_points_at_least(b.region, h / ppc);
       }
-      particles += std::round((b.max[0] - b.min[0]) / h) * std::round((b.max[1] - b.min[1]) / h) * ppc * ppc;
     }
     if (particles > 4294967295.0)
       fail("grid.cell_size", c.grid.cell_size,
            fmt::format("the case seeds {}{:.0f} particles; at most 2^32 - 1 (32-bit particle ids)",
-                       all ? "" : "at least ", particles));
+                       exact ? "" : "at least ", particles));
   }
-  check_memory(c, nodes * 11.0 * sizeof(double) / (1024.0 * 1024.0),
+  const double grid_mib = nodes * 11.0 * sizeof(double) / (1024.0 * 1024.0);
+  check_memory(c, grid_mib,
                fmt::format("the grid alone (at least {:.0f} nodes, grid.cell_size = {:g} m)", nodes,
                            c.grid.cell_size),
                "");
+  if (particles > 0.0)
+    check_memory(c, grid_mib + particles * double(Particles::bytes_per_particle() + 12) / (1024.0 * 1024.0),
+                 fmt::format("the grid with its particles ({} {:.0f} particles, at least {:.0f} nodes, "
+                             "grid.cell_size = {:g} m)",
+                             exact ? "exactly" : "at least", particles, nodes, c.grid.cell_size),
+                 "");
 }
 
 // solver.mass = "averaged" (solver/consistent_mass.hpp) on what it was derived and checked

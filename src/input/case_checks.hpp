@@ -19,8 +19,11 @@ void check_case_consistency(Case& c);
 
 // The grid alone, before anything walks the bodies' seed points (which cost as much as the grid
 // holds): its node count within the 32-bit particle sort and its fields (one velocity field, 11
-// doubles a node) within solver.memory_limit_mib, or the machine's memory. An absurd grid is
-// refused here, at once, not after minutes of counting particles it could never hold.
+// doubles a node) within solver.memory_limit_mib, or the machine's memory; on a uniform grid,
+// the particles too, counted without a walk (the plain rectangles exactly, other shapes at least:
+// particles/seed.hpp, seed_points_at_least), within the 32-bit ids and, with the grid, the
+// memory. An absurd case is refused here, at once, not after minutes of counting particles it
+// could never hold.
 void check_grid_limits(const Case& c);
 
 }  // namespace rupture

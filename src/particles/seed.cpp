@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <vector>
 
 namespace rupture {
@@ -85,6 +86,14 @@ long count_seed_points(const Grid& g, const Region& r, int ppc) {
   long n = 0;
   for_each_seed_point(g, r, ppc, [&n](const SeedPoint&) { ++n; });
   return n;
+}
+
+double seed_points_at_least(const Region& r, double s) {
+  if (!r.sides.empty() || !(s > 0.0)) return 0.0;
+  const double pi = std::numbers::pi, root2 = std::numbers::sqrt2;
+  double covered = area(r.outer) - 2.0 * root2 * s * perimeter_at_most(r.outer) - 2.0 * pi * s * s;
+  for (const Shape& c : r.minus) covered -= area(c) + root2 * s * perimeter_at_most(c) + 0.5 * pi * s * s;
+  return std::max(0.0, std::floor(covered / (s * s)));
 }
 
 std::size_t seed_region(Particles& p, const Grid& g, const Region& r, int ppc,

@@ -43,6 +43,16 @@ void for_each_seed_point(const Grid& g, const Region& r, int ppc,
 // How many particles region `r` gets.
 long count_seed_points(const Grid& g, const Region& r, int ppc);
 
+// At least how many sub-cell centres of a uniform lattice of spacing `s` (m) lie in `r`, from
+// areas and perimeters alone (no walk: input/ refuses an absurd case with it at once). A sub-cell
+// lies wholly inside the outer shape S where its centre is more than its diameter sqrt(2) s from
+// S's boundary, and the r-neighbourhood of a closed curve of length P covers at most
+// 2 r P + pi r^2; a cut-out C holds at most (A_C + sqrt(2) s P_C + pi s^2 / 2) / s^2 centres
+// (their disjoint sub-cells lie within s / sqrt(2) of C). So the count is at least
+// [A_S - 2 sqrt(2) s P_S - 2 pi s^2 - sum_C (A_C + sqrt(2) s P_C + pi s^2 / 2)] / s^2, and 0
+// where that is negative. A region cut by lines (r.sides) gets 0.
+double seed_points_at_least(const Region& r, double s);
+
 // Appends the particles of region `r`; returns how many.
 std::size_t seed_region(Particles& p, const Grid& g, const Region& r, int ppc,
                         const SeedProperties& props);
