@@ -16,6 +16,7 @@
 #include "geometry/shape.hpp"
 #include "input/case_toml.hpp"
 #include "solver/cohesive_step.hpp"
+#include "solver/crack_cut.hpp"
 #include "solver/crack_growth.hpp"
 #include "solver/energy.hpp"
 #include "solver/nested_state.hpp"
@@ -211,4 +212,43 @@ level = 1)");
       EXPECT_GT(misplaced(spec, coarse.particles), 0) << "the test would see a level left behind";
     }
   }
+}
+
+// What a growing tip is checked against before each segment (solver/crack_growth.cpp: a
+// junction with another line drawn in its body stops the run): the nearest approach of a
+// segment to a polyline, and which lines are drawn inside the crack's body.
+TEST(CrackGrowth, a_segment_meets_a_line_where_it_crosses_or_passes_within_the_tolerance) {
+  Polyline line;
+  line.x = {0.0, 0.010, 0.010};
+  line.y = {0.0, 0.0, 0.010};
+  // Crossing the first piece: distance 0 at the crossing.
+  const auto cross = segment_meets_line(line, {0.004, -0.002}, {0.006, 0.002}, 1e-3);
+  ASSERT_TRUE(cross.has_value());
+  EXPECT_EQ(cross->distance, 0.0);
+  EXPECT_NEAR(cross->at.x, 0.005, 1e-15);
+  EXPECT_NEAR(cross->at.y, 0.0, 1e-15);
+  // Parallel to the first piece 0.5 mm above it: met within 1 mm, not within 0.4 mm.
+  const auto above = segment_meets_line(line, {0.002, 0.0005}, {0.006, 0.0005}, 1e-3);
+  ASSERT_TRUE(above.has_value());
+  EXPECT_NEAR(above->distance, 0.5e-3, 1e-15);
+  EXPECT_FALSE(segment_meets_line(line, {0.002, 0.0005}, {0.006, 0.0005}, 0.4e-3).has_value());
+  // Heading at the second piece's far end from beyond it: the end vertex is the nearest point.
+  const auto end = segment_meets_line(line, {0.013, 0.014}, {0.0106, 0.0106}, 1e-3);
+  ASSERT_TRUE(end.has_value());
+  EXPECT_NEAR(end->at.x, 0.010, 1e-15);
+  EXPECT_NEAR(end->at.y, 0.010, 1e-15);
+  EXPECT_NEAR(end->distance, std::hypot(0.6e-3, 0.6e-3), 1e-15);
+  // Beside the corner, outside both pieces' reach.
+  EXPECT_FALSE(segment_meets_line(line, {0.012, -0.002}, {0.014, -0.004}, 1e-3).has_value());
+}
+
+TEST(CrackGrowth, lines_drawn_in_one_body_are_told_from_interfaces_between_bodies) {
+  const std::string dir = std::string(RUPTURE_SOURCE_DIR) + "/examples/";
+  const Case beam = load_case(dir + "john_shah.toml");  // the notch and the mid-span seed, one beam
+  ASSERT_EQ(beam.interfaces.size(), 2u);
+  EXPECT_TRUE(drawn_in_crack_body(beam, 0, beam.interfaces[1]));
+  EXPECT_TRUE(drawn_in_crack_body(beam, 1, beam.interfaces[0]));
+  const Case bond = load_case(dir + "bimaterial.toml");  // two bodies joined along their edge
+  ASSERT_EQ(bond.interfaces.size(), 1u);
+  EXPECT_FALSE(drawn_in_crack_body(bond, 0, bond.interfaces[0]));
 }

@@ -42,6 +42,62 @@ double distance_to_line(const Polyline& line, const Point& p) {
   return best;
 }
 
+namespace {
+
+// The point of segment p -> q nearest x, and its distance.
+std::pair<Point, double> nearest_on_segment(const Point& p, const Point& q, const Point& x) {
+  const double bx = q.x - p.x, by = q.y - p.y, l2 = bx * bx + by * by;
+  const double u = l2 > 0.0 ? std::clamp(((x.x - p.x) * bx + (x.y - p.y) * by) / l2, 0.0, 1.0) : 0.0;
+  const Point at{p.x + u * bx, p.y + u * by};
+  return {at, std::hypot(x.x - at.x, x.y - at.y)};
+}
+
+bool same_shape(const Shape& a, const Shape& b) {
+  if (a.kind != b.kind || a.angle != b.angle || a.vertices.size() != b.vertices.size()) return false;
+  for (int d = 0; d < 2; ++d)
+    if (a.min[d] != b.min[d] || a.max[d] != b.max[d] || a.center[d] != b.center[d] || a.radii[d] != b.radii[d])
+      return false;
+  for (std::size_t i = 0; i < a.vertices.size(); ++i)
+    if (a.vertices[i].x != b.vertices[i].x || a.vertices[i].y != b.vertices[i].y) return false;
+  return true;
+}
+
+}  // namespace
+
+std::optional<LineMeeting> segment_meets_line(const Polyline& line, const Point& a, const Point& b, double tol) {
+  std::optional<LineMeeting> best;
+  for (std::size_t i = 0; i + 1 < line.num_vertices(); ++i) {
+    const Point p{line.x[i], line.y[i]}, q{line.x[i + 1], line.y[i + 1]};
+    LineMeeting m;
+    // Crossing: a and b on opposite sides of p -> q and p, q on opposite sides of a -> b.
+    const auto side = [](const Point& o, const Point& d, const Point& x) {
+      return (d.x - o.x) * (x.y - o.y) - (d.y - o.y) * (x.x - o.x);
+    };
+    const double sa = side(p, q, a), sb = side(p, q, b), sp = side(a, b, p), sq = side(a, b, q);
+    if (((sa < 0.0 && sb > 0.0) || (sa > 0.0 && sb < 0.0)) && ((sp < 0.0 && sq > 0.0) || (sp > 0.0 && sq < 0.0))) {
+      const double u = sa / (sa - sb);
+      m.at = {a.x + u * (b.x - a.x), a.y + u * (b.y - a.y)}, m.distance = 0.0;
+    } else {
+      // Apart: the nearest pair has an end of one of the two segments.
+      const auto [pa, da] = nearest_on_segment(p, q, a);
+      const auto [pb, db] = nearest_on_segment(p, q, b);
+      const double dp = nearest_on_segment(a, b, p).second, dq = nearest_on_segment(a, b, q).second;
+      m.at = pa, m.distance = da;
+      if (db < m.distance) m.at = pb, m.distance = db;
+      if (dp < m.distance) m.at = p, m.distance = dp;
+      if (dq < m.distance) m.at = q, m.distance = dq;
+    }
+    if (m.distance < tol && (!best || m.distance < best->distance)) best = m;
+  }
+  return best;
+}
+
+bool drawn_in_crack_body(const Case& c, std::size_t k, const InterfaceSpec& spec) {
+  const Shape& outer = c.bodies[std::size_t(c.interfaces[k].upper_body)].region.outer;
+  return same_shape(c.bodies[std::size_t(spec.upper_body)].region.outer, outer) &&
+         same_shape(c.bodies[std::size_t(spec.lower_body)].region.outer, outer);
+}
+
 void move_particle_to_field(State& L, std::size_t q, std::uint8_t field) {
   Particles& P = L.particles;
   P.field[q] = field;

@@ -6,6 +6,7 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 
 #include "geometry/shape.hpp"
 #include "input/case.hpp"
@@ -26,6 +27,18 @@ Point unit(const Point& from, const Point& to);
 
 // The shortest distance from p to the polyline, m.
 double distance_to_line(const Polyline& line, const Point& p);
+
+// Where the segment a -> b comes within `tol` (m) of `line`: the point of the line nearest the
+// segment and their distance (0 where they cross); nothing when it stays farther.
+struct LineMeeting {
+  Point at;
+  double distance = 0.0;  // m
+};
+std::optional<LineMeeting> segment_meets_line(const Polyline& line, const Point& a, const Point& b, double tol);
+
+// Whether interface `spec` is drawn inside the body crack k was drawn in (both its faces' bodies
+// are parts of that body: the same outer shape), rather than between two bodies.
+bool drawn_in_crack_body(const Case& c, std::size_t k, const InterfaceSpec& spec);
 
 // Particle q of level L goes to `field`: the strips' node rows per field (ScatterPlan::row_lo,
 // row_hi, from the last sort) take its row in the new field, so the tile keeps its stencil; the

@@ -101,9 +101,9 @@ std::vector<CrackLine> crack_lines(const RunState& s, std::size_t k, const Crack
 // Splits the tip g grows at into two branches at +-g.split from its growth direction (each a
 // growth step long, ending on the body's edge at most), and records the split and the two
 // first segments. False (nothing done) where a branch would leave the body at once.
-template <class Grow>
+template <class Grow, class Check>
 bool split_tip(const Case& c, std::size_t k, RunState& s, int level, std::size_t slot, const CrackTip& tip,
-               const Grow& g, CrackGrowthRecord& record) {
+               const Grow& g, CrackGrowthRecord& record, const Check& check_junction) {
   const double h = s.levels[std::size_t(level)].grid.cell_size(), step = c.interfaces[k].growth.step * h;
   const Region body = crack_body(c, k);
   const TipFrame& f = tip.frame;
@@ -117,6 +117,7 @@ bool split_tip(const Case& c, std::size_t k, RunState& s, int level, std::size_t
     end[b] = in_body[0].to;
     if (std::hypot(end[b].x - f.x, end[b].y - f.y) <= 1e-6 * h) return false;
   }
+  for (int b = 0; b < 2; ++b) check_junction(Point{f.x, f.y}, end[b]);
   const std::size_t n = record.branch_slots.size();
   const std::array<std::size_t, 2> slots =
       split_crack_tip(c, k, s.levels[std::size_t(level)], slot, tip, end[0].x, end[0].y, end[1].x, end[1].y,
@@ -180,6 +181,60 @@ void check_tip_on_level(const Case& c, std::size_t k, const RunState& s, int lev
         "{:.6g} m): a tip is read on the level that holds its crack; widen that level's [grid.refine] box "
         "to hold the crack's path",
         c.interface_names[k], f.x, f.y, s.time, reach, level, d == 0 ? "x" : "y", lo, hi));
+  }
+}
+
+// The lines a tip of crack k can meet inside its body, on its level: every other interface drawn
+// in that body (another crack, a branch of one, a line that does not grow), its line and its
+// tied extensions. The crack's own lines (`own`) are not among them.
+struct BodyLine {
+  Polyline line;
+  std::string name;  // for the diagnosis
+  bool tie = false;
+};
+std::vector<BodyLine> lines_in_crack_body(const Case& c, const RunState& s, const std::vector<CrackGrowthRecord>& records,
+                                          std::size_t k, const std::vector<CrackLine>& own) {
+  const int level = s.interface_levels[k];
+  const State& L = s.levels[std::size_t(level)];
+  std::vector<BodyLine> lines;
+  for (std::size_t slot = 0; slot < L.interfaces.size(); ++slot) {
+    if (std::any_of(own.begin(), own.end(), [&](const CrackLine& o) { return o.slot == slot; })) continue;
+    const InterfaceSpec& spec = L.interfaces[slot].spec;
+    if (!drawn_in_crack_body(c, k, spec)) continue;
+    std::string name = "a line";
+    for (std::size_t j = 0; j < c.interfaces.size() && j < s.interface_slots.size(); ++j) {
+      if (s.interface_levels[j] == level && s.interface_slots[j] == slot) name = fmt::format("interface '{}'", c.interface_names[j]);
+      if (j < records.size())
+        for (const std::size_t b : records[j].branch_slots)
+          if (b == slot) name = fmt::format("a branch of interface '{}'", c.interface_names[j]);
+    }
+    lines.push_back({spec.geometry(), name, false});
+    for (const Polyline& t : spec.tie_geometries()) lines.push_back({t, name, true});
+  }
+  return lines;
+}
+
+// A junction: the segment from -> to, which a tip of crack k is about to grow, comes within a cell
+// of another line drawn in its body (`others`). Each crack splits its body into two velocity
+// fields along itself and its tied extension, so the pieces a junction cuts off would need fields
+// of their own, or crack fields per particle-node pair (docs/fracture.md, "Junctions"): the run
+// stops here, naming the place and time, rather than grow a crack through material its fields do
+// not hold (a crack that crossed another's tied extension grew on through it, 56 mm, unhindered).
+void stop_at_junction(const Case& c, std::size_t k, const RunState& s, const std::vector<BodyLine>& others,
+                      const Point& from, const Point& to, double h) {
+  for (const BodyLine& o : others) {
+    const std::optional<LineMeeting> m = segment_meets_line(o.line, from, to, h);
+    if (!m) continue;
+    throw SimulationError(fmt::format(
+        "crack growth: interface '{}' has its tip at ({:.6g}, {:.6g}) m at t = {:.6g} s, and its next "
+        "segment, to ({:.6g}, {:.6g}) m, comes within {:.3g} m (one cell) of {}'s {} at ({:.6g}, {:.6g}) m: "
+        "a junction of two lines drawn inside one body ({}) is not supported yet (each crack splits the "
+        "body into two velocity fields along itself and its tied extension; the pieces a junction cuts "
+        "off would need fields of their own: docs/fracture.md, \"Junctions\"); the run stops here, with "
+        "what it wrote. Draw the lines farther apart, or in separate bodies joined by an [interface]",
+        c.interface_names[k], from.x, from.y, s.time, to.x, to.y, h, o.name,
+        o.tie ? "tied extension (intact material, where it holds its two fields together)" : "line",
+        m->at.x, m->at.y, c.bodies[std::size_t(c.interfaces[k].upper_body)].name));
   }
 }
 
@@ -343,6 +398,11 @@ void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& rec
       grown = true;
       if (before_growth) before_growth();
     }
+    // Every segment laid below is first checked against the other lines drawn in the body.
+    const std::vector<BodyLine> body_lines = grow.empty() ? std::vector<BodyLine>{} : lines_in_crack_body(c, s, records, k, lines);
+    const auto check_junction = [&](const Point& from, const Point& to) {
+      stop_at_junction(c, k, s, body_lines, from, to, h);
+    };
     // The end first: a new segment at the start shifts nothing the end's tip needs, and the
     // other way round, but each reads the line as it is now.
     for (const Grow& g : grow) {
@@ -351,7 +411,8 @@ void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& rec
       const auto it = std::find_if(now.begin(), now.end(), [&](const CrackTip& t) { return t.end == g.tip.end; });
       if (it == now.end()) continue;
       const double end_column = g.tip.end == LineEnd::start ? 0.0 : 1.0;
-      if (g.split > 0.0 && split_tip(c, k, s, level, slot, *it, g, records[k])) continue;
+      if (g.split > 0.0 && split_tip(c, k, s, level, slot, *it, g, records[k], check_junction)) continue;
+      check_junction({it->frame.x, it->frame.y}, {g.x, g.y});
       const bool through = add_crack_segment(c, k, L, slot, *it, g.x, g.y, true, others);
       const double len = std::hypot(g.x - g.tip.frame.x, g.y - g.tip.frame.y);
       records[k].rows.insert(records[k].rows.end(),
@@ -372,6 +433,7 @@ void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& rec
         const double l = std::min(left, is.growth.step * h);
         const double x = l == left ? edge.x : f.x + dx * l / left, y = l == left ? edge.y : f.y + dy * l / left;
         const double turn = std::atan2(f.e1x * dy - f.e1y * dx, f.e1x * dx + f.e1y * dy);
+        check_junction({f.x, f.y}, {x, y});
         const bool done = add_crack_segment(c, k, L, slot, *at, x, y, true, others);
         records[k].rows.insert(records[k].rows.end(),
                                {s.time, double(g.label), end_column, x, y, turn * kDegree, l, g.K_I, g.K_II});
