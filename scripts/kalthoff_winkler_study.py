@@ -6,7 +6,8 @@ stretch (from 5 mm past the tip to y = 85 mm), where and when it reaches the far
 speed from initiation to there, the grown length, steps and wall time; then each path's largest
 distance from the finest one's. Experiments (Kalthoff & Winkler 1988, as quoted by Belytschko et
 al. 2003 and Borden et al. 2012): about 70 degrees.
-Usage: kalthoff_winkler_study.py RUPTURE WORK_DIR [CELL_SIZES...] (KW_END=SECONDS: another end time)"""
+Usage: kalthoff_winkler_study.py RUPTURE WORK_DIR [CELL_SIZES...] (KW_END=SECONDS: another end time;
+KW_SET="KEY=VALUE ...": more --set options, e.g. KW_SET=interface.notch.running_tip=true)"""
 import json
 import math
 import os
@@ -18,6 +19,7 @@ import numpy as np
 rupture, work = sys.argv[1], sys.argv[2]
 sizes = [float(v) for v in sys.argv[3:]] or [1e-3, 0.5e-3, 0.25e-3]
 end = float(os.environ.get("KW_END", "75e-6"))  # s
+extra = [a for kv in os.environ.get("KW_SET", "").split() for a in ("--set", kv)]
 here = os.path.dirname(os.path.abspath(__file__))
 example = os.path.join(here, "..", "examples", "kalthoff_winkler.toml")
 tip0 = np.array([0.05, 0.025])
@@ -27,7 +29,7 @@ for h in sizes:
     out = os.path.join(work, f"h_{h * 1e3:g}mm")
     subprocess.run([rupture, "run", example, "-o", out, "--overwrite", "--quiet",
                     "--set", f"grid.cell_size={h!r}", "--set", f"interface.notch.segments={round(0.05 / h)}",
-                    "--set", f"time.end={end!r}"], check=True, stdout=subprocess.DEVNULL)
+                    "--set", f"time.end={end!r}", *extra], check=True, stdout=subprocess.DEVNULL)
     r = json.load(open(os.path.join(out, "run.json")))
     d = np.genfromtxt(os.path.join(out, "crack_path_notch.csv"), delimiter=",", names=True)
     p = np.vstack([tip0, np.column_stack([d["x"], d["y"]])])
