@@ -319,6 +319,41 @@ TEST(Geometry, the_two_sides_of_a_cut_seed_the_body_once) {
   EXPECT_GT(count_seed_points(g, b, 2), total / 4);
 }
 
+// A part walks only its side's box (geometry/shape.hpp region_box), and a check only the box it
+// asks for: the points are those of the whole region's walk that the part (and the box) holds,
+// at the same positions and in the same order, so seeding is unchanged.
+TEST(Geometry, a_part_walks_its_side_box_and_visits_the_points_of_the_whole_walk) {
+  const double lo[2] = {0.0, 0.0}, hi[2] = {0.04, 0.03};
+  const Grid g = make_uniform_grid(lo, hi, 0.5e-3);
+  const Region whole{ellipse(0.02, 0.015, 0.018, 0.012, 20), {circle(0.025, 0.015, 0.003)}};
+  const Shape cut = left_part({{-0.01, -0.01}, {0.05, 0.04}}, {{0.017, -0.01}, {0.019, 0.016}, {0.021, 0.04}});
+  Region a = whole, b = whole;
+  a.sides.push_back({cut, true});
+  b.sides.push_back({cut, false});
+  const Box ba = region_box(a), bb = region_box(b);
+  EXPECT_LT(ba.max[0], 0.0215) << "the part left of the cut is walked over its side's box";
+  EXPECT_EQ(bb.max[0], bounding_box(whole).max[0]) << "an outside side keeps the outer box";
+  const Box within{{0.012, 0.004}, {0.026, 0.02}};
+  for (const Region* part : {&a, &b}) {
+    std::vector<SeedPoint> expected, expected_within, got, got_within;
+    for_each_seed_point(g, whole, 2, [&](const SeedPoint& s) {
+      if (!contains(*part, s.x, s.y)) return;
+      expected.push_back(s);
+      if (s.x >= within.min[0] && s.x <= within.max[0] && s.y >= within.min[1] && s.y <= within.max[1])
+        expected_within.push_back(s);
+    });
+    for_each_seed_point(g, *part, 2, [&](const SeedPoint& s) { got.push_back(s); });
+    for_each_seed_point(g, *part, 2, within, [&](const SeedPoint& s) { got_within.push_back(s); });
+    ASSERT_EQ(got.size(), expected.size());
+    ASSERT_EQ(got_within.size(), expected_within.size());
+    EXPECT_GT(got_within.size(), 100u);
+    for (std::size_t i = 0; i < got.size(); ++i)
+      ASSERT_TRUE(got[i].x == expected[i].x && got[i].y == expected[i].y && got[i].lx == expected[i].lx) << i;
+    for (std::size_t i = 0; i < got_within.size(); ++i)
+      ASSERT_TRUE(got_within[i].x == expected_within[i].x && got_within[i].y == expected_within[i].y) << i;
+  }
+}
+
 // SPEC E5 with a prestress: sigma_zz = nu (sxx + syy) in plane strain, eps from the compliance,
 // and the strain energy 0.5 sigma:eps x area from t = 0.
 TEST(Geometry, initial_stress_sets_szz_strain_and_strain_energy) {

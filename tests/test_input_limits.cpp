@@ -13,6 +13,7 @@
 #include "input/case_toml.hpp"
 #include "input/names.hpp"
 #include "input/text_limits.hpp"
+#include "solver/summary.hpp"
 #include "support.hpp"
 
 using namespace rupture;
@@ -298,4 +299,47 @@ TEST(InputMessages, a_crack_may_start_on_the_edge_of_a_hole) {
                                     "interface.c.contact_stiffness=1e15"});
     EXPECT_EQ(e, "") << from;
   }
+}
+
+// The walk-free estimate that refuses a case before its seed points are walked
+// (solver/summary.hpp, memory_bytes_before_seeding) is never above the estimate `rupture check`
+// prints, and equals it where every drawn body is a rectangle on grid lines, split by its
+// cracks or not: so it refuses nothing the full estimate would let run.
+TEST(RunLimits, the_estimate_before_seeding_is_at_most_the_full_one_and_exact_for_rectangles) {
+  const std::string dir = std::string(RUPTURE_SOURCE_DIR) + "/examples/";
+  int compared = 0, exact = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    if (entry.path().extension() != ".toml") continue;
+    const Case c = load_case(entry.path().string());
+    if (c.grid.refined()) continue;
+    const double before = memory_bytes_before_seeding(c), full = double(summarize(c).memory_bytes);
+    bool rectangles = true;
+    for (const BodySpec& b : c.bodies) rectangles = rectangles && b.region.outer.kind == ShapeKind::rectangle && b.region.minus.empty();
+    EXPECT_LE(before, full) << entry.path().filename();
+    if (rectangles) {
+      EXPECT_EQ(before, full) << entry.path().filename();
+      ++exact;
+    }
+    EXPECT_GT(before, 0.5 * full) << entry.path().filename() << ": the bound is loose";
+    ++compared;
+  }
+  std::printf("%d examples on uniform grids compared, %d of them rectangles only\n", compared, exact);
+  EXPECT_GE(compared, 20);
+  EXPECT_GE(exact, 10);
+}
+
+// A beam split by two cracks (examples/john_shah.toml) at a cell 50 times finer: refused at once
+// by the walk-free estimate (31281 MiB against a limit of 30000, which the grid with its 1.74e8
+// particles alone, 23923 MiB, fits), where the walks over its three
+// parts took 2 min 14 s before the same refusal.
+TEST(RunLimits, a_body_split_by_its_cracks_is_refused_before_its_parts_are_walked) {
+  const std::string dir = std::string(RUPTURE_SOURCE_DIR) + "/examples/";
+  std::string e;
+  try {
+    load_case(dir + "john_shah.toml", {"parameters.h=2e-5", "solver.memory_limit_mib=30000"});
+  } catch (const InputError& x) {
+    e = x.what();
+  }
+  EXPECT_NE(e.find("'solver.memory_limit_mib' = 30000"), std::string::npos) << e;
+  EXPECT_NE(e.find("the case needs about 31281 MiB (memory_estimate_mib before any seed point"), std::string::npos) << e;
 }

@@ -131,6 +131,33 @@ Box bounding_box(const Region& r) {
   return bounding_box(r.outer);
 }
 
+bool same_shape(const Shape& a, const Shape& b) {
+  if (a.kind != b.kind || a.angle != b.angle || a.vertices.size() != b.vertices.size()) return false;
+  for (int d = 0; d < 2; ++d)
+    if (a.min[d] != b.min[d] || a.max[d] != b.max[d] || a.center[d] != b.center[d] || a.radii[d] != b.radii[d])
+      return false;
+  for (std::size_t i = 0; i < a.vertices.size(); ++i)
+    if (a.vertices[i].x != b.vertices[i].x || a.vertices[i].y != b.vertices[i].y) return false;
+  return true;
+}
+
+bool same_drawn_region(const Region& a, const Region& b) {
+  if (!same_shape(a.outer, b.outer) || a.minus.size() != b.minus.size()) return false;
+  for (std::size_t i = 0; i < a.minus.size(); ++i)
+    if (!same_shape(a.minus[i], b.minus[i])) return false;
+  return true;
+}
+
+Box region_box(const Region& r) {
+  Box b = bounding_box(r.outer);
+  for (const Side& side : r.sides) {
+    if (!side.inside) continue;
+    const Box s = bounding_box(side.shape);
+    for (int d = 0; d < 2; ++d) b.min[d] = std::max(b.min[d], s.min[d]), b.max[d] = std::min(b.max[d], s.max[d]);
+  }
+  return b;
+}
+
 bool boxes_overlap(const Box& a, const Box& b, double gap) {
   return a.min[0] < b.max[0] + gap && b.min[0] < a.max[0] + gap && a.min[1] < b.max[1] + gap &&
          b.min[1] < a.max[1] + gap;

@@ -48,13 +48,23 @@ struct Region {
   std::vector<Side> sides{};  // (defaulted: Region{outer, minus} stays complete)
 };
 
-const char* shape_name(ShapeKind k);  // "rectangle", "polygon", "circle", "ellipse"
+const char* shape_name(ShapeKind k);
+
+// The same shape, coordinate for coordinate (the parts of one split body share their outer
+// shape and cut-outs).
+bool same_shape(const Shape& a, const Shape& b);
+// The same outer shape and cut-outs (ignoring the sides that split it into parts).
+bool same_drawn_region(const Region& a, const Region& b);  // "rectangle", "polygon", "circle", "ellipse"
 
 bool contains(const Shape& s, double x, double y);
 bool contains(const Region& r, double x, double y);
 
 Box bounding_box(const Shape& s);
 Box bounding_box(const Region& r);                                 // the outer shape's box
+// A box that holds every point of the region, tighter than the outer shape's for a part of a
+// split body: the outer box cut down to the box of every side that keeps the inside of its
+// shape (min > max along an axis: the region is empty).
+Box region_box(const Region& r);
 bool boxes_overlap(const Box& a, const Box& b, double gap = 0.0);  // closer than `gap`
 
 // The enclosed area with a sign: > 0 counter-clockwise, < 0 clockwise (shoelace), m^2.

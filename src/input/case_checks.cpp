@@ -5,7 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <utility>
@@ -138,20 +138,37 @@ void check_touching_rectangles(const Case& c, const BodySpec& a, const BodySpec&
 void check_touching_shapes(const Case& c, const Grid& grid, const BodySpec& a, const BodySpec& b) {
   const int ppc = c.grid.particles_per_cell;
   const double gap = c.grid.refined() ? c.grid.coarse_cell_size : c.grid.cell_size;
-  if (!boxes_overlap(bounding_box(a.region), bounding_box(b.region), gap)) return;
-  std::map<std::pair<int, int>, std::vector<SeedPoint>> cells;
-  for_each_seed_point(grid, b.region, ppc, [&](const SeedPoint& p) {
-    cells[{grid.x.cell_of(p.x), grid.y.cell_of(p.y)}].push_back(p);
+  // Only where the two regions' boxes come within a cell of each other (a part of a split body:
+  // the box of the side that bounds it) are their points walked.
+  const Box ba = region_box(a.region), bb = region_box(b.region);
+  if (!boxes_overlap(ba, bb, gap)) return;
+  Box close_by;
+  for (int d = 0; d < 2; ++d)
+    close_by.min[d] = std::max(ba.min[d], bb.min[d]) - gap, close_by.max[d] = std::min(ba.max[d], bb.max[d]) + gap;
+  // b's points there, bucketed by grid cell: sorted by the cell's number (one array, not one
+  // allocation a cell; stable, so each cell keeps the walk's order).
+  struct InCell {
+    std::int64_t cell;
+    SeedPoint p;
+  };
+  const std::int64_t row = std::int64_t(grid.x.cells) + 2;  // cells -1 .. cells per row
+  const auto cell = [&](int i, int j) { return std::int64_t(j) * row + std::int64_t(i + 1); };
+  std::vector<InCell> cells;
+  for_each_seed_point(grid, b.region, ppc, close_by, [&](const SeedPoint& p) {
+    cells.push_back({cell(grid.x.cell_of(p.x), grid.y.cell_of(p.y)), p});
   });
+  if (cells.empty()) return;
+  std::stable_sort(cells.begin(), cells.end(), [](const InCell& u, const InCell& v) { return u.cell < v.cell; });
   const double tol = 1e-9 * grid.cell_size();
   std::vector<Point> contacts;
-  for_each_seed_point(grid, a.region, ppc, [&](const SeedPoint& p) {
+  for_each_seed_point(grid, a.region, ppc, close_by, [&](const SeedPoint& p) {
     const int ci = grid.x.cell_of(p.x), cj = grid.y.cell_of(p.y);
     for (int j = cj - 1; j <= cj + 1; ++j)
       for (int i = ci - 1; i <= ci + 1; ++i) {
-        const auto it = cells.find({i, j});
-        if (it == cells.end()) continue;
-        for (const SeedPoint& q : it->second) {
+        const std::int64_t k = cell(i, j);
+        auto it = std::lower_bound(cells.begin(), cells.end(), k, [](const InCell& u, std::int64_t v) { return u.cell < v; });
+        for (; it != cells.end() && it->cell == k; ++it) {
+          const SeedPoint& q = it->p;
           const double gx = std::fabs(p.x - q.x) - 0.5 * (p.lx + q.lx);
           const double gy = std::fabs(p.y - q.y) - 0.5 * (p.ly + q.ly);
           // Sharing a stretch of edge: touching in one direction, overlapping in the other.
@@ -341,6 +358,13 @@ void check_grid_limits(const Case& c) {
                              "grid.cell_size = {:g} m)",
                              exact ? "exactly" : "at least", particles, nodes, c.grid.cell_size),
                  "");
+}
+
+void check_memory_before_seeding(const Case& c) {
+  const double bytes = memory_bytes_before_seeding(c);
+  if (bytes > 0.0)
+    check_memory(c, bytes / (1024.0 * 1024.0), "the case",
+                 " (memory_estimate_mib before any seed point is walked: particles, grid fields, interfaces)");
 }
 
 // solver.mass = "averaged" (solver/consistent_mass.hpp) on what it was derived and checked

@@ -26,4 +26,11 @@ void check_case_consistency(Case& c);
 // could never hold.
 void check_grid_limits(const Case& c);
 
+// Once every line has split its body (input/parse_interfaces), before any check walks seed
+// points: the whole case's memory estimate as `rupture check` gives it (solver/summary.hpp,
+// memory_bytes_before_seeding: exact for rectangles, at least for other shapes), within
+// solver.memory_limit_mib or the machine's memory. A body split into parts by its cracks is
+// refused here, not after minutes of walks over every part.
+void check_memory_before_seeding(const Case& c);
+
 }  // namespace rupture

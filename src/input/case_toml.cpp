@@ -278,6 +278,7 @@ Case build_case(const toml::table& root, const std::string& case_dir) {
   set_automatic_margin(c);
   parse_output(top, c);
   parse_stations(top, c);
+  check_memory_before_seeding(c);  // before the checks below walk the bodies' seed points
   set_default_subcycling(c);
   check_bodies_on_graded_grid(c);
   check_body_seeding(c);

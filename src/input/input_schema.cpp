@@ -253,8 +253,10 @@ std::vector<KeyDoc> build_schema() {
        "OpenMP threads (results do not depend on it)", "2"},
       {"solver.memory_limit_mib", "number", "MiB", "0 (the machine's memory)", ">= 0",
        "the largest memory estimate (rupture check's memory_estimate_mib) a run may start "
-       "with; a case above it is refused before any allocation. Raise it to run on purpose "
-       "beyond the machine's memory (swap)", "65536"},
+       "with; a case above it is refused before any allocation, and before its bodies' seed "
+       "points are walked (counted from each drawn body's area: exactly for rectangles on grid "
+       "lines, at least for other shapes). Raise it to run on purpose beyond the machine's "
+       "memory (swap)", "65536"},
 
       {"absorbing", "table", "", "none", "",
        "Absorbing domain edges: viscous dashpots rho c_P (normal) and rho c_S (tangential) on "

@@ -65,8 +65,13 @@ void fill(Particles& p, std::size_t k, const SeedPoint& s, const SeedProperties&
 
 }  // namespace
 
-void for_each_seed_point(const Grid& g, const Region& r, int ppc, const SeedVisit& visit) {
-  const Box b = bounding_box(r);
+void for_each_seed_point(const Grid& g, const Region& r, int ppc, const Box& within, const SeedVisit& visit) {
+  // The walk covers the region's box (a part of a split body: the side that bounds it) within
+  // `within`. The centres come from their indices on the whole lattice, not from the box, so a
+  // smaller box visits the same points, in the same order, minus those outside it.
+  Box b = region_box(r);
+  for (int d = 0; d < 2; ++d) b.min[d] = std::max(b.min[d], within.min[d]), b.max[d] = std::min(b.max[d], within.max[d]);
+  if (!(b.min[0] <= b.max[0] && b.min[1] <= b.max[1])) return;
   // On a uniform grid the box is clipped to the grid's extent (a nested level's lattice covers
   // part of the domain; the whole-domain grid holds every body anyway). Its ends are grid
   // lines, so the centres are those of the unclipped box.
@@ -76,10 +81,17 @@ void for_each_seed_point(const Grid& g, const Region& r, int ppc, const SeedVisi
                                : uniform_line(g.x, g.domain_min[0], clip_lo(g.x, b.min[0]), clip_hi(g.x, b.max[0]), ppc);
   const Line rows = g.graded() ? graded_line(g.y, b.min[1], b.max[1], ppc)
                                : uniform_line(g.y, g.domain_min[1], clip_lo(g.y, b.min[1]), clip_hi(g.y, b.max[1]), ppc);
-  for (std::size_t j = 0; j < rows.centre.size(); ++j)
+  for (std::size_t j = 0; j < rows.centre.size(); ++j) {
+    if (rows.centre[j] < within.min[1] || rows.centre[j] > within.max[1]) continue;
     for (std::size_t i = 0; i < cols.centre.size(); ++i)
-      if (contains(r, cols.centre[i], rows.centre[j]))
+      if (cols.centre[i] >= within.min[0] && cols.centre[i] <= within.max[0] &&
+          contains(r, cols.centre[i], rows.centre[j]))
         visit({cols.centre[i], rows.centre[j], cols.side[i], rows.side[j]});
+  }
+}
+
+void for_each_seed_point(const Grid& g, const Region& r, int ppc, const SeedVisit& visit) {
+  for_each_seed_point(g, r, ppc, Box{{-INFINITY, -INFINITY}, {INFINITY, INFINITY}}, visit);
 }
 
 long count_seed_points(const Grid& g, const Region& r, int ppc) {

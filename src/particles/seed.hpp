@@ -39,6 +39,10 @@ using SeedVisit = std::function<void(const SeedPoint&)>;
 // the grid line below it otherwise.
 void for_each_seed_point(const Grid& g, const Region& r, int ppc,
                          const SeedVisit& visit);
+// The same points, but only those inside `within` (a box; the walk covers no more than it and
+// the region's box, geometry/shape.hpp region_box): a check that looks at part of a body
+// visits only that part.
+void for_each_seed_point(const Grid& g, const Region& r, int ppc, const Box& within, const SeedVisit& visit);
 
 // How many particles region `r` gets.
 long count_seed_points(const Grid& g, const Region& r, int ppc);

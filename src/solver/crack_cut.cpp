@@ -52,16 +52,6 @@ std::pair<Point, double> nearest_on_segment(const Point& p, const Point& q, cons
   return {at, std::hypot(x.x - at.x, x.y - at.y)};
 }
 
-bool same_shape(const Shape& a, const Shape& b) {
-  if (a.kind != b.kind || a.angle != b.angle || a.vertices.size() != b.vertices.size()) return false;
-  for (int d = 0; d < 2; ++d)
-    if (a.min[d] != b.min[d] || a.max[d] != b.max[d] || a.center[d] != b.center[d] || a.radii[d] != b.radii[d])
-      return false;
-  for (std::size_t i = 0; i < a.vertices.size(); ++i)
-    if (a.vertices[i].x != b.vertices[i].x || a.vertices[i].y != b.vertices[i].y) return false;
-  return true;
-}
-
 }  // namespace
 
 std::optional<LineMeeting> segment_meets_line(const Polyline& line, const Point& a, const Point& b, double tol) {

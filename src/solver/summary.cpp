@@ -17,6 +17,41 @@ namespace rupture {
 
 namespace {
 
+// Each field holds the nodes of its bodies' box plus stencil and margin (solver/field_windows).
+long field_nodes_estimate(const Case& c, const Grid& grid) {
+  std::vector<Box> field_box(c.field_names.size(), Box{{INFINITY, INFINITY}, {-INFINITY, -INFINITY}});
+  for (const BodySpec& b : c.bodies) {
+    const Box box = bounding_box(b.region);
+    Box& f = field_box[std::size_t(b.field)];
+    for (int d = 0; d < 2; ++d)
+      f.min[d] = std::min(f.min[d], box.min[d]), f.max[d] = std::max(f.max[d], box.max[d]);
+  }
+  long nodes = 0;
+  for (const Box& box : field_box)
+    if (box.min[0] <= box.max[0]) nodes += long(window_nodes_estimate(grid, box));
+  return nodes;
+}
+
+// The interfaces, counted from cohesive/interface.hpp's arrays: per node 20 doubles, the law,
+// streak and rank-flag bytes and two face stencils; per segment 9 doubles; per Gauss point 6
+// doubles and 3 bytes; the crack tracker's copy of the nodes (3 doubles) and the text of the
+// rupture-time file written at the end (about 64 bytes a node).
+std::size_t interface_bytes_estimate(const Case& c) {
+  std::size_t bytes = 0;
+  constexpr std::size_t kPerNode = 20 * sizeof(double) + 2 + 4 + 2 + 2 * sizeof(FaceStencil) + 3 * sizeof(double) + 64;
+  constexpr std::size_t kPerSegment = 9 * sizeof(double) + CohesiveInterface::kGauss * (6 * sizeof(double) + 3);
+  for (const InterfaceSpec& is : c.interfaces)
+    bytes += std::size_t(is.segments) * kPerSegment + std::size_t(is.segments + 1) * kPerNode;
+  return bytes;
+}
+
+// 11 nodal arrays per field node (grid/grid.hpp) + particle arrays + sort scratch (order, one
+// double array for the permutation) + the interfaces.
+double memory_bytes(long field_nodes, double particles, std::size_t interface_bytes) {
+  return double(interface_bytes) + double(field_nodes) * 11.0 * sizeof(double) +
+         particles * double(Particles::bytes_per_particle() + 12);
+}
+
 // grid.refinement = "nested": cells, particles and nodes of the levels (grid/nested.hpp), every
 // field over every level's whole lattice (solver/nested_state.hpp).
 void summarize_nested(const Case& c, CaseSummary& s) {
@@ -162,37 +197,42 @@ CaseSummary summarize(const Case& c) {
     }
   }
   s.fields = int(c.field_names.size());
-  // Each field holds the nodes of its bodies' box plus stencil and margin (solver/field_windows).
-  std::vector<Box> field_box(std::size_t(s.fields), Box{{INFINITY, INFINITY}, {-INFINITY, -INFINITY}});
-  for (const BodySpec& b : c.bodies) {
-    const Box box = bounding_box(b.region);
-    Box& f = field_box[std::size_t(b.field)];
-    for (int d = 0; d < 2; ++d)
-      f.min[d] = std::min(f.min[d], box.min[d]), f.max[d] = std::max(f.max[d], box.max[d]);
-  }
-  s.field_nodes = 0;
-  for (const Box& box : field_box)
-    if (box.min[0] <= box.max[0]) s.field_nodes += long(window_nodes_estimate(grid, box));
-  // 11 nodal arrays per field node (grid/grid.hpp) + particle arrays + sort scratch (order, one
-  // double array for the permutation).
-  // The interfaces, counted from cohesive/interface.hpp's arrays: per node 20 doubles, the law,
-  // streak and rank-flag bytes and two face stencils; per segment 9 doubles; per Gauss point 6
-  // doubles and 3 bytes; the crack tracker's copy of the nodes (3 doubles) and the text of the
-  // rupture-time file written at the end (about 64 bytes a node).
-  std::size_t interface_bytes = 0;
-  constexpr std::size_t kPerNode = 20 * sizeof(double) + 2 + 4 + 2 + 2 * sizeof(FaceStencil) + 3 * sizeof(double) + 64;
-  constexpr std::size_t kPerSegment = 9 * sizeof(double) + CohesiveInterface::kGauss * (6 * sizeof(double) + 3);
-  for (const InterfaceSpec& is : c.interfaces)
-    interface_bytes += std::size_t(is.segments) * kPerSegment + std::size_t(is.segments + 1) * kPerNode;
+  s.field_nodes = field_nodes_estimate(c, grid);
+  const std::size_t interface_bytes = interface_bytes_estimate(c);
   if (c.grid.nested) {
     summarize_nested(c, s);
     s.memory_bytes += interface_bytes;
     return s;
   }
-  s.memory_bytes = interface_bytes +
-                   std::size_t(s.field_nodes) * 11 * sizeof(double) +
-                   std::size_t(s.particles) * (Particles::bytes_per_particle() + 12);
+  s.memory_bytes = std::size_t(memory_bytes(s.field_nodes, double(s.particles), interface_bytes));
   return s;
+}
+
+double memory_bytes_before_seeding(const Case& c) {
+  if (c.grid.refined()) return 0.0;
+  const Grid grid = build_grid(c.grid);
+  const double h = c.grid.cell_size, ppc = c.grid.particles_per_cell;
+  // Each drawn body once, whatever the lines inside it split it into: its parts' points are
+  // its own (the two sides of a cut share none and lose none, geometry/shape.hpp).
+  double particles = 0.0;
+  std::vector<const Region*> drawn;
+  for (const BodySpec& b : c.bodies) {
+    if (std::any_of(drawn.begin(), drawn.end(), [&](const Region* r) { return same_drawn_region(*r, b.region); }))
+      continue;
+    drawn.push_back(&b.region);
+    const Region whole{b.region.outer, b.region.minus};
+    const Shape& o = whole.outer;
+    // A rectangle on grid lines: its cells times ppc^2, exactly (seed_rectangle's count).
+    const auto on_line = [&](double v, int d) {
+      const double n = (v - c.grid.min[d]) / h;
+      return std::fabs(n - std::round(n)) <= 1e-9 * std::max(1.0, std::fabs(n));
+    };
+    const bool exact = o.kind == ShapeKind::rectangle && whole.minus.empty() && on_line(o.min[0], 0) &&
+                       on_line(o.max[0], 0) && on_line(o.min[1], 1) && on_line(o.max[1], 1);
+    particles += exact ? std::round((o.max[0] - o.min[0]) / h) * std::round((o.max[1] - o.min[1]) / h) * ppc * ppc
+                       : seed_points_at_least(whole, h / ppc);
+  }
+  return memory_bytes(field_nodes_estimate(c, grid), particles, interface_bytes_estimate(c));
 }
 
 }  // namespace rupture

@@ -38,4 +38,12 @@ struct CaseSummary {
 
 CaseSummary summarize(const Case& c);
 
+// summarize's memory estimate without walking any body's seed points (input/ refuses an absurd
+// case with it before the walks, which cost as much as the particles): the particles of each
+// drawn body counted once over the parts its lines split it into, exactly for a rectangle on
+// grid lines and at least (particles/seed.hpp, seed_points_at_least) for other shapes; the
+// fields' windows and the interfaces as summarize counts them. So at most summarize's
+// memory_bytes, equal for rectangles. Bytes; 0 on a refined grid (not estimated).
+double memory_bytes_before_seeding(const Case& c);
+
 }  // namespace rupture
