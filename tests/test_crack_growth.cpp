@@ -18,6 +18,9 @@
 #include "solver/cohesive_step.hpp"
 #include "solver/crack_cut.hpp"
 #include "solver/crack_growth.hpp"
+#include "solver/crack_junction.hpp"
+#include "solver/run_state.hpp"
+#include "core/errors.hpp"
 #include "solver/energy.hpp"
 #include "solver/nested_state.hpp"
 #include "solver/state.hpp"
@@ -251,4 +254,87 @@ TEST(CrackGrowth, lines_drawn_in_one_body_are_told_from_interfaces_between_bodie
   const Case bond = load_case(dir + "bimaterial.toml");  // two bodies joined along their edge
   ASSERT_EQ(bond.interfaces.size(), 1u);
   EXPECT_FALSE(drawn_in_crack_body(bond, 0, bond.interfaces[0]));
+}
+
+// A crack in the lower of two bonded bodies, drawn from the left edge: its tie runs on to the
+// right edge (with another interface on its body, two cells along the crack, then the drawn
+// direction: docs/fracture.md, "Several cracks in one body"). Turned 60 degrees towards the bond,
+// it comes within a cell of the bond, and growth stops the run there (a T-junction: the bond's
+// lower face would lie on both of the crack's fields; solver/crack_junction.hpp); a tie laid onto
+// the bond stops it too. Turned 10 degrees it is far from the bond, and nothing stops.
+TEST(CrackGrowth, a_tie_turned_onto_an_interface_between_bodies_stops_the_run) {
+  const std::string text = fmt::format(R"({0}
+[model]
+plane = "strain"
+[grid]
+min = [0.0, 0.0]
+max = [0.02, 0.01]
+cell_size = {1}
+[bodies.lower]
+material = "homalite"
+min = [0.0, 0.0]
+max = [0.02, 0.006]
+[bodies.upper]
+material = "homalite"
+min = [0.0, 0.006]
+max = [0.02, 0.01]
+[interface.bond]
+upper_body = "upper"
+lower_body = "lower"
+y = 0.006
+start = 0.0
+end = 0.02
+segments = 40
+law = "xu_needleman"
+sigma_max = 1e9
+tau_max = 1e9
+delta_n = 1e-6
+delta_t = 1e-6
+[interface.cut]
+body = "lower"
+points = [[0.0, 0.002], [0.005, 0.002]]
+segments = 10
+law = "contact"
+[time]
+end = 1e-6
+)",
+                                       test::kHomaliteToml, kH);
+  const Case c = parse_case(text);
+  ASSERT_EQ(c.interfaces.size(), 2u);
+  ASSERT_EQ(c.interface_names[1], "cut");
+  for (const double deg : {10.0, 60.0}) {
+    RunState s = make_run_state(c);
+    State& L = s.levels[0];
+    const std::size_t slot = s.interface_slots[1];
+    const std::vector<OtherLine> others = other_lines(c, s, {}, 1, {slot});
+    ASSERT_EQ(others.size(), 1u) << "the bond (no tie)";
+    EXPECT_FALSE(others[0].in_body);
+    const std::vector<CrackTip> tips = precrack_tips(L.interfaces[slot].spec, 1e-6 * kH);
+    ASSERT_EQ(tips.size(), 1u);
+    const double a = deg * std::numbers::pi / 180.0;
+    // Grow on while nothing stops it, up to 30 segments of half a cell (7.5 mm).
+    std::string error;
+    for (int n = 0; n < 30 && error.empty(); ++n) {
+      const std::vector<CrackTip> t = precrack_tips(L.interfaces[slot].spec, 1e-6 * kH);
+      ASSERT_EQ(t.size(), 1u);
+      const TipFrame& f = t[0].frame;
+      const Point to{f.x + 0.5 * kH * std::cos(a), f.y + 0.5 * kH * std::sin(a)};
+      try {
+        stop_at_segment_junction(c, 1, 0.0, others, {f.x, f.y}, to, kH);
+        add_crack_segment(c, 1, L, slot, t[0], to.x, to.y, true);
+        stop_at_tie_junction(c, 1, 0.0, others, L.interfaces[slot].spec.tie_geometries(), kH);
+      } catch (const SimulationError& e) {
+        error = e.what();
+        std::printf("turned %g degrees: stopped at the tip (%.3f, %.3f) mm\n", deg, 1e3 * f.x, 1e3 * f.y);
+        EXPECT_GT(f.y, 0.006 - 2.0 * kH) << "not before the crack comes near the bond";
+      }
+    }
+    if (deg == 10.0) {
+      EXPECT_EQ(error, "") << "far from the bond";
+    } else {
+      EXPECT_NE(error.find("interface 'cut'"), std::string::npos) << error;
+      EXPECT_NE(error.find("interface 'bond''s line"), std::string::npos) << error;
+      EXPECT_NE(error.find("T-junction"), std::string::npos) << error;
+    }
+  }
 }

@@ -13,6 +13,7 @@
 #include "geometry/shape.hpp"
 #include "solver/crack_branching.hpp"
 #include "solver/crack_cut.hpp"
+#include "solver/crack_junction.hpp"
 
 namespace rupture {
 namespace {
@@ -184,60 +185,6 @@ void check_tip_on_level(const Case& c, std::size_t k, const RunState& s, int lev
   }
 }
 
-// The lines a tip of crack k can meet inside its body, on its level: every other interface drawn
-// in that body (another crack, a branch of one, a line that does not grow), its line and its
-// tied extensions. The crack's own lines (`own`) are not among them.
-struct BodyLine {
-  Polyline line;
-  std::string name;  // for the diagnosis
-  bool tie = false;
-};
-std::vector<BodyLine> lines_in_crack_body(const Case& c, const RunState& s, const std::vector<CrackGrowthRecord>& records,
-                                          std::size_t k, const std::vector<CrackLine>& own) {
-  const int level = s.interface_levels[k];
-  const State& L = s.levels[std::size_t(level)];
-  std::vector<BodyLine> lines;
-  for (std::size_t slot = 0; slot < L.interfaces.size(); ++slot) {
-    if (std::any_of(own.begin(), own.end(), [&](const CrackLine& o) { return o.slot == slot; })) continue;
-    const InterfaceSpec& spec = L.interfaces[slot].spec;
-    if (!drawn_in_crack_body(c, k, spec)) continue;
-    std::string name = "a line";
-    for (std::size_t j = 0; j < c.interfaces.size() && j < s.interface_slots.size(); ++j) {
-      if (s.interface_levels[j] == level && s.interface_slots[j] == slot) name = fmt::format("interface '{}'", c.interface_names[j]);
-      if (j < records.size())
-        for (const std::size_t b : records[j].branch_slots)
-          if (b == slot) name = fmt::format("a branch of interface '{}'", c.interface_names[j]);
-    }
-    lines.push_back({spec.geometry(), name, false});
-    for (const Polyline& t : spec.tie_geometries()) lines.push_back({t, name, true});
-  }
-  return lines;
-}
-
-// A junction: the segment from -> to, which a tip of crack k is about to grow, comes within a cell
-// of another line drawn in its body (`others`). Each crack splits its body into two velocity
-// fields along itself and its tied extension, so the pieces a junction cuts off would need fields
-// of their own, or crack fields per particle-node pair (docs/fracture.md, "Junctions"): the run
-// stops here, naming the place and time, rather than grow a crack through material its fields do
-// not hold (a crack that crossed another's tied extension grew on through it, 56 mm, unhindered).
-void stop_at_junction(const Case& c, std::size_t k, const RunState& s, const std::vector<BodyLine>& others,
-                      const Point& from, const Point& to, double h) {
-  for (const BodyLine& o : others) {
-    const std::optional<LineMeeting> m = segment_meets_line(o.line, from, to, h);
-    if (!m) continue;
-    throw SimulationError(fmt::format(
-        "crack growth: interface '{}' has its tip at ({:.6g}, {:.6g}) m at t = {:.6g} s, and its next "
-        "segment, to ({:.6g}, {:.6g}) m, comes within {:.3g} m (one cell) of {}'s {} at ({:.6g}, {:.6g}) m: "
-        "a junction of two lines drawn inside one body ({}) is not supported yet (each crack splits the "
-        "body into two velocity fields along itself and its tied extension; the pieces a junction cuts "
-        "off would need fields of their own: docs/fracture.md, \"Junctions\"); the run stops here, with "
-        "what it wrote. Draw the lines farther apart, or in separate bodies joined by an [interface]",
-        c.interface_names[k], from.x, from.y, s.time, to.x, to.y, h, o.name,
-        o.tie ? "tied extension (intact material, where it holds its two fields together)" : "line",
-        m->at.x, m->at.y, c.bodies[std::size_t(c.interfaces[k].upper_body)].name));
-  }
-}
-
 // The smallest outer J domain radius a branch near its sibling is read with, in cells: the
 // smallest of the default domains (4, 6, 8 cells), with which every reading is made.
 constexpr double kSmallestDomain = 4.0;
@@ -398,10 +345,16 @@ void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& rec
       grown = true;
       if (before_growth) before_growth();
     }
-    // Every segment laid below is first checked against the other lines drawn in the body.
-    const std::vector<BodyLine> body_lines = grow.empty() ? std::vector<BodyLine>{} : lines_in_crack_body(c, s, records, k, lines);
+    // Every segment laid below is checked first against the other lines drawn in the body, and
+    // the ties it leaves after (solver/crack_junction.hpp: a junction stops the run).
+    std::vector<std::size_t> own;
+    for (const CrackLine& l : lines) own.push_back(l.slot);
+    const std::vector<OtherLine> others_lines = grow.empty() ? std::vector<OtherLine>{} : other_lines(c, s, records, k, own);
     const auto check_junction = [&](const Point& from, const Point& to) {
-      stop_at_junction(c, k, s, body_lines, from, to, h);
+      stop_at_segment_junction(c, k, s.time, others_lines, from, to, h);
+    };
+    const auto check_ties = [&](std::size_t slot) {
+      stop_at_tie_junction(c, k, s.time, others_lines, L.interfaces[slot].spec.tie_geometries(), h);
     };
     // The end first: a new segment at the start shifts nothing the end's tip needs, and the
     // other way round, but each reads the line as it is now.
@@ -411,9 +364,14 @@ void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& rec
       const auto it = std::find_if(now.begin(), now.end(), [&](const CrackTip& t) { return t.end == g.tip.end; });
       if (it == now.end()) continue;
       const double end_column = g.tip.end == LineEnd::start ? 0.0 : 1.0;
-      if (g.split > 0.0 && split_tip(c, k, s, level, slot, *it, g, records[k], check_junction)) continue;
+      if (g.split > 0.0 && split_tip(c, k, s, level, slot, *it, g, records[k], check_junction)) {
+        for (std::size_t b = records[k].branch_slots.size() - 2; b < records[k].branch_slots.size(); ++b)
+          check_ties(records[k].branch_slots[b]);
+        continue;
+      }
       check_junction({it->frame.x, it->frame.y}, {g.x, g.y});
       const bool through = add_crack_segment(c, k, L, slot, *it, g.x, g.y, true, others);
+      check_ties(slot);
       const double len = std::hypot(g.x - g.tip.frame.x, g.y - g.tip.frame.y);
       records[k].rows.insert(records[k].rows.end(),
                              {s.time, double(g.label), end_column, g.x, g.y, g.angle * kDegree, len, g.K_I, g.K_II});
@@ -435,6 +393,7 @@ void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& rec
         const double turn = std::atan2(f.e1x * dy - f.e1y * dx, f.e1x * dx + f.e1y * dy);
         check_junction({f.x, f.y}, {x, y});
         const bool done = add_crack_segment(c, k, L, slot, *at, x, y, true, others);
+        check_ties(slot);
         records[k].rows.insert(records[k].rows.end(),
                                {s.time, double(g.label), end_column, x, y, turn * kDegree, l, g.K_I, g.K_II});
         if (done || l == left) break;

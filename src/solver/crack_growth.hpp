@@ -25,9 +25,10 @@
 // A tip whose segment would leave the body ends on its edge: no tie is left there, the cut is
 // through, and the pieces separate. A tip that comes within a cell of the edge cuts through to
 // its nearest point the same way (the ligament left is below what the grid resolves). A tip
-// whose next segment comes within a cell of another line drawn in its body, or of that line's
-// tied extension, stops the run with a SimulationError naming both and the place and time (a
-// junction: the split-body fields cannot follow it; docs/fracture.md, "Junctions"). One grid,
+// whose next segment comes within a cell of another line (drawn in its body, or between its
+// body and another), or whose tie comes to touch one, stops the run with a SimulationError
+// naming both and the place and time (a junction the split-body fields cannot follow:
+// solver/crack_junction.hpp). One grid,
 // or nested levels with one step for all (the crack read and grown on the level that holds it,
 // the others following its cut; input/ refuses the rest); one process or several: every rank
 // runs this alike on the whole interface state, each tip's read summed over the ranks, and the
