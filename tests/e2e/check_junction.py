@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """A growing crack that reaches another line drawn in its body stops the run with a diagnosis.
 
-Usage: check_junction.py RUPTURE INPUT OUT
+Usage: check_junction.py RUPTURE INPUT OUT   (LAUNCH="mpiexec -n 2": run it under that launcher;
+every rank takes the same decision and stops alike)
 tests/inputs/crack_junction.toml: the inclined centre crack's right tip kinks towards a second
 crack ("wall") drawn in the same plate. A junction of two lines in one body is not supported
 (solver/crack_growth.cpp, stop_at_junction), so the run must
@@ -14,11 +15,13 @@ crack ("wall") drawn in the same plate. A junction of two lines in one body is n
 import csv
 import json
 import math
+import os
 import subprocess
 import sys
 
 rupture, inp, out = sys.argv[1:4]
-p = subprocess.run([rupture, "run", inp, "-o", out, "--overwrite", "--quiet"], capture_output=True, text=True)
+launch = os.environ.get("LAUNCH", "").split()
+p = subprocess.run(launch + [rupture, "run", inp, "-o", out, "--overwrite", "--quiet"], capture_output=True, text=True)
 ok = True
 
 
