@@ -371,10 +371,10 @@ void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& rec
       }
       check_junction({it->frame.x, it->frame.y}, {g.x, g.y});
       const bool through = add_crack_segment(c, k, L, slot, *it, g.x, g.y, true, others);
-      check_ties(slot);
       const double len = std::hypot(g.x - g.tip.frame.x, g.y - g.tip.frame.y);
       records[k].rows.insert(records[k].rows.end(),
                              {s.time, double(g.label), end_column, g.x, g.y, g.angle * kDegree, len, g.K_I, g.K_II});
+      check_ties(slot);  // after the row: the path written at the stop holds the segment laid
       // A free surface less than a cell away: the ligament left holds fewer than two particles
       // across and cannot carry a field of its own on the grid (nor can a J domain cut by the
       // edge read the tip), so the crack cuts through to the nearest point of the edge, in
@@ -393,9 +393,9 @@ void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& rec
         const double turn = std::atan2(f.e1x * dy - f.e1y * dx, f.e1x * dx + f.e1y * dy);
         check_junction({f.x, f.y}, {x, y});
         const bool done = add_crack_segment(c, k, L, slot, *at, x, y, true, others);
-        check_ties(slot);
         records[k].rows.insert(records[k].rows.end(),
                                {s.time, double(g.label), end_column, x, y, turn * kDegree, l, g.K_I, g.K_II});
+        check_ties(slot);
         if (done || l == left) break;
       }
     }
