@@ -272,11 +272,25 @@ TEST(InsideBody, every_bad_input_is_reported_with_key_value_and_rule) {
       plate_case(first +
                  interface("b", "body = \"plate\"\npoints = [[0.01, -0.004], [0.01, 0.004]]")),
       {"interface.b.points", "runs through two parts of bodies.plate", "bodies.plate.below.a"});
+  // Ending on another line's tied extension (a T-junction on a tie).
   expect_message(
-      plate_case(first +
-                 interface("b", "body = \"plate\"\npoints = [[0.01, 0.002], [0.01, 0.006]]")),
+      plate_case(interface("a", "body = \"plate\"\ny = 0.0\nstart = 0.0\nend = 0.012") +
+                 interface("b", "body = \"plate\"\npoints = [[0.016, 0.004], [0.016, 0.0]]")),
       {"interface.b.points", "splits bodies.plate across the upper face of interface.a",
-       "T-junction"});
+       "may not end on another line's tied extension"});
+  // Ending on a line that grows.
+  expect_message(
+      plate_case(interface("a", "body = \"plate\"\ny = 0.0\nstart = 0.0\nend = 0.012") +
+                 "growth = \"energy\"\nfracture_energy = 26.0\n" +
+                 interface("b", "body = \"plate\"\npoints = [[0.006, 0.004], [0.006, 0.0]]")),
+      {"interface.b.points", "ends on interface.a", "a line that grows"});
+  // A growing line whose tied extension ends on another (the junction would move as it grows).
+  expect_message(
+      plate_case(interface("a", "body = \"plate\"\ny = 0.0\nstart = 0.0\nend = 0.02") +
+                 interface("b", "body = \"plate\"\npoints = [[0.012, 0.002], [0.012, 0.006]]") +
+                 "growth = \"energy\"\nfracture_energy = 26.0\n"),
+      {"interface.b.growth", "\"energy\"", "tied extension ends on interface.a",
+       "may not have its extension end on another line"});
   // A line whose extensions come back across it.
   expect_message(plate_case(interface("w",
                                       "body = \"plate\"\npoints = [[0.006, 0.0], [0.014, 0.0], "
@@ -288,4 +302,59 @@ TEST(InsideBody, every_bad_input_is_reported_with_key_value_and_rule) {
                                    "upper_body = \"plate\"\nlower_body = \"plate.below.a\"\n"
                                    "y = 0.0\nstart = 0.0\nend = 0.02")),
       {"interface.c.upper_body", "\"plate\"", "has been split", "\"plate\", \"plate.below.a\""});
+}
+
+// A line that ends on another (a T-junction): the face it ends on changes field at the end, each
+// node's face on the part holding the middle of its share of the line.
+TEST(InsideBody, a_line_ending_on_another_divides_that_face_at_its_end) {
+  // A full-width plane at y = 0, then a crack from it up to (10, 4) mm: the plane's upper face
+  // lies on the crack's lower part (x > 10 mm: the crack runs up, its normal points to -x, so
+  // the left part keeps the name) up to s = 10 mm, then on the kept part.
+  const std::string plane = interface("a", "body = \"plate\"\ny = 0.0\nstart = 0.0\nend = 0.02");
+  const Case c = parse_case(
+      plate_case(plane + interface("b", "body = \"plate\"\npoints = [[0.01, 0.0], [0.01, 0.004]]", 8)));
+  std::vector<std::string> names;
+  for (const BodySpec& b : c.bodies) names.push_back(b.name);
+  EXPECT_EQ(names, (std::vector<std::string>{"plate", "plate.below.b", "plate.below.a"}));
+  const InterfaceSpec& a = c.interfaces[0];
+  ASSERT_EQ(a.upper_faces.size(), 2u);
+  EXPECT_TRUE(a.lower_faces.empty());
+  EXPECT_EQ(a.upper_faces[0].from, 0.0);
+  EXPECT_EQ(c.bodies[std::size_t(a.upper_faces[0].body)].name, "plate");
+  EXPECT_NEAR(a.upper_faces[1].from, 0.01, 1e-15);
+  EXPECT_EQ(c.bodies[std::size_t(a.upper_faces[1].body)].name, "plate.below.b");
+  EXPECT_EQ(a.upper_field, c.bodies[0].field);  // the first stretch's, for the material
+  EXPECT_TRUE(c.interfaces[1].bonded_lines.size() == 1);  // tied above only: its foot is on a
+  // Node fields: 40 segments of 0.5 mm; the node at x = 10 mm (the junction) moves half with
+  // each part, every other node with the part holding it.
+  const CohesiveInterface ci = make_interface(a);
+  ASSERT_EQ(ci.node_faces_up.size(), 41u);
+  EXPECT_TRUE(ci.node_faces_lo.empty());
+  for (std::size_t k = 0; k < 41; ++k) {
+    const FaceFields f = ci.faces_up(k);
+    EXPECT_EQ(int(f.a), k <= 20 ? c.bodies[0].field : c.bodies[1].field) << k;
+    EXPECT_NEAR(f.share, k == 20 ? 0.5 : 1.0, 1e-12) << k;
+    if (k == 20) EXPECT_EQ(int(f.b), c.bodies[1].field);
+  }
+  for (std::size_t k = 0; k < 41; ++k) EXPECT_EQ(int(ci.faces_lo(k).a), c.bodies[2].field);
+  // With the junction at a quarter of a segment, the node before it has 3/4 of its part there.
+  InterfaceSpec moved = a;
+  moved.upper_faces[1].from = 0.010125;
+  const CohesiveInterface cm = make_interface(moved);
+  EXPECT_NEAR(cm.faces_up(20).share, 0.75, 1e-12);
+  EXPECT_EQ(cm.faces_up(21).share, 1.0);
+  EXPECT_EQ(int(cm.faces_up(21).a), c.bodies[1].field);
+  // The same with the crack's tie ending on the plane instead (its foot 2 mm above it): the face
+  // changes where the tie ends.
+  const Case d = parse_case(
+      plate_case(plane + interface("b", "body = \"plate\"\npoints = [[0.012, 0.002], [0.012, 0.006]]", 8)));
+  ASSERT_EQ(d.interfaces[0].upper_faces.size(), 2u);
+  EXPECT_NEAR(d.interfaces[0].upper_faces[1].from, 0.012, 1e-15);
+  EXPECT_EQ(d.interfaces[1].bonded_lines.size(), 2u);
+  // A line ending on the plane from below divides its lower face.
+  const Case e = parse_case(
+      plate_case(plane + interface("b", "body = \"plate\"\npoints = [[0.004, -0.006], [0.004, 0.0]]", 8)));
+  EXPECT_TRUE(e.interfaces[0].upper_faces.empty());
+  ASSERT_EQ(e.interfaces[0].lower_faces.size(), 2u);
+  EXPECT_NEAR(e.interfaces[0].lower_faces[1].from, 0.004, 1e-15);
 }

@@ -303,3 +303,82 @@ TEST(InterfaceForces, a_light_face_meets_the_contact_penalty_in_proportion_to_it
   std::printf("light face: M = %.3g kg/m (normal %.3g, threshold %.3g), force %.4g -> %.4g N/m\n", m2, m1,
               c0.light_face_mass, f1, f2);
 }
+
+// A face that changes field along the line (a T-junction, cohesive/interface.hpp FaceFields): a
+// crack drawn in the upper body from the interface's middle node up to 3 mm splits that body in
+// two, and the interface's upper face lies on both parts. Under a uniform opening (Xu-Needleman,
+// 2 segments) the end nodes' forces go to their own part's field and the middle node's, half to
+// each; the lower field gets minus the sum, so the three fields' forces add to zero; the two
+// upper parts, mirror images about the crack, get equal totals.
+TEST(InterfaceForces, a_face_on_a_t_junction_loads_both_parts_by_their_shares) {
+  State s = make_state(parse_case(fmt::format(R"({}
+[grid]
+min = [0.0, -0.004]
+max = [0.008, 0.004]
+cell_size = {}
+particles_per_cell = 2
+margin = 0.0
+[bodies.upper]
+material = "homalite"
+min = [0.0, 0.0]
+max = [0.008, 0.004]
+[bodies.lower]
+material = "homalite"
+min = [0.0, -0.004]
+max = [0.008, 0.0]
+[interface.w]
+upper_body = "upper"
+lower_body = "lower"
+y = 0.0
+start = {}
+end = {}
+segments = 2
+{}
+[interface.crack]
+body = "upper"
+points = [[0.004, 0.0], [0.004, 0.003]]
+segments = 3
+law = "contact"
+[time]
+end = 1e-6
+)",
+                                                     test::kHomaliteToml, kH, kStart, kEnd, kXuNeedlemanLaw)));
+  CohesiveInterface& c = s.interfaces.at(0);
+  ASSERT_EQ(c.num_nodes(), 3u);
+  const int left = c.faces_up(0).a, right = c.faces_up(2).a, lower = c.spec.lower_field;
+  ASSERT_NE(left, right);
+  EXPECT_EQ(c.faces_up(1).a, left);
+  EXPECT_EQ(c.faces_up(1).b, right);
+  EXPECT_NEAR(c.faces_up(1).share, 0.5, 1e-12);
+  const double dn = 0.5 * 0.4e-6;  // a uniform opening of half delta_n
+  for (std::size_t k = 0; k < 3; ++k) c.uy_up[k] = 0.5 * dn, c.uy_lo[k] = -0.5 * dn;
+  build_scatter_plan(s);
+  fit_field_windows(s);
+  particles_to_grid(s, false);
+  update_face_stencils(s);
+  for (std::size_t k = 0; k < 3; ++k) {
+    const FaceStencil& f = c.face_up[k];
+    double on[2] = {0.0, 0.0};  // weight on the left and the right part's nodes
+    for (int q = 0; q < FaceStencil::kSlots; ++q) on[q < 4 ? 0 : 1] += f.c[q];
+    EXPECT_NEAR(on[0] + on[1], 1.0, 1e-14) << k;
+    EXPECT_NEAR(on[1], k == 1 ? 0.5 : 0.0, 1e-12) << k;
+  }
+  evaluate_interface(c, 1e-9, 0.0);
+  std::fill(s.fields.force_x.begin(), s.fields.force_x.end(), 0.0);
+  std::fill(s.fields.force_y.begin(), s.fields.force_y.end(), 0.0);
+  add_cohesive_forces(s);
+  const GridFields& G = s.fields;
+  auto total = [&](int f) {
+    double fy = 0.0;
+    for (int j = 0; j < s.grid.nodes_y(); ++j)
+      for (int i = 0; i < s.grid.nodes_x(); ++i)
+        if (G.holds(f, i, j)) fy += G.force_y[G.index(f, i, j)];
+    return fy;
+  };
+  const double fl = total(left), fr = total(right), fo = total(lower);
+  EXPECT_LT(c.fy_node[1], 0.0);  // an opening: the upper face pulled back down
+  EXPECT_NEAR(fl, c.fy_node[0] + 0.5 * c.fy_node[1], 1e-12 * std::fabs(c.fy_node[1]));
+  EXPECT_NEAR(fr, c.fy_node[2] + 0.5 * c.fy_node[1], 1e-12 * std::fabs(c.fy_node[1]));
+  EXPECT_NEAR(fl, fr, 1e-12 * std::fabs(fl));
+  EXPECT_NEAR(fl + fr + fo, 0.0, 1e-12 * std::fabs(fo));
+}

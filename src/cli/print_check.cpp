@@ -67,10 +67,18 @@ void print_check(const std::string& path, const Case& c) {
     std::string ties;
     for (const Polyline& tie : is.tie_geometries())
       ties += fmt::format("; bonded along {:g} m from ({:g}, {:g}) m", tie.length(), tie.x[0], tie.y[0]);
-    fmt::print("interface {}: {} segments of {} {}; {}, {}{}{}; bodies {} (upper) and {}\n",
+    // Faces that change body along the line (a T-junction): each body from its arc length on.
+    std::string faces;
+    for (const auto& [side, list] : {std::pair{"upper", &is.upper_faces}, std::pair{"lower", &is.lower_faces}}) {
+      if (list->empty()) continue;
+      faces += fmt::format("; {} face on", side);
+      for (const FaceField& f : *list)
+        faces += fmt::format(" {} from s = {:g} m", c.bodies[std::size_t(f.body)].name, f.from);
+    }
+    fmt::print("interface {}: {} segments of {} {}; {}, {}{}{}; bodies {} (upper) and {}{}\n",
                c.interface_names[k], is.segments, show_length(length / is.segments), where, law_entry(is).name,
                law_text, is.contact ? fmt::format("; contact, friction {:g}", is.contact_law.friction) : "",
-               ties, c.bodies[std::size_t(is.upper_body)].name, c.bodies[std::size_t(is.lower_body)].name);
+               ties, c.bodies[std::size_t(is.upper_body)].name, c.bodies[std::size_t(is.lower_body)].name, faces);
   }
   if (c.grid.refined()) {
     fmt::print("refined grid: {} levels, level 0 = {:g} m, finest = {:g} m; smallest cell {:g} m\n",

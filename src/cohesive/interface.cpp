@@ -144,7 +144,39 @@ CohesiveInterface make_interface(const InterfaceSpec& spec) {
   for (auto* v : {&c.seg_fa_x, &c.seg_fa_y, &c.seg_fb_x, &c.seg_fb_y, &c.seg_ka, &c.seg_kb})
     v->assign(nseg, 0.0);
   resolve_point_laws(c);
+  for (const auto& [faces, out] : {std::pair{&spec.upper_faces, &c.node_faces_up},
+                                   std::pair{&spec.lower_faces, &c.node_faces_lo}}) {
+    if (faces->empty()) continue;
+    out->resize(n);
+    for (std::size_t k = 0; k < n; ++k) (*out)[k] = face_fields_at(c, *faces, k);
+  }
   return c;
+}
+
+FaceFields face_fields_at(const CohesiveInterface& c, const std::vector<FaceField>& faces, std::size_t k) {
+  const std::size_t nseg = c.num_segments();
+  const bool has_prev = k > 0 || c.closed, has_next = k < nseg;
+  const double lo = c.s0[k] - (has_prev ? 0.5 * c.seg_length[k > 0 ? k - 1 : nseg - 1] : 0.0);
+  const double hi = c.s0[k] + (has_next ? 0.5 * c.seg_length[k] : 0.0);
+  // A closed line's arc length wraps: node 0's part begins before the line's end.
+  const double length = c.closed ? c.length() : 0.0;
+  // The field at arc length s (the one whose stretch holds it; the last one's runs on through
+  // the end of a closed line to the first change).
+  auto field_at = [&](double s) {
+    if (c.closed && s < 0.0) s += length;
+    int f = c.closed ? faces.back().field : faces.front().field;
+    for (const FaceField& e : faces)
+      if (e.from <= s) f = e.field;
+    return std::uint8_t(f);
+  };
+  for (std::size_t q = 0; q < faces.size(); ++q)
+    for (const double shift : {0.0, -length, length}) {
+      const double at = faces[q].from + shift;
+      if ((q > 0 || c.closed) && at > lo && at < hi)
+        return {field_at(lo), std::uint8_t(faces[q].field), (at - lo) / (hi - lo)};
+      if (!c.closed) break;
+    }
+  return {field_at(0.5 * (lo + hi)), 0, 1.0};
 }
 
 double node_state(const CohesiveInterface& c, std::size_t k) {

@@ -35,10 +35,23 @@ struct LawStretch {
   CohesiveLaw law;
 };
 
+// Where a face's field changes along the line: from arc length `from` (m, along the line from
+// its start) on, the face lies on `field` (the body part `body`). Another line inside a body
+// that ends on this one (a T-junction) splits the part holding this face in two, one on each
+// side of the end (input/parse_body_split.cpp).
+struct FaceField {
+  double from = 0.0;  // m
+  int field = 0, body = 0;
+};
+
 struct InterfaceSpec {
   int upper_field = 0, lower_field = 1;  // the velocity fields of the two faces
   int upper_body = 0, lower_body = 1;    // the bodies named (Case::bodies); the normal points
                                          // into the upper one
+  // Faces whose field changes along the line (T-junctions), in increasing `from`, the first
+  // from 0; empty: the whole face on upper_field / lower_field. The tied stretches (bonded_lines)
+  // stay on upper_field / lower_field.
+  std::vector<FaceField> upper_faces, lower_faces;
   // Where the interface lies. Empty: the horizontal form, the line (start, y) -> (end, y).
   Polyline line;
   double y = 0.0;                 // m
@@ -94,11 +107,23 @@ struct InterfaceSpec {
 // A face point's grid stencil (solver/cohesive_step.cpp): it moves with, and loads, its own
 // field's four nodes around it with weights c (bilinear weight x nodal mass, normalized; all
 // zero where its field has no mass). Computed once per step, after the bonded tie, and used by
-// both the force spread and the face motion, so the two are transposes of each other.
+// both the force spread and the face motion, so the two are transposes of each other. A face
+// node on a T-junction (FaceFields with share < 1) uses two fields' four nodes each, the two
+// normalized parts weighted by the share; otherwise slots 4-7 have c = 0.
 struct FaceStencil {
-  std::size_t node[4];  // grid index, field offset included
-  double c[4];
+  static constexpr int kSlots = 8;
+  std::size_t node[kSlots];  // grid index, field offset included
+  double c[kSlots];
   double mass = 0.0;  // the face's mass, sum of bilinear weight x nodal mass, kg/m
+};
+
+// The fields a face node moves with where its face changes field along the line (a T-junction:
+// InterfaceSpec::upper_faces): `share` of it with field a's material and the rest with field
+// b's, the shares of its part of the line (half of each segment beside it) on either side of the
+// change. share = 1 (b unused) for a node wholly on one part.
+struct FaceFields {
+  std::uint8_t a = 0, b = 0;
+  double share = 1.0;
 };
 
 // Every member must also be written in run/checkpoint.cpp (restart is bitwise), except `spec`,
@@ -152,6 +177,15 @@ struct CohesiveInterface {
   std::vector<double> stiffness_node;
   std::vector<double> seg_ka, seg_kb;         // per-segment end stiffnesses (scratch)
   std::vector<FaceStencil> face_up, face_lo;  // this step's face stencils (derived, not state)
+  // The fields of each node's upper and lower face (derived from spec.upper_faces / lower_faces,
+  // not state; empty: spec.upper_field / lower_field for every node).
+  std::vector<FaceFields> node_faces_up, node_faces_lo;
+  FaceFields faces_up(std::size_t k) const {
+    return node_faces_up.empty() ? FaceFields{std::uint8_t(spec.upper_field), 0, 1.0} : node_faces_up[k];
+  }
+  FaceFields faces_lo(std::size_t k) const {
+    return node_faces_lo.empty() ? FaceFields{std::uint8_t(spec.lower_field), 0, 1.0} : node_faces_lo[k];
+  }
   // Contact on light faces (solver/cohesive_step.cpp, light_face_scale): a face of less mass
   // than this, kg/m, has its contact penalty scaled by its mass over it. Set at set-up from the
   // case (a quarter of rho h^2 / 2, the face mass the set-up's step bound assumes; 0: none).
@@ -197,6 +231,12 @@ struct CohesiveInterface {
 };
 
 CohesiveInterface make_interface(const InterfaceSpec& spec);
+
+// The fields of a face of node k (faces: spec.upper_faces or lower_faces, not empty): its part of
+// the line is half of each segment beside it; where a change of field lies inside that part, the
+// share of it before the change goes with the field before, the rest with the field after (a
+// node on a T-junction: half and half). One change per node's part (the first).
+FaceFields face_fields_at(const CohesiveInterface& c, const std::vector<FaceField>& faces, std::size_t k);
 
 // Which law each Gauss point of `spec`'s line uses (0: the interface's, k: stretch k - 1), as
 // make_interface assigns them, without making the interface (input checks of long lines);

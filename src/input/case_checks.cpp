@@ -202,8 +202,14 @@ void check_touching_bodies(const Case& c) {
       if (a.field == b.field) continue;
       const bool joined =
           std::any_of(c.interfaces.begin(), c.interfaces.end(), [&](const InterfaceSpec& s) {
-            return (s.upper_field == a.field && s.lower_field == b.field) ||
-                   (s.upper_field == b.field && s.lower_field == a.field);
+            // Every field a face lies on (a face changes field at a T-junction).
+            auto on = [](const std::vector<FaceField>& faces, int whole, int field) {
+              return faces.empty() ? whole == field
+                                   : std::any_of(faces.begin(), faces.end(),
+                                                 [&](const FaceField& f) { return f.field == field; });
+            };
+            return (on(s.upper_faces, s.upper_field, a.field) && on(s.lower_faces, s.lower_field, b.field)) ||
+                   (on(s.upper_faces, s.upper_field, b.field) && on(s.lower_faces, s.lower_field, a.field));
           });
       if (joined) continue;
       if (a.plain_rectangle() && b.plain_rectangle()) {

@@ -15,8 +15,10 @@
 //    becomes NAME.inside.IFACE.
 //  - Particles are seeded exactly as for the unsplit body; each goes to the part whose side of
 //    the cut holds it (geometry/shape.hpp Region::sides).
-//  - Earlier interfaces whose face lay on the body move to the part now holding that face; a
-//    face the new cut would divide between the two parts is an InputError.
+//  - Earlier interfaces whose face lay on the body move to the part now holding that face. A
+//    face the new line ends on (a T-junction) changes field there (InterfaceSpec::upper_faces);
+//    any other face the cut would divide between the two parts, or a tied stretch it divides,
+//    is an InputError.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -216,37 +218,127 @@ int apply_split(Section& f, InterfaceSpec& is, Case& c, ParseContext& ctx, const
   return at;
 }
 
-// Earlier interfaces with a face on body b: the face now lies on b or on the new part `at`.
-void move_earlier_faces(Section& f, const std::string& key, const Polyline& line, Case& c, int b,
-                        int at, double off) {
+// Points as side_points, with their arc length along the line (m) instead of the piece.
+template <class Visit>
+void side_points_along(const Polyline& line, double off, int side, Visit visit) {
+  std::vector<double> at{0.0};
+  for (std::size_t i = 0; i < line.num_pieces(); ++i) at.push_back(at.back() + line.piece_length(i));
+  side_points(line, off, side, [&](double x, double y, std::size_t piece) {
+    const double dx = x - line.x[piece], dy = y - line.y[piece];
+    const std::size_t j = line.piece_end(piece);
+    const double len = line.piece_length(piece);
+    visit(x, y, at[piece] + (dx * (line.x[j] - line.x[piece]) + dy * (line.y[j] - line.y[piece])) / len);
+  });
+}
+
+[[noreturn]] void fail_divided_face(Section& f, const std::string& key, const Polyline& line,
+                                    const Case& c, std::size_t k, int side, int b, int at,
+                                    Point kept_at, Point new_at, const char* why) {
+  fail(f.key(key), describe_line(key, line),
+       fmt::format("splits bodies.{} across the {} face of interface.{}, which would lie partly on "
+                   "bodies.{} (near ({:.6g}, {:.6g}) m) and partly on bodies.{} (near ({:.6g}, "
+                   "{:.6g}) m), two velocity fields; {}",
+                   c.bodies[std::size_t(b)].name, side > 0 ? "upper" : "lower", c.interface_names[k],
+                   c.bodies[std::size_t(b)].name, kept_at.x, kept_at.y,
+                   c.bodies[std::size_t(at)].name, new_at.x, new_at.y, why));
+}
+
+// Earlier interfaces with a face on body b: the face now lies on b or on the new part `at`, or
+// partly on each where the new line ends on it (a T-junction): the face then changes field at
+// that end (InterfaceSpec::upper_faces / lower_faces). Their tied stretches must lie on one part.
+void move_earlier_faces(Section& f, const std::string& key, const Polyline& line,
+                        const std::vector<Polyline>& ties, Case& c, int b, int at, double off) {
+  const double h = c.grid.cell_size;
   for (std::size_t k = 0; k < c.interfaces.size(); ++k) {
     InterfaceSpec& e = c.interfaces[k];
-    std::vector<Polyline> lines = e.tie_geometries();
-    lines.push_back(e.geometry());
+    const Polyline geometry = e.geometry();
     for (const int side : {1, -1}) {
       int& body = side > 0 ? e.upper_body : e.lower_body;
-      if (body != b) continue;
-      long on_kept = 0, on_new = 0;
-      Point kept_at, new_at;
-      for (const Polyline& l : lines)
-        side_points(l, off, side, [&](double x, double y, std::size_t) {
-          if (body_contains(c.bodies[std::size_t(b)], x, y)) ++on_kept, kept_at = {x, y};
-          if (body_contains(c.bodies[std::size_t(at)], x, y)) ++on_new, new_at = {x, y};
+      int& field = side > 0 ? e.upper_field : e.lower_field;
+      std::vector<FaceField>& faces = side > 0 ? e.upper_faces : e.lower_faces;
+      const std::vector<FaceField> before =
+          faces.empty() ? std::vector<FaceField>{{0.0, field, body}} : faces;
+      // The tied stretches move whole: they stay on upper_field / lower_field.
+      if (body == b) {
+        long on_kept = 0, on_new = 0;
+        Point kept_at, new_at;
+        for (const Polyline& l : e.tie_geometries())
+          side_points(l, off, side, [&](double x, double y, std::size_t) {
+            if (body_contains(c.bodies[std::size_t(b)], x, y)) ++on_kept, kept_at = {x, y};
+            if (body_contains(c.bodies[std::size_t(at)], x, y)) ++on_new, new_at = {x, y};
+          });
+        if (on_new > 0 && on_kept > 0)
+          fail_divided_face(f, key, line, c, k, side, b, at, kept_at, new_at,
+                            "a line inside a body may not end on another line's tied extension, "
+                            "nor run, extended straight, through a region another interface "
+                            "encloses");
+        if (on_new > 0) body = at, field = c.bodies[std::size_t(at)].field;
+      }
+      // The line's own face, stretch by stretch.
+      std::vector<FaceField> after;
+      for (std::size_t q = 0; q < before.size(); ++q) {
+        const FaceField& st = before[q];
+        if (st.body != b) {
+          after.push_back(st);
+          continue;
+        }
+        const double to = q + 1 < before.size() ? before[q + 1].from : INFINITY;
+        std::vector<std::pair<double, bool>> samples;  // (arc length, on the new part)
+        Point kept_at, new_at;
+        side_points_along(geometry, off, side, [&](double x, double y, double sp) {
+          if (sp < st.from || sp > to) return;
+          const bool in_new = body_contains(c.bodies[std::size_t(at)], x, y);
+          if (in_new) new_at = {x, y};
+          else if (body_contains(c.bodies[std::size_t(b)], x, y)) kept_at = {x, y};
+          else return;
+          samples.push_back({sp, in_new});
         });
-      if (on_new == 0) continue;
-      if (on_kept > 0)
-        fail(f.key(key), describe_line(key, line),
-             fmt::format("splits bodies.{} across the {} face of interface.{}, which would lie "
-                         "partly on bodies.{} (near ({:.6g}, {:.6g}) m) and partly on bodies.{} "
-                         "(near ({:.6g}, {:.6g}) m), two velocity fields; a line inside a body "
-                         "may split it only where every other interface keeps one body on each "
-                         "side: a line may not end on another (a T-junction), nor run, "
-                         "extended straight, through a region another interface encloses",
-                         c.bodies[std::size_t(b)].name, side > 0 ? "upper" : "lower",
-                         c.interface_names[k], c.bodies[std::size_t(b)].name, kept_at.x, kept_at.y,
-                         c.bodies[std::size_t(at)].name, new_at.x, new_at.y));
-      body = at;
-      (side > 0 ? e.upper_field : e.lower_field) = c.bodies[std::size_t(at)].field;
+        const long on_new = std::count_if(samples.begin(), samples.end(), [](auto& v) { return v.second; });
+        if (on_new == 0 || on_new == long(samples.size())) {
+          after.push_back(on_new ? FaceField{st.from, c.bodies[std::size_t(at)].field, at} : st);
+          continue;
+        }
+        // Divided: only where the new line, or its tied extension, ends on this one, each part
+        // on one side of that end (beside a tie's end both parts are tied: one continuum).
+        std::vector<Point> ends{{line.x.front(), line.y.front()}, {line.x.back(), line.y.back()}};
+        for (const Polyline& t : ties)
+          ends.push_back({t.x.front(), t.y.front()}), ends.push_back({t.x.back(), t.y.back()});
+        double s_end = 0.0, best = INFINITY;
+        for (const Point& q : ends) {
+          const LineProjection pr = project(geometry, q.x, q.y);
+          if (pr.distance < best && pr.beyond == 0.0) best = pr.distance, s_end = pr.s;
+        }
+        const char* why =
+            "a line inside a body (or its tied extension) may end on another line (a "
+            "T-junction), which then changes field at that end, but it may not cross it, nor "
+            "run, extended straight, through a region another interface encloses";
+        if (line.closed || best > 1e-6 * h)
+          fail_divided_face(f, key, line, c, k, side, b, at, kept_at, new_at, why);
+        int first = -1;  // which part holds the face before the end (0 kept, 1 new)
+        for (const auto& [sp, in_new] : samples) {
+          if (std::fabs(sp - s_end) <= 1e-3 * h) continue;  // at the end itself
+          const int part = in_new ? 1 : 0;
+          if (sp < s_end && first < 0) first = part;
+          if ((sp < s_end && part != first) || (sp > s_end && part == first) || first < 0)
+            fail_divided_face(f, key, line, c, k, side, b, at, kept_at, new_at, why);
+        }
+        if (e.growth.on())
+          fail(f.key(key), describe_line(key, line),
+               fmt::format("ends on interface.{}, whose {} face would then change velocity field "
+                           "at that end (a T-junction); a line that grows (interface.{}.growth) "
+                           "may not have another end on it (yet)",
+                           c.interface_names[k], side > 0 ? "upper" : "lower", c.interface_names[k]));
+        const int fields[2] = {c.bodies[std::size_t(b)].field, c.bodies[std::size_t(at)].field};
+        const int bodies[2] = {b, at};
+        after.push_back({st.from, fields[first], bodies[first]});
+        after.push_back({s_end, fields[1 - first], bodies[1 - first]});
+      }
+      // Neighbours on one field are one stretch; a face all on the ties' field is uniform.
+      faces.clear();
+      for (const FaceField& st : after)
+        if (faces.empty() || faces.back().field != st.field) faces.push_back(st);
+      if (e.tie_geometries().empty()) body = faces[0].body, field = faces[0].field;
+      if (faces.size() == 1 && faces[0].field == field) faces.clear();
     }
   }
 }
@@ -262,7 +354,7 @@ void split_body_along_interface(Section& f, InterfaceSpec& is, Case& c, ParseCon
   const int b = part_holding_line(f, info.key, line, body, parts, c, off);
   const Split s = plan_split(f, info.key, line, info, c.bodies[std::size_t(b)], c);
   const int at = apply_split(f, is, c, ctx, name, b, s);
-  move_earlier_faces(f, info.key, line, c, b, at, off);
+  move_earlier_faces(f, info.key, line, is.bonded_lines, c, b, at, off);
 }
 
 void renumber_fields(Case& c) {
@@ -279,6 +371,8 @@ void renumber_fields(Case& c) {
   for (InterfaceSpec& i : c.interfaces) {
     i.upper_field = number[std::size_t(i.upper_field)];
     i.lower_field = number[std::size_t(i.lower_field)];
+    for (auto* faces : {&i.upper_faces, &i.lower_faces})
+      for (FaceField& st : *faces) st.field = number[std::size_t(st.field)];
     for (int& f : i.branch_fields) f = number[std::size_t(f)];
   }
   c.field_names = names;

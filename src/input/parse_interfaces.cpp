@@ -291,6 +291,29 @@ void check_no_crossing(Section& f, const InterfaceSpec& is, const Case& c) {
   }
 }
 
+// A growing line whose tied extension ends on another interface (a T-junction made by its tie):
+// that face changes field where the tie ends, which would have to move as the tip grows.
+void check_growing_tie_ends(Section& f, const InterfaceSpec& is, const Case& c) {
+  if (!is.growth.on()) return;
+  const double tol = 1e-6 * c.grid.cell_size;
+  for (const Polyline& t : is.bonded_lines)
+    for (std::size_t k = 0; k < c.interfaces.size(); ++k)
+      for (const auto* faces : {&c.interfaces[k].upper_faces, &c.interfaces[k].lower_faces})
+        for (std::size_t q = 1; q < faces->size(); ++q) {
+          double x, y;
+          point_at(c.interfaces[k].geometry(), (*faces)[q].from, x, y);
+          for (const std::size_t v : {std::size_t(0), t.num_vertices() - 1}) {
+            if (std::hypot(t.x[v] - x, t.y[v] - y) <= tol)
+              fail(f.key("growth"), "\"" + f.string("growth", "") + "\"",
+                   fmt::format("the line's tied extension ends on interface.{} at ({:.6g}, {:.6g}) "
+                               "m (a T-junction): a line that grows may not have its extension end "
+                               "on another line (yet); end the line on it, or let the extension "
+                               "miss it",
+                               c.interface_names[k], x, y));
+          }
+        }
+}
+
 }  // namespace
 
 double cell_penalty_stiffness(const Case& c, const InterfaceSpec& is) {
@@ -386,6 +409,7 @@ void parse_interfaces(Section& top, Case& c, ParseContext& ctx) {
     parse_drawn_open(f, is);
     parse_stress_intensity(f, is);
     parse_growth(f, is, c);
+    check_growing_tie_ends(f, is, c);
     reserve_branch_fields(f, is, c, name);
     check_no_crossing(f, is, c);
     c.interfaces.push_back(is);

@@ -145,6 +145,14 @@ std::string run_json(const Case& c, const CaseSummary& s, const RunRecord& r) {
                      {"upper_body", c.bodies[std::size_t(c.interfaces[k].upper_body)].name},
                      {"lower_body", c.bodies[std::size_t(c.interfaces[k].lower_body)].name},
                      {"regime", cs.regime}};
+      // Faces that change body along the line (a T-junction): [[from (m), body], ...] per side.
+      for (const auto& [key, list] : {std::pair{"upper_faces", &c.interfaces[k].upper_faces},
+                                      std::pair{"lower_faces", &c.interfaces[k].lower_faces}}) {
+        if (list->empty()) continue;
+        toml::array a;
+        for (const FaceField& f : *list) a.push_back(toml::array{f.from, c.bodies[std::size_t(f.body)].name});
+        ct.insert(key, a);
+      }
       // Absent values (-1 in the summaries: never, not measured) as null.
       insert_or_null(ct, "initiation_time", cs.initiation_time);
       insert_or_null(ct, "intersonic_time", cs.intersonic_time);

@@ -133,7 +133,8 @@ void fields(A& a, StepLimits& l) {
   a("dt", l.dt);
 }
 
-// `spec` comes from the case (gp_law and node_law with it), light_face_mass from the case at
+// `spec` comes from the case (gp_law, node_law, node_field_up and node_field_lo with it: a line
+// whose face changes field does not grow), light_face_mass from the case at
 // set-up; face_up/face_lo, jump_before, seg_ka/seg_kb are per-step scratch, recomputed before
 // they are read.
 template <class A>

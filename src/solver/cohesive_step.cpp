@@ -47,21 +47,36 @@ inline PointStencil point_stencil(const Grid& g, double x, double y) {
 // neither receives a force it cannot carry nor lends the face its huge f/m velocity. With
 // plain bilinear weights, a face drifting a nanometre across its node row picked up such
 // nodes and blew up within a few steps. Power is consistent: sum_i f c_i . v_i = f . v_face.
-inline FaceStencil face_stencil(const State& s, int field, double x, double y) {
+// A face on a T-junction (share < 1) moves with both parts' material around it: each field's
+// four weights normalized on their own, then weighted by its share of the node's part of the
+// line (all to one field where the other has no mass there).
+inline FaceStencil face_stencil(const State& s, FaceFields fields, double x, double y) {
   const PointStencil p = point_stencil(s.grid, x, y);
   FaceStencil f;
-  double sum = 0.0;
-  for (int jj = 0; jj < 2; ++jj)
-    for (int ii = 0; ii < 2; ++ii) {
-      const int q = 2 * jj + ii;
-      f.node[q] = s.fields.index(field, p.i + ii, p.j + jj);  // in the window: field_windows
-      const double m = s.fields.mass[f.node[q]];
-      f.c[q] = m > s.mass_floor ? p.wx[ii] * p.wy[jj] * m : 0.0;
-      sum += f.c[q];
-    }
-  const double inv = sum > 0.0 ? 1.0 / sum : 0.0;
-  for (double& c : f.c) c *= inv;
-  f.mass = sum;
+  double sum[2] = {0.0, 0.0};
+  const int used = fields.share < 1.0 ? 2 : 1;
+  for (int part = 0; part < 2; ++part)
+    for (int jj = 0; jj < 2; ++jj)
+      for (int ii = 0; ii < 2; ++ii) {
+        const int q = 4 * part + 2 * jj + ii;
+        if (part >= used) {
+          f.node[q] = f.node[q - 4], f.c[q] = 0.0;
+          continue;
+        }
+        const int field = part == 0 ? fields.a : fields.b;
+        f.node[q] = s.fields.index(field, p.i + ii, p.j + jj);  // in the window: field_windows
+        const double m = s.fields.mass[f.node[q]];
+        f.c[q] = m > s.mass_floor ? p.wx[ii] * p.wy[jj] * m : 0.0;
+        sum[part] += f.c[q];
+      }
+  double share[2] = {used == 2 ? fields.share : 1.0, used == 2 ? 1.0 - fields.share : 0.0};
+  if (sum[0] <= 0.0) share[0] = 0.0, share[1] = used == 2 ? 1.0 : 0.0;
+  if (used == 2 && sum[1] <= 0.0) share[1] = 0.0, share[0] = sum[0] > 0.0 ? 1.0 : 0.0;
+  for (int part = 0; part < 2; ++part) {
+    const double scale = sum[part] > 0.0 ? share[part] / sum[part] : 0.0;
+    for (int q = 4 * part; q < 4 * part + 4; ++q) f.c[q] *= scale;
+  }
+  f.mass = share[0] * sum[0] + share[1] * sum[1];
   return f;
 }
 
@@ -232,7 +247,6 @@ void record_openings(CohesiveInterface& c) {
 
 void update_face_stencils(State& s) {
   for (CohesiveInterface& c : s.interfaces) {
-    const int up = c.spec.upper_field, lo = c.spec.lower_field;
     const long n = long(c.num_nodes());
     c.face_up.resize(c.num_nodes());
     c.face_lo.resize(c.num_nodes());
@@ -247,8 +261,8 @@ void update_face_stencils(State& s) {
         bad = std::min(bad, kl);
         continue;
       }
-      c.face_up[k] = face_stencil(s, up, xa, ya);
-      c.face_lo[k] = face_stencil(s, lo, xb, yb);
+      c.face_up[k] = face_stencil(s, c.faces_up(k), xa, ya);  // a T-junction: per node
+      c.face_lo[k] = face_stencil(s, c.faces_lo(k), xb, yb);
     }
     if (bad == n && n > 0 && fault_due(FaultSite::face_outside_grid, s.step)) bad = 0;  // tests
     if (bad < n) {
@@ -276,7 +290,7 @@ void add_cohesive_forces(State& s) {
       if ((fx == 0.0 && fy == 0.0) || !c.owns(k)) continue;  // distributed: owners load the grid
       const FaceStencil& a = c.face_up[k];
       const FaceStencil& b = c.face_lo[k];
-      for (int q = 0; q < 4; ++q) {
+      for (int q = 0; q < FaceStencil::kSlots; ++q) {
         G.force_x[a.node[q]] += a.c[q] * fx, G.force_y[a.node[q]] += a.c[q] * fy;  // upper: -T^
         G.force_x[b.node[q]] -= b.c[q] * fx, G.force_y[b.node[q]] -= b.c[q] * fy;  // lower: +T^
       }
@@ -486,7 +500,7 @@ void advance_interfaces(State& s, const double* vel_x, const double* vel_y) {
       const FaceStencil& a = c.face_up[k];
       const FaceStencil& b = c.face_lo[k];
       double vax = 0, vay = 0, vbx = 0, vby = 0;
-      for (int q = 0; q < 4; ++q) {
+      for (int q = 0; q < FaceStencil::kSlots; ++q) {
         vax += a.c[q] * vel_x[a.node[q]], vay += a.c[q] * vel_y[a.node[q]];
         vbx += b.c[q] * vel_x[b.node[q]], vby += b.c[q] * vel_y[b.node[q]];
       }

@@ -40,13 +40,15 @@ void add_faces_and_ties(const State& s, Need& need) {
   const std::size_t nx = std::size_t(s.grid.nodes_x());
   for (std::size_t c = 0; c < s.interfaces.size(); ++c) {
     const CohesiveInterface& ci = s.interfaces[c];
-    const int up = ci.spec.upper_field, lo = ci.spec.lower_field;
     for (std::size_t k = 0; k < ci.num_nodes(); ++k) {
+      const FaceFields up = ci.faces_up(k), lo = ci.faces_lo(k);
       if (!ci.knows(k)) continue;  // distributed: far from this rank's block
       const int cu = cell(s.grid.x, ci.x0[k] + ci.ux_up[k]), ru = cell(s.grid.y, ci.y0[k] + ci.uy_up[k]);
       const int cl = cell(s.grid.x, ci.x0[k] + ci.ux_lo[k]), rl = cell(s.grid.y, ci.y0[k] + ci.uy_lo[k]);
-      need.add(up, cu, cu + 1, ru, ru + 1);
-      need.add(lo, cl, cl + 1, rl, rl + 1);
+      need.add(up.a, cu, cu + 1, ru, ru + 1);
+      need.add(lo.a, cl, cl + 1, rl, rl + 1);
+      if (up.share < 1.0) need.add(up.b, cu, cu + 1, ru, ru + 1);  // a T-junction's node
+      if (lo.share < 1.0) need.add(lo.b, cl, cl + 1, rl, rl + 1);
     }
   }
   for (const BondedTie& b : s.bonded)

@@ -2,6 +2,7 @@
 #include "solver/time_step.hpp"
 
 #include <algorithm>
+#include <bitset>
 #include <cmath>
 #include <vector>
 
@@ -69,7 +70,17 @@ double cohesive_eigen_bound(const State& s) {
   for (const CohesiveInterface& c : s.interfaces) {
     const std::size_t n = c.num_nodes();
     if (c.face_up.size() != n) continue;
-    const bool shared = c.spec.upper_field == c.spec.lower_field;
+    // (Faces whose field changes along the line, T-junctions: shared when any field is on both.)
+    bool shared = c.spec.upper_field == c.spec.lower_field;
+    if (!c.node_faces_up.empty() || !c.node_faces_lo.empty()) {
+      std::bitset<256> up, lo;
+      for (std::size_t k = 0; k < n; ++k)
+        for (auto [set, f] : {std::pair{&up, c.faces_up(k)}, std::pair{&lo, c.faces_lo(k)}}) {
+          set->set(f.a);
+          if (f.share < 1.0) set->set(f.b);
+        }
+      shared = (up & lo).any();
+    }
     const std::vector<FaceStencil>* faces[2] = {&c.face_up, &c.face_lo};
     // The two faces' scratch rows are independent: one thread each.
 #pragma omp parallel for schedule(static, 1) reduction(max : bound) if (!shared)
@@ -84,7 +95,7 @@ double cohesive_eigen_bound(const State& s) {
         for (int side = first; side <= last; ++side) {
           if (!c.knows(k)) continue;
           const FaceStencil& f = (*faces[side])[k];
-          for (int q = 0; q < 4; ++q)
+          for (int q = 0; q < FaceStencil::kSlots; ++q)
             if (f.c[q] > 0.0) lo = std::min(lo, f.node[q]), hi = std::max(hi, f.node[q]);
         }
       if (lo > hi) continue;
@@ -93,7 +104,7 @@ double cohesive_eigen_bound(const State& s) {
         for (int side = first; side <= last; ++side) {
           if (!c.knows(k)) continue;
           const FaceStencil& f = (*faces[side])[k];
-          for (int q = 0; q < 4; ++q)
+          for (int q = 0; q < FaceStencil::kSlots; ++q)
             if (f.c[q] > 0.0) row[f.node[q] - lo] += 2.0 * c.stiffness_node[k] * f.c[q] / s.fields.mass[f.node[q]];
         }
       for (double r : row) bound = std::max(bound, r);
