@@ -291,14 +291,20 @@ void check_no_crossing(Section& f, const InterfaceSpec& is, const Case& c) {
   }
 }
 
-// A growing line whose tied extension ends on another interface (a T-junction made by its tie):
-// that face changes field where the tie ends, which would have to move as the tip grows.
+// A growing line whose tied extension ends on another line drawn in the same body (a T-junction
+// made by its tie): growth stops at such a tie (solver/crack_junction.hpp), so the input does.
+// (Ending on an interface between the body and another is followed as the tip grows.)
 void check_growing_tie_ends(Section& f, const InterfaceSpec& is, const Case& c) {
   if (!is.growth.on()) return;
   const double tol = 1e-6 * c.grid.cell_size;
+  const Shape& own = c.bodies[std::size_t(is.upper_body)].region.outer;
   for (const Polyline& t : is.bonded_lines)
-    for (std::size_t k = 0; k < c.interfaces.size(); ++k)
-      for (const auto* faces : {&c.interfaces[k].upper_faces, &c.interfaces[k].lower_faces})
+    for (std::size_t k = 0; k < c.interfaces.size(); ++k) {
+      const InterfaceSpec& e = c.interfaces[k];
+      if (!same_shape(c.bodies[std::size_t(e.upper_body)].region.outer, own) ||
+          !same_shape(c.bodies[std::size_t(e.lower_body)].region.outer, own))
+        continue;  // between the body and another: its face follows the crack's fields
+      for (const auto* faces : {&e.upper_faces, &e.lower_faces})
         for (std::size_t q = 1; q < faces->size(); ++q) {
           double x, y;
           point_at(c.interfaces[k].geometry(), (*faces)[q].from, x, y);
@@ -306,12 +312,13 @@ void check_growing_tie_ends(Section& f, const InterfaceSpec& is, const Case& c) 
             if (std::hypot(t.x[v] - x, t.y[v] - y) <= tol)
               fail(f.key("growth"), "\"" + f.string("growth", "") + "\"",
                    fmt::format("the line's tied extension ends on interface.{} at ({:.6g}, {:.6g}) "
-                               "m (a T-junction): a line that grows may not have its extension end "
-                               "on another line (yet); end the line on it, or let the extension "
-                               "miss it",
+                               "m (a T-junction of two lines drawn in one body): a line that grows "
+                               "may not have its extension end on another line in its body (yet); "
+                               "end the line on it, or let the extension miss it",
                                c.interface_names[k], x, y));
           }
         }
+    }
 }
 
 }  // namespace

@@ -60,6 +60,9 @@ struct RunContext {
   // Set by the run's set-up: lays recorded segments on the case's interfaces again (a restore
   // calls it before it reads the state that holds their nodes; solver/crack_growth.hpp).
   std::function<void(RunState&, std::vector<CrackGrowthRecord>&)> regrow;
+  // After a restore, once the particles are back: the faces of the interfaces the grown cracks
+  // meet (solver/crack_growth.hpp rejoin_cracks).
+  std::function<void(RunState&, const std::vector<CrackGrowthRecord>&)> rejoin;
   int interface_files = 0;   // interface/*.csv written so far
   double wall_before = 0.0;  // wall seconds of earlier segments (resumed runs)
   double growth_seconds = 0.0;  // wall time in crack growth (tips read, segments laid), whole run, s

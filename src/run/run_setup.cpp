@@ -89,6 +89,7 @@ std::vector<StationProbe> set_up(RunContext& r, const Case& c, const std::string
   r.tips.assign(c.interfaces.size(), TipSeries{});
   r.growth.assign(c.interfaces.size(), CrackGrowthRecord{});
   r.regrow = [&c](RunState& state, std::vector<CrackGrowthRecord>& grown) { regrow_cracks(c, state, grown); };
+  r.rejoin = [&c](RunState& state, const std::vector<CrackGrowthRecord>& grown) { rejoin_cracks(c, state, grown); };
   return probes;
 }
 
@@ -150,6 +151,7 @@ void resume_from_checkpoint(RunContext& ctx, const RunOptions& options) {
     split_over_ranks(ctx.s, comm, {false, nullptr});  // one process's checkpoint: its particles split
   }
   ++ctx.segments;
+  if (ctx.rejoin) agree_on_failure(comm, [&] { ctx.rejoin(ctx.s, ctx.growth); });
   // The trackers place arc lengths on the grown lines (regrown by the restore), their samples
   // as the checkpoint holds them.
   for (std::size_t k = 0; k < ctx.cracks.size() && k < ctx.growth.size(); ++k)

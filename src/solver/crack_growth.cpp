@@ -349,12 +349,18 @@ void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& rec
     // the ties it leaves after (solver/crack_junction.hpp: a junction stops the run).
     std::vector<std::size_t> own;
     for (const CrackLine& l : lines) own.push_back(l.slot);
-    const std::vector<OtherLine> others_lines = grow.empty() ? std::vector<OtherLine>{} : other_lines(c, s, records, k, own);
+    const std::vector<OtherLine> all_lines = grow.empty() ? std::vector<OtherLine>{} : other_lines(c, s, records, k, own);
+    const std::vector<OtherLine> others_lines = junction_lines(all_lines);
     const auto check_junction = [&](const Point& from, const Point& to) {
       stop_at_segment_junction(c, k, s.time, others_lines, from, to, h);
     };
+    // After each segment: the ties against the lines in the body, and the interfaces on the
+    // body's edge the crack or its tie now meets (their faces follow the crack's fields).
     const auto check_ties = [&](std::size_t slot) {
       stop_at_tie_junction(c, k, s.time, others_lines, L.interfaces[slot].spec.tie_geometries(), h);
+      std::vector<std::size_t> mine{s.interface_slots[k]};
+      for (const std::size_t b : records[k].branch_slots) mine.push_back(b);
+      follow_edge_junctions(c, s, k, mine, all_lines, s.time, h);
     };
     // The end first: a new segment at the start shifts nothing the end's tip needs, and the
     // other way round, but each reads the line as it is now.
@@ -446,6 +452,16 @@ void regrow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& r
       records[k].branch_slots.push_back(slots[1]);
       i += 2 * kGrowthColumns;
     }
+  }
+}
+
+void rejoin_cracks(const Case& c, RunState& s, const std::vector<CrackGrowthRecord>& records) {
+  for (std::size_t k = 0; k < records.size() && k < c.interfaces.size(); ++k) {
+    if (!c.interfaces[k].growth.on() || !records[k].grown()) continue;
+    std::vector<std::size_t> own{s.interface_slots[k]};
+    for (const std::size_t b : records[k].branch_slots) own.push_back(b);
+    const double h = s.levels[std::size_t(s.interface_levels[k])].grid.cell_size();
+    follow_edge_junctions(c, s, k, own, other_lines(c, s, records, k, own), s.time, h);
   }
 }
 

@@ -104,4 +104,9 @@ void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& rec
 // checkpoint), so the run continues on the grown cracks.
 void regrow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& records);
 
+// A restored run, once its particles are back (their fields as the checkpoint holds them): the
+// faces of the interfaces between bodies that the grown cracks meet follow the cracks' fields
+// again (solver/crack_junction.hpp follow_edge_junctions; derived, not stored).
+void rejoin_cracks(const Case& c, RunState& s, const std::vector<CrackGrowthRecord>& records);
+
 }  // namespace rupture

@@ -8,6 +8,7 @@
 
 #include "core/errors.hpp"
 #include "solver/crack_cut.hpp"
+#include "solver/rank_exchange.hpp"
 
 namespace rupture {
 
@@ -28,8 +29,8 @@ std::vector<OtherLine> other_lines(const Case& c, const RunState& s, const std::
           if (b == slot) name = fmt::format("a branch of interface '{}'", c.interface_names[j]);
     }
     const bool in_body = drawn_in_crack_body(c, k, spec);
-    lines.push_back({spec.geometry(), name, false, in_body});
-    for (const Polyline& t : spec.tie_geometries()) lines.push_back({t, name, true, in_body});
+    lines.push_back({spec.geometry(), name, false, in_body, slot});
+    for (const Polyline& t : spec.tie_geometries()) lines.push_back({t, name, true, in_body, slot});
   }
   return lines;
 }
@@ -86,6 +87,117 @@ void stop_at_tie_junction(const Case& c, std::size_t k, double time, const std::
             o.in_body ? "ties of two lines in one body that meet"
                       : "a crack heading for an interface between two bodies (a T-junction on the body's edge)"));
       }
+}
+
+std::vector<OtherLine> junction_lines(const std::vector<OtherLine>& others) {
+  std::vector<OtherLine> out;
+  for (const OtherLine& o : others)
+    if (o.in_body || o.tie) out.push_back(o);
+  return out;
+}
+
+namespace {
+
+// The field of the crack's particle (fields a or b) nearest to (x, y) in the reference
+// configuration, within `within` (m); -1: none. Distributed: the nearest over every rank.
+int nearest_field(const State& L, int a, int b, double x, double y, double within) {
+  const Particles& P = L.particles;
+  double best = within;
+  int field = -1;
+  for (std::size_t q = 0; q < P.size(); ++q) {
+    if (P.field[q] != a && P.field[q] != b) continue;
+    const double d = std::hypot(P.x0[q] - x, P.y0[q] - y);
+    if (d < best || (d == best && field >= 0 && P.field[q] < field)) best = d, field = P.field[q];
+  }
+  const double nearest = min_over_ranks(L, field >= 0 ? best : INFINITY);
+  const double mine = field >= 0 && best == nearest ? double(field) : INFINITY;
+  const double f = min_over_ranks(L, mine);
+  return std::isfinite(f) ? int(f) : -1;
+}
+
+}  // namespace
+
+void follow_edge_junctions(const Case& c, RunState& s, std::size_t k, const std::vector<std::size_t>& own,
+                           const std::vector<OtherLine>& others, double time, double h) {
+  const int level = s.interface_levels[k];
+  State& L = s.levels[std::size_t(level)];
+  const InterfaceSpec& crack = L.interfaces[own.front()].spec;
+  const int fa = crack.upper_field, fb = crack.lower_field;
+  const double tol = 1e-6 * h;
+  // Where the crack's lines may come to the interface: its ends and its ties' vertices (their
+  // ends, and the bend where a tie's lead turns to the drawn direction, which may then run
+  // along the interface less than a cell from it, with no particle between).
+  std::vector<Point> ends;
+  for (const std::size_t slot : own) {
+    const Polyline line = L.interfaces[slot].spec.geometry();
+    if (line.num_vertices() >= 2)
+      ends.push_back({line.x.front(), line.y.front()}), ends.push_back({line.x.back(), line.y.back()});
+    for (const Polyline& t : L.interfaces[slot].spec.tie_geometries())
+      for (std::size_t v = 0; v < t.num_vertices(); ++v) ends.push_back({t.x[v], t.y[v]});
+  }
+  bool changed = false;
+  for (const OtherLine& o : others) {
+    if (o.in_body || o.tie) continue;
+    CohesiveInterface& B = L.interfaces[o.slot];
+    const Polyline line = B.spec.geometry();
+    std::vector<double> meet;
+    Point at;
+    for (const Point& q : ends) {
+      const LineProjection pr = project(line, q.x, q.y);
+      if (pr.distance <= h && pr.beyond == 0.0) meet.push_back(pr.s), at = q;
+    }
+    // The side of the interface on the crack's body: the face wholly on the crack's fields.
+    auto on = [&](const std::vector<FaceField>& faces, int whole) {
+      if (faces.empty()) return whole == fa || whole == fb;
+      return std::all_of(faces.begin(), faces.end(), [&](const FaceField& f) { return f.field == fa || f.field == fb; });
+    };
+    const int side = on(B.spec.upper_faces, B.spec.upper_field) ? 1 : on(B.spec.lower_faces, B.spec.lower_field) ? -1 : 0;
+    std::vector<FaceField>& faces = side > 0 ? B.spec.upper_faces : B.spec.lower_faces;
+    if (meet.empty() && (side == 0 || faces.empty())) continue;
+    const auto fail = [&](const std::string& why) {
+      throw SimulationError(fmt::format(
+          "crack growth: interface '{}' meets {} at ({:.6g}, {:.6g}) m at t = {:.6g} s (a T-junction on the "
+          "edge of {}): {}, which is not supported yet (docs/fracture.md, \"Junctions\"); the run stops "
+          "here, with what it wrote",
+          c.interface_names[k], o.name, at.x, at.y, time, body_of(c, k), why));
+    };
+    if (own.size() > 1) fail("the crack has branched");
+    if (side == 0) fail("that interface's faces lie on neither of the crack's two fields");
+    if (!B.spec.tie_geometries().empty()) fail("that interface has a tied stretch");
+    std::sort(meet.begin(), meet.end());
+    std::vector<double> cuts{0.0};
+    for (const double m : meet)
+      if (m - cuts.back() > tol) cuts.push_back(m);
+    const double length = line.length();
+    if (length - cuts.back() <= tol) cuts.pop_back();
+    // Each stretch's field: the crack's particles half a cell off its middle, inside the body.
+    std::vector<FaceField> now;
+    for (std::size_t i = 0; i < cuts.size(); ++i) {
+      const double to = i + 1 < cuts.size() ? cuts[i + 1] : length;
+      double x, y;
+      point_at(line, 0.5 * (cuts[i] + to), x, y);
+      const LineProjection pr = project(line, x, y);
+      const int f = nearest_field(L, fa, fb, x + side * 0.5 * h * pr.nx, y + side * 0.5 * h * pr.ny, 1.5 * h);
+      if (f < 0) fail("no particle of the crack's fields lies beside that interface's face there");
+      if (now.empty() || now.back().field != f) now.push_back({cuts[i], f, (side > 0 ? B.spec.upper_body : B.spec.lower_body)});
+    }
+    int& whole = side > 0 ? B.spec.upper_field : B.spec.lower_field;
+    std::vector<FaceField> next = now;
+    if (next.size() == 1) whole = next[0].field, next.clear();
+    if (next.size() == faces.size() &&
+        std::equal(next.begin(), next.end(), faces.begin(),
+                   [](const FaceField& p, const FaceField& q) { return p.from == q.from && p.field == q.field; }))
+      continue;
+    faces = next;
+    std::vector<FaceFields>& nodes = side > 0 ? B.node_faces_up : B.node_faces_lo;
+    nodes.clear();
+    if (!faces.empty()) {
+      nodes.resize(B.num_nodes());
+      for (std::size_t n = 0; n < B.num_nodes(); ++n) nodes[n] = face_fields_at(B, faces, n);
+    }
+    changed = true;
+  }
+  if (changed) measure_windows_again(L);
 }
 
 }  // namespace rupture

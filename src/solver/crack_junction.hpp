@@ -7,15 +7,18 @@
 //  - a tip that comes within a cell of an interface between its body and another, or a tie that
 //    comes to touch another interface (a T-junction: the edge the body shares with another
 //    body), would put that interface's face on two fields.
-// Neither is modelled: growth (solver/crack_growth.hpp) asks here before each segment is laid
-// (stop_at_segment_junction) and after (stop_at_tie_junction), and the run stops with a
+// The first is not modelled: growth (solver/crack_growth.hpp) asks here before each segment is
+// laid (stop_at_segment_junction) and after (stop_at_tie_junction), and the run stops with a
 // SimulationError naming both lines, the place and the time, and keeps what it wrote, rather
-// than grow through material its fields do not hold. Units: m, s.
+// than grow through material its fields do not hold. The second is: the interface's face
+// changes field where the crack's tie or end meets it (follow_edge_junctions), and a crack that
+// reaches it ends there. Units: m, s.
 #pragma once
 #include <cstddef>
 #include <string>
 #include <vector>
 
+#include "cohesive/interface.hpp"
 #include "cohesive/polyline.hpp"
 #include "geometry/shape.hpp"
 #include "input/case.hpp"
@@ -31,6 +34,7 @@ struct OtherLine {
   std::string name;  // "interface 'NAME'" or "a branch of interface 'NAME'"
   bool tie = false;
   bool in_body = false;
+  std::size_t slot = 0;  // the interface on the level
 };
 
 // Every interface on crack k's level other than the crack's own lines (`own`: its slots, its
@@ -48,5 +52,25 @@ void stop_at_segment_junction(const Case& c, std::size_t k, double time, const s
 // SimulationError.
 void stop_at_tie_junction(const Case& c, std::size_t k, double time, const std::vector<OtherLine>& others,
                           const std::vector<Polyline>& ties, double h);
+
+// The lines stop_at_segment_junction and stop_at_tie_junction are asked about: those drawn in
+// the crack's body and every tie. An interface between the crack's body and another is the
+// body's edge: growth ends a segment on it (the pieces separate there, held only by that
+// interface's law), and follow_edge_junctions gives its face the crack's two fields.
+std::vector<OtherLine> junction_lines(const std::vector<OtherLine>& others);
+
+// Where crack k (its lines `own`: its ends, its ties' vertices) comes within a cell of an
+// interface between its body and another (a T-junction on the body's edge: a tie that meets it,
+// or runs along it with no particle between, or the crack that ends on it), that interface's
+// face on the crack's body changes field there (InterfaceSpec::upper_faces / lower_faces, and
+// the node faces made from them): each stretch between those points on the field of the
+// crack's particles beside its middle (half a cell off the line). Where none comes near, a face
+// it changed before is set again the same way. Throws SimulationError where that cannot be represented: a crack that has
+// branched, a meeting on a tied stretch of that interface, or on an interface with a tied
+// stretch, or whose face is on neither of the crack's fields. Distributed: every rank calls it
+// (the particles' fields are read over all ranks). Called after every segment laid, and after a
+// restore (the particles then hold the fields the meetings left).
+void follow_edge_junctions(const Case& c, RunState& s, std::size_t k, const std::vector<std::size_t>& own,
+                           const std::vector<OtherLine>& others, double time, double h);
 
 }  // namespace rupture
