@@ -43,8 +43,8 @@ constexpr double kLength = kEnd - kStart;        // m
 const double kE = std::exp(1.0);
 
 // Upper body [0, 8] x [0, 4] mm over lower [0, 8] x [-4, 0] mm, joined along y = 0 from x =
-// 2 to 6 mm by one segment of `law_lines`.
-State two_bodies(const std::string& law_lines) {
+// 2 to 6 mm by `segments` segments (one by default) of `law_lines`; `more`: further input.
+State two_bodies(const std::string& law_lines, int segments = 1, const std::string& more = "") {
   return make_state(parse_case(fmt::format(R"({}
 [grid]
 min = [0.0, -0.004]
@@ -66,12 +66,13 @@ lower_body = "lower"
 y = 0.0
 start = {}
 end = {}
-segments = 1
+segments = {}
+{}
 {}
 [time]
 end = 1e-6
 )",
-                                           test::kHomaliteToml, kH, kStart, kEnd, law_lines)));
+                                           test::kHomaliteToml, kH, kStart, kEnd, segments, law_lines, more)));
 }
 
 const std::string kXuNeedlemanLaw = "sigma_max = 24e6\ntau_max = 18e6\ndelta_n = 0.4e-6";
@@ -311,38 +312,11 @@ TEST(InterfaceForces, a_light_face_meets_the_contact_penalty_in_proportion_to_it
 // each; the lower field gets minus the sum, so the three fields' forces add to zero; the two
 // upper parts, mirror images about the crack, get equal totals.
 TEST(InterfaceForces, a_face_on_a_t_junction_loads_both_parts_by_their_shares) {
-  State s = make_state(parse_case(fmt::format(R"({}
-[grid]
-min = [0.0, -0.004]
-max = [0.008, 0.004]
-cell_size = {}
-particles_per_cell = 2
-margin = 0.0
-[bodies.upper]
-material = "homalite"
-min = [0.0, 0.0]
-max = [0.008, 0.004]
-[bodies.lower]
-material = "homalite"
-min = [0.0, -0.004]
-max = [0.008, 0.0]
-[interface.w]
-upper_body = "upper"
-lower_body = "lower"
-y = 0.0
-start = {}
-end = {}
-segments = 2
-{}
-[interface.crack]
+  State s = two_bodies(kXuNeedlemanLaw, 2, R"([interface.crack]
 body = "upper"
 points = [[0.004, 0.0], [0.004, 0.003]]
 segments = 3
-law = "contact"
-[time]
-end = 1e-6
-)",
-                                                     test::kHomaliteToml, kH, kStart, kEnd, kXuNeedlemanLaw)));
+law = "contact")");
   CohesiveInterface& c = s.interfaces.at(0);
   ASSERT_EQ(c.num_nodes(), 3u);
   const int left = c.faces_up(0).a, right = c.faces_up(2).a, lower = c.spec.lower_field;

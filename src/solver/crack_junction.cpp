@@ -182,9 +182,10 @@ void follow_edge_junctions(const Case& c, RunState& s, std::size_t k, const std:
       if (now.empty() || now.back().field != f) now.push_back({cuts[i], f, (side > 0 ? B.spec.upper_body : B.spec.lower_body)});
     }
     int& whole = side > 0 ? B.spec.upper_field : B.spec.lower_field;
+    const int before = whole;
     std::vector<FaceField> next = now;
     if (next.size() == 1) whole = next[0].field, next.clear();
-    if (next.size() == faces.size() &&
+    if (whole == before && next.size() == faces.size() &&
         std::equal(next.begin(), next.end(), faces.begin(),
                    [](const FaceField& p, const FaceField& q) { return p.from == q.from && p.field == q.field; }))
       continue;
