@@ -146,8 +146,9 @@ std::string run_json(const Case& c, const CaseSummary& s, const RunRecord& r) {
                      {"lower_body", c.bodies[std::size_t(c.interfaces[k].lower_body)].name},
                      {"regime", cs.regime}};
       // Faces that change body along the line (a T-junction): [[from (m), body], ...] per side.
-      for (const auto& [key, list] : {std::pair{"upper_faces", &c.interfaces[k].upper_faces},
-                                      std::pair{"lower_faces", &c.interfaces[k].lower_faces}}) {
+      const bool now = k < r.faces.size();
+      for (const auto& [key, list] : {std::pair{"upper_faces", now ? &r.faces[k][0] : &c.interfaces[k].upper_faces},
+                                      std::pair{"lower_faces", now ? &r.faces[k][1] : &c.interfaces[k].lower_faces}}) {
         if (list->empty()) continue;
         toml::array a;
         for (const FaceField& f : *list) a.push_back(toml::array{f.from, c.bodies[std::size_t(f.body)].name});

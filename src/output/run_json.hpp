@@ -12,6 +12,7 @@
 // a crack that never initiated, a Mach angle not measured: -1 in the structs and the CLI lines)
 // is null. Rewritten atomically.
 #pragma once
+#include <array>
 #include <cmath>
 #include <string>
 
@@ -48,6 +49,10 @@ struct RunRecord {
   double min_cohesive_dt = INFINITY;        // smallest per-step cohesive limit of the run, s
   double cohesive_stored = 0.0, cohesive_dissipated = 0.0;
   std::vector<CrackSummary> cracks;  // one per interface
+  // Per interface, its faces where they change field along the line, as they are now (upper,
+  // lower; a growing crack that meets an interface changes them: solver/crack_junction.hpp).
+  // Empty: the case's (InterfaceSpec::upper_faces / lower_faces).
+  std::vector<std::array<std::vector<FaceField>, 2>> faces;
 };
 
 std::string run_json(const Case& c, const CaseSummary& s, const RunRecord& r);

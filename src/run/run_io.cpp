@@ -216,6 +216,9 @@ void fill_record(RunIo& io) {
   r.min_cohesive_dt = s.limits.min_cohesive_dt;
   r.cohesive_stored = e.cohesive_stored;
   r.cohesive_dissipated = e.cohesive_dissipated;
+  r.faces.resize(io.c.interfaces.size());
+  for (std::size_t k = 0; k < r.faces.size(); ++k)
+    r.faces[k] = {s.interface(k).spec.upper_faces, s.interface(k).spec.lower_faces};
   stamp_heartbeat(r);
 }
 

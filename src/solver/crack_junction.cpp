@@ -179,7 +179,12 @@ void follow_edge_junctions(const Case& c, RunState& s, std::size_t k, const std:
       const LineProjection pr = project(line, x, y);
       const int f = nearest_field(L, fa, fb, x + side * 0.5 * h * pr.nx, y + side * 0.5 * h * pr.ny, 1.5 * h);
       if (f < 0) fail("no particle of the crack's fields lies beside that interface's face there");
-      if (now.empty() || now.back().field != f) now.push_back({cuts[i], f, (side > 0 ? B.spec.upper_body : B.spec.lower_body)});
+      if (now.empty() || now.back().field != f) {
+        int body = side > 0 ? B.spec.upper_body : B.spec.lower_body;  // the part of field f
+        for (std::size_t b = 0; b < c.bodies.size(); ++b)
+          if (c.bodies[b].field == f) body = int(b);
+        now.push_back({cuts[i], f, body});
+      }
     }
     int& whole = side > 0 ? B.spec.upper_field : B.spec.lower_field;
     const int before = whole;

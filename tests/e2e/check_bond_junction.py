@@ -6,6 +6,8 @@ pulled down, so the two pieces the cut leaves hang on the bond. The bond's lower
 the cut's two fields, left and right of the junction. Checks:
   - the run ends normally; the cut's path ends on the bond (y = 6 mm) at x = 10 mm, reached at
     8 us (prescribed: 4 mm at 500 m/s, in half-cell segments), and the bond stays intact;
+  - run.json gives the bond's lower face on the piece left of x = 10 mm ("lower") and on the one
+    right of it ("lower.below.cut");
   - the two pieces move as mirror images (the problem is symmetric about x = 10 mm): at every
     station sample the left station's v_y equals the right one's and v_x is its opposite, within
     1e-6 of the largest speed;
@@ -43,6 +45,10 @@ if run.get("status") != "completed":
 bond = [c for c in run["cracks"] if c.get("interface") == "bond"][0]
 if bond.get("initiated"):
     failures.append("the bond cracked")
+faces = bond.get("lower_faces")
+print("run.json cracks[bond].lower_faces =", faces)
+if faces != [[0.0, "lower"], [0.01, "lower.below.cut"]]:
+    failures.append(f"run.json lower_faces {faces}: the bond's face should change at x = 10 mm")
 err = run.get("energy_balance_error_final")
 print(f"energy_balance_error_final = {err}")
 if err is None or abs(err) > 0.01:
