@@ -264,8 +264,10 @@ TEST(CrackGrowth, lines_drawn_in_one_body_are_told_from_interfaces_between_bodie
 // fields, changing where the tie or the crack meets it (solver/crack_junction.hpp
 // follow_edge_junctions), so each piece stays bonded; nothing stops. Turned 10 degrees it never
 // meets the bond, whose face stays on one field.
-TEST(CrackGrowth, a_crack_turned_onto_an_interface_between_bodies_splits_its_face) {
-  const std::string text = fmt::format(R"({0}
+// Two bonded bodies, a crack in the lower one drawn from its left edge (growing at a prescribed
+// speed, its tie on to the right edge); `bond_lines`: more keys of the bond.
+std::string bonded_bodies_with_a_crack(const std::string& bond_lines = "") {
+  return fmt::format(R"({0}
 [model]
 plane = "strain"
 [grid]
@@ -283,15 +285,14 @@ max = [0.02, 0.01]
 [interface.bond]
 upper_body = "upper"
 lower_body = "lower"
-y = 0.006
-start = 0.0
-end = 0.02
+points = [[0.0, 0.006], [0.02, 0.006]]
 segments = 40
 law = "xu_needleman"
 sigma_max = 1e9
 tau_max = 1e9
 delta_n = 1e-6
 delta_t = 1e-6
+{2}
 [interface.cut]
 body = "lower"
 points = [[0.0, 0.002], [0.005, 0.002]]
@@ -302,7 +303,11 @@ growth_speed = 100.0
 [time]
 end = 1e-6
 )",
-                                       test::kHomaliteToml, kH);
+                                       test::kHomaliteToml, kH, bond_lines);
+}
+
+TEST(CrackGrowth, a_crack_turned_onto_an_interface_between_bodies_splits_its_face) {
+  const std::string text = bonded_bodies_with_a_crack();
   const Case c = parse_case(text);
   ASSERT_EQ(c.interfaces.size(), 2u);
   ASSERT_EQ(c.interface_names[1], "cut");
@@ -387,6 +392,46 @@ end = 1e-6
         EXPECT_EQ(again.node_faces_lo[n].a, bond.node_faces_lo[n].a) << n;
         EXPECT_EQ(again.node_faces_lo[n].share, bond.node_faces_lo[n].share) << n;
       }
+    }
+  }
+}
+
+// The same crack turned 60 degrees towards a bond that is tied (bonded_points) from its left end
+// to x = 3 mm: it meets the bond at 7.3 mm, far from the tie, and the face follows; with the tie
+// on to 7 mm, the meeting is within a cell of the tie (which keeps one pair of fields), and growth
+// stops with a diagnosis.
+TEST(CrackGrowth, a_crack_meeting_a_tied_stretch_of_an_interface_stops) {
+  for (const double to_x : {0.003, 0.007}) {
+    const Case c = parse_case(bonded_bodies_with_a_crack(
+        fmt::format("bonded_points = [[0.0, 0.006], [{}, 0.006]]", to_x)));
+    RunState s = make_run_state(c);
+    State& L = s.levels[0];
+    const std::size_t slot = s.interface_slots[1];
+    const std::vector<OtherLine> all = other_lines(c, s, {}, 1, {slot});
+    const double a = 60.0 * std::numbers::pi / 180.0;
+    std::string error;
+    bool through = false;
+    for (int n = 0; n < 30 && !through && error.empty(); ++n) {
+      const TipFrame f = precrack_tips(L.interfaces[slot].spec, 1e-6 * kH).at(0).frame;
+      Point to{f.x + 0.5 * kH * std::cos(a), f.y + 0.5 * kH * std::sin(a)};
+      if (to.y > 0.006) to = {f.x + (0.006 - f.y) / std::tan(a), 0.006};
+      through = add_crack_segment(c, 1, L, slot, precrack_tips(L.interfaces[slot].spec, 1e-6 * kH).at(0), to.x, to.y, true);
+      try {
+        follow_edge_junctions(c, s, 1, {slot}, all, 0.0, kH);
+      } catch (const SimulationError& e) {
+        error = e.what();
+      }
+    }
+    const CohesiveInterface& bond = L.interfaces[s.interface_slots[0]];
+    if (to_x == 0.003) {
+      EXPECT_EQ(error, "");
+      EXPECT_TRUE(through);
+      ASSERT_EQ(bond.spec.lower_faces.size(), 2u);
+      EXPECT_NEAR(bond.spec.lower_faces[1].from, 0.0073094, 1e-6);
+      EXPECT_EQ(bond.spec.lower_field, c.bodies[0].field) << "the tie keeps its fields";
+    } else {
+      EXPECT_NE(error.find("tied stretch of that interface"), std::string::npos) << error;
+      EXPECT_NE(error.find("interface 'cut'"), std::string::npos) << error;
     }
   }
 }

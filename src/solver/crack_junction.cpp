@@ -163,7 +163,15 @@ void follow_edge_junctions(const Case& c, RunState& s, std::size_t k, const std:
     };
     if (own.size() > 1) fail("the crack has branched");
     if (side == 0) fail("that interface's faces lie on neither of the crack's two fields");
-    if (!B.spec.tie_geometries().empty()) fail("that interface has a tied stretch");
+    // A tied stretch keeps the face's whole field (its tie joins that one): a meeting near it,
+    // or a face that would change field wholly, is not represented.
+    const std::vector<Polyline> ties = B.spec.tie_geometries();
+    for (const Polyline& t : ties)
+      for (const double m : meet) {
+        double mx, my;
+        point_at(line, m, mx, my);
+        if (project(t, mx, my).distance <= h) fail("it meets a tied stretch of that interface");
+      }
     std::sort(meet.begin(), meet.end());
     std::vector<double> cuts{0.0};
     for (const double m : meet)
@@ -189,7 +197,11 @@ void follow_edge_junctions(const Case& c, RunState& s, std::size_t k, const std:
     int& whole = side > 0 ? B.spec.upper_field : B.spec.lower_field;
     const int before = whole;
     std::vector<FaceField> next = now;
-    if (next.size() == 1) whole = next[0].field, next.clear();
+    if (next.size() == 1 && next[0].field != whole && !ties.empty()) {
+      next[0].from = 0.0;  // the face on the other field, its tied stretch on this one: stretches
+    } else if (next.size() == 1) {
+      whole = next[0].field, next.clear();
+    }
     if (whole == before && next.size() == faces.size() &&
         std::equal(next.begin(), next.end(), faces.begin(),
                    [](const FaceField& p, const FaceField& q) { return p.from == q.from && p.field == q.field; }))

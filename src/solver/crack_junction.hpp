@@ -65,11 +65,11 @@ std::vector<OtherLine> junction_lines(const std::vector<OtherLine>& others);
 // face on the crack's body changes field there (InterfaceSpec::upper_faces / lower_faces, and
 // the node faces made from them): each stretch between those points on the field of the
 // crack's particles beside its middle (half a cell off the line). Where none comes near, a face
-// it changed before is set again the same way. Throws SimulationError where that cannot be represented: a crack that has
-// branched, a meeting on a tied stretch of that interface, or on an interface with a tied
-// stretch, or whose face is on neither of the crack's fields. Distributed: every rank calls it
-// (the particles' fields are read over all ranks). Called after every segment laid, and after a
-// restore (the particles then hold the fields the meetings left).
+// it changed before is set again the same way. Throws SimulationError where that cannot be
+// represented: a crack that has branched, a meeting within a cell of a tied stretch of that
+// interface (its tie keeps one field pair), or a face on neither of the crack's fields.
+// Distributed: every rank calls it (the particles' fields are read over all ranks). Called after
+// every segment laid, and after a restore (the particles then hold the fields the meetings left).
 void follow_edge_junctions(const Case& c, RunState& s, std::size_t k, const std::vector<std::size_t>& own,
                            const std::vector<OtherLine>& others, double time, double h);
 
