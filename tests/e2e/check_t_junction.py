@@ -62,7 +62,7 @@ t_d, t_json = run("t_junction")
 m_d, m_json = run("t_junction_monolith")
 bond = [c for c in t_json["cracks"] if c.get("interface") == "bond"][0]
 faces = bond.get("lower_faces")
-print("run.json interfaces.bond.lower_faces =", faces)
+print("run.json cracks[bond].lower_faces =", faces)
 if faces != [[0.0, "right.below.crack"], [0.1, "right"]]:
     failures.append(f"run.json lower_faces {faces}")
 if t_json.get("status") != "completed":
