@@ -73,6 +73,29 @@ PointTerms point_terms(const DomainPoint& p, const Rotation& R, const TipFrame& 
   return t;
 }
 
+// Whether face share f (its point at x2, r behind the tip) is the one of its loaded segment and
+// side of the line nearest the segment's end at re behind the tip (ties: the first in the list).
+bool nearest_to_end(const std::vector<FaceTraction>& faces, const std::vector<DomainPoint>& points,
+                    const Rotation& R, const TipFrame& tip, const FaceTraction& f, double x2, double re,
+                    double r) {
+  const double mine = std::fabs(r - re);
+  bool earlier = true;
+  for (const FaceTraction& g : faces) {
+    if (&g == &f) {
+      earlier = false;
+      continue;
+    }
+    if (g.from_x != f.from_x || g.from_y != f.from_y || g.to_x != f.to_x || g.to_y != f.to_y) continue;
+    double y1, y2;
+    const DomainPoint& p = points[g.point];
+    R.vec(p.x - tip.x, p.y - tip.y, y1, y2);
+    if ((y2 < 0.0) != (x2 < 0.0)) continue;
+    const double theirs = std::fabs(std::fabs(y1) - re);
+    if (theirs < mine || (earlier && theirs == mine)) return false;
+  }
+  return true;
+}
+
 TipIntegrals integrate(const std::vector<PointTerms>& terms, const std::vector<DomainPoint>& points,
                        const Rotation& R, const TipFrame& tip, const JDomain& domain,
                        const TipMaterial& m, const std::vector<FaceTraction>& faces) {
@@ -119,34 +142,61 @@ TipIntegrals integrate(const std::vector<PointTerms>& terms, const std::vector<D
     }
   }
   // Loaded faces: the boundary term of the divergence theorem that free faces do not have.
+  const auto weight = [&](double r) {  // q on the face, r behind the tip
+    if (r >= domain.outer) return 0.0;
+    if (r <= domain.inner) return 1.0;
+    const double xi = (r - domain.inner) / width;
+    return 1.0 - xi * xi * (3.0 - 2.0 * xi);
+  };
   for (const FaceTraction& f : faces) {
     const DomainPoint& p = points[f.point];
     double x1, x2, t1, t2;
     R.vec(p.x - tip.x, p.y - tip.y, x1, x2);
-    // The face is the line x2 = 0 behind the tip: the point carries its share there, on its own
-    // side (the auxiliary field jumps across the line, and varies fast with theta near the tip).
-    x2 = std::copysign(1e-12 * std::fabs(x1), x2);
-    const double r = std::fabs(x1);
-    if (r >= domain.outer) continue;
-    const double q = r <= domain.inner ? 1.0 : [&] {
-      const double xi = (r - domain.inner) / width;
-      return 1.0 - xi * xi * (3.0 - 2.0 * xi);
-    }();
+    const double r = std::fabs(x1), lo = std::max(r - 0.5 * f.length, 0.0), hi = r + 0.5 * f.length;
+    if (lo >= domain.outer) continue;
     R.vec(f.tx, f.ty, t1, t2);
-    double u11, u12, u21, u22;
+    double u11, u12, u21, u22, d1, d2;
     R.ten(p.ux_x, p.ux_y, p.uy_x, p.uy_y, u11, u12, u21, u22);
-    // Near the tip u_,1 and u^a_,1 on a face go as c r^-1/2: each is integrated as that over the
-    // point's share (r from r - l/2 to r + l/2, cut at the tip), where a midpoint value would
-    // leave an O(sqrt h) error from the singularity (tests/test_j_integral.cpp).
-    const double lo = std::max(r - 0.5 * f.length, 0.0), hi = r + 0.5 * f.length;
+    // J: by parts along the face (j_integral.hpp), with the face's displacement relative to the
+    // tip's: the point's, carried across the half cell to the line by its gradient (in a uniform
+    // strain the faces' own displacement does not change along them, and releases nothing).
+    R.vec(p.ux - tip.ux, p.uy - tip.uy, d1, d2);
+    d1 -= x2 * u12, d2 -= x2 * u22;
+    const double td = t1 * d1 + t2 * d2;
+    const double tg = t1 * u11 + t2 * u21;  // t_i u_i,1: to carry the displacement to an end
+    double dq1 = 0.0;  // q_,1 on the face (x1 = -r): -dq/dr
+    if (r > domain.inner && r < domain.outer) {
+      const double xi = (r - domain.inner) / width;
+      dq1 = 6.0 * xi * (1.0 - xi) / width;
+    }
+    J += td * dq1 * f.length;
+    // Where the loaded segment ends behind the tip (not at it: there the face's displacement is
+    // the tip's, and the term is nothing), the end term, with the displacement of the share
+    // nearest that end on this side of the line. (A distributed run whose rank border cuts the
+    // face right there gives it to the nearest share on each rank.)
+    const double ends[2][2] = {{f.from_x, f.from_y}, {f.to_x, f.to_y}};
+    for (int e = 0; e < 2 && std::isfinite(f.from_x); ++e) {
+      double e1, e2, o1, o2;
+      R.vec(ends[e][0] - tip.x, ends[e][1] - tip.y, e1, e2);
+      R.vec(ends[1 - e][0] - tip.x, ends[1 - e][1] - tip.y, o1, o2);
+      const double re = -e1;  // how far behind the tip the end lies
+      if (re <= 0.0 || re >= domain.outer || !nearest_to_end(faces, points, R, tip, f, x2, re, r)) continue;
+      // +: the far end (the other nearer the tip); the share's displacement carried to the end
+      J += (-o1 < re ? 1.0 : -1.0) * (td - tg * (re - r)) * weight(re);
+    }
+    // M: the auxiliary gradient is exact; near the tip it goes as c r^-1/2 along a face, so it
+    // is integrated as that over the point's share (r from r - l/2 to r + l/2, cut at the tip),
+    // where a midpoint value would leave an O(sqrt h) error (tests/test_j_integral.cpp). On the
+    // face, on the point's own side (the auxiliary field jumps across the line).
+    const double q = weight(r);
     const double share = 2.0 * (std::sqrt(hi) - std::sqrt(lo)) * std::sqrt(r);  // = l far away
-    J -= share * (t1 * u11 + t2 * u21) * q;
     NearTipField a[2];
+    const double xf = x1, yf = std::copysign(1e-12 * std::fabs(x1), x2);
     if (v == 0.0) {
-      williams_fields(x1, x2, m.mu, m.kappa, a[0], a[1]);
+      williams_fields(xf, yf, m.mu, m.kappa, a[0], a[1]);
     } else {
       RunningTipField rf[2];
-      running_tip_fields(x1, x2, v, m.mu, WaveSpeeds{m.c_d, m.c_s, 0.0, 0.0}, rf[0], rf[1]);
+      running_tip_fields(xf, yf, v, m.mu, WaveSpeeds{m.c_d, m.c_s, 0.0, 0.0}, rf[0], rf[1]);
       a[0] = rf[0].f, a[1] = rf[1].f;
     }
     for (int k = 0; k < 2; ++k) M[k] -= share * (t1 * a[k].u1_1 + t2 * a[k].u2_1) * q;

@@ -23,6 +23,7 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace rupture {
@@ -39,18 +40,29 @@ struct DomainPoint {
   double vx_x, vx_y, vy_x, vy_y;  // velocity gradient, 1/s
   double ax, ay;                  // acceleration, m/s^2
   std::uint32_t id;               // the particle's (Particles::id)
+  // Displacement from the stress-free state, m: only the loaded faces' J term reads it (below).
+  double ux = 0.0, uy = 0.0;
 };
 
 // A traction prescribed on a crack face inside the domain, carried by one of the points (a
 // surface particle and its share of the loaded length, as the load applies it): the faces are
 // then not traction-free, and both integrals take the face term (docs/fracture.md)
-//   J -= sum t_i u_i,1 q l,   M -= sum t_i u^a_i,1 q l,
-// q and u^a taken on the face (the point projected onto the crack line, on its own side), u_i,1
-// the point's. Contract: the faces lie on the crack line behind the tip (x1 < 0).
+//   J -= int t_i u_i,1 q ds,   M -= sum t_i u^a_i,1 q l,
+// q and u^a taken on the face (the point projected onto the crack line, on its own side). J's
+// term is integrated by parts along the face, so it reads the face's displacement (the point's,
+// carried to the line by its gradient u_i,2, less the tip's: TipFrame::ux, uy) against q_,1
+// rather than u_i,1, which the grid's maps smear near the tip where it goes as r^-1/2:
+//   int t_i u_i,1 q ds = sum t_i (u_i - u_tip,i) q_,1 l + t_i (u_i - u_tip,i) q at the ends of
+//   the loaded stretch that lie behind the tip (the far end +, the near end -).
+// Contract: the faces lie on the crack line behind the tip (x1 < 0).
 struct FaceTraction {
   std::size_t point = 0;     // index into the points
   double length = 0.0;       // m
   double tx = 0.0, ty = 0.0; // traction on the body, global frame, Pa
+  // The loaded segment's ends, global frame, m (a share holding one inside the domain takes the
+  // end term above). NaN: the load runs on beyond the domain and to the tip.
+  double from_x = kNoEnd, from_y = kNoEnd, to_x = kNoEnd, to_y = kNoEnd;
+  static constexpr double kNoEnd = std::numeric_limits<double>::quiet_NaN();
 };
 
 // The tip and the direction the crack points to (unit vector e1, from the crack into the
@@ -58,6 +70,7 @@ struct FaceTraction {
 struct TipFrame {
   double x = 0.0, y = 0.0;       // m
   double e1x = 1.0, e1y = 0.0;   // -
+  double ux = 0.0, uy = 0.0;     // displacement at the tip, m (the loaded faces' J term)
 };
 
 struct JDomain {

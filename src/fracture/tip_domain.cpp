@@ -39,7 +39,7 @@ std::vector<DomainPoint> tip_domain_points(const Grid& g, const GridFields& fiel
   return out;
 }
 
-void tip_domain_points(const Grid& g, const GridFields& fields, const Particles& P,
+TipDisplacement tip_domain_points(const Grid& g, const GridFields& fields, const Particles& P,
                        const std::vector<ElasticStiffness>& stiffness,
                        const std::vector<TiedFields>& ties, const TipFrame& tip, double reach,
                        double dt, const std::vector<InitialStrain>& initial,
@@ -82,7 +82,7 @@ void tip_domain_points(const Grid& g, const GridFields& fields, const Particles&
     }
   }
   // Distributed: every rank goes on to the sums below, with particles near the tip or not.
-  if (mapped.empty() && !ranks.distributed()) return;
+  if (mapped.empty() && !ranks.distributed()) return {};
   // Each mapped particle's GIMP stencils, once: the maps and the points' gradients use them.
   const long nm = long(mapped.size());
   msx.resize(mapped.size()), msy.resize(mapped.size());
@@ -101,7 +101,7 @@ void tip_domain_points(const Grid& g, const GridFields& fields, const Particles&
   if (ranks.distributed()) {  // the box of every rank's mapped particles
     imin = int(ranks.min(double(imin))), jmin = int(ranks.min(double(jmin)));
     imax = -int(ranks.min(-double(imax))), jmax = -int(ranks.min(-double(jmax)));
-    if (imax < 0) return;  // no particle near the tip on any rank
+    if (imax < 0) return {};  // no particle near the tip on any rank
   }
   L.i0 = imin, L.j0 = jmin, L.nx = imax - imin + 1, L.ny = jmax - jmin + 1;
   const std::size_t size = std::size_t(L.fields) * std::size_t(L.nx) * std::size_t(L.ny);
@@ -133,6 +133,24 @@ void tip_domain_points(const Grid& g, const GridFields& fields, const Particles&
       const double inv = 1.0 / L.m[k];
       L.ux[k] *= inv, L.uy[k] *= inv, L.vx[k] *= inv, L.vy[k] *= inv;
     }
+  // The displacement at the tip: the mean of what the material around it carries (both faces'
+  // fields behind it, the tied ones ahead).
+  TipDisplacement at_tip;
+  {
+    const int ci = g.x.cell_of(tx), cj = g.y.cell_of(ty);
+    const double fx = (tx - g.x.node(ci)) / g.x.width(ci), fy = (ty - g.y.node(cj)) / g.y.width(cj);
+    double mass = 0.0;
+    for (int b = 0; b < 2; ++b)
+      for (int a = 0; a < 2; ++a) {
+        if (!L.inside(ci + a, cj + b)) continue;
+        const double w = (a ? fx : 1.0 - fx) * (b ? fy : 1.0 - fy);
+        for (int f = 0; f < L.fields; ++f) {
+          const std::size_t n = L.at(f, ci + a, cj + b);
+          mass += w * L.m[n], at_tip.ux += w * L.m[n] * L.ux[n], at_tip.uy += w * L.m[n] * L.uy[n];
+        }
+      }
+    if (mass > 0.0) at_tip.ux /= mass, at_tip.uy /= mass;
+  }
   for (std::size_t k = 0; k < mapped.size(); ++k)
     if (tip_distance2(tip, P.x[mapped[k]], P.y[mapped[k]]) < r_points * r_points) near.push_back(k);
   out.resize(near.size());
@@ -147,6 +165,7 @@ void tip_domain_points(const Grid& g, const GridFields& fields, const Particles&
     DomainPoint d{};
     d.x = P.x[p], d.y = P.y[p];
     d.id = P.id[p];
+    d.ux = P.x[p] - P.x0[p], d.uy = P.y[p] - P.y0[p];
     d.vx = P.vx[p], d.vy = P.vy[p];
     const ElasticStiffness& C = stiffness[P.material[p]];
     d.sxx = P.sxx[p], d.syy = P.syy[p], d.sxy = P.sxy[p];
@@ -168,9 +187,13 @@ void tip_domain_points(const Grid& g, const GridFields& fields, const Particles&
     if (std::size_t(f) < initial.size()) {
       const InitialStrain& e0 = initial[std::size_t(f)];
       d.ux_x += e0.exx, d.ux_y += e0.exy, d.uy_x += e0.exy, d.uy_y += e0.eyy;
+      // and to the displacement, about the tip (only its differences along a face are read)
+      const double dx = d.x - tx, dy = d.y - ty;
+      d.ux += e0.exx * dx + e0.exy * dy, d.uy += e0.exy * dx + e0.eyy * dy;
     }
     out[std::size_t(q)] = d;
   }
+  return at_tip;
 }
 
 }  // namespace rupture

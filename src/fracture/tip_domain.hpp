@@ -1,7 +1,7 @@
 // rupture/fracture/tip_domain.hpp
 // The material points of a crack tip's J-integral domain, from a level's particles and grid
 // (fracture/j_integral.hpp's DomainPoint): stress and strain from the particle (its material's
-// compliance), the displacement and velocity gradients from the particles' displacement
+// compliance), its displacement u = x - X (plus the initial strain's, below), the displacement and velocity gradients from the particles' displacement
 // u = x - X and velocity mapped to the grid nodes of their own field (mass-weighted GIMP
 // weights, SPEC E3) and differentiated with the particle's GIMP gradients, as the time step
 // differentiates the velocity; the acceleration from the last step's nodal velocity increment
@@ -55,7 +55,12 @@ std::vector<DomainPoint> tip_domain_points(const Grid& g, const GridFields& fiel
                                            const std::vector<InitialStrain>& initial = {});
 // The same into `out` (cleared first; a caller that keeps it keeps its capacity: the points
 // of a domain are some hundred kilobytes, which a fresh allocation every step page-faults in).
-void tip_domain_points(const Grid& g, const GridFields& fields, const Particles& P,
+// Returns the displacement at the tip (m; TipFrame::ux, uy): the mass-weighted mean of every
+// field's map there (bilinear weights of the cell holding it), the same on every rank.
+struct TipDisplacement {
+  double ux = 0.0, uy = 0.0;
+};
+TipDisplacement tip_domain_points(const Grid& g, const GridFields& fields, const Particles& P,
                        const std::vector<ElasticStiffness>& stiffness,
                        const std::vector<TiedFields>& ties, const TipFrame& tip, double reach,
                        double dt, const std::vector<InitialStrain>& initial,

@@ -41,6 +41,7 @@ std::vector<TipIntegrals> read_tip(const State& L, const InterfaceSpec& is, cons
   // Tractions on faces (loads on crack faces): their particles' shares, by id.
   struct Carried {
     double length, tx, ty;
+    const double *from, *to;  // the loaded segment's ends, m
   };
   std::unordered_multimap<std::uint32_t, Carried> carried;
   for (std::size_t j = 0; j < L.loads.patches.size(); ++j) {
@@ -49,7 +50,7 @@ std::vector<TipIntegrals> read_tip(const State& L, const InterfaceSpec& is, cons
     if (tx == 0.0 && ty == 0.0) continue;
     const TractionPatch& patch = L.loads.patches[j];
     for (std::size_t i = 0; i < patch.ids.size(); ++i)
-      carried.insert({patch.ids[i], {patch.length[i], tx, ty}});
+      carried.insert({patch.ids[i], {patch.length[i], tx, ty, L.loads.spec.tractions[j].from, L.loads.spec.tractions[j].to}});
   }
   const double reach = is.j_domains.back() * h;
   thread_local std::vector<DomainPoint> pts;  // kept: its capacity is reused every step
@@ -59,15 +60,21 @@ std::vector<TipIntegrals> read_tip(const State& L, const InterfaceSpec& is, cons
     ranks.sum = [&L](double* v, std::size_t n) { sum_over_ranks(L, v, n); };
     ranks.min = [&L](double v) { return min_over_ranks(L, v); };
   }
-  tip_domain_points(L.grid, L.fields, L.particles, L.stiffness, ties, tip, reach, L.dt, initial, pts, ranks);
+  TipFrame at = tip;
+  const TipDisplacement u = tip_domain_points(L.grid, L.fields, L.particles, L.stiffness, ties, tip, reach, L.dt,
+                                              initial, pts, ranks);
+  at.ux = u.ux, at.uy = u.uy;
   std::vector<FaceTraction> faces;
   for (std::size_t i = 0; i < pts.size(); ++i) {
     const auto [lo, hi] = carried.equal_range(pts[i].id);
-    for (auto e = lo; e != hi; ++e) faces.push_back({i, e->second.length, e->second.tx, e->second.ty});
+    for (auto e = lo; e != hi; ++e) {
+      const Carried& c = e->second;
+      faces.push_back({i, c.length, c.tx, c.ty, c.from[0], c.from[1], c.to[0], c.to[1]});
+    }
   }
   std::vector<JDomain> domains;
   for (double cells : is.j_domains) domains.push_back({0.5 * cells * h, cells * h});
-  std::vector<TipIntegrals> r = tip_integrals(pts, tip, domains, material, faces);
+  std::vector<TipIntegrals> r = tip_integrals(pts, at, domains, material, faces);
   if (!L.halo) return r;
   // J and M are sums over the points, K linear in M: the ranks' parts add up to the whole
   // domain's (the same bits on every rank, so every rank's growth decision is the same).

@@ -2,7 +2,8 @@
 a pressure p (Freund, Dynamic Fracture Mechanics, 1990, sec. 2.5; SPEC E18), plane strain:
     K_I(t) = 2 p sqrt(c_D t (1 - 2 nu) / pi) / (1 - nu),
 and the check the e2e scripts share: every row of stress_intensity_NAME.csv from 1.5 to 2.6 us
-(each domain) within 5 % of it, K_II within 1 % of K_I, the tip at x = 20 mm."""
+(each domain) within 5 % of it, K_II within 1 % of K_I, J within 10.25 % (1.05^2 - 1) of
+K_I^2 / E', the tip at x = 20 mm."""
 import math
 import sys
 
@@ -97,5 +98,11 @@ def check_against_freund(d, p, E, nu, rho, least_rows, label):
         sys.exit(1)
     if np.any(np.abs(rows["K_II"]) > 0.01 * np.abs(rows["K_I"])):
         print("FAILED: K_II in a mode I problem")
+        sys.exit(1)
+    # J of a stationary tip is K_I^2 / E' (plane strain): within K's 5 %, squared.
+    j = rows["J"] / (freund_k(rows["time"], p, E, nu, rho) ** 2 * (1 - nu * nu) / E)
+    print(f"{label}J / (K_Freund^2 / E') from 1.5 to 2.6 us: {j.min():.4f} .. {j.max():.4f}")
+    if np.any(np.abs(j - 1) > 1.05**2 - 1):
+        print("FAILED: J off K_Freund^2 / E' by more than 10.25 %")
         sys.exit(1)
     print("ok")
