@@ -88,6 +88,16 @@ TEST(TipDomain, affine_fields_give_their_gradients_and_the_particles_state) {
     EXPECT_EQ(d.sxy, 3e5);
     EXPECT_NEAR(d.density, 1246.0, 1e-9);
     EXPECT_EQ(d.ax, 0.0);  // dt = 0: no acceleration read
+    EXPECT_NEAR(d.ux, G[0][0] * d.x + G[0][1] * d.y, 1e-15);  // u = x - X
+    EXPECT_NEAR(d.uy, G[1][0] * d.x + G[1][1] * d.y, 1e-15);
+  }
+  // The tip's displacement (the loaded faces' J term): the linear field's there, off the lattice
+  // of particle centres too.
+  for (const TipFrame& t : {tip, TipFrame{0.0103, 0.0087, 1.0, 0.0}}) {
+    std::vector<DomainPoint> out;
+    const TipDisplacement u = tip_domain_points(b.g, b.fields, b.P, b.C, {}, t, 4e-3, 0.0, {}, out);
+    EXPECT_NEAR(u.ux, G[0][0] * t.x + G[0][1] * t.y, 1e-15);
+    EXPECT_NEAR(u.uy, G[1][0] * t.x + G[1][1] * t.y, 1e-15);
   }
 }
 
@@ -131,7 +141,8 @@ TEST(TipDomain, ranks_that_split_the_particles_return_one_process_points) {
   ASSERT_GT(part[1].size(), 0u);
   std::barrier<> meet(2);
   std::vector<double> slot[2];
-  double lowest[2] = {0.0, 0.0};
+  std::vector<double> highest[2];
+  TipDisplacement at_tip[2];
   std::vector<DomainPoint> out[2];
   const auto rank = [&](int r, bool summed) {
     DomainSums sums;
@@ -142,14 +153,13 @@ TEST(TipDomain, ranks_that_split_the_particles_return_one_process_points) {
         for (std::size_t i = 0; i < n; ++i) v[i] = slot[0][i] + slot[1][i];
       meet.arrive_and_wait();
     };
-    sums.min = [&, r](double v) {
-      lowest[r] = v;
+    sums.max = [&, r](double* v, std::size_t n) {
+      highest[r].assign(v, v + n);
       meet.arrive_and_wait();
-      const double m = std::min(lowest[0], lowest[1]);
+      for (std::size_t i = 0; i < n; ++i) v[i] = std::max(highest[0][i], highest[1][i]);
       meet.arrive_and_wait();
-      return m;
     };
-    tip_domain_points(b.g, b.fields, part[r], b.C, {}, tip, 4e-3, 0.0, {}, out[r], sums);
+    at_tip[r] = tip_domain_points(b.g, b.fields, part[r], b.C, {}, tip, 4e-3, 0.0, {}, out[r], sums);
   };
   const auto split_read = [&](bool summed) {
     std::thread t0(rank, 0, summed), t1(rank, 1, summed);
@@ -175,6 +185,15 @@ TEST(TipDomain, ranks_that_split_the_particles_return_one_process_points) {
     return worst;
   };
   const double summed = split_read(true);
+  // The tip's displacement (the loaded faces' J term) from the summed maps: every rank the same
+  // bits, one process's to round-off.
+  std::vector<DomainPoint> one;
+  const TipDisplacement whole_tip = tip_domain_points(b.g, b.fields, b.P, b.C, {}, tip, 4e-3, 0.0, {}, one);
+  EXPECT_EQ(at_tip[0].ux, at_tip[1].ux);
+  EXPECT_EQ(at_tip[0].uy, at_tip[1].uy);
+  EXPECT_GT(std::fabs(whole_tip.ux) + std::fabs(whole_tip.uy), 0.0);
+  EXPECT_NEAR(at_tip[0].ux, whole_tip.ux, 1e-12 * (std::fabs(whole_tip.ux) + std::fabs(whole_tip.uy)));
+  EXPECT_NEAR(at_tip[0].uy, whole_tip.uy, 1e-12 * (std::fabs(whole_tip.ux) + std::fabs(whole_tip.uy)));
   const double halves = split_read(false);
   std::printf("largest gradient difference from one process: %.2e summed over the ranks, %.2e from each "
               "rank's own map\n", summed, halves);

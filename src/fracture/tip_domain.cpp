@@ -99,8 +99,9 @@ TipDisplacement tip_domain_points(const Grid& g, const GridFields& fields, const
     imin = std::min(imin, i), imax = std::max(imax, i + 2), jmin = std::min(jmin, j), jmax = std::max(jmax, j + 2);
   }
   if (ranks.distributed()) {  // the box of every rank's mapped particles
-    imin = int(ranks.min(double(imin))), jmin = int(ranks.min(double(jmin)));
-    imax = -int(ranks.min(-double(imax))), jmax = -int(ranks.min(-double(jmax)));
+    double box[4] = {-double(imin), -double(jmin), double(imax), double(jmax)};
+    ranks.max(box, 4);
+    imin = -int(box[0]), jmin = -int(box[1]), imax = int(box[2]), jmax = int(box[3]);
     if (imax < 0) return {};  // no particle near the tip on any rank
   }
   L.i0 = imin, L.j0 = jmin, L.nx = imax - imin + 1, L.ny = jmax - jmin + 1;
@@ -118,8 +119,16 @@ TipDisplacement tip_domain_points(const Grid& g, const GridFields& fields, const
       }
   }
   // Distributed: a node's sums over every rank's particles, as one process maps them all.
-  if (ranks.distributed())
-    for (auto* v : {&L.m, &L.ux, &L.uy, &L.vx, &L.vy}) ranks.sum(v->data(), v->size());
+  if (ranks.distributed()) {  // in one call: the five maps side by side
+    thread_local std::vector<double> packed;
+    packed.resize(5 * size);
+    std::size_t at = 0;
+    for (auto* v : {&L.m, &L.ux, &L.uy, &L.vx, &L.vy}) std::copy(v->begin(), v->end(), packed.begin() + long(at)), at += size;
+    ranks.sum(packed.data(), packed.size());
+    at = 0;
+    for (auto* v : {&L.m, &L.ux, &L.uy, &L.vx, &L.vy})
+      std::copy(packed.begin() + long(at), packed.begin() + long(at + size), v->begin()), at += size;
+  }
   // Tied nodes: one body, both fields hold the sums.
   for (const TiedFields& t : ties)
     for (std::size_t n : *t.nodes) {

@@ -39,10 +39,11 @@ struct InitialStrain {
 };
 
 // What the ranks of a distributed run add up (empty functions: one process). `sum`: element-wise
-// sums over the ranks, the same bits on every rank; `min`: the smallest value over the ranks.
+// sums over the ranks, the same bits on every rank; `max`: element-wise largest values. A read
+// calls each once (every call is a collective, and a read every step is many of them).
 struct DomainSums {
   std::function<void(double*, std::size_t)> sum;
-  std::function<double(double)> min;
+  std::function<void(double*, std::size_t)> max;
   bool distributed() const { return bool(sum); }
 };
 

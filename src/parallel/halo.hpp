@@ -134,6 +134,7 @@ struct Halo final : RankExchange {
   void migrate_levels_if_due(RunState& n) override;
   void finish_nested_step(RunState& n, const NestedDrift& before) override;
   double min_over_ranks(double v) const override { return comm.min(v); }
+  void max_over_ranks(double* values, std::size_t n) const override { comm.max(values, int(n)); }
   void sum_in_rank_order(double* values, std::size_t n) const override { comm.sum_in_rank_order(values, int(n)); }
   bool fixes_windows() const override { return !reaches.empty(); }
 };

@@ -58,7 +58,7 @@ std::vector<TipIntegrals> read_tip(const State& L, const InterfaceSpec& is, cons
   DomainSums ranks;
   if (L.halo) {
     ranks.sum = [&L](double* v, std::size_t n) { sum_over_ranks(L, v, n); };
-    ranks.min = [&L](double v) { return min_over_ranks(L, v); };
+    ranks.max = [&L](double* v, std::size_t n) { max_over_ranks(L, v, n); };
   }
   TipFrame at = tip;
   const TipDisplacement u = tip_domain_points(L.grid, L.fields, L.particles, L.stiffness, ties, tip, reach, L.dt,

@@ -60,6 +60,7 @@ class RankExchange {
   virtual void migrate_levels_if_due(RunState& n) = 0;
   virtual void finish_nested_step(RunState& n, const NestedDrift& before) = 0;
   virtual double min_over_ranks(double v) const = 0;
+  virtual void max_over_ranks(double* values, std::size_t n) const = 0;  // element-wise, in place
   virtual void sum_in_rank_order(double* values, std::size_t n) const = 0;
   // A distributed nested level: the split fixed its field windows to its reach.
   virtual bool fixes_windows() const = 0;
@@ -103,6 +104,9 @@ inline void finish_distributed_step(State& s, double drift_at_start) {
   if (s.halo) s.halo->finish_step(s, drift_at_start);
 }
 inline double min_over_ranks(const State& s, double v) { return s.halo ? s.halo->min_over_ranks(v) : v; }
+inline void max_over_ranks(const State& s, double* values, std::size_t n) {
+  if (s.halo) s.halo->max_over_ranks(values, n);
+}
 inline void sum_over_ranks(const State& s, double* values, std::size_t n) {
   if (s.halo) s.halo->sum_in_rank_order(values, n);
 }
