@@ -256,17 +256,27 @@ TEST(CrackGrowth, lines_drawn_in_one_body_are_told_from_interfaces_between_bodie
   EXPECT_FALSE(drawn_in_crack_body(bond, 0, bond.interfaces[0]));
 }
 
-// A crack in the lower of two bonded bodies, drawn from the left edge: its tie runs on to the
-// right edge (with another interface on its body, two cells along the crack, then the drawn
-// direction: docs/fracture.md, "Several cracks in one body"). Turned 60 degrees towards the bond,
-// its tie's lead comes to meet the bond, and then the crack itself, which ends there (the bond is
-// its body's edge): from the first meeting on, the bond's lower face lies on the crack's two
-// fields, changing where the tie or the crack meets it (solver/crack_junction.hpp
-// follow_edge_junctions), so each piece stays bonded; nothing stops. Turned 10 degrees it never
-// meets the bond, whose face stays on one field.
+namespace {
+
 // Two bonded bodies, a crack in the lower one drawn from its left edge (growing at a prescribed
-// speed, its tie on to the right edge); `bond_lines`: more keys of the bond.
-std::string bonded_bodies_with_a_crack(const std::string& bond_lines = "") {
+// speed, its tie on to the right edge); `bond_lines`: more keys of the bond. in_body: one plate
+// with the bond drawn inside it (body = "plate": the parts above and below it are the two
+// bodies; the part above is beyond the crack's reach, input/crack_reach.hpp, so the bond is the
+// edge of its reach), `bond_points` its line.
+std::string bonded_bodies_with_a_crack(const std::string& bond_lines = "", bool in_body = false,
+                                       const std::string& bond_points = "[[0.0, 0.006], [0.02, 0.006]]") {
+  const std::string bodies = in_body ? R"([bodies.plate]
+material = "homalite"
+min = [0.0, 0.0]
+max = [0.02, 0.01])"
+                                     : R"([bodies.lower]
+material = "homalite"
+min = [0.0, 0.0]
+max = [0.02, 0.006]
+[bodies.upper]
+material = "homalite"
+min = [0.0, 0.006]
+max = [0.02, 0.01])";
   return fmt::format(R"({0}
 [model]
 plane = "strain"
@@ -274,18 +284,10 @@ plane = "strain"
 min = [0.0, 0.0]
 max = [0.02, 0.01]
 cell_size = {1}
-[bodies.lower]
-material = "homalite"
-min = [0.0, 0.0]
-max = [0.02, 0.006]
-[bodies.upper]
-material = "homalite"
-min = [0.0, 0.006]
-max = [0.02, 0.01]
+{3}
 [interface.bond]
-upper_body = "upper"
-lower_body = "lower"
-points = [[0.0, 0.006], [0.02, 0.006]]
+{4}
+points = {5}
 segments = 40
 law = "xu_needleman"
 sigma_max = 1e9
@@ -294,7 +296,7 @@ delta_n = 1e-6
 delta_t = 1e-6
 {2}
 [interface.cut]
-body = "lower"
+body = "{6}"
 points = [[0.0, 0.002], [0.005, 0.002]]
 segments = 10
 law = "contact"
@@ -303,24 +305,66 @@ growth_speed = 100.0
 [time]
 end = 1e-6
 )",
-                                       test::kHomaliteToml, kH, bond_lines);
+                     test::kHomaliteToml, kH, bond_lines, bodies,
+                     in_body ? "body = \"plate\"" : "upper_body = \"upper\"\nlower_body = \"lower\"", bond_points,
+                     in_body ? "plate" : "lower");
 }
 
-TEST(CrackGrowth, a_crack_turned_onto_an_interface_between_bodies_splits_its_face) {
-  const std::string text = bonded_bodies_with_a_crack();
-  const Case c = parse_case(text);
+// Grows the crack (interface 1) by segments of half a cell turned `degrees` from the drawn
+// direction, each ending on the bond (y = 6 mm) at most, until it reaches the bond (at most 30),
+// as growth does: the tie checked, then the faces of the lines on the edge followed. Returns the
+// SimulationError's message, if one stops it; `through` whether the crack reached the bond.
+std::string turn_towards_the_bond(const Case& c, RunState& s, double degrees, bool& through) {
+  State& L = s.levels[0];
+  const std::size_t slot = s.interface_slots[1];
+  const std::vector<OtherLine> all = other_lines(c, s, {}, 1, {slot});
+  const double a = degrees * std::numbers::pi / 180.0;
+  through = false;
+  try {
+    for (int n = 0; n < 30 && !through; ++n) {
+      const std::vector<CrackTip> t = precrack_tips(L.interfaces[slot].spec, 1e-6 * kH);
+      const TipFrame& f = t.at(0).frame;
+      Point to{f.x + 0.5 * kH * std::cos(a), f.y + 0.5 * kH * std::sin(a)};
+      if (to.y > 0.006) to = {f.x + (0.006 - f.y) / std::tan(a), 0.006};
+      stop_at_segment_junction(c, 1, 0.0, junction_lines(all), {f.x, f.y}, to, kH);
+      through = add_crack_segment(c, 1, L, slot, t[0], to.x, to.y, true);
+      stop_at_tie_junction(c, 1, 0.0, junction_lines(all), L.interfaces[slot].spec.tie_geometries(), kH);
+      follow_edge_junctions(c, s, 1, {slot}, all, 0.0, kH);
+    }
+  } catch (const SimulationError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// A crack in the lower of two bonded bodies, drawn from the left edge: its tie runs on to the
+// right edge (with another interface on its body, two cells along the crack, then the drawn
+// direction: docs/fracture.md, "Several cracks in one body"). Turned 60 degrees towards the bond,
+// its tie's lead comes to meet the bond, and then the crack itself, which ends there (the bond is
+// its body's edge): from the first meeting on, the bond's lower face lies on the crack's two
+// fields, changing where the tie or the crack meets it (solver/crack_junction.hpp
+// follow_edge_junctions), so each piece stays bonded; nothing stops. Turned 10 degrees it never
+// meets the bond, whose face stays on one field.
+// The same with the bond drawn inside one plate (on the edge of the crack's reach): the same
+// faces, fields and meeting.
+void check_turns_onto_the_bond(bool in_body) {
+  const Case c = parse_case(bonded_bodies_with_a_crack("", in_body));
   ASSERT_EQ(c.interfaces.size(), 2u);
   ASSERT_EQ(c.interface_names[1], "cut");
-  const int above = c.bodies[0].field, below = c.bodies[1].field;  // lower, lower.below.cut
-  ASSERT_EQ(c.bodies[1].name, "lower.below.cut");
+  // The crack's fields, above and below it (lower, lower.below.cut; in one plate the part above
+  // the bond is bodies[0]).
+  const std::size_t b0 = in_body ? 1 : 0;
+  const int above = c.bodies[b0].field, below = c.bodies[b0 + 1].field;
+  ASSERT_EQ(c.bodies[b0 + 1].name, in_body ? "plate.below.bond.below.cut" : "lower.below.cut");
   for (const double deg : {10.0, 60.0}) {
     RunState s = make_run_state(c);
     State& L = s.levels[0];
     const std::size_t slot = s.interface_slots[1];
     const std::vector<OtherLine> all = other_lines(c, s, {}, 1, {slot});
     ASSERT_EQ(all.size(), 1u) << "the bond (no tie)";
-    EXPECT_FALSE(all[0].in_body);
-    EXPECT_TRUE(junction_lines(all).empty()) << "the bond is the body's edge, not a junction";
+    EXPECT_EQ(all[0].in_body, in_body);
+    EXPECT_EQ(all[0].edge, in_body) << "drawn in the body: on the edge of the crack's reach";
+    EXPECT_TRUE(junction_lines(all).empty()) << "the bond is the edge, not a junction";
     const CohesiveInterface& bond = L.interfaces[s.interface_slots[0]];
     const double a = deg * std::numbers::pi / 180.0;
     // Grow up to 30 segments of half a cell (7.5 mm), each ending on the body's edge at most.
@@ -356,7 +400,32 @@ TEST(CrackGrowth, a_crack_turned_onto_an_interface_between_bodies_splits_its_fac
         EXPECT_EQ(int(ff.a), field) << deg << " degrees, segment " << n << ", bond node " << k;
       }
     }
+    // Every particle of the crack's two fields on its side of the crack and its cut: the crack
+    // and its tie, or, once it has reached the bond, the crack and the bond on to the right edge
+    // (the bond's other side is not the crack's: those particles never change).
     const Polyline cut = L.interfaces[slot].spec.geometry();
+    {
+      const Box frame{{-0.001, -0.001}, {0.021, 0.011}};
+      std::vector<Point> walk{{-0.001, cut.y[0]}};
+      for (std::size_t i = 0; i < cut.num_vertices(); ++i) walk.push_back({cut.x[i], cut.y[i]});
+      if (through) {
+        walk.push_back({0.021, 0.006});
+      } else {
+        for (const Polyline& t : L.interfaces[slot].spec.tie_geometries())
+          for (std::size_t i = 1; i < t.num_vertices(); ++i) walk.push_back({t.x[i], t.y[i]});
+        const Point last = walk.back(), before = walk[walk.size() - 2];
+        walk.push_back(leave_box(frame, last, {last.x - before.x, last.y - before.y}));
+      }
+      const Shape left = left_part(frame, walk);
+      int wrong = 0, counted = 0;
+      const Particles& P = L.particles;
+      for (std::size_t q = 0; q < P.size(); ++q) {
+        if (P.field[q] != above && P.field[q] != below) continue;
+        ++counted;
+        wrong += contains(left, P.x0[q], P.y0[q]) != (P.field[q] == above);
+      }
+      EXPECT_EQ(wrong, 0) << deg << " degrees: particles of the crack's fields on the wrong side, of " << counted;
+    }
     if (deg == 10.0) {
       EXPECT_FALSE(through);
       EXPECT_TRUE(bond.node_faces_lo.empty()) << "far from the bond";
@@ -369,8 +438,9 @@ TEST(CrackGrowth, a_crack_turned_onto_an_interface_between_bodies_splits_its_fac
       EXPECT_NEAR(bond.spec.lower_faces[1].from, cut.x.back(), 1e-9) << "the face changes where the crack ends";
       EXPECT_EQ(bond.spec.lower_faces[0].field, above);
       EXPECT_EQ(bond.spec.lower_faces[1].field, below);
-      std::printf("turned 60 degrees: the tie first met the bond with the tip at y = %.3f mm; the crack "
-                  "ends on it at x = %.3f mm\n", 1e3 * first_meeting, 1e3 * cut.x.back());
+      std::printf("%s, turned 60 degrees: the tie first met the bond with the tip at y = %.3f mm; the crack "
+                  "ends on it at x = %.3f mm\n", in_body ? "in one plate" : "two bodies", 1e3 * first_meeting,
+                  1e3 * cut.x.back());
       EXPECT_GT(first_meeting, 0.006 - 2.5 * kH) << "the tie meets the bond only near it";
       // A restore: the segments laid again, the particles' fields as the checkpoint holds them,
       // and the bond's faces follow them again (derived, not stored).
@@ -394,6 +464,16 @@ TEST(CrackGrowth, a_crack_turned_onto_an_interface_between_bodies_splits_its_fac
       }
     }
   }
+}
+
+}  // namespace
+
+TEST(CrackGrowth, a_crack_turned_onto_an_interface_between_bodies_splits_its_face) {
+  check_turns_onto_the_bond(false);
+}
+
+TEST(CrackGrowth, a_crack_turned_onto_a_line_on_the_edge_of_its_reach_splits_its_face) {
+  check_turns_onto_the_bond(true);
 }
 
 // The same crack turned 60 degrees towards a bond that is tied (bonded_points) from its left end
@@ -432,6 +512,43 @@ TEST(CrackGrowth, a_crack_meeting_a_tied_stretch_of_an_interface_stops) {
     } else {
       EXPECT_NE(error.find("tied stretch of that interface"), std::string::npos) << error;
       EXPECT_NE(error.find("interface 'cut'"), std::string::npos) << error;
+    }
+  }
+}
+
+// Where the crack's cut runs on along the line it meets into a tied stretch of that line, the
+// piece it cuts off (right of the meeting, below the bond) takes the crack's other field beside
+// the tie, which joins one pair of fields per line: growth stops with a diagnosis. Turned 60
+// degrees the crack meets the bond at x = 7.3 mm, and its cut runs on to the right edge: a tie
+// right of the meeting stops it (between two bodies: bonded_points from 12 mm; in one plate: the
+// bond drawn from the left edge to 12 mm, tied on to the right edge), one left of it does not
+// (drawn from the right edge to 3 mm, tied on to the left edge).
+TEST(CrackGrowth, a_cut_running_into_a_tie_of_the_line_it_meets_stops) {
+  struct Variant {
+    std::string text;
+    bool stops;
+  } const variants[] = {
+      {bonded_bodies_with_a_crack("bonded_points = [[0.012, 0.006], [0.02, 0.006]]"), true},
+      {bonded_bodies_with_a_crack("", true, "[[0.0, 0.006], [0.012, 0.006]]"), true},
+      {bonded_bodies_with_a_crack("", true, "[[0.02, 0.006], [0.003, 0.006]]"), false},
+  };
+  for (const Variant& v : variants) {
+    const Case c = parse_case(v.text);
+    RunState s = make_run_state(c);
+    bool through = false;
+    const std::string error = turn_towards_the_bond(c, s, 60.0, through);
+    if (v.stops) {
+      EXPECT_NE(error.find("tied stretch"), std::string::npos) << error;
+      std::printf("stops: %s\n", error.c_str());
+      EXPECT_NE(error.find("interface 'bond'"), std::string::npos) << error;
+    } else {
+      EXPECT_EQ(error, "");
+      EXPECT_TRUE(through);
+      const CohesiveInterface& bond = s.levels[0].interfaces[s.interface_slots[0]];
+      // Drawn right to left, the bond's face below is its upper one; it changes at the meeting,
+      // 12.69 mm along it (x = 7.31 mm).
+      ASSERT_EQ(bond.spec.upper_faces.size(), 2u);
+      EXPECT_NEAR(bond.spec.upper_faces[1].from, 0.02 - 0.0073094, 1e-6);
     }
   }
 }

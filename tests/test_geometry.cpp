@@ -293,6 +293,35 @@ TEST(Geometry, inside_stretches_of_a_segment_through_a_region) {
   EXPECT_EQ(up[1].to.y, 10.0);
 }
 
+
+// A part of a split body cut away (Region::minus_parts): the points on its side of every cut in
+// its list are out. A square split at y = 5 into halves, the lower half split again at x = 6:
+// the region without the lower-right quarter is the upper half and the lower-left quarter, and
+// a segment through it stops on the quarter's two cuts.
+TEST(Geometry, a_part_cut_away_from_a_region) {
+  const Box frame{{-1, -1}, {11, 11}};
+  const Shape below = left_part(frame, {{11, 5}, {-1, 5}});    // y < 5
+  const Shape right = left_part(frame, {{6, 11}, {6, -1}});    // x > 6
+  Region reach{rectangle(0, 0, 10, 10), {}};
+  reach.minus_parts.push_back({{below, true}, {right, true}});  // the lower-right quarter
+  EXPECT_TRUE(contains(reach, 8, 7));
+  EXPECT_TRUE(contains(reach, 3, 2));
+  EXPECT_FALSE(contains(reach, 8, 2));
+  EXPECT_FALSE(contains(reach, 11, 7));
+  // Across the lower half: in from x = 0 to the quarter's cut at x = 6 exactly.
+  const std::vector<Stretch> low = inside_stretches(reach, {-1, 2}, {11, 2});
+  ASSERT_EQ(low.size(), 1u);
+  EXPECT_EQ(low[0].from.x, 0.0);
+  EXPECT_NEAR(low[0].to.x, 6.0, 1e-12);
+  // Down at x = 8: from the top to the cut at y = 5; at x = 3 the whole height.
+  const std::vector<Stretch> down = inside_stretches(reach, {8, 10.5}, {8, -0.5});
+  ASSERT_EQ(down.size(), 1u);
+  EXPECT_EQ(down[0].from.y, 10.0);
+  EXPECT_NEAR(down[0].to.y, 5.0, 1e-12);
+  const std::vector<Stretch> whole = inside_stretches(reach, {3, 10.5}, {3, -0.5});
+  ASSERT_EQ(whole.size(), 1u);
+  EXPECT_EQ(whole[0].to.y, 0.0);
+}
 TEST(Geometry, the_two_sides_of_a_cut_seed_the_body_once) {
   // An ellipse with a hole, cut by a bent line: each sub-cell centre of the whole region lies
   // in exactly one side, at the same position (the lattice is the region's, not the side's).

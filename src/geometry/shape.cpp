@@ -97,6 +97,11 @@ bool contains(const Region& r, double x, double y) {
     if (contains(m, x, y)) return false;
   for (const Side& side : r.sides)
     if (contains(side.shape, x, y) != side.inside) return false;
+  for (const std::vector<Side>& part : r.minus_parts) {
+    bool in_part = true;
+    for (const Side& side : part) in_part = in_part && contains(side.shape, x, y) == side.inside;
+    if (in_part) return false;
+  }
   return true;
 }
 
@@ -338,6 +343,8 @@ std::vector<Stretch> inside_stretches(const Region& r, const Point& a, const Poi
   shape_crossings(r.outer, a, b, x);
   for (const Shape& m : r.minus) shape_crossings(m, a, b, x);
   for (const Side& side : r.sides) shape_crossings(side.shape, a, b, x);
+  for (const std::vector<Side>& part : r.minus_parts)
+    for (const Side& side : part) shape_crossings(side.shape, a, b, x);
   std::sort(x.begin(), x.end(), [](const Crossing& u, const Crossing& v) { return u.t < v.t; });
   // Between consecutive crossings the segment is wholly in or out: its midpoint says which.
   std::vector<Stretch> out;

@@ -41,11 +41,14 @@ struct Side {
 };
 
 // One outer shape with cut-outs (holes, notches): a point is in the region when it is in the
-// outer shape, in none of `minus` and on its side of every cut in `sides`.
+// outer shape, in none of `minus`, on its side of every cut in `sides`, and in none of
+// `minus_parts` (each a part of a split body, cut away: the points on their side of every cut in
+// its list; a growing crack's reach, solver/crack_cut.hpp crack_body).
 struct Region {
   Shape outer;
   std::vector<Shape> minus;
   std::vector<Side> sides{};  // (defaulted: Region{outer, minus} stays complete)
+  std::vector<std::vector<Side>> minus_parts{};
 };
 
 const char* shape_name(ShapeKind k);

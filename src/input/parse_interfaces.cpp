@@ -16,6 +16,7 @@
 #include "cohesive/polyline.hpp"
 #include "material/elastic.hpp"
 #include "input/case_parse.hpp"
+#include "input/crack_reach.hpp"
 #include "input/input_schema.hpp"
 
 namespace rupture {
@@ -292,9 +293,13 @@ void check_no_crossing(Section& f, const InterfaceSpec& is, const Case& c) {
 }
 
 // A growing line whose tied extension ends on another line drawn in the same body (a T-junction
-// made by its tie): growth stops at such a tie (solver/crack_junction.hpp), so the input does.
-// (Ending on an interface between the body and another is followed as the tip grows.)
-void check_growing_tie_ends(Section& f, const InterfaceSpec& is, const Case& c) {
+// made by its tie): growth stops at such a tie (solver/crack_junction.hpp), so the input does,
+// unless that line is on the edge of the crack's reach (input/crack_reach.hpp: its other face
+// on a part no growing line changes), where it is followed as the tip grows, as an interface
+// between the body and another is. Asked once every interface is known (a later line may split
+// or grow the part beyond).
+void check_growing_tie_ends(Section& f, std::size_t i, const Case& c) {
+  const InterfaceSpec& is = c.interfaces[i];
   if (!is.growth.on()) return;
   const double tol = 1e-6 * c.grid.cell_size;
   const Shape& own = c.bodies[std::size_t(is.upper_body)].region.outer;
@@ -304,6 +309,7 @@ void check_growing_tie_ends(Section& f, const InterfaceSpec& is, const Case& c) 
       if (!same_shape(c.bodies[std::size_t(e.upper_body)].region.outer, own) ||
           !same_shape(c.bodies[std::size_t(e.lower_body)].region.outer, own))
         continue;  // between the body and another: its face follows the crack's fields
+      if (k == i || on_edge_of_reach(c, i, e)) continue;  // the edge of its reach: followed too
       for (const auto* faces : {&e.upper_faces, &e.lower_faces})
         for (std::size_t q = 1; q < faces->size(); ++q) {
           double x, y;
@@ -313,8 +319,10 @@ void check_growing_tie_ends(Section& f, const InterfaceSpec& is, const Case& c) 
               fail(f.key("growth"), "\"" + f.string("growth", "") + "\"",
                    fmt::format("the line's tied extension ends on interface.{} at ({:.6g}, {:.6g}) "
                                "m (a T-junction of two lines drawn in one body): a line that grows "
-                               "may not have its extension end on another line in its body (yet); "
-                               "end the line on it, or let the extension miss it",
+                               "may have its extension end on another line in its body only where "
+                               "that line's other side is a part no growing line changes "
+                               "(docs/fracture.md, \"Junctions\"); end the line on it, or let the "
+                               "extension miss it",
                                c.interface_names[k], x, y));
           }
         }
@@ -416,11 +424,14 @@ void parse_interfaces(Section& top, Case& c, ParseContext& ctx) {
     parse_drawn_open(f, is);
     parse_stress_intensity(f, is);
     parse_growth(f, is, c);
-    check_growing_tie_ends(f, is, c);
     reserve_branch_fields(f, is, c, name);
     check_no_crossing(f, is, c);
     c.interfaces.push_back(is);
     c.interface_names.push_back(name);
+  }
+  for (std::size_t i = 0; i < c.interfaces.size(); ++i) {
+    Section f = ifs.table(c.interface_names[i], true, allowed_keys("interface.*"));
+    check_growing_tie_ends(f, i, c);
   }
   // Split bodies got new fields as they came; number them again in order of first appearance
   // among the bodies (the parts of a body are listed after it), as fields always are.

@@ -105,12 +105,23 @@ RunResult run_case(const Case& c, const RunOptions& options) {
         // state and notes the shapes, and after growth each keeps its part.
         std::vector<InterfaceShapes> before;
         if (s.halo) collect_crack_fronts(s);
-        grow_cracks(c, s, ctx.growth, [&] {
-          if (!s.halo) return;
-          collect_interface_state(s);
-          for (const State& level : s.levels) before.push_back(interface_shapes(level));
-        });
-        for (std::size_t l = 0; l < before.size(); ++l) follow_grown_interfaces(s.levels[l], before[l]);
+        const auto distribute_grown = [&] {
+          for (std::size_t l = 0; l < before.size(); ++l) follow_grown_interfaces(s.levels[l], before[l]);
+        };
+        try {
+          grow_cracks(c, s, ctx.growth, [&] {
+            if (!s.halo) return;
+            collect_interface_state(s);
+            for (const State& level : s.levels) before.push_back(interface_shapes(level));
+          });
+        } catch (const SimulationError&) {
+          // A junction that stops the run after a segment was laid (every rank stops at the same
+          // point): each rank keeps its part of the grown interfaces again, so the summaries and
+          // outputs of the failed run gather a consistent state.
+          distribute_grown();
+          throw;
+        }
+        distribute_grown();
         for (std::size_t k = 0; k < ctx.cracks.size() && k < c.interfaces.size(); ++k)
           if (c.interfaces[k].growth.on()) ctx.cracks[k].follow(s.interface(k), true);
         ctx.growth_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -5,12 +5,18 @@
 #include <cmath>
 
 #include "grid/grid.hpp"
+#include "input/crack_reach.hpp"
 
 namespace rupture {
 
 Region crack_body(const Case& c, std::size_t k) {
   const Region& r = c.bodies[std::size_t(c.interfaces[k].upper_body)].region;
-  return Region{r.outer, r.minus};
+  Region reach{r.outer, r.minus};
+  const std::vector<int> beyond = fields_beyond_reach(c, k);
+  for (const BodySpec& b : c.bodies)
+    if (same_drawn_region(b.region, r) && std::find(beyond.begin(), beyond.end(), b.field) != beyond.end())
+      reach.minus_parts.push_back(b.region.sides);
+  return reach;
 }
 
 Box cut_frame(const Region& body, const Polyline& line, const Point& p, double h) {

@@ -14,7 +14,10 @@
 
 namespace rupture {
 
-// The body crack k was drawn in: its shape and cut-outs, without the cuts of lines.
+// The material crack k grows through: the body it was drawn in (its shape and cut-outs, without
+// the cuts of lines), less the parts beyond its reach (input/crack_reach.hpp). Their lines are
+// then edges of its reach, as an interface between its body and another is: a segment that
+// would cross one ends on it, and a tie ends there (solver/crack_junction.hpp).
 Region crack_body(const Case& c, std::size_t k);
 
 // A frame around the body, the line and p with room to spare (more than a tie's lead).

@@ -24,11 +24,12 @@
 //    sort's).
 // A tip whose segment would leave the body ends on its edge: no tie is left there, the cut is
 // through, and the pieces separate. A tip that comes within a cell of the edge cuts through to
-// its nearest point the same way (the ligament left is below what the grid resolves). A tip
-// whose next segment comes within a cell of another line (drawn in its body, or between its
-// body and another), or whose tie comes to touch one, stops the run with a SimulationError
-// naming both and the place and time (a junction the split-body fields cannot follow:
-// solver/crack_junction.hpp). One grid,
+// its nearest point the same way (the ligament left is below what the grid resolves). The body
+// here is the crack's reach (solver/crack_cut.hpp crack_body): a line drawn in the body on its
+// edge, as an interface between the body and another, is an edge the crack ends on. A tip whose
+// next segment comes within a cell of another line drawn in its body, or of a tie, or whose tie
+// comes to touch one, stops the run with a SimulationError naming both and the place and time (a
+// junction the split-body fields cannot follow: solver/crack_junction.hpp). One grid,
 // or nested levels with one step for all (the crack read and grown on the level that holds it,
 // the others following its cut; input/ refuses the rest); one process or several: every rank
 // runs this alike on the whole interface state, each tip's read summed over the ranks, and the

@@ -2,11 +2,13 @@
 #include "solver/crack_junction.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 
 #include <fmt/format.h>
 
 #include "core/errors.hpp"
+#include "input/crack_reach.hpp"
 #include "solver/crack_cut.hpp"
 #include "solver/rank_exchange.hpp"
 
@@ -29,8 +31,9 @@ std::vector<OtherLine> other_lines(const Case& c, const RunState& s, const std::
           if (b == slot) name = fmt::format("a branch of interface '{}'", c.interface_names[j]);
     }
     const bool in_body = drawn_in_crack_body(c, k, spec);
-    lines.push_back({spec.geometry(), name, false, in_body, slot});
-    for (const Polyline& t : spec.tie_geometries()) lines.push_back({t, name, true, in_body, slot});
+    const bool edge = in_body && on_edge_of_reach(c, k, spec);
+    lines.push_back({spec.geometry(), name, false, in_body, edge, slot});
+    for (const Polyline& t : spec.tie_geometries()) lines.push_back({t, name, true, in_body, edge, slot});
   }
   return lines;
 }
@@ -92,27 +95,39 @@ void stop_at_tie_junction(const Case& c, std::size_t k, double time, const std::
 std::vector<OtherLine> junction_lines(const std::vector<OtherLine>& others) {
   std::vector<OtherLine> out;
   for (const OtherLine& o : others)
-    if (o.in_body || o.tie) out.push_back(o);
+    if ((o.in_body && !o.edge) || o.tie) out.push_back(o);
   return out;
 }
 
 namespace {
 
-// The field of the crack's particle (fields a or b) nearest to (x, y) in the reference
-// configuration, within `within` (m); -1: none. Distributed: the nearest over every rank.
-int nearest_field(const State& L, int a, int b, double x, double y, double within) {
+// The field of the crack's particle (fields a or b) nearest to each point in the reference
+// configuration, within `within` (m); -1: none. Distributed: the nearest over every rank (two
+// collective maxima for all the points; ties in distance go to the lower field).
+std::vector<int> nearest_fields(const State& L, int a, int b, const std::vector<Point>& at, double within) {
   const Particles& P = L.particles;
-  double best = within;
-  int field = -1;
+  const std::size_t n = at.size();
+  std::vector<double> best(n, within);
+  std::vector<int> field(n, -1);
   for (std::size_t q = 0; q < P.size(); ++q) {
     if (P.field[q] != a && P.field[q] != b) continue;
-    const double d = std::hypot(P.x0[q] - x, P.y0[q] - y);
-    if (d < best || (d == best && field >= 0 && P.field[q] < field)) best = d, field = P.field[q];
+    for (std::size_t i = 0; i < n; ++i) {
+      const double d = std::hypot(P.x0[q] - at[i].x, P.y0[q] - at[i].y);
+      if (d < best[i] || (d == best[i] && field[i] >= 0 && P.field[q] < field[i])) best[i] = d, field[i] = P.field[q];
+    }
   }
-  const double nearest = min_over_ranks(L, field >= 0 ? best : INFINITY);
-  const double mine = field >= 0 && best == nearest ? double(field) : INFINITY;
-  const double f = min_over_ranks(L, mine);
-  return std::isfinite(f) ? int(f) : -1;
+  std::vector<double> v(n);  // -distance: the largest over the ranks is the nearest
+  for (std::size_t i = 0; i < n; ++i) v[i] = field[i] >= 0 ? -best[i] : -INFINITY;
+  max_over_ranks(L, v.data(), n);
+  for (std::size_t i = 0; i < n; ++i) v[i] = field[i] >= 0 && -best[i] == v[i] ? -double(field[i]) : -INFINITY;
+  max_over_ranks(L, v.data(), n);
+  std::vector<int> out(n);
+  for (std::size_t i = 0; i < n; ++i) out[i] = std::isfinite(v[i]) ? int(-v[i]) : -1;
+  return out;
+}
+
+int nearest_field(const State& L, int a, int b, double x, double y, double within) {
+  return nearest_fields(L, a, b, {Point{x, y}}, within)[0];
 }
 
 }  // namespace
@@ -137,7 +152,7 @@ void follow_edge_junctions(const Case& c, RunState& s, std::size_t k, const std:
   }
   bool changed = false;
   for (const OtherLine& o : others) {
-    if (o.in_body || o.tie) continue;
+    if ((o.in_body && !o.edge) || o.tie) continue;
     CohesiveInterface& B = L.interfaces[o.slot];
     const Polyline line = B.spec.geometry();
     std::vector<double> meet;
@@ -172,6 +187,33 @@ void follow_edge_junctions(const Case& c, RunState& s, std::size_t k, const std:
         point_at(line, m, mx, my);
         if (project(t, mx, my).distance <= h) fail("it meets a tied stretch of that interface");
       }
+    // Its tie joins the face's whole field to the other face's: the crack's material beside it
+    // must still be that field (a tie's field pair is one per interface). Where the crack's cut
+    // runs on along the line into its tie, the piece it cuts off takes the crack's other field
+    // there: not represented. Looked at a cell from each end of each tied stretch and at its
+    // middle, half a cell off on the crack's side.
+    if (!ties.empty()) {
+      const int tied = side > 0 ? B.spec.upper_field : B.spec.lower_field;
+      std::vector<Point> beside;
+      for (const Polyline& t : ties) {
+        const double lt = t.length();
+        for (const double along : {std::min(h, 0.5 * lt), 0.5 * lt, std::max(lt - h, 0.5 * lt)}) {
+          double x, y;
+          point_at(t, along, x, y);
+          const LineProjection pr = project(line, x, y);
+          beside.push_back({x + side * 0.5 * h * pr.nx, y + side * 0.5 * h * pr.ny});
+        }
+      }
+      const std::vector<int> f = nearest_fields(L, fa, fb, beside, 0.75 * h);
+      for (std::size_t i = 0; i < f.size(); ++i)
+        if (f[i] >= 0 && f[i] != tied) {
+          fail(fmt::format("the crack's cut runs on along that line into a tied stretch of it, so the material "
+                           "beside that tie near ({:.6g}, {:.6g}) m is on the crack's other field, and the tie "
+                           "would join another pair of fields than the line's others (one pair per line is "
+                           "modelled)",
+                           beside[i].x, beside[i].y));
+        }
+    }
     std::sort(meet.begin(), meet.end());
     std::vector<double> cuts{0.0};
     for (const double m : meet)

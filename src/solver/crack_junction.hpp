@@ -4,15 +4,16 @@
 // body's edge), and every other interface keeps one field on each of its faces. So
 //  - a tip that comes within a cell of another line drawn in its body, or of that line's tie,
 //    would cut off pieces that need fields of their own;
-//  - a tip that comes within a cell of an interface between its body and another, or a tie that
-//    comes to touch another interface (a T-junction: the edge the body shares with another
-//    body), would put that interface's face on two fields.
+//  - a tip that comes within a cell of an interface between its body and another, or of a line
+//    in its body on the edge of its reach (input/crack_reach.hpp: the part beyond no growing
+//    line changes), or a tie that comes to touch one (a T-junction on the edge of the material
+//    the crack grows through), would put that line's face on two fields.
 // The first is not modelled: growth (solver/crack_growth.hpp) asks here before each segment is
 // laid (stop_at_segment_junction) and after (stop_at_tie_junction), and the run stops with a
 // SimulationError naming both lines, the place and the time, and keeps what it wrote, rather
-// than grow through material its fields do not hold. The second is: the interface's face
-// changes field where the crack's tie or end meets it (follow_edge_junctions), and a crack that
-// reaches it ends there. Units: m, s.
+// than grow through material its fields do not hold. The second is: the line's face changes
+// field where the crack's tie or end meets it (follow_edge_junctions), and a crack that reaches
+// it ends there, unless the line's tie would then join another pair of fields. Units: m, s.
 #pragma once
 #include <cstddef>
 #include <string>
@@ -34,6 +35,10 @@ struct OtherLine {
   std::string name;  // "interface 'NAME'" or "a branch of interface 'NAME'"
   bool tie = false;
   bool in_body = false;
+  // Drawn in the body, between the crack's reach and a part beyond it (solver/crack_cut.hpp
+  // crack_body): one face wholly on the crack's fields, the other on a part no growing line
+  // changes. An edge of the reach, followed as an interface between two bodies is.
+  bool edge = false;
   std::size_t slot = 0;  // the interface on the level
 };
 
@@ -54,20 +59,23 @@ void stop_at_tie_junction(const Case& c, std::size_t k, double time, const std::
                           const std::vector<Polyline>& ties, double h);
 
 // The lines stop_at_segment_junction and stop_at_tie_junction are asked about: those drawn in
-// the crack's body and every tie. An interface between the crack's body and another is the
-// body's edge: growth ends a segment on it (the pieces separate there, held only by that
-// interface's law), and follow_edge_junctions gives its face the crack's two fields.
+// the crack's body and every tie. An interface between the crack's body and another, or a line
+// drawn in the body at the edge of the crack's reach (OtherLine::edge), is the edge: growth ends
+// a segment on it (the pieces separate there, held only by that interface's law), and
+// follow_edge_junctions gives its face the crack's two fields.
 std::vector<OtherLine> junction_lines(const std::vector<OtherLine>& others);
 
 // Where crack k (its lines `own`: its ends, its ties' vertices) comes within a cell of an
-// interface between its body and another (a T-junction on the body's edge: a tie that meets it,
-// or runs along it with no particle between, or the crack that ends on it), that interface's
-// face on the crack's body changes field there (InterfaceSpec::upper_faces / lower_faces, and
-// the node faces made from them): each stretch between those points on the field of the
-// crack's particles beside its middle (half a cell off the line). Where none comes near, a face
-// it changed before is set again the same way. Throws SimulationError where that cannot be
-// represented: a crack that has branched, a meeting within a cell of a tied stretch of that
-// interface (its tie keeps one field pair), or a face on neither of the crack's fields.
+// interface between its body and another, or of a line in its body on the edge of its reach
+// (a T-junction on the edge: a tie that meets it, or runs along it with no particle between, or
+// the crack that ends on it), that line's face on the crack's side changes field there
+// (InterfaceSpec::upper_faces / lower_faces, and the node faces made from them): each stretch
+// between those points on the field of the crack's particles beside its middle (half a cell off
+// the line). Where none comes near, a face it changed before is set again the same way. Throws
+// SimulationError where that cannot be represented: a crack that has branched, a meeting within
+// a cell of a tied stretch of that line, the crack's particles beside a tied stretch on the
+// other field than the tie's (its tie keeps one field pair), or a face on neither of the crack's
+// fields.
 // Distributed: every rank calls it (the particles' fields are read over all ranks). Called after
 // every segment laid, and after a restore (the particles then hold the fields the meetings left).
 void follow_edge_junctions(const Case& c, RunState& s, std::size_t k, const std::vector<std::size_t>& own,
