@@ -476,79 +476,65 @@ TEST(CrackGrowth, a_crack_turned_onto_a_line_on_the_edge_of_its_reach_splits_its
   check_turns_onto_the_bond(true);
 }
 
-// The same crack turned 60 degrees towards a bond that is tied (bonded_points) from its left end
-// to x = 3 mm: it meets the bond at 7.3 mm, far from the tie, and the face follows; with the tie
-// on to 7 mm, the meeting is within a cell of the tie (which keeps one pair of fields), and growth
-// stops with a diagnosis.
-TEST(CrackGrowth, a_crack_meeting_a_tied_stretch_of_an_interface_stops) {
-  for (const double to_x : {0.003, 0.007}) {
-    const Case c = parse_case(bonded_bodies_with_a_crack(
-        fmt::format("bonded_points = [[0.0, 0.006], [{}, 0.006]]", to_x)));
-    RunState s = make_run_state(c);
-    State& L = s.levels[0];
-    const std::size_t slot = s.interface_slots[1];
-    const std::vector<OtherLine> all = other_lines(c, s, {}, 1, {slot});
-    const double a = 60.0 * std::numbers::pi / 180.0;
-    std::string error;
-    bool through = false;
-    for (int n = 0; n < 30 && !through && error.empty(); ++n) {
-      const TipFrame f = precrack_tips(L.interfaces[slot].spec, 1e-6 * kH).at(0).frame;
-      Point to{f.x + 0.5 * kH * std::cos(a), f.y + 0.5 * kH * std::sin(a)};
-      if (to.y > 0.006) to = {f.x + (0.006 - f.y) / std::tan(a), 0.006};
-      through = add_crack_segment(c, 1, L, slot, precrack_tips(L.interfaces[slot].spec, 1e-6 * kH).at(0), to.x, to.y, true);
-      try {
-        follow_edge_junctions(c, s, 1, {slot}, all, 0.0, kH);
-      } catch (const SimulationError& e) {
-        error = e.what();
-      }
-    }
-    const CohesiveInterface& bond = L.interfaces[s.interface_slots[0]];
-    if (to_x == 0.003) {
-      EXPECT_EQ(error, "");
-      EXPECT_TRUE(through);
-      ASSERT_EQ(bond.spec.lower_faces.size(), 2u);
-      EXPECT_NEAR(bond.spec.lower_faces[1].from, 0.0073094, 1e-6);
-      EXPECT_EQ(bond.spec.lower_field, c.bodies[0].field) << "the tie keeps its fields";
-    } else {
-      EXPECT_NE(error.find("tied stretch of that interface"), std::string::npos) << error;
-      EXPECT_NE(error.find("interface 'cut'"), std::string::npos) << error;
-    }
-  }
-}
-
-// Where the crack's cut runs on along the line it meets into a tied stretch of that line, the
-// piece it cuts off (right of the meeting, below the bond) takes the crack's other field beside
-// the tie, which joins one pair of fields per line: growth stops with a diagnosis. Turned 60
-// degrees the crack meets the bond at x = 7.3 mm, and its cut runs on to the right edge: a tie
-// right of the meeting stops it (between two bodies: bonded_points from 12 mm; in one plate: the
-// bond drawn from the left edge to 12 mm, tied on to the right edge), one left of it does not
-// (drawn from the right edge to 3 mm, tied on to the left edge).
-TEST(CrackGrowth, a_cut_running_into_a_tie_of_the_line_it_meets_stops) {
+// The same crack turned 60 degrees towards a line with a tied stretch. It meets the line at
+// x = 7.31 mm and its cut runs on along the line to the right edge, so the piece it cuts off
+// (right of the meeting, below the line) takes the crack's field below it. A tied stretch left of
+// the meeting (bonded_points to 3 mm; in one plate, the line drawn from the right edge to 3 mm,
+// tied on to the left edge) keeps the line's pair of fields; to 7 mm, the crack's last segment
+// would come within a cell of that intact stretch, and growth stops (a tip that reaches a tie is
+// no junction: the material there is whole). One right of it (bonded_points from 12 mm; in one plate, the line drawn from
+// the left edge to 12 mm, tied on to the right edge) gets its own pair, the line's other face and
+// the crack's field below (State::bonded: an entry of its own, after the interfaces), on the
+// nodes of that stretch; the line's own entry keeps the rest.
+TEST(CrackGrowth, a_tied_stretch_the_cut_runs_along_joins_the_piece_beside_it) {
   struct Variant {
     std::string text;
-    bool stops;
+    bool own_pair, stops;
   } const variants[] = {
-      {bonded_bodies_with_a_crack("bonded_points = [[0.012, 0.006], [0.02, 0.006]]"), true},
-      {bonded_bodies_with_a_crack("", true, "[[0.0, 0.006], [0.012, 0.006]]"), true},
-      {bonded_bodies_with_a_crack("", true, "[[0.02, 0.006], [0.003, 0.006]]"), false},
+      {bonded_bodies_with_a_crack("bonded_points = [[0.0, 0.006], [0.003, 0.006]]"), false, false},
+      {bonded_bodies_with_a_crack("bonded_points = [[0.0, 0.006], [0.007, 0.006]]"), false, true},
+      {bonded_bodies_with_a_crack("", true, "[[0.02, 0.006], [0.003, 0.006]]"), false, false},
+      {bonded_bodies_with_a_crack("bonded_points = [[0.012, 0.006], [0.02, 0.006]]"), true, false},
+      {bonded_bodies_with_a_crack("", true, "[[0.0, 0.006], [0.012, 0.006]]"), true, false},
   };
-  for (const Variant& v : variants) {
-    const Case c = parse_case(v.text);
+  for (std::size_t v = 0; v < std::size(variants); ++v) {
+    const Case c = parse_case(variants[v].text);
     RunState s = make_run_state(c);
     bool through = false;
     const std::string error = turn_towards_the_bond(c, s, 60.0, through);
-    if (v.stops) {
-      EXPECT_NE(error.find("tied stretch"), std::string::npos) << error;
-      std::printf("stops: %s\n", error.c_str());
-      EXPECT_NE(error.find("interface 'bond'"), std::string::npos) << error;
-    } else {
-      EXPECT_EQ(error, "");
-      EXPECT_TRUE(through);
-      const CohesiveInterface& bond = s.levels[0].interfaces[s.interface_slots[0]];
-      // Drawn right to left, the bond's face below is its upper one; it changes at the meeting,
-      // 12.69 mm along it (x = 7.31 mm).
-      ASSERT_EQ(bond.spec.upper_faces.size(), 2u);
-      EXPECT_NEAR(bond.spec.upper_faces[1].from, 0.02 - 0.0073094, 1e-6);
+    if (variants[v].stops) {
+      EXPECT_NE(error.find("interface 'bond''s tied extension"), std::string::npos) << error;
+      continue;
     }
+    EXPECT_EQ(error, "") << "variant " << v;
+    EXPECT_TRUE(through) << "variant " << v;
+    const State& L = s.levels[0];
+    const std::size_t slot = s.interface_slots[0];
+    const CohesiveInterface& bond = L.interfaces[slot];
+    // The face below the line changes at the meeting (drawn right to left, that face is its
+    // upper one, and the meeting is 20 - 7.31 mm along it).
+    const bool reversed = bond.spec.geometry().x[0] > 0.01;
+    const std::vector<FaceField>& below = reversed ? bond.spec.upper_faces : bond.spec.lower_faces;
+    ASSERT_EQ(below.size(), 2u) << "variant " << v;
+    EXPECT_NEAR(below[1].from, reversed ? 0.02 - 0.0073094 : 0.0073094, 1e-6) << "variant " << v;
+    const int cut_below = below[reversed ? 0 : 1].field;  // the crack's field below, right of the meeting
+    std::vector<BondedTie> own;
+    for (const BondedTie& b : L.bonded)
+      if (b.of == slot) own.push_back(b);
+    ASSERT_EQ(L.bonded.size(), L.interfaces.size() + own.size()) << "the line's stretches after the interfaces";
+    if (!variants[v].own_pair) {
+      EXPECT_TRUE(own.empty()) << "variant " << v;
+      EXPECT_EQ(L.bonded[slot].nodes, bonded_nodes(L.grid, bond.spec)) << "variant " << v;
+      continue;
+    }
+    ASSERT_EQ(own.size(), 1u) << "variant " << v;
+    const int above = reversed ? bond.spec.lower_field : bond.spec.upper_field;
+    EXPECT_EQ(reversed ? own[0].lower_field : own[0].upper_field, above) << "variant " << v;
+    EXPECT_EQ(reversed ? own[0].upper_field : own[0].lower_field, cut_below) << "variant " << v;
+    EXPECT_EQ(own[0].nodes, bonded_nodes(L.grid, bond.spec)) << "its one tied stretch, all its nodes";
+    EXPECT_TRUE(L.bonded[slot].nodes.empty()) << "variant " << v;
+    std::printf("variant %zu: the tied stretch joins fields %d and %d (the line's pair: %d and %d), %zu nodes\n", v,
+                own[0].upper_field, own[0].lower_field, bond.spec.upper_field, bond.spec.lower_field,
+                own[0].nodes.size());
   }
 }

@@ -21,6 +21,7 @@
 //     count it on the lowest rank that gave it mass in the step's scatter (counts_node).
 // Units: m for lengths, the nodal arrays' own units.
 #pragma once
+#include <array>
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
@@ -274,6 +275,7 @@ struct InterfaceShapes {
   std::vector<std::size_t> nodes;                  // per interface slot
   std::vector<std::vector<Polyline>> tie_lines;    // per interface slot
   std::vector<std::vector<std::size_t>> tie_nodes;  // per tie (State::bonded)
+  std::vector<std::array<int, 2>> tie_fields;       // per tie: its two fields
 };
 InterfaceShapes interface_shapes(const State& s);
 void follow_grown_interfaces(State& s, const InterfaceShapes& before);

@@ -254,7 +254,8 @@ InterfaceShapes interface_shapes(const State& s) {
     shapes.nodes.push_back(c.num_nodes());
     shapes.tie_lines.push_back(c.spec.bonded_lines);
   }
-  for (const BondedTie& b : s.bonded) shapes.tie_nodes.push_back(b.nodes);
+  for (const BondedTie& b : s.bonded)
+    shapes.tie_nodes.push_back(b.nodes), shapes.tie_fields.push_back({b.upper_field, b.lower_field});
   return shapes;
 }
 
@@ -270,7 +271,8 @@ void follow_grown_interfaces(State& s, const InterfaceShapes& before) {
   bool changed = s.interfaces.size() != before.nodes.size();
   h.all_bonded.resize(s.bonded.size());
   for (std::size_t i = 0; i < s.bonded.size(); ++i) {
-    bool relaid = i >= before.tie_nodes.size() || s.bonded[i].nodes != before.tie_nodes[i];
+    bool relaid = i >= before.tie_nodes.size() || s.bonded[i].nodes != before.tie_nodes[i] ||
+                  before.tie_fields[i] != std::array<int, 2>{s.bonded[i].upper_field, s.bonded[i].lower_field};
     if (i < s.interfaces.size() && i < before.nodes.size())
       relaid = relaid || s.interfaces[i].num_nodes() != before.nodes[i] ||
                !same_lines(s.interfaces[i].spec.bonded_lines, before.tie_lines[i]);

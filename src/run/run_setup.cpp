@@ -151,7 +151,15 @@ void resume_from_checkpoint(RunContext& ctx, const RunOptions& options) {
     split_over_ranks(ctx.s, comm, {false, nullptr});  // one process's checkpoint: its particles split
   }
   ++ctx.segments;
-  if (ctx.rejoin) agree_on_failure(comm, [&] { ctx.rejoin(ctx.s, ctx.growth); });
+  if (ctx.rejoin) {
+    // The faces and ties the grown cracks' junctions move (derived from the particles): a tie
+    // laid again is laid over the whole grid, and each rank keeps its part of it.
+    std::vector<InterfaceShapes> before;
+    if (comm.distributed())
+      for (const State& level : ctx.s.levels) before.push_back(interface_shapes(level));
+    agree_on_failure(comm, [&] { ctx.rejoin(ctx.s, ctx.growth); });
+    for (std::size_t l = 0; l < before.size(); ++l) follow_grown_interfaces(ctx.s.levels[l], before[l]);
+  }
   // The trackers place arc lengths on the grown lines (regrown by the restore), their samples
   // as the checkpoint holds them.
   for (std::size_t k = 0; k < ctx.cracks.size() && k < ctx.growth.size(); ++k)

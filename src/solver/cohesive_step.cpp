@@ -334,8 +334,12 @@ void nodes_near_tie(const Grid& g, const Polyline& tie, std::vector<std::size_t>
 }  // namespace
 
 std::vector<std::size_t> bonded_nodes(const Grid& g, const InterfaceSpec& spec) {
+  return bonded_nodes(g, spec.tie_geometries());
+}
+
+std::vector<std::size_t> bonded_nodes(const Grid& g, const std::vector<Polyline>& ties) {
   std::vector<std::size_t> out;
-  for (const Polyline& tie : spec.tie_geometries()) nodes_near_tie(g, tie, out);
+  for (const Polyline& tie : ties) nodes_near_tie(g, tie, out);
   // Several tied stretches (a crack inside a body with both ends inside it) may share a node;
   // it is tied once (a tie sums both fields: twice would double it).
   std::sort(out.begin(), out.end());

@@ -29,5 +29,7 @@ void evaluate_interface(CohesiveInterface& c, double t, double t_before);
 // to one of them than the reach of a node's GIMP support along its normal, not beyond its ends;
 // each node once, in increasing order.
 std::vector<std::size_t> bonded_nodes(const Grid& g, const InterfaceSpec& spec);
+// The same for some of its tied lines (InterfaceSpec::tie_geometries).
+std::vector<std::size_t> bonded_nodes(const Grid& g, const std::vector<Polyline>& ties);
 
 }  // namespace rupture

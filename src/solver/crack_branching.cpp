@@ -97,7 +97,9 @@ std::array<std::size_t, 2> split_crack_tip(const Case& c, std::size_t k, State& 
     ci.light_face_mass = light;
     ci.time = time;
     evaluate_interface(ci, time, time);
-    L.bonded.push_back({sp.upper_field, sp.lower_field, bonded_nodes(L.grid, sp)});
+    // At the new interface's index: stretches with ties of their own come after the interfaces.
+    L.bonded.insert(L.bonded.begin() + long(L.interfaces.size()),
+                    BondedTie{sp.upper_field, sp.lower_field, bonded_nodes(L.grid, sp)});
     L.interfaces.push_back(std::move(ci));
     slots[std::size_t(b)] = L.interfaces.size() - 1;
   }

@@ -9,6 +9,7 @@
 
 #include "core/errors.hpp"
 #include "input/crack_reach.hpp"
+#include "solver/cohesive_step.hpp"
 #include "solver/crack_cut.hpp"
 #include "solver/rank_exchange.hpp"
 
@@ -178,22 +179,18 @@ void follow_edge_junctions(const Case& c, RunState& s, std::size_t k, const std:
     };
     if (own.size() > 1) fail("the crack has branched");
     if (side == 0) fail("that interface's faces lie on neither of the crack's two fields");
-    // A tied stretch keeps the face's whole field (its tie joins that one): a meeting near it,
-    // or a face that would change field wholly, is not represented.
+    // Its tied stretches: each joins the crack's material beside it to the other face's. Where
+    // the crack's cut runs on along the line into a stretch, the piece it cuts off is on the
+    // crack's other field there, and that stretch takes its own pair of fields (BondedTie::of).
+    // The field beside each stretch: the crack's particles half a cell off it, a cell from each
+    // end and at its middle. Where they differ, the crack's own tie runs along the stretch with
+    // less than a cell between them (the cut cannot divide it: a tie that touches another line's
+    // tie stops the run, stop_at_tie_junction); the nodes both ties reach then join all three
+    // fields (TieJunctions), and the stretch keeps its pair.
     const std::vector<Polyline> ties = B.spec.tie_geometries();
-    for (const Polyline& t : ties)
-      for (const double m : meet) {
-        double mx, my;
-        point_at(line, m, mx, my);
-        if (project(t, mx, my).distance <= h) fail("it meets a tied stretch of that interface");
-      }
-    // Its tie joins the face's whole field to the other face's: the crack's material beside it
-    // must still be that field (a tie's field pair is one per interface). Where the crack's cut
-    // runs on along the line into its tie, the piece it cuts off takes the crack's other field
-    // there: not represented. Looked at a cell from each end of each tied stretch and at its
-    // middle, half a cell off on the crack's side.
     if (!ties.empty()) {
       const int tied = side > 0 ? B.spec.upper_field : B.spec.lower_field;
+      const int across = side > 0 ? B.spec.lower_field : B.spec.upper_field;
       std::vector<Point> beside;
       for (const Polyline& t : ties) {
         const double lt = t.length();
@@ -205,14 +202,47 @@ void follow_edge_junctions(const Case& c, RunState& s, std::size_t k, const std:
         }
       }
       const std::vector<int> f = nearest_fields(L, fa, fb, beside, 0.75 * h);
-      for (std::size_t i = 0; i < f.size(); ++i)
-        if (f[i] >= 0 && f[i] != tied) {
-          fail(fmt::format("the crack's cut runs on along that line into a tied stretch of it, so the material "
-                           "beside that tie near ({:.6g}, {:.6g}) m is on the crack's other field, and the tie "
-                           "would join another pair of fields than the line's others (one pair per line is "
-                           "modelled)",
-                           beside[i].x, beside[i].y));
+      std::vector<BondedTie> own_pairs;  // the stretches on the crack's other field
+      for (std::size_t i = 0; i < ties.size(); ++i) {
+        int field = -1;
+        bool mixed = false;
+        for (std::size_t j = 3 * i; j < 3 * i + 3; ++j) {
+          if (f[j] < 0) continue;
+          mixed = mixed || (field >= 0 && f[j] != field);
+          field = f[j];
         }
+        if (field < 0 || field == tied || mixed) continue;
+        BondedTie b;
+        b.upper_field = side > 0 ? field : across;
+        b.lower_field = side > 0 ? across : field;
+        b.of = o.slot, b.line = int(i);
+        own_pairs.push_back(b);
+      }
+      // Set where they changed (each rank alike: the fields are read over all ranks); the
+      // line's own entry keeps the others. Laid over the whole grid: the driver distributes the
+      // ties again (parallel/halo.hpp, follow_grown_interfaces).
+      std::vector<BondedTie> had;
+      for (const BondedTie& b : L.bonded)
+        if (b.of == o.slot) had.push_back(b);
+      const auto same = [](const BondedTie& p, const BondedTie& q) {
+        return p.line == q.line && p.upper_field == q.upper_field && p.lower_field == q.lower_field;
+      };
+      if (had.size() != own_pairs.size() || !std::equal(had.begin(), had.end(), own_pairs.begin(), same)) {
+        if (s.levels.size() > 1)
+          fail("a tied stretch of that line would join another pair of fields than the rest of it, which "
+               "is not supported on nested levels");
+        std::erase_if(L.bonded, [&](const BondedTie& b) { return b.of == o.slot; });
+        std::vector<Polyline> rest;
+        for (std::size_t i = 0; i < ties.size(); ++i)
+          if (std::none_of(own_pairs.begin(), own_pairs.end(), [&](const BondedTie& b) { return b.line == int(i); }))
+            rest.push_back(ties[i]);
+        L.bonded[o.slot].nodes = bonded_nodes(L.grid, rest);
+        for (BondedTie& b : own_pairs) {
+          b.nodes = bonded_nodes(L.grid, std::vector<Polyline>{ties[std::size_t(b.line)]});
+          L.bonded.push_back(b);
+        }
+        changed = true;
+      }
     }
     std::sort(meet.begin(), meet.end());
     std::vector<double> cuts{0.0};

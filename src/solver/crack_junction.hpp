@@ -12,8 +12,8 @@
 // laid (stop_at_segment_junction) and after (stop_at_tie_junction), and the run stops with a
 // SimulationError naming both lines, the place and the time, and keeps what it wrote, rather
 // than grow through material its fields do not hold. The second is: the line's face changes
-// field where the crack's tie or end meets it (follow_edge_junctions), and a crack that reaches
-// it ends there, unless the line's tie would then join another pair of fields. Units: m, s.
+// field where the crack's tie or end meets it, and its tied stretches join the fields beside
+// them (follow_edge_junctions); a crack that reaches it ends there. Units: m, s.
 #pragma once
 #include <cstddef>
 #include <string>
@@ -71,11 +71,12 @@ std::vector<OtherLine> junction_lines(const std::vector<OtherLine>& others);
 // the crack that ends on it), that line's face on the crack's side changes field there
 // (InterfaceSpec::upper_faces / lower_faces, and the node faces made from them): each stretch
 // between those points on the field of the crack's particles beside its middle (half a cell off
-// the line). Where none comes near, a face it changed before is set again the same way. Throws
-// SimulationError where that cannot be represented: a crack that has branched, a meeting within
-// a cell of a tied stretch of that line, the crack's particles beside a tied stretch on the
-// other field than the tie's (its tie keeps one field pair), or a face on neither of the crack's
-// fields.
+// the line). A tied stretch of that line with the crack's other field beside it (the crack's cut
+// runs on along the line into it) gets a pair of fields of its own (BondedTie::of, after the
+// interfaces' entries in State::bonded, laid over the whole grid). Where none comes near, a face
+// it changed before is set again the same way. Throws SimulationError where that cannot be
+// represented: a crack that has branched, a face on neither of the crack's fields, or a stretch
+// that needs its own pair on nested levels.
 // Distributed: every rank calls it (the particles' fields are read over all ranks). Called after
 // every segment laid, and after a restore (the particles then hold the fields the meetings left).
 void follow_edge_junctions(const Case& c, RunState& s, std::size_t k, const std::vector<std::size_t>& own,

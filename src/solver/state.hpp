@@ -111,9 +111,16 @@ struct LoadState {
 };
 
 // The grid nodes where an interface's two fields are tied into one body (its bonded stretches).
+// State::bonded holds one per interface, in the interfaces' order; after them, a tied stretch
+// whose fields differ from the rest of its line's (a line on the edge of a growing crack's
+// reach, whose tie the crack's junction moves to another field: solver/crack_junction.hpp) has
+// an entry of its own, naming its interface (`of`) and its line (`line`, in
+// InterfaceSpec::bonded_lines).
 struct BondedTie {
   int upper_field = 0, lower_field = 0;
   std::vector<std::size_t> nodes;  // grid nodes, increasing
+  std::size_t of = std::size_t(-1);  // a stretch's own entry: its interface's slot
+  int line = -1;                     // and its tied line
   bool operator==(const BondedTie&) const = default;
 };
 
@@ -144,7 +151,7 @@ struct State {
   std::vector<AbsorbingNode> absorbing;  // dashpots of the absorbing edges (bc/absorbing.hpp)
   ScatterPlan plan;
   std::vector<CohesiveInterface> interfaces;
-  std::vector<BondedTie> bonded;  // per interface: its tied grid nodes (solver/cohesive_step.hpp)
+  std::vector<BondedTie> bonded;  // per interface: its tied grid nodes (solver/cohesive_step.hpp); then stretches of their own
   TieJunctions junctions;         // derived from bonded (not stored)
   LoadState loads;  // [loads] (bc/loads.hpp): tractions, body forces, velocity regions
 

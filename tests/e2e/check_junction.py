@@ -6,12 +6,11 @@ Usage: check_junction.py RUPTURE INPUT OUT   (LAUNCH="mpiexec -n 2": run it unde
 every rank takes the same decision and stops alike)
 tests/inputs/crack_junction.toml: the inclined centre crack's right tip kinks towards a second
 crack ("wall") drawn in the same plate, tied on at both ends. The wall is on the edge of the
-crack's reach (the part below it is one no growing line changes), so the crack's tie ends on it
-and its face follows; but the crack comes within a cell of the wall's tie, whose fields would then
-change along it (one field pair per line is modelled: docs/fracture.md "Junctions"), so the run
-must
-  - exit with the unstable run's code (2), naming both interfaces, the tied stretch, the place and
-    the time;
+crack's reach (the part below it is one no growing line changes), but the tip runs along it and
+past its end, for its tied extension: intact material the crack would have to run on through,
+into the part beyond its reach (docs/fracture.md "Junctions"), so the run must
+  - exit with the unstable run's code (2), naming both interfaces, the tied extension, the place
+    and the time;
   - keep what it wrote: run.json with status "failed", the history, the crack's path;
   - have grown the crack first (the kink is the criterion's, about -41 degrees), every laid
     segment at least one cell from the wall's line and its tied extensions, and stopped before
@@ -38,7 +37,7 @@ def check(cond, what):
 
 err = p.stderr
 check(p.returncode == 2, f"exit code {p.returncode} (2: the run went unstable / stopped with a diagnosis)")
-for s in ["interface 'crack' meets interface 'wall' at", "tied stretch", "Junctions", "at t = "]:
+for s in ["interface 'crack' has its tip at", "interface 'wall''s tied extension", "Junctions", "at t = "]:
     check(s in err, f"the message names {s!r}")
 r = json.load(open(f"{out}/run.json"))
 check(r["status"] == "failed", f"run.json status {r['status']}")
