@@ -123,6 +123,39 @@ TEST(ParseCrackGrowth, GrowthNeedsAPreCrackInsideOneBodyWithItsParameters) {
   }
 }
 
+// nucleation = "strength" (solver/crack_nucleation.hpp): the strength defaults to the law's
+// sigma_max, is required where the law has none, and needs growth.
+TEST(ParseCrackGrowth, NucleationTakesTheLawsStrengthOrItsOwn) {
+  const std::string cohesive = replace(kBilinear, "drawn_open = true\n", "") + "growth = \"cohesive\"\n";
+  EXPECT_EQ(parse_grown(cohesive + "nucleation = \"strength\"").nucleation_strength, 24e6);
+  EXPECT_EQ(parse_grown(cohesive + "nucleation = \"strength\"\nnucleation_strength = 5e6").nucleation_strength, 5e6);
+  EXPECT_EQ(parse_grown(cohesive).nucleation_strength, 0.0);  // none by default
+  const std::string contact = kInside + "growth = \"max_hoop\"\ntoughness = 1e6\n";
+  EXPECT_EQ(parse_grown(contact + "nucleation = \"strength\"\nnucleation_strength = 3e6").nucleation_strength, 3e6);
+  struct Bad {
+    const char* name;
+    std::string lines;
+    std::vector<std::string> expect;
+  };
+  const std::vector<Bad> cases = {
+      {"contact without a strength", contact + "nucleation = \"strength\"",
+       {"'interface.w.nucleation_strength' = (missing)", "law = \"contact\""}},
+      {"a zero strength", cohesive + "nucleation = \"strength\"\nnucleation_strength = 0.0",
+       {"'interface.w.nucleation_strength' = 0", "must be > 0"}},
+      {"a strength without nucleation", cohesive + "nucleation_strength = 1e6",
+       {"'interface.w.nucleation_strength' = 1000000", "needs nucleation = \"strength\""}},
+      {"nucleation without growth", kBilinear + "nucleation = \"strength\"",
+       {"'interface.w.nucleation' = \"strength\"", "needs growth"}},
+      {"an unknown criterion", cohesive + "nucleation = \"stress\"", {"'interface.w.nucleation' = \"stress\"", "strength"}},
+  };
+  for (const Bad& b : cases) {
+    const std::string msg = growth_error(b.lines);
+    EXPECT_FALSE(msg.empty()) << b.name << ": no error raised";
+    for (const std::string& s : b.expect)
+      EXPECT_NE(msg.find(s), std::string::npos) << b.name << ": '" << s << "' not in: " << msg;
+  }
+}
+
 TEST(ParseCrackGrowth, BranchingKeepsAFieldPerSplitAndNeedsAKCriterion) {
   const Case c = parse_case(case_with(kInside + "growth = \"energy\"\nfracture_energy = 3.0\nbranching = \"yoffe\"\n"
                                                 "max_branches = 2" + kJoined));

@@ -67,6 +67,9 @@ void print_check(const std::string& path, const Case& c) {
     std::string ties;
     for (const Polyline& tie : is.tie_geometries())
       ties += fmt::format("; bonded along {:g} m from ({:g}, {:g}) m", tie.length(), tie.x[0], tie.y[0]);
+    if (is.nucleation_strength > 0.0)  // solver/crack_nucleation.hpp
+      ties += fmt::format("; intact (bonded over itself) until the normal stress across it reaches {:g} Pa",
+                          is.nucleation_strength);
     // Faces that change body along the line (a T-junction): each body from its arc length on.
     std::string faces;
     for (const auto& [side, list] : {std::pair{"upper", &is.upper_faces}, std::pair{"lower", &is.lower_faces}}) {

@@ -44,9 +44,13 @@ void print_readable_summary(const Case& c, const RunResult& r) {
     const WaveSpeeds w = wave_speeds(lower, c.plane);
     std::string line = fmt::format("# {} {}: ", q.fault ? "fault" : "crack", c.interface_names[i]);
     if (q.grows) {
-      if (q.grown_length == 0.0) fmt::print("{}did not grow\n", line);
+      if (q.nucleates && q.nucleation_time < 0.0) fmt::print("{}did not nucleate\n", line);
+      else if (q.nucleates && q.grown_length == 0.0)
+        fmt::print("{}nucleated at {:.4g} {} and did not grow\n", line, u.tf * q.nucleation_time, u.t);
+      else if (q.grown_length == 0.0) fmt::print("{}did not grow\n", line);
       else
-        fmt::print("{}grew from {:.4g} {} at {:.2f} degrees to its direction, by {:.4g} {} ({} branches)\n", line,
+        fmt::print("{}{}grew from {:.4g} {} at {:.2f} degrees to its direction, by {:.4g} {} ({} branches)\n", line,
+                   q.nucleates ? fmt::format("nucleated at {:.4g} {}, ", u.tf * q.nucleation_time, u.t) : "",
                    u.tf * q.initiation_time, u.t, q.initial_angle, u.lf * q.grown_length, u.l, q.branches);
       continue;
     }
@@ -154,6 +158,7 @@ void print_run_result(const Case& c, const RunResult& r, const std::string& out_
         fmt::print("crack.{}.initial_angle={:.2f}\n", n, q.initial_angle);
         fmt::print("crack.{}.branches={}\n", n, q.branches);
         fmt::print("crack.{}.length={:.6e}\n", n, q.grown_length);
+        if (q.nucleates) fmt::print("crack.{}.nucleation_time={:.6e}\n", n, q.nucleation_time);
       }
       if (q.fault) {  // the rupture front outside the nucleation patch (cohesive/rupture_front.hpp)
         const FrontSummary& f = q.front;

@@ -53,6 +53,10 @@ struct CrackSummary {
   double initial_angle = 0.0;  // degrees, counterclockwise from the crack's direction to its first segment
   int branches = 0;            // how many times a tip split
   double grown_length = 0.0;   // m, the length grown by the end
+  // A crack that nucleates at its drawn line (solver/crack_nucleation.hpp): it does, and when
+  // (s; -1: it stayed intact).
+  bool nucleates = false;
+  double nucleation_time = -1.0;
   double initiation_time = -1.0;     // s (first node to crack; -1 if none)
   // m/s: the least-squares slope of the tip positions over the steady running phase, the
   // latest stretch of at least kSteadyMin in which every E11 speed is positive and within

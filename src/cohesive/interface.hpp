@@ -95,6 +95,11 @@ struct InterfaceSpec {
   // tip's auxiliary fields, K of a running tip; the energy criterion's G with Freund's A_I, A_II);
   // off: every tip read with the stationary forms.
   bool running_tip = false;
+  // Nucleation at the drawn line (input key nucleation = "strength"; solver/crack_nucleation.hpp):
+  // > 0, the line is intact material (tied like its extension) until the mean normal stress
+  // across one of its segments, over the particles within a cell of it, reaches this (Pa); then
+  // it is the crack drawn (its law's segments, or a cut with drawn_open) and grows. 0: none.
+  double nucleation_strength = 0.0;
   // The velocity fields kept for the wedges of growth.max_branches branch events, in order
   // (input/: named NAME.branchK; no particles until a tip splits, solver/crack_branching.hpp).
   std::vector<int> branch_fields;

@@ -64,10 +64,12 @@ void fail_on_invalid(Section& f, const std::string& problem,
 void parse_interfaces(Section& top, Case& c, ParseContext& ctx);
 // The crack keys of an [interface] table (input/parse_crack_growth.cpp), in this order, after the
 // law and geometry: drawn_open; stress_intensity and j_domains; growth and its parameters,
-// branching; the fields the branches' wedges will take (NAME.branchK, appended to c's fields).
+// branching; nucleation; the fields the branches' wedges will take (NAME.branchK, appended to
+// c's fields).
 void parse_drawn_open(Section& f, InterfaceSpec& is);
 void parse_stress_intensity(Section& f, InterfaceSpec& is);
 void parse_growth(Section& f, InterfaceSpec& is, const Case& c);
+void parse_nucleation(Section& f, InterfaceSpec& is);
 void reserve_branch_fields(Section& f, InterfaceSpec& is, Case& c, const std::string& name);
 // The bodies the name `s.key(key)` stands for (ParseContext::body_parts); an unknown name is an
 // InputError listing the names allowed, with the nearest as a hint.

@@ -615,6 +615,15 @@ std::vector<KeyDoc> build_schema() {
       {"interface.*.max_branches", "integer", "", "1", "1 to 8; with branching",
        "how many times the crack's tips may split (each split keeps a velocity field, NAME.branchK, "
        "for the wedge between its two tips)", "1"},
+      {"interface.*.nucleation", "string", "", "\"none\"", "\"none\", \"strength\"; with growth",
+       "strength: the drawn line is intact material (tied, as its extension) until the mean normal "
+       "stress across one of its segments, over the particles within a cell of it, reaches "
+       "nucleation_strength; then it is the crack drawn, and grows (docs/fracture.md, \"Nucleation "
+       "at a drawn site\")",
+       "\"strength\""},
+      {"interface.*.nucleation_strength", "number", "Pa", "the law's sigma_max",
+       "> 0; with nucleation = \"strength\" (required with law = contact)",
+       "the normal stress across the drawn line at which it comes loose", "10.45e6"},
       {"interface.*.drawn_open", "boolean", "", "false", "true, false; with law = xu_needleman or bilinear",
        "the drawn line is a cut (its points start separated, as a pre-crack's) and the segments a "
        "growing crack adds carry the law", "true"},

@@ -201,6 +201,31 @@ void parse_growth(Section& f, InterfaceSpec& is, const Case& c) {
   }
 }
 
+// nucleation and nucleation_strength (solver/crack_nucleation.hpp): the drawn line stays intact
+// until the normal stress across it reaches the strength, then it is the crack and grows.
+void parse_nucleation(Section& f, InterfaceSpec& is) {
+  const std::string n = f.string("nucleation", "none", {"none", "strength"});
+  if (n == "none") {
+    if (f.has("nucleation_strength"))
+      fail(f.key("nucleation_strength"), show(*f.node("nucleation_strength")), "needs nucleation = \"strength\"");
+    return;
+  }
+  if (!is.growth.on())
+    fail(f.key("nucleation"), "\"strength\"",
+         "makes the drawn line a crack once the stress across it reaches the strength, and the crack then "
+         "grows: needs growth = \"max_hoop\", \"energy\", \"cohesive\" or \"prescribed\"");
+  double law_strength = 0.0;  // the law's own, where it has one
+  if (const auto* b = std::get_if<BilinearLaw>(&is.law); b && !is.precracked) law_strength = b->sigma_max;
+  if (const auto* x = std::get_if<XuNeedleman>(&is.law); x && !is.precracked) law_strength = x->sigma_max;
+  if (!f.has("nucleation_strength") && law_strength <= 0.0)
+    fail(f.key("nucleation_strength"), "(missing)",
+         "required with nucleation = \"strength\" when the law has no strength of its own (law = \"contact\"): "
+         "the normal stress across the line at which it comes loose, Pa, > 0");
+  is.nucleation_strength = f.number("nucleation_strength", law_strength);
+  if (!(is.nucleation_strength > 0.0) || !std::isfinite(is.nucleation_strength))
+    fail(f.key("nucleation_strength"), is.nucleation_strength, "must be > 0 (Pa)");
+}
+
 // The fields the branch events' wedges will take, named NAME.branchK (K = 1, 2, ...).
 void reserve_branch_fields(Section& f, InterfaceSpec& is, Case& c, const std::string& name) {
   for (int k = 1; k <= is.growth.max_branches; ++k) {

@@ -424,6 +424,7 @@ void parse_interfaces(Section& top, Case& c, ParseContext& ctx) {
     parse_drawn_open(f, is);
     parse_stress_intensity(f, is);
     parse_growth(f, is, c);
+    parse_nucleation(f, is);
     reserve_branch_fields(f, is, c, name);
     check_no_crossing(f, is, c);
     c.interfaces.push_back(is);

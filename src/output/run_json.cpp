@@ -196,6 +196,10 @@ std::string run_json(const Case& c, const CaseSummary& s, const RunRecord& r) {
         t.insert(p + "initial_angle", cs.initial_angle);
         t.insert(p + "branches", cs.branches);
         t.insert(p + "length", cs.grown_length);
+        if (cs.nucleates) {  // when the drawn line came loose (null: it stayed intact)
+          ct.insert_or_assign("nucleation_time", cs.nucleation_time);
+          insert_or_null(t, p + "nucleation_time", cs.nucleation_time);
+        }
       }
       if (k == 0) {
         t.insert("crack", ct);

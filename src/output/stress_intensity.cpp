@@ -53,6 +53,8 @@ void sample_stress_intensity(const Case& c, RunState& s, const std::vector<Crack
   for (std::size_t k = 0; k < c.interfaces.size(); ++k) {
     const InterfaceSpec& is = c.interfaces[k];
     if (!is.stress_intensity) continue;
+    // A line not yet loose is intact material: no tip to read (solver/crack_nucleation.hpp).
+    if (is.nucleation_strength > 0.0 && (k >= growth.size() || !growth[k].nucleated())) continue;
     const State& L = s.levels[std::size_t(s.interface_levels[k])];
     const TipMaterial mat = tip_material(c, k);
     const std::vector<InitialStrain> initial = initial_field_strains(c);

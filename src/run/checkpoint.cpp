@@ -402,6 +402,7 @@ void fields(A& a, TipSeries& r) {
 template <class A>
 void fields(A& a, CrackGrowthRecord& r) {
   a("rows", r.rows);
+  a("nucleation_time", r.nucleation_time);
 }
 
 // The grown segments a restore lays again: whole rows, each at an end (0 or 1) of its line.

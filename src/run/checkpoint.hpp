@@ -16,7 +16,7 @@
 
 namespace rupture {
 
-inline constexpr int kCheckpointVersion = 19;  // 2: State::strain_work; 3: Mach readings;
+inline constexpr int kCheckpointVersion = 20;  // 2: State::strain_work; 3: Mach readings;
                                               // 4: interface rupture times, peak slip rates;
                                               // 5: nested levels; 6: particles store the
                                               // stress only (no strain, szz, volume);
@@ -41,7 +41,8 @@ inline constexpr int kCheckpointVersion = 19;  // 2: State::strain_work; 3: Mach
                                               // 17: the grown cracks' segments (run.growth,
                                               // before the state); 18: the wall time in
                                               // crack growth (run.growth_seconds); 19: the
-                                              // tips' speed column (run.tips rows)
+                                              // tips' speed column (run.tips rows); 20: when
+                                              // a crack nucleated (run.growth[].nucleation_time)
 
 std::string checkpoint_path(const std::string& dir);  // DIR/checkpoint/checkpoint.bin
 

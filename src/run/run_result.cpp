@@ -129,6 +129,8 @@ void add_crack_summaries(RunIo& io, RunResult& result) {
       cs.initial_angle = g.initial_angle();
       cs.branches = g.branches();
       cs.grown_length = g.length();
+      cs.nucleates = io.c.interfaces[k].nucleation_strength > 0.0;
+      cs.nucleation_time = g.nucleation_time;
     }
     result.cracks.push_back(cs);
   }

@@ -14,6 +14,7 @@
 #include "solver/crack_branching.hpp"
 #include "solver/crack_cut.hpp"
 #include "solver/crack_junction.hpp"
+#include "solver/crack_nucleation.hpp"
 
 namespace rupture {
 namespace {
@@ -221,6 +222,18 @@ void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& rec
     const int level = s.interface_levels[k];
     State& L = s.levels[std::size_t(level)];
     const double h = L.grid.cell_size();
+    // A line not yet loose is intact material: it comes loose once the stress across it reaches
+    // the strength (solver/crack_nucleation.hpp), and grows from the next step on.
+    if (is.nucleation_strength > 0.0 && !records[k].nucleated()) {
+      if (site_stress(L, L.interfaces[s.interface_slots[k]], h) < is.nucleation_strength) continue;
+      if (!grown) {
+        grown = true;
+        if (before_growth) before_growth();
+      }
+      release_site(c, k, L, s.interface_slots[k], other_levels(s, level));
+      records[k].nucleation_time = s.time;
+      continue;
+    }
     const TipMaterial mat = tip_material(c, k);
     const std::vector<InitialStrain> initial = initial_field_strains(c);
     const std::vector<CrackLine> lines = crack_lines(s, k, records[k]);
@@ -416,6 +429,7 @@ void regrow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& r
     const std::vector<double>& r = records[k].rows;
     const std::vector<State*> others = other_levels(s, level);
     records[k].branch_slots.clear();
+    if (records[k].nucleated()) release_site(c, k, L, s.interface_slots[k], others);
     for (std::size_t i = 0; i + kGrowthColumns <= r.size(); i += kGrowthColumns) {
       const int label = int(r[i + 1]);
       const bool split = r[i + 2] >= kSplitAtStart;

@@ -60,6 +60,10 @@ inline constexpr double kSplitAtStart = 2.0;  // end column of a split (+1: at t
 // One interface's growth (checkpointed: the rows); empty rows: it has not grown.
 struct CrackGrowthRecord {
   std::vector<double> rows;
+  // A crack that nucleates (InterfaceSpec::nucleation_strength): when its drawn line came loose,
+  // s; -1 while it is intact (checkpointed).
+  double nucleation_time = -1.0;
+  bool nucleated() const { return nucleation_time >= 0.0; }
   // The slots of its branches on its level, in tip-label order (derived from the rows: by the
   // splits as they happen, by regrow_cracks on a restore).
   std::vector<std::size_t> branch_slots;

@@ -14,6 +14,7 @@
 #include "solver/state.hpp"
 #include "solver/step.hpp"
 #include "solver/cohesive_step.hpp"
+#include "solver/crack_nucleation.hpp"
 #include "solver/load_step.hpp"
 #include "solver/nested_state.hpp"
 #include "solver/run_state.hpp"
@@ -155,7 +156,9 @@ State make_state_on(const Case& c, Grid grid, const PointFilter* keep, const Poi
   s.dt = s.limits.dt;
   s.cohesive_safety = c.time.cohesive_safety;
 
-  for (const InterfaceSpec& is : c.interfaces) {
+  for (const InterfaceSpec& drawn : c.interfaces) {
+    // A line that nucleates starts tied over itself (solver/crack_nucleation.hpp).
+    const InterfaceSpec is = as_set_up(drawn, 1e-6 * c.grid.cell_size);
     s.interfaces.push_back(make_interface(is));
     if (is.contact) {  // a quarter of the face mass the set-up's step bound assumes (summarize)
       const double rho = std::min(c.materials[std::size_t(c.bodies[std::size_t(is.upper_body)].material)].density,
