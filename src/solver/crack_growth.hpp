@@ -96,7 +96,9 @@ TipMaterial growing_tip_material(const Case& c, std::size_t k, const CrackGrowth
                                  int label, LineEnd end, double now, double window);
 
 // Reads every growing crack's tips and grows those the criterion lets grow (at most one segment
-// per tip and call). records: one per interface (resized). The reads need, of the interface
+// per tip and call). A crack that nucleates and is still intact is read at its site instead
+// (solver/crack_nucleation.hpp: site_stress) and, once that reaches its strength, comes loose
+// (release_site, records[k].nucleation_time) and grows from the next call on. records: one per interface (resized). The reads need, of the interface
 // state, only the particles and each crack's end segments (crack_front); `before_growth`, when
 // given, is called once, before the first segment of the call is laid, and not at all when
 // nothing grows (a distributed run gathers the whole interface state there: every rank takes

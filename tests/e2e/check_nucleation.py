@@ -8,7 +8,8 @@ prestressed plate whose normal stress across the line is `ratio` times the stren
      0.75 mm either side of the line's middle within 0.5 % of their largest displacement
      (measured 0.09 %). Not to round-off: the body split along the line and its tie differ from
      the undivided plate by that much, from where the split meets the free edges (the same with
-     an open seed that carries no traction; docs/fracture.md). Control: the same line drawn as a
+     an open seed that carries no traction): the tie misses nodes the particles reach once they
+     move (docs/fracture.md, "Nucleation at a drawn site"). Control: the same line drawn as a
      plain pre-crack (no nucleation) opens across its middle by more than twice the intact
      line's largest (measured 5.6 um against 1.5 um, the strain between the stations as the
      release waves pass);
