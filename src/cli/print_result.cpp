@@ -44,14 +44,14 @@ void print_readable_summary(const Case& c, const RunResult& r) {
     const WaveSpeeds w = wave_speeds(lower, c.plane);
     std::string line = fmt::format("# {} {}: ", q.fault ? "fault" : "crack", c.interface_names[i]);
     if (q.grows) {
+      // A crack that nucleates says when first (solver/crack_nucleation.hpp).
+      const std::string born = q.nucleates ? fmt::format("nucleated at {:.4g} {}", u.tf * q.nucleation_time, u.t) : "";
       if (q.nucleates && q.nucleation_time < 0.0) fmt::print("{}did not nucleate\n", line);
-      else if (q.nucleates && q.grown_length == 0.0)
-        fmt::print("{}nucleated at {:.4g} {} and did not grow\n", line, u.tf * q.nucleation_time, u.t);
-      else if (q.grown_length == 0.0) fmt::print("{}did not grow\n", line);
+      else if (q.grown_length == 0.0) fmt::print("{}{}did not grow\n", line, q.nucleates ? born + " and " : "");
       else
         fmt::print("{}{}grew from {:.4g} {} at {:.2f} degrees to its direction, by {:.4g} {} ({} branches)\n", line,
-                   q.nucleates ? fmt::format("nucleated at {:.4g} {}, ", u.tf * q.nucleation_time, u.t) : "",
-                   u.tf * q.initiation_time, u.t, q.initial_angle, u.lf * q.grown_length, u.l, q.branches);
+                   q.nucleates ? born + ", " : "", u.tf * q.initiation_time, u.t, q.initial_angle,
+                   u.lf * q.grown_length, u.l, q.branches);
       continue;
     }
     if (!q.initiated && !(q.fault && q.front.ruptured)) {
