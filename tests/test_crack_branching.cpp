@@ -109,8 +109,9 @@ TEST(CrackBranching, the_wedge_between_the_branches_takes_the_kept_field) {
   EXPECT_EQ(precrack_tips(r, 1e-6 * kH).size(), 1u);
   // The nodes both branches tie are at the junction (the three parts join there, ahead of both
   // new tips: solver/cohesive_step.hpp): where the ties, 40 degrees apart, are less than twice a
-  // node's reach (<= sqrt(2) h) apart, up to sqrt(2) h / tan(20 deg) = 3.9 h beyond the first
-  // segments' ends; no node farther out is tied by both.
+  // tie's reach (2 (|n_x| + |n_y|) h <= 2 sqrt(2) h) apart, up to 2 sqrt(2) h / tan(20 deg) =
+  // 7.8 h beyond the first segments' ends; no node farther out is tied by both. Ahead of both
+  // tips the three parts are intact material, one continuum.
   std::vector<std::size_t> a = s.bonded[slots[0]].nodes, b = s.bonded[slots[1]].nodes, both;
   ASSERT_FALSE(a.empty());
   ASSERT_FALSE(b.empty());
@@ -118,7 +119,7 @@ TEST(CrackBranching, the_wedge_between_the_branches_takes_the_kept_field) {
   std::set_intersection(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(both));
   for (const std::size_t n : both) {
     const double x = s.grid.x.node(int(n % std::size_t(s.grid.nodes_x()))), y = s.grid.y.node(int(n / std::size_t(s.grid.nodes_x())));
-    EXPECT_LT(std::hypot(x - 0.008, y - 0.005), 0.5 * kH + std::sqrt(2.0) * kH / std::tan(20.0 * kDeg))
+    EXPECT_LT(std::hypot(x - 0.008, y - 0.005), 0.5 * kH + 2.0 * std::sqrt(2.0) * kH / std::tan(20.0 * kDeg))
         << "node " << n << " at " << x << ", " << y;
   }
   // Every particle in the field of the part it lies in: above the crack and the left cut,

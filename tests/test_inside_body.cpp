@@ -127,16 +127,26 @@ TEST(InsideBody, a_centre_crack_is_tied_beyond_both_ends) {
   EXPECT_EQ(ties[0].x, (std::vector<double>{0.0, 0.006}));  // in the line's direction
   EXPECT_EQ(ties[1].x, (std::vector<double>{0.014, 0.02}));
   for (const Polyline& t : ties) EXPECT_EQ(t.y, (std::vector<double>{0.0, 0.0}));
-  // The tied grid nodes: every node of y = 0 except the crack's interior (x = 6.5 ... 13.5 mm).
+  // The tied grid nodes (docs/theory.md, "Bonded stretches"): on y = 0 and the rows a cell either
+  // side (strictly within 2 h of the line), every node from a cell beyond the plate's edges (a
+  // free end reaches as far beyond as across) up to the crack's tips, none strictly between them:
+  // 14 + 14 nodes a row (x = -0.5 ... 6 mm, 14 ... 20.5 mm on 0.5 mm cells).
   const State s = make_state(c);
-  std::vector<double> xs;
+  const double h = c.grid.cell_size;
+  int rows[3] = {0, 0, 0};
   for (std::size_t n : s.bonded[0].nodes) {
     const int i = int(n % std::size_t(s.grid.nodes_x())),
               j = int(n / std::size_t(s.grid.nodes_x()));
-    EXPECT_NEAR(s.grid.y.node(j), 0.0, 1e-15);
-    xs.push_back(s.grid.x.node(i));
+    const double x = s.grid.x.node(i), y = s.grid.y.node(j);
+    const int row = int(std::lround(y / h));
+    ASSERT_LE(std::abs(row), 1) << "y = " << y;
+    EXPECT_NEAR(y, row * h, 1e-12);
+    EXPECT_FALSE(x > 0.006 + 1e-12 && x < 0.014 - 1e-12) << "x = " << x << " inside the crack";
+    EXPECT_GE(x, -h - 1e-12);
+    EXPECT_LE(x, 0.02 + h + 1e-12);
+    ++rows[row + 1];
   }
-  EXPECT_EQ(xs.size(), 41u - 15u);  // 41 nodes on the line, 15 strictly inside the crack
+  for (const int r : rows) EXPECT_EQ(r, 28);
   // An inclined crack inside: both ties run along its direction to the plate's edge.
   const Case inclined = parse_case(plate_case(
       interface("tilted", "body = \"plate\"\npoints = [[0.006, -0.002], [0.014, 0.002]]")));

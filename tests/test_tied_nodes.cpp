@@ -94,6 +94,10 @@ velocity = 0.0
     for (const BondedTie& b : s.bonded)
       for (const std::size_t n : b.nodes) {
         const std::size_t iu = G.index(b.upper_field, n), il = G.index(b.lower_field, n);
+        // A node of the tie's band that one field does not reach is left to the other
+        // (solver/cohesive_step.cpp, tie_bonded_nodes): nothing to compare there.
+        if (G.mass[iu] == 0.0 || G.mass[il] == 0.0) continue;
+        EXPECT_EQ(G.mass[iu], G.mass[il]) << side << ", node " << n;
         EXPECT_EQ(G.remap_y[iu], G.remap_y[il]) << side << ", node " << n;
         if (G.mass[iu] > 0.0 && std::fabs(G.remap_y[iu] + 2.0) < 1e-9) ++driven;
       }

@@ -129,12 +129,13 @@ TipDisplacement tip_domain_points(const Grid& g, const GridFields& fields, const
     for (auto* v : {&L.m, &L.ux, &L.uy, &L.vx, &L.vy})
       std::copy(packed.begin() + long(at), packed.begin() + long(at + size), v->begin()), at += size;
   }
-  // Tied nodes: one body, both fields hold the sums.
+  // Tied nodes: one body, both fields hold the sums (where both have mass, as the grid's tie).
   for (const TiedFields& t : ties)
     for (std::size_t n : *t.nodes) {
       const int i = int(n % std::size_t(g.nodes_x())), j = int(n / std::size_t(g.nodes_x()));
       if (!L.inside(i, j)) continue;
       const std::size_t a = L.at(t.upper_field, i, j), b = L.at(t.lower_field, i, j);
+      if (!(L.m[a] > 0.0 && L.m[b] > 0.0)) continue;  // one field there: as the grid's tie
       for (auto* v : {&L.m, &L.ux, &L.uy, &L.vx, &L.vy}) (*v)[a] = (*v)[b] = (*v)[a] + (*v)[b];
     }
   for (std::size_t k = 0; k < size; ++k)

@@ -300,14 +300,34 @@ void add_cohesive_forces(State& s) {
 
 namespace {
 
-void nodes_near_tie(const Grid& g, const Polyline& tie, std::vector<std::size_t>& out) {
+// Whether (x, y) is an end of the crack's line: a tip, where its tie must stop exactly.
+bool at_tip(const Polyline& crack, double x, double y, double tol) {
+  if (crack.closed || crack.num_vertices() < 2) return false;
+  const std::size_t e = crack.num_vertices() - 1;
+  return std::hypot(x - crack.x[0], y - crack.y[0]) <= tol ||
+         std::hypot(x - crack.x[e], y - crack.y[e]) <= tol;
+}
+
+void nodes_near_tie(const Grid& g, const Polyline& tie, const Polyline& crack,
+                    std::vector<std::size_t>& out) {
   if (tie.num_vertices() < 2) return;
-  // A grid node gets mass from both bodies when the GIMP support of one body's particles
-  // reaches across the line to it: the support of a node is the box of half-widths (h_x, h_y)
-  // (its cells' widths), which reaches |n_x| h_x + |n_y| h_y along the line's normal. Every node
-  // strictly closer than that to the bonded stretch (and not beyond its ends) is tied, so the
-  // two fields there sum to exactly what one field would hold: one continuum. On a grid line
-  // (a horizontal or vertical tie through nodes) that is the nodes on the line only.
+  // A grid node gets mass from both bodies when the GIMP support of one body's particles reaches
+  // across the line to it. A particle centred at x_p with half-width l_p loads the nodes with
+  // |x_i - x_p| < h + l_p on each axis (h: that axis's cell width). Its centre may lie on the
+  // line (a line not along the grid cuts the particles anywhere), l_p <= h / 2 (one particle per
+  // cell and direction at least), and once it moves by d (each axis) it reaches h + l_p + d.
+  // The tie takes every node strictly closer than 2 (|n_x| h_x + |n_y| h_y) to its line: all a
+  // particle reaches while it stays within half a cell (each axis) of where it was set up. The
+  // two fields there sum to exactly what one field would hold: one continuum (docs/fracture.md,
+  // "The tie's reach": a body split along a line equals the undivided body to round-off).
+  // A tie ends at a crack's tip or on an edge (or another line). At a tip it stops exactly (the
+  // nodes beyond it are the crack's, whose two fields must stay apart); at any other end it
+  // reaches as far beyond, to the nodes particles there load once a free edge bulges outward.
+  const std::size_t last = tie.num_vertices() - 1;
+  const double len = tie.length();
+  const double tip_tol = 1e-6 * std::min(g.x.h, g.y.h);
+  const bool free_start = !at_tip(crack, tie.x[0], tie.y[0], tip_tol);
+  const bool free_end = !at_tip(crack, tie.x[last], tie.y[last], tip_tol);
   double xlo = INFINITY, xhi = -INFINITY, ylo = INFINITY, yhi = -INFINITY;
   for (std::size_t v = 0; v < tie.num_vertices(); ++v) {
     xlo = std::min(xlo, tie.x[v]), xhi = std::max(xhi, tie.x[v]);
@@ -320,13 +340,22 @@ void nodes_near_tie(const Grid& g, const Polyline& tie, std::vector<std::size_t>
   const double tol = 1e-9 * std::min(g.x.h, g.y.h);
   for (int j = 0; j < g.nodes_y(); ++j) {
     const double y = g.y.node(j), hy = node_width(g.y, j);
-    if (y < ylo - 2.0 * hy || y > yhi + 2.0 * hy) continue;
+    if (y < ylo - 4.0 * hy || y > yhi + 4.0 * hy) continue;
     for (int i = 0; i < g.nodes_x(); ++i) {
       const double x = g.x.node(i), hx = node_width(g.x, i);
-      if (x < xlo - 2.0 * hx || x > xhi + 2.0 * hx) continue;
+      if (x < xlo - 4.0 * hx || x > xhi + 4.0 * hx) continue;
       const LineProjection p = project(tie, x, y);
-      const double reach = std::fabs(p.nx) * hx + std::fabs(p.ny) * hy;
-      if (p.beyond <= tol && p.distance < reach - tol) out.push_back(g.node_index(i, j));
+      const double reach = 2.0 * (std::fabs(p.nx) * hx + std::fabs(p.ny) * hy);
+      if (p.beyond <= tol) {
+        if (p.distance < reach - tol) out.push_back(g.node_index(i, j));
+        continue;
+      }
+      // Beyond an end: along the line (tangent (n_y, -n_x)) and across it.
+      const bool at_start = p.s <= 0.5 * len;
+      if (!(at_start ? free_start : free_end)) continue;
+      const double across = std::sqrt(std::max(p.distance * p.distance - p.beyond * p.beyond, 0.0));
+      const double reach_along = 2.0 * (std::fabs(p.ny) * hx + std::fabs(p.nx) * hy);
+      if (p.beyond < reach_along - tol && across < reach - tol) out.push_back(g.node_index(i, j));
     }
   }
 }
@@ -334,12 +363,13 @@ void nodes_near_tie(const Grid& g, const Polyline& tie, std::vector<std::size_t>
 }  // namespace
 
 std::vector<std::size_t> bonded_nodes(const Grid& g, const InterfaceSpec& spec) {
-  return bonded_nodes(g, spec.tie_geometries());
+  return bonded_nodes(g, spec.tie_geometries(), spec.geometry());
 }
 
-std::vector<std::size_t> bonded_nodes(const Grid& g, const std::vector<Polyline>& ties) {
+std::vector<std::size_t> bonded_nodes(const Grid& g, const std::vector<Polyline>& ties,
+                                      const Polyline& crack) {
   std::vector<std::size_t> out;
-  for (const Polyline& tie : ties) nodes_near_tie(g, tie, out);
+  for (const Polyline& tie : ties) nodes_near_tie(g, tie, crack, out);
   // Several tied stretches (a crack inside a body with both ends inside it) may share a node;
   // it is tied once (a tie sums both fields: twice would double it).
   std::sort(out.begin(), out.end());
@@ -434,6 +464,10 @@ void tie_bonded_nodes(State& s, TieWhat what) {
       tie(G.remap_y);
     }
   };
+  // Only the fields with mass at a node take the sum: a field no particle of it reaches there is
+  // left empty (the sum is the other's alone, and a copy would hand that material's velocity
+  // to the empty field's face stencils beside a tip). The mass pass decides it; the later passes
+  // find the same fields with mass (a tied copy holds the positive sum, an empty one zero).
   for (std::size_t t = 0; t < s.bonded.size(); ++t) {
     const BondedTie& b = s.bonded[t];
     const int up = b.upper_field, lo = b.lower_field;
@@ -442,6 +476,7 @@ void tie_bonded_nodes(State& s, TieWhat what) {
       if (skip && !skip->empty() && (*skip)[i]) continue;
       const std::size_t n = b.nodes[i];
       const std::size_t iu = G.index(up, n), il = G.index(lo, n);  // in both windows
+      if (!(G.mass[iu] > 0.0 && G.mass[il] > 0.0)) continue;
       each([&](std::vector<double>& v) { v[iu] = v[il] = v[iu] + v[il]; });
     }
   }
@@ -453,7 +488,8 @@ void tie_bonded_nodes(State& s, TieWhat what) {
         for (std::size_t e = 0; e < J.fields.size(); ++e)
           if (J.group[e] == int(a)) sum += v[G.index(J.fields[e], J.node)];
         for (std::size_t e = 0; e < J.fields.size(); ++e)
-          if (J.group[e] == int(a)) v[G.index(J.fields[e], J.node)] = sum;
+          if (J.group[e] == int(a) && G.mass[G.index(J.fields[e], J.node)] > 0.0)
+            v[G.index(J.fields[e], J.node)] = sum;  // a field's mass: positive until set, then the sum
       }
     });
 }

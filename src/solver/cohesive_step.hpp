@@ -25,11 +25,14 @@ void advance_interfaces(State& s, const double* vel_x, const double* vel_y);
 // step began at t_before (node crack times are interpolated in [t_before, t] from
 // c.jump_before).
 void evaluate_interface(CohesiveInterface& c, double t, double t_before);
-// Grid nodes tied along the interface's bonded stretches (computed once at setup): those closer
-// to one of them than the reach of a node's GIMP support along its normal, not beyond its ends;
-// each node once, in increasing order.
+// Grid nodes tied along the interface's bonded stretches: those closer to one of them than a
+// particle within half a cell of it reaches (2 (|n_x| h_x + |n_y| h_y)), and as far beyond an end
+// unless that end is a tip of the crack's line, where the tie stops exactly; each node once, in
+// increasing order.
 std::vector<std::size_t> bonded_nodes(const Grid& g, const InterfaceSpec& spec);
-// The same for some of its tied lines (InterfaceSpec::tie_geometries).
-std::vector<std::size_t> bonded_nodes(const Grid& g, const std::vector<Polyline>& ties);
+// The same for some of its tied lines (InterfaceSpec::tie_geometries); `crack` its line
+// (InterfaceSpec::geometry), whose ends are the tips.
+std::vector<std::size_t> bonded_nodes(const Grid& g, const std::vector<Polyline>& ties,
+                                      const Polyline& crack);
 
 }  // namespace rupture

@@ -236,9 +236,10 @@ void follow_edge_junctions(const Case& c, RunState& s, std::size_t k, const std:
         for (std::size_t i = 0; i < ties.size(); ++i)
           if (std::none_of(own_pairs.begin(), own_pairs.end(), [&](const BondedTie& b) { return b.line == int(i); }))
             rest.push_back(ties[i]);
-        L.bonded[o.slot].nodes = bonded_nodes(L.grid, rest);
+        L.bonded[o.slot].nodes = bonded_nodes(L.grid, rest, B.spec.geometry());
         for (BondedTie& b : own_pairs) {
-          b.nodes = bonded_nodes(L.grid, std::vector<Polyline>{ties[std::size_t(b.line)]});
+          b.nodes = bonded_nodes(L.grid, std::vector<Polyline>{ties[std::size_t(b.line)]},
+                                B.spec.geometry());
           L.bonded.push_back(b);
         }
         changed = true;

@@ -16,8 +16,11 @@ namespace {
 // per tied node (solver/cohesive_step.hpp: both fields' copies hold the summed mass and are
 // driven alike, so the impulse on that mass is counted on the upper field's copy only).
 bool counts_work(const State& s, int field, std::size_t node) {
+  const GridFields& G = s.fields;
   for (const BondedTie& b : s.bonded)
-    if (b.lower_field == field && std::binary_search(b.nodes.begin(), b.nodes.end(), node)) return false;
+    if (b.lower_field == field && std::binary_search(b.nodes.begin(), b.nodes.end(), node) &&
+        G.mass[G.index(b.upper_field, node)] > 0.0 && G.mass[G.index(field, node)] > 0.0)
+      return false;  // tied this step (both fields had mass there: cohesive_step.cpp)
   return counts_node(s, field, node);
 }
 
