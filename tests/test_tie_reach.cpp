@@ -62,6 +62,20 @@ TEST(TieReach, ARowEitherSideAndBeyondTheFreeEndNotBehindTheTip) {
   EXPECT_FALSE(has(both, g.node_index(4, 5)));
 }
 
+// A bonded stretch of a closed line (its ends on the line, where the open part begins) stops
+// exactly at both ends: the open part's two fields stay apart there.
+TEST(TieReach, AStretchOfAClosedLineStopsAtBothEnds) {
+  const Grid g = unit_grid(20, 10);
+  Polyline square = line({5.0, 15.0, 15.0, 5.0}, {5.0, 5.0, 8.0, 8.0});
+  square.closed = true;
+  const std::vector<std::size_t> n = bonded_nodes(g, {line({7.0, 12.0}, {5.0, 5.0})}, square);
+  for (int j = 0; j < g.nodes_y(); ++j)
+    for (int i = 0; i < g.nodes_x(); ++i) {
+      const bool expect = i >= 7 && i <= 12 && std::abs(j - 5) <= 1;
+      EXPECT_EQ(has(n, g.node_index(i, j)), expect) << "node (" << i << ", " << j << ")";
+    }
+}
+
 // Turned by 90 degrees the tie takes the turned nodes: the reach is read along the line's
 // normal, whichever axis it is.
 TEST(TieReach, TurnedTieTakesTheTurnedNodes) {

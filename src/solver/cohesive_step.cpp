@@ -300,12 +300,11 @@ void add_cohesive_forces(State& s) {
 
 namespace {
 
-// Whether (x, y) is an end of the crack's line: a tip, where its tie must stop exactly.
+// Whether a tie's end (x, y) lies on the crack's line: at a tip (a tie runs on from it), or on
+// a closed line where the bonded stretch meets the open part. The tie stops exactly there.
 bool at_tip(const Polyline& crack, double x, double y, double tol) {
-  if (crack.closed || crack.num_vertices() < 2) return false;
-  const std::size_t e = crack.num_vertices() - 1;
-  return std::hypot(x - crack.x[0], y - crack.y[0]) <= tol ||
-         std::hypot(x - crack.x[e], y - crack.y[e]) <= tol;
+  if (crack.num_vertices() < 2) return false;
+  return project(crack, x, y).distance <= tol;
 }
 
 void nodes_near_tie(const Grid& g, const Polyline& tie, const Polyline& crack,
@@ -320,9 +319,10 @@ void nodes_near_tie(const Grid& g, const Polyline& tie, const Polyline& crack,
   // particle reaches while it stays within half a cell (each axis) of where it was set up. The
   // two fields there sum to exactly what one field would hold: one continuum (docs/fracture.md,
   // "The tie's reach": a body split along a line equals the undivided body to round-off).
-  // A tie ends at a crack's tip or on an edge (or another line). At a tip it stops exactly (the
-  // nodes beyond it are the crack's, whose two fields must stay apart); at any other end it
-  // reaches as far beyond, to the nodes particles there load once a free edge bulges outward.
+  // A tie ends at a crack's tip (on the crack's line) or on an edge (or another line). At a tip
+  // it stops exactly (the nodes beyond it are the crack's, whose two fields must stay apart); at
+  // any other end it reaches as far beyond, to the nodes particles there load once a free edge
+  // bulges outward.
   const std::size_t last = tie.num_vertices() - 1;
   const double len = tie.length();
   const double tip_tol = 1e-6 * std::min(g.x.h, g.y.h);

@@ -27,11 +27,11 @@ void advance_interfaces(State& s, const double* vel_x, const double* vel_y);
 void evaluate_interface(CohesiveInterface& c, double t, double t_before);
 // Grid nodes tied along the interface's bonded stretches: those closer to one of them than a
 // particle within half a cell of it reaches (2 (|n_x| h_x + |n_y| h_y)), and as far beyond an end
-// unless that end is a tip of the crack's line, where the tie stops exactly; each node once, in
-// increasing order.
+// unless that end lies on the crack's line (a tip), where the tie stops exactly; each node once,
+// in increasing order.
 std::vector<std::size_t> bonded_nodes(const Grid& g, const InterfaceSpec& spec);
 // The same for some of its tied lines (InterfaceSpec::tie_geometries); `crack` its line
-// (InterfaceSpec::geometry), whose ends are the tips.
+// (InterfaceSpec::geometry): a tie's end on it is a tip.
 std::vector<std::size_t> bonded_nodes(const Grid& g, const std::vector<Polyline>& ties,
                                       const Polyline& crack);
 
