@@ -18,7 +18,7 @@ the site: sigma_xx = E eps_xx (plane stress, sigma_yy = 0 at the free face) from
 displacements 2 cells either side of the mid-span (read = "interpolated"), at the bottom face and
 0.75 cells above it, interpolated to the depth of the particles the site's lower segment reads
 (a quarter cell). At the nucleation time that stress must be within 3 % of the strength (measured
-1.4 % above it, at 1183.8 us). A site that is not intact material fails this: the same line
+1.2 % above it, at 1182.2 us; 1.4 % at 1183.8 us with the tie's earlier reach). A site that is not intact material fails this: the same line
 drawn as an intact cohesive segment instead (drawn_open = false, no nucleation) reaches its peak
 at the bottom face by 500 us, under 4.0 MPa of bulk stress, and grows from 763.9 us, under
 6.5 MPa (63 %): its elastic branch (sigma_max / (lambda0 delta_nc), nine times E / h here) is
