@@ -203,6 +203,10 @@ struct CohesiveInterface {
   std::vector<std::int32_t> reversal_streak;
   double time = 0.0;  // s, the time of the tractions (the last evaluation)
   double work = 0.0;  // work done on the interface by the bodies so far, J/m (stored + dissipated)
+  // Where its ties are laid (solver/tie_follow.hpp): the points sampled along spec's tied lines
+  // (their reference positions, m) and the material's displacement there when the ties were last
+  // laid, m; the same on every rank. Empty: laid where drawn.
+  std::vector<double> tie_x0, tie_y0, tie_ux, tie_uy;
   // Distributed runs (parallel/halo.hpp): per node, 1 where this rank owns it (moves its faces,
   // evaluates the segments that touch it, loads the grid with its force) and where it knows it
   // (owned, or a ghost near its block whose faces and stiffness the owner sends every step);

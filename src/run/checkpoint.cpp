@@ -172,6 +172,10 @@ void fields(A& a, CohesiveInterface& c) {
   a("reversal_streak", c.reversal_streak);
   a("time", c.time);
   a("work", c.work);
+  a("tie_x0", c.tie_x0);  // where its ties are laid (solver/tie_follow.hpp)
+  a("tie_y0", c.tie_y0);
+  a("tie_ux", c.tie_ux);
+  a("tie_uy", c.tie_uy);
 }
 
 // Derived and not stored: junctions (rebuilt from bonded at the first tie).
@@ -249,6 +253,8 @@ void state_fields(A& a, State& s, bool level) {
   a("strain_work", s.strain_work);
   a("viscous_work", s.viscous_work);
   a("initial_energy", s.initial_energy);
+  a("tie_drift", s.tie_drift);  // when the ties are measured again (solver/tie_follow.hpp)
+  a("travel", s.travel);
   if (level) a("window_drift", s.window_drift);
   a.same("nested", false);
 }

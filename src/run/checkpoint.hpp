@@ -16,7 +16,7 @@
 
 namespace rupture {
 
-inline constexpr int kCheckpointVersion = 20;  // 2: State::strain_work; 3: Mach readings;
+inline constexpr int kCheckpointVersion = 21;  // 2: State::strain_work; 3: Mach readings;
                                               // 4: interface rupture times, peak slip rates;
                                               // 5: nested levels; 6: particles store the
                                               // stress only (no strain, szz, volume);
@@ -42,7 +42,9 @@ inline constexpr int kCheckpointVersion = 20;  // 2: State::strain_work; 3: Mach
                                               // before the state); 18: the wall time in
                                               // crack growth (run.growth_seconds); 19: the
                                               // tips' speed column (run.tips rows); 20: when
-                                              // a crack nucleated (run.growth[].nucleation_time)
+                                              // a crack nucleated (run.growth[].nucleation_time);
+                                              // 21: where the ties are laid (interfaces'
+                                              // tie_x0 ... tie_uy, tie_drift, travel)
 
 std::string checkpoint_path(const std::string& dir);  // DIR/checkpoint/checkpoint.bin
 

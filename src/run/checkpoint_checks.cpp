@@ -174,6 +174,17 @@ void check_interfaces(const Checker& ck, const std::vector<InterfaceOnGrid>& all
                  fmt::format("the face would lie at {} m, outside the lattice [{}, {}] m", num(face[d]), num(lo), num(hi)));
       }
     }
+    // Where its ties are laid (solver/tie_follow.hpp): points and displacements, one each, inside
+    // the lattice; a restore lays them only where they are its tied lines' samples.
+    const std::size_t ties = c.tie_x0.size();
+    for (const auto& [name, v] : {std::pair{"tie_y0", &c.tie_y0}, {"tie_ux", &c.tie_ux}, {"tie_uy", &c.tie_uy}})
+      ck.length(e + "." + name, v->size(), ties, "one per point of tie_x0");
+    for (std::size_t k = 0; k < ties; ++k) {
+      ck.within(item(e + ".tie_x0", k), c.tie_x0[k], xlo, xhi);
+      ck.within(item(e + ".tie_y0", k), c.tie_y0[k], ylo, yhi);
+      ck.within(item(e + ".tie_ux", k), c.tie_ux[k], xlo - c.tie_x0[k], xhi - c.tie_x0[k]);
+      ck.within(item(e + ".tie_uy", k), c.tie_uy[k], ylo - c.tie_y0[k], yhi - c.tie_y0[k]);
+    }
     for (std::size_t k = 0; k < gauss; ++k)
       if (c.gp_separated[k] > 1) refuse(ck.origin, item(e + ".gp_separated", k), std::to_string(int(c.gp_separated[k])), "must be 0 or 1");
     for (std::size_t k = 0; k < n; ++k)
@@ -211,6 +222,8 @@ void check_state(const Checker& ck, const State& s, const std::string& entry, bo
   }
   ck.within(entry + ".flip", s.flip, 0.0, 1.0);
   ck.at_least(entry + ".mass_floor", s.mass_floor, 0.0);
+  ck.within(entry + ".tie_drift", s.tie_drift, 0.0, DBL_MAX);
+  ck.within(entry + ".travel", s.travel, 0.0, DBL_MAX);
   if (level) ck.within(entry + ".window_drift", s.window_drift, 0.0, lattice_extent(s.grid));
 }
 

@@ -21,6 +21,7 @@
 #include "solver/crack_growth.hpp"
 #include "solver/step.hpp"
 #include "solver/summary.hpp"
+#include "solver/tie_follow.hpp"
 
 namespace rupture {
 namespace {
@@ -125,6 +126,18 @@ RunResult run_case(const Case& c, const RunOptions& options) {
         for (std::size_t k = 0; k < ctx.cracks.size() && k < c.interfaces.size(); ++k)
           if (c.interfaces[k].growth.on()) ctx.cracks[k].follow(s.interface(k), true);
         ctx.growth_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      }
+      // Ties that follow the material (solver/tie_follow.hpp): laid again where the material or
+      // growth has moved them; distributed, over the whole grid with the interfaces' state
+      // gathered first, and each rank keeps its part after.
+      if (synced) {
+        std::vector<InterfaceShapes> before;
+        follow_ties(s, [&] {
+          if (!s.halo) return;
+          collect_interface_state(s);
+          for (const State& level : s.levels) before.push_back(interface_shapes(level));
+        });
+        for (std::size_t l = 0; l < before.size(); ++l) follow_grown_interfaces(s.levels[l], before[l]);
       }
       for (const std::unique_ptr<Output>& out : outputs.each_step) {
         if ((synced || !out->needs_synchronized_state()) && out->due(s.time, eps, last))

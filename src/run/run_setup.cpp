@@ -25,6 +25,7 @@
 #include "run/run_io.hpp"
 #include "solver/case_seeding.hpp"
 #include "solver/run_state.hpp"
+#include "solver/tie_follow.hpp"
 
 namespace rupture {
 namespace {
@@ -89,7 +90,10 @@ std::vector<StationProbe> set_up(RunContext& r, const Case& c, const std::string
   r.tips.assign(c.interfaces.size(), TipSeries{});
   r.growth.assign(c.interfaces.size(), CrackGrowthRecord{});
   r.regrow = [&c](RunState& state, std::vector<CrackGrowthRecord>& grown) { regrow_cracks(c, state, grown); };
-  r.rejoin = [&c](RunState& state, const std::vector<CrackGrowthRecord>& grown) { rejoin_cracks(c, state, grown); };
+  r.rejoin = [&c](RunState& state, const std::vector<CrackGrowthRecord>& grown) {
+    rejoin_cracks(c, state, grown);
+    lay_followed_ties(state);  // where the checkpoint's ties were laid (solver/tie_follow.hpp)
+  };
   return probes;
 }
 

@@ -307,7 +307,9 @@ bool at_tip(const Polyline& crack, double x, double y, double tol) {
   return project(crack, x, y).distance <= tol;
 }
 
-void nodes_near_tie(const Grid& g, const Polyline& tie, const Polyline& crack,
+// `tie` is where the band is laid (the drawn tie, or the tie where the material has carried it:
+// solver/tie_follow.hpp); free_start / free_end: whether its ends are not a crack's tip.
+void nodes_near_tie(const Grid& g, const Polyline& tie, bool free_start, bool free_end,
                     std::vector<std::size_t>& out) {
   if (tie.num_vertices() < 2) return;
   // A grid node gets mass from both bodies when the GIMP support of one body's particles reaches
@@ -323,11 +325,7 @@ void nodes_near_tie(const Grid& g, const Polyline& tie, const Polyline& crack,
   // it stops exactly (the nodes beyond it are the crack's, whose two fields must stay apart); at
   // any other end it reaches as far beyond, to the nodes particles there load once a free edge
   // bulges outward.
-  const std::size_t last = tie.num_vertices() - 1;
   const double len = tie.length();
-  const double tip_tol = 1e-6 * std::min(g.x.h, g.y.h);
-  const bool free_start = !at_tip(crack, tie.x[0], tie.y[0], tip_tol);
-  const bool free_end = !at_tip(crack, tie.x[last], tie.y[last], tip_tol);
   double xlo = INFINITY, xhi = -INFINITY, ylo = INFINITY, yhi = -INFINITY;
   for (std::size_t v = 0; v < tie.num_vertices(); ++v) {
     xlo = std::min(xlo, tie.x[v]), xhi = std::max(xhi, tie.x[v]);
@@ -368,8 +366,21 @@ std::vector<std::size_t> bonded_nodes(const Grid& g, const InterfaceSpec& spec) 
 
 std::vector<std::size_t> bonded_nodes(const Grid& g, const std::vector<Polyline>& ties,
                                       const Polyline& crack) {
+  return bonded_nodes(g, ties, crack, ties);
+}
+
+std::vector<std::size_t> bonded_nodes(const Grid& g, const std::vector<Polyline>& ties,
+                                      const Polyline& crack, const std::vector<Polyline>& laid) {
   std::vector<std::size_t> out;
-  for (const Polyline& tie : ties) nodes_near_tie(g, tie, crack, out);
+  const double tip_tol = 1e-6 * std::min(g.x.h, g.y.h);
+  for (std::size_t i = 0; i < ties.size() && i < laid.size(); ++i) {
+    const Polyline& tie = ties[i];
+    if (tie.num_vertices() < 2) continue;
+    // Whether an end is a tip is read where the crack is drawn (the reference configuration).
+    const std::size_t last = tie.num_vertices() - 1;
+    nodes_near_tie(g, laid[i], !at_tip(crack, tie.x[0], tie.y[0], tip_tol),
+                   !at_tip(crack, tie.x[last], tie.y[last], tip_tol), out);
+  }
   // Several tied stretches (a crack inside a body with both ends inside it) may share a node;
   // it is tied once (a tie sums both fields: twice would double it).
   std::sort(out.begin(), out.end());

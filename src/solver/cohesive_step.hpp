@@ -34,5 +34,10 @@ std::vector<std::size_t> bonded_nodes(const Grid& g, const InterfaceSpec& spec);
 // (InterfaceSpec::geometry): a tie's end on it is a tip.
 std::vector<std::size_t> bonded_nodes(const Grid& g, const std::vector<Polyline>& ties,
                                       const Polyline& crack);
+// The same with each tie laid where the material has carried it (`laid[i]`: ties[i] moved with the
+// material, its first and last points ties[i]'s ends moved; solver/tie_follow.hpp): whether an
+// end is a tip is read on the drawn lines, the band is laid about the moved one.
+std::vector<std::size_t> bonded_nodes(const Grid& g, const std::vector<Polyline>& ties,
+                                      const Polyline& crack, const std::vector<Polyline>& laid);
 
 }  // namespace rupture

@@ -177,6 +177,9 @@ struct State {
   long windows_checked_step = -2;  // step of the last fit_field_windows
   long window_fits = 0;            // re-fits (re-allocations) so far
   double window_drift = 0.0;       // bound on any particle's move since the last measure, m
+  // Ties that follow the material (solver/tie_follow.hpp): bounds on any particle's move since
+  // the ties were last measured, and since t = 0, m (checkpointed; the same on every rank).
+  double tie_drift = 0.0, travel = 0.0;
   double last_move = 0.0;          // the last particle move's bound, dt max |v|, m (distributed
                                    // nested levels reduce it over the ranks)
   bool whole_grid_fields = false;  // tests: every field over the whole grid (same results)
