@@ -132,6 +132,7 @@ void check_boundary(const Checker& ck, const State& s, const std::string& entry)
 struct InterfaceOnGrid {
   const CohesiveInterface* c;
   const Grid* g;
+  const Grid* whole;  // the lattice over the whole domain (nested: the coarsest), where ties run
 };
 
 void check_interfaces(const Checker& ck, const std::vector<InterfaceOnGrid>& all, const std::string& entry) {
@@ -179,11 +180,13 @@ void check_interfaces(const Checker& ck, const std::vector<InterfaceOnGrid>& all
     const std::size_t ties = c.tie_x0.size();
     for (const auto& [name, v] : {std::pair{"tie_y0", &c.tie_y0}, {"tie_ux", &c.tie_ux}, {"tie_uy", &c.tie_uy}})
       ck.length(e + "." + name, v->size(), ties, "one per point of tie_x0");
+    const Grid& w = *all[i].whole;
+    const double wxlo = w.x.node(0), wxhi = w.x.node(w.x.cells), wylo = w.y.node(0), wyhi = w.y.node(w.y.cells);
     for (std::size_t k = 0; k < ties; ++k) {
-      ck.within(item(e + ".tie_x0", k), c.tie_x0[k], xlo, xhi);
-      ck.within(item(e + ".tie_y0", k), c.tie_y0[k], ylo, yhi);
-      ck.within(item(e + ".tie_ux", k), c.tie_ux[k], xlo - c.tie_x0[k], xhi - c.tie_x0[k]);
-      ck.within(item(e + ".tie_uy", k), c.tie_uy[k], ylo - c.tie_y0[k], yhi - c.tie_y0[k]);
+      ck.within(item(e + ".tie_x0", k), c.tie_x0[k], wxlo, wxhi);
+      ck.within(item(e + ".tie_y0", k), c.tie_y0[k], wylo, wyhi);
+      ck.within(item(e + ".tie_ux", k), c.tie_ux[k], wxlo - c.tie_x0[k], wxhi - c.tie_x0[k]);
+      ck.within(item(e + ".tie_uy", k), c.tie_uy[k], wylo - c.tie_y0[k], wyhi - c.tie_y0[k]);
     }
     for (std::size_t k = 0; k < gauss; ++k)
       if (c.gp_separated[k] > 1) refuse(ck.origin, item(e + ".gp_separated", k), std::to_string(int(c.gp_separated[k])), "must be 0 or 1");
@@ -217,7 +220,7 @@ void check_state(const Checker& ck, const State& s, const std::string& entry, bo
   check_plan(ck, s, entry + ".plan", holds_particles);
   if (!level) {
     std::vector<InterfaceOnGrid> all;
-    for (const CohesiveInterface& c : s.interfaces) all.push_back({&c, &s.grid});
+    for (const CohesiveInterface& c : s.interfaces) all.push_back({&c, &s.grid, &s.grid});
     check_interfaces(ck, all, entry);
   }
   ck.within(entry + ".flip", s.flip, 0.0, 1.0);
@@ -232,7 +235,7 @@ void check_run_state(const Checker& ck, const RunState& r, const std::string& en
   check_clock(ck, r.limits, r.dt, r.time, r.step, r.cohesive_seconds, entry);
   std::vector<InterfaceOnGrid> all;  // each on the lattice of its level
   for (std::size_t k = 0; k < r.num_interfaces(); ++k)
-    all.push_back({&r.interface(k), &r.levels[std::size_t(r.interface_levels[k])].grid});
+    all.push_back({&r.interface(k), &r.levels[std::size_t(r.interface_levels[k])].grid, &r.levels[0].grid});
   check_interfaces(ck, all, entry);
   for (std::size_t l = 0; l < r.levels.size(); ++l) check_state(ck, r.levels[l], item(entry + ".nested.levels", l), true);
   ck.count(entry + ".nested.migrations", r.migrations, 0, kMaxCount, "particles moved");

@@ -7,7 +7,11 @@ whole plate moving at 200 m/s across the grid, 3 mm (3 cells) in 15 us. Checks:
      to round-off (1e-9 of their largest elastic displacement, the move less the plate's rigid
      one): the tie was laid again where the material went (tests/test_tie_follow.cpp measures the
      same particle for particle; laid where drawn, they differ by 4 % of the elastic motion);
-  2. the site stays intact (ratio 0.5).
+  2. the site stays intact (ratio 0.5);
+  3. the same on nested levels (a fine box of 1 mm cells round the site in 2 mm ones, one step
+     for all): the stations equal the undivided nested plate's within 1e-6 of their elastic
+     displacement (tests/test_tie_follow.cpp bounds the residual at the box's edge). Its run
+     directory (WORK_DIR/nested) is the reference of ctest restart_tie_follow_nested_stop.
 Set LAUNCH (e.g. "mpiexec -n 2") to run under it.
 Usage: check_tie_follow.py RUPTURE CASE WORK_DIR"""
 import csv
@@ -63,6 +67,20 @@ print(f"moving {V} m/s for {a[-1][0] * 1e6:.1f} us: stations against the plate w
       f"of {largest:.3g} m elastic")
 if not worst <= 1e-9 * largest:
     failures.append(f"the split plate differs from the undivided one by {worst:.3g} m (bound round-off, 1e-9 of {largest:.3g})")
+
+nested = ["grid.max=[0.04, 0.048]", "grid.coarse_cell_size=2e-3", "grid.refine.box.min=[0.008, 0.008]",
+          "grid.refine.box.max=[0.032, 0.036]", "grid.refine.box.level=1", 'time.subcycling="none"']
+split_n, _ = run("nested", *moving, *nested)
+whole_n, _ = run("nested_no_line", *moving, *nested, path=plain_path)
+worst_n, largest_n = 0.0, 0.0
+for name in ("above", "below"):
+    for ra, rb in zip(elastic(split_n, name, V), elastic(whole_n, name, V)):
+        for k in (1, 2):
+            worst_n = max(worst_n, abs(ra[k] - rb[k]))
+            largest_n = max(largest_n, abs(rb[k]))
+print(f"nested levels: stations against the plate without the line {worst_n:.3g} m of {largest_n:.3g} m elastic")
+if not worst_n <= 1e-6 * largest_n:
+    failures.append(f"nested: the split plate differs from the undivided one by {worst_n:.3g} m (bound 1e-6 of {largest_n:.3g})")
 
 if failures:
     print("FAILED:\n  " + "\n  ".join(failures))
