@@ -77,6 +77,10 @@ TEST(TieFollow, SamplesKeepTheVerticesAndTheSpacing) {
                   // chord): kept at tolerance 0.1, dropped at 0.5
   EXPECT_EQ(carried_ties(at, std::vector<double>(7, 0.0), bent, 0.1)[0].x.size(), 5u);
   EXPECT_EQ(carried_ties(at, std::vector<double>(7, 0.0), bent, 0.5)[0].x.size(), 3u);
+  // A point carried past the chord's end (a hairpin) is kept: it lies on the chord's line, but far
+  // from the chord.
+  const TieSamples hairpin = sample_ties({line({0.0, 4.0, 2.0}, {0.0, 0.0, 0.0})}, 10.0);
+  EXPECT_EQ(carried_ties(hairpin, std::vector<double>(3, 0.0), std::vector<double>(3, 0.0), 0.1)[0].x.size(), 3u);
 }
 
 // The material's displacement at a point: the mean over the particles within the radius, so a

@@ -34,15 +34,16 @@ TieSamples sample_ties(const std::vector<Polyline>& ties, double spacing) {
 namespace {
 
 // Douglas-Peucker: keeps the points of [a, b] the chord from a to b misses by more than `tol`
-// (the farthest first, recursively), appending them and b to `out`.
+// (their distance to the chord, not to its line: a point beyond an end counts from that end; the
+// farthest first, recursively), appending them and b to `out`.
 void keep_bends(const std::vector<double>& x, const std::vector<double>& y, std::size_t a, std::size_t b,
                 double tol, Polyline& out) {
   double far = tol;
   std::size_t at = b;
-  const double dx = x[b] - x[a], dy = y[b] - y[a], len = std::hypot(dx, dy);
+  const double dx = x[b] - x[a], dy = y[b] - y[a], len2 = dx * dx + dy * dy;
   for (std::size_t j = a + 1; j < b; ++j) {
-    const double d = len > 0.0 ? std::fabs(dx * (y[j] - y[a]) - dy * (x[j] - x[a])) / len
-                               : std::hypot(x[j] - x[a], y[j] - y[a]);
+    const double f = len2 > 0.0 ? std::clamp(((x[j] - x[a]) * dx + (y[j] - y[a]) * dy) / len2, 0.0, 1.0) : 0.0;
+    const double d = std::hypot(x[j] - x[a] - f * dx, y[j] - y[a] - f * dy);
     if (d > far) far = d, at = j;
   }
   if (at != b) {
