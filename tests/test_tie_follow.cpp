@@ -17,27 +17,17 @@
 #include "solver/step.hpp"
 #include "solver/tie_follow.hpp"
 
+#include "support_lines.hpp"
+
 using namespace rupture;
 
 namespace {
 
-Polyline line(std::vector<double> x, std::vector<double> y) {
-  Polyline p;
-  p.x = std::move(x), p.y = std::move(y);
-  return p;
-}
+Polyline line(std::vector<double> x, std::vector<double> y) { return test::polyline(std::move(x), std::move(y)); }
 
 const std::string kSite = std::string(RUPTURE_SOURCE_DIR) + "/tests/inputs/nucleation_site.toml";
 
-std::string read_text(const std::string& path) {
-  std::string text;
-  FILE* f = std::fopen(path.c_str(), "r");
-  if (!f) return text;
-  char buf[4096];
-  for (std::size_t k; (k = std::fread(buf, 1, sizeof buf, f)) > 0;) text.append(buf, k);
-  std::fclose(f);
-  return text;
-}
+using test::read_text;
 
 // Steps the run to `end`, following its ties after every step (as the driver does) or not; how
 // many times they were laid again.

@@ -18,15 +18,13 @@
 #include "solver/state.hpp"
 #include "support_run.hpp"
 
+#include "support_lines.hpp"
+
 using namespace rupture;
 
 namespace {
 
-Polyline line(std::vector<double> x, std::vector<double> y) {
-  Polyline p;
-  p.x = std::move(x), p.y = std::move(y);
-  return p;
-}
+Polyline line(std::vector<double> x, std::vector<double> y) { return test::polyline(std::move(x), std::move(y)); }
 
 // Cells of 1 m, node i at x = i.
 Grid unit_grid(int nx, int ny) {
@@ -96,14 +94,8 @@ TEST(TieReach, TurnedTieTakesTheTurnedNodes) {
 // support without the particles' half-width, no reach beyond the ends) the stations beside the
 // line differed by 0.09 % at 30 degrees.
 TEST(TieReach, SplitAndTiedPlateIsTheUndividedPlate) {
-  std::string text;
-  {
-    FILE* f = std::fopen(kSite.c_str(), "r");
-    ASSERT_NE(f, nullptr);
-    char buf[4096];
-    for (std::size_t k; (k = std::fread(buf, 1, sizeof buf, f)) > 0;) text.append(buf, k);
-    std::fclose(f);
-  }
+  const std::string text = test::read_text(kSite);
+  ASSERT_FALSE(text.empty());
   const std::size_t a = text.find("[interface.site]"), b = text.find("[time]");
   ASSERT_NE(a, std::string::npos);
   ASSERT_NE(b, std::string::npos);
