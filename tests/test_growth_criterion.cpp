@@ -60,6 +60,12 @@ TEST(GrowthCriterion, PureModeTwoKinksAtMinus70Point5WithTheErdoganSihRatio) {
   EXPECT_TRUE(m1.grow);
   EXPECT_EQ(m1.angle, 0.0);
   EXPECT_DOUBLE_EQ(m1.driving, 1.0);
+  // Pressed shut (K_I < 0): the pure mode II tip's angle and K_eq, whatever the pressure.
+  const GrowthDecision closed = decide_growth(law, -0.3, -KII, 1.0);
+  EXPECT_TRUE(closed.grow);
+  EXPECT_NEAR(closed.angle * 180.0 / kPi, 70.5288, 1e-3);
+  EXPECT_NEAR(closed.driving, 2.0 / std::sqrt(3.0) * KII, 1e-9);
+  EXPECT_FALSE(decide_growth(law, -0.3, -0.86 * KII, 1.0).grow);  // 2/sqrt3 0.86 = 0.993 < K_Ic
 }
 
 TEST(GrowthCriterion, EnergyThresholdStraightDirectionAndClosedTips) {
@@ -76,8 +82,17 @@ TEST(GrowthCriterion, EnergyThresholdStraightDirectionAndClosedTips) {
   EXPECT_LT(m.angle, -0.5);
   law.direction = GrowthDirection::straight;
   EXPECT_EQ(decide_growth(law, 0.8 * K, 0.6 * K, E).angle, 0.0);
-  // Faces pressed together (K_I < 0) do not grow, however large K_II.
-  EXPECT_FALSE(decide_growth(law, -0.1 * K, 10.0 * K, E).grow);
+  // Faces pressed together (K_I < 0): the closed flaw, read as K_I = 0. Its shear alone decides,
+  // and it kinks as in pure mode II (-70.53 degrees for K_II > 0), whatever the pressure.
+  law.direction = GrowthDirection::max_hoop;
+  for (const double KI : {-0.01 * K, -0.5 * K, -5.0 * K}) {
+    const GrowthDecision c = decide_growth(law, KI, K * 1.000001, E);
+    EXPECT_TRUE(c.grow) << KI;
+    EXPECT_NEAR(c.angle * 180.0 / std::numbers::pi, -70.5288, 1e-3) << KI;
+    EXPECT_NEAR(c.driving, K * K * 1.000002 / E, 1e-9 * K * K / E) << KI;
+    EXPECT_FALSE(decide_growth(law, KI, K * 0.999999, E).grow) << KI;
+  }
+  EXPECT_FALSE(decide_growth(law, -10.0 * K, 0.0, E).grow);  // pressed, no shear: nothing drives it
   EXPECT_FALSE(decide_growth(GrowthLaw{}, K * 10.0, 0.0, E).grow);  // no criterion
 }
 

@@ -57,7 +57,15 @@ GrowthDecision decide_growth(const GrowthLaw& law, double K_I, double K_II, doub
     d.grow = d.driving >= d.critical;
     return d;
   }
-  const double hoop = hoop_stress_angle(K_I, K_II);
+  // A tip whose faces press together (K_I < 0) is read as the closed flaw of the wing-crack
+  // analyses (Horii & Nemat-Nasser 1986), K_I+ = max(K_I, 0), as on a weak plane: the faces
+  // carry contact, so no singular field can close the tip, and what the domains read as a
+  // negative K_I is the faces' pressure. Its shear still drives it: in pure mode II it grows
+  // at theta_c = -/+70.53 degrees once K_II^2 / E' (energy) or 2/sqrt3 |K_II| (max_hoop)
+  // reaches the toughness. (Refusing such a tip made the start wait for the sign of K_I,
+  // a few per cent of K_II: docs/validation.md, Kalthoff-Winkler.)
+  const double KIp = std::max(K_I, 0.0);
+  const double hoop = hoop_stress_angle(KIp, K_II);
   d.angle = law.direction == GrowthDirection::max_hoop ? hoop : 0.0;
   if (law.criterion == GrowthCriterion::cohesive) {
     d.critical = 1.0;
@@ -66,15 +74,13 @@ GrowthDecision decide_growth(const GrowthLaw& law, double K_I, double K_II, doub
     return d;
   }
   if (law.criterion == GrowthCriterion::max_hoop) {
-    d.driving = hoop_stress_intensity(K_I, K_II, hoop);
+    d.driving = hoop_stress_intensity(KIp, K_II, hoop);
     d.critical = law.toughness;
   } else {
-    d.driving = (running.A_I * K_I * K_I + running.A_II * K_II * K_II) / e_prime;
+    d.driving = (running.A_I * KIp * KIp + running.A_II * K_II * K_II) / e_prime;
     d.critical = law.fracture_energy;
   }
-  // A tip whose faces press together (K_I < 0) stays: the Williams field of a closed crack
-  // does not describe it (its faces carry contact instead).
-  d.grow = K_I > 0.0 && d.driving >= d.critical;
+  d.grow = d.driving > 0.0 && d.driving >= d.critical;
   return d;
 }
 
@@ -82,7 +88,7 @@ GrowthDecision decide_prescribed(const GrowthLaw& law, double K_I, double K_II, 
                                  double time) {
   GrowthDecision d;
   if (law.criterion != GrowthCriterion::prescribed) return d;
-  d.angle = law.direction == GrowthDirection::max_hoop ? hoop_stress_angle(K_I, K_II) : 0.0;
+  d.angle = law.direction == GrowthDirection::max_hoop ? hoop_stress_angle(std::max(K_I, 0.0), K_II) : 0.0;
   d.driving = time > law.start ? law.speed * (time - law.start) : 0.0;
   d.critical = grown + step;
   d.grow = d.driving >= d.critical * (1.0 - 1e-12);

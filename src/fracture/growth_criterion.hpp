@@ -32,7 +32,10 @@
 //    K_eq(k)^2 / E' (its k_II is 0), reaches the bulk's G_c. At phi = theta_c that is the
 //    G(theta_c) that made it kink (theta_c(k) = 0), so a kink runs on straight; once the kink is
 //    longer than the domains, phi -> 0 and the increment's G is that of max_hoop with K_I+.
-// A closed tip (K_I < 0) does not grow by K_Ic, G_c or from a cut, but for the weak plane's.
+// A closed tip (K_I < 0: its faces press together and carry contact) is read as K_I+ = max(K_I, 0)
+// by every criterion that reads K (the closed flaw of the wing-crack analyses): it grows in mode
+// II at theta_c(0, K_II) = -/+70.53 degrees once its shear alone reaches the toughness. A closed
+// cut does not grow by the cohesive criterion (that one waits to be pulled open).
 // Units: Pa m^1/2, J/m^2, radians.
 #pragma once
 

@@ -14,7 +14,14 @@ sin beta cos beta; F = 1.0096, Tada-Paris-Irwin p. 5.2):
   - beta = 0 (symmetric mode I), run on until each tip has grown 10 mm or more: every path vertex
     within one segment (half a cell) of the crack's axis, and the two tips mirror images of each
     other within one segment.
-Usage: check_crack_kink.py RUPTURE WORK_DIR (BETAS: the angles, default "0 30 45 60")"""
+With LOAD=compression the edges are pushed instead of pulled (-10 MPa): the crack is pressed
+shut (frictionless contact), its faces cannot carry a negative K_I, and it is the closed flaw of
+the wing-crack analyses (Horii & Nemat-Nasser 1986): K_I = 0, K_II = -sigma sqrt(pi a) F sin beta
+cos beta. Each tip must start where its shear alone reaches the toughness (K_eq = 2/sqrt3 |K_II|
+half of its full-load value, within 3 %), kinked by +70.53 degrees (within 3), while the domains
+read a negative K_I at the start (the faces' pressure: so the test needs the closed tip to grow).
+Usage: check_crack_kink.py RUPTURE WORK_DIR (BETAS: the angles, default "0 30 45 60"; LOAD:
+"tension", the default, or "compression")"""
 import json
 import math
 import os
@@ -52,10 +59,12 @@ def ramp_time(fraction):
 
 
 failures = []
+closed = os.environ.get("LOAD", "tension") == "compression"
 print("beta tip initiation_us expected_us angle_deg exact_deg")
 for beta in [int(v) for v in os.environ.get("BETAS", "0 30 45 60").split()]:
     c, s = math.cos(math.radians(beta)), math.sin(math.radians(beta))
-    KI, KII = K0 * c * c, K0 * s * c
+    # Pressed shut: K_I = 0 (contact), and the shear's sign turns with the load's.
+    KI, KII = (0.0, -K0 * s * c) if closed else (K0 * c * c, K0 * s * c)
     theta = hoop_angle(KI, KII)
     Kc = 0.5 * hoop_intensity(KI, KII, theta)
     t_expected = ramp_time(0.5)
@@ -70,7 +79,8 @@ for beta in [int(v) for v in os.environ.get("BETAS", "0 30 45 60").split()]:
                     "--set", "loads.bottom.from=[0.08, -0.1]", "--set", "loads.bottom.to=[-0.08, -0.1]",
                     "--set", f"interface.crack.points={pts}", "--set", 'interface.crack.growth="max_hoop"',
                     "--set", f"interface.crack.toughness={Kc!r}", "--set", f"time.end={end!r}",
-                    "--set", "output.crack_sample_interval=5e-6"],
+                    "--set", "output.crack_sample_interval=5e-6",
+                    *(["--set", "loads.top.normal=-10e6", "--set", "loads.bottom.normal=-10e6"] if closed else [])],
                    check=True, stdout=subprocess.DEVNULL)
     d = np.genfromtxt(os.path.join(out, "crack_path_crack.csv"), delimiter=",", names=True, ndmin=1)
     record = json.load(open(os.path.join(out, "run.json")))
@@ -88,6 +98,19 @@ for beta in [int(v) for v in os.environ.get("BETAS", "0 30 45 60").split()]:
         if abs(first["time"] - t_expected) > 0.03 * t_expected:
             failures.append(f"beta {beta} end {end_}: growth began at {first['time'] * 1e6:.2f} us, "
                             f"K_eq reaches K_Ic at {t_expected * 1e6:.2f} us (bound 3 %)")
+    if closed and len(d):
+        # The domains' K_I just before the first segment: negative (the faces press together),
+        # so the start is the closed tip's, not that of a K_I risen through zero.
+        k = np.genfromtxt(os.path.join(out, "stress_intensity_crack.csv"), delimiter=",", names=True)
+        before = k[k["time"] < d["time"].min()]
+        last = before[before["time"] == before["time"].max()] if len(before) else before
+        if len(last) == 0 or last["K_I"].max() >= 0.0:
+            failures.append(f"beta {beta}: the domains read K_I >= 0 before the start "
+                            f"({last['K_I'].max() if len(last) else 'no reading'}): the tip was not pressed shut")
+        else:
+            print(f"   {beta}: K_I read before the start {last['K_I'].min() / 1e6:.3f} to "
+                  f"{last['K_I'].max() / 1e6:.3f} MPa m^1/2, K_II {last['K_II'].mean() / 1e6:.3f} "
+                  f"(exact {KII * 0.5 / 1e6:.3f} at half load)")
     angle = record["cracks.crack.initial_angle"]
     if abs(angle - math.degrees(theta)) > 3.0:
         failures.append(f"beta {beta}: run.json cracks.crack.initial_angle = {angle:.2f}, expected "
