@@ -155,6 +155,58 @@ TEST(JIntegral, faces_loaded_by_the_stress_they_carry_release_nothing) {
   EXPECT_GT(std::fabs(free.K_I), 0.1 * K);  // the face term is what cancels it
 }
 
+// Faces in contact (FaceContact): a uniform shear sigma_12 = tau and pressure sigma_22 = -p across
+// the line, the faces pressing and rubbing with exactly the traction that stress puts on them
+// (on the upper face's material t = (-sigma_12, -sigma_22) = (-tau, p); -t on the lower): the
+// uncracked plate's state, so nothing is released. The shear enters K_II through the face term
+// (without it K_II reads about 0.6 tau sqrt(pi d)); the pressure is left out of K_I (a pressed
+// tip's K_I is read as the closed flaw's 0 by growth), so K_I reads as without the term. The same
+// in a frame turned by 30 degrees, with the line drawn either way (its normal flipped).
+TEST(JIntegral, faces_in_contact_carry_their_shear_into_K_II) {
+  const Field F = homalite(0.0, 0.0);
+  const double h = 0.1e-3, tau = 3e6, p = 5e6, K = tau * std::sqrt(kPi * 2e-3);
+  for (const double turn : {0.0, kPi / 6.0})
+    for (const double drawn : {1.0, -1.0}) {
+      const double c = std::cos(turn), sn = std::sin(turn);
+      std::vector<DomainPoint> pts;
+      std::vector<FaceContact> contacts;
+      for (int j = -30; j < 30; ++j)
+        for (int i = -30; i < 30; ++i) {
+          // In the tip frame: stress (0, -p, tau); turned by `turn` into the global frame.
+          const double x1 = (i + 0.5) * h, x2 = (j + 0.5) * h;
+          DomainPoint d{};
+          d.x = c * x1 - sn * x2, d.y = sn * x1 + c * x2, d.area = h * h, d.density = 1246.0;
+          const double s11 = 0.0, s22 = -p, s12 = tau;
+          d.sxx = c * c * s11 + sn * sn * s22 - 2.0 * c * sn * s12;
+          d.syy = sn * sn * s11 + c * c * s22 + 2.0 * c * sn * s12;
+          d.sxy = c * sn * (s11 - s22) + (c * c - sn * sn) * s12;
+          strain_of(F.C, d.sxx, d.syy, d.sxy, d.exx, d.eyy, d.exy);
+          d.ux_x = d.exx, d.uy_y = d.eyy, d.ux_y = d.exy, d.uy_x = d.exy;
+          pts.push_back(d);
+        }
+      for (int i = -30; i < 0; ++i) {
+        const double x1 = (i + 0.5) * h;
+        // The line's normal: +e2 of the tip frame when drawn towards the tip, -e2 when drawn
+        // away from it (then the upper face is the one below, and its traction (tau, -p)).
+        const double n1 = 0.0, n2 = drawn, t1 = -tau * drawn, t2 = p * drawn;
+        FaceContact f;
+        f.x = c * x1, f.y = sn * x1, f.length = h;
+        f.tx = c * t1 - sn * t2, f.ty = sn * t1 + c * t2;
+        f.sx = c * t1, f.sy = sn * t1;  // the shear part: along the face
+        f.nx = c * n1 - sn * n2, f.ny = sn * n1 + c * n2;
+        f.tx_s = drawn * c, f.ty_s = drawn * sn;
+        contacts.push_back(f);
+      }
+      const TipFrame tip{0.0, 0.0, c, sn};
+      const TipIntegrals r = tip_integrals(pts, tip, {1e-3, 2e-3}, tip_material(F), {}, contacts);
+      const TipIntegrals free = tip_integrals(pts, tip, {1e-3, 2e-3}, tip_material(F));
+      EXPECT_NEAR(r.K_II, 0.0, 2e-3 * K) << turn << " " << drawn;
+      EXPECT_GT(std::fabs(free.K_II), 0.1 * K) << turn;   // the face term is what cancels it
+      EXPECT_DOUBLE_EQ(r.K_I, free.K_I) << turn << " " << drawn;  // the pressure is left out
+      EXPECT_NEAR(r.J, free.J, 1e-12 * std::fabs(free.J) + 1e-20);  // no jump along the faces
+    }
+}
+
 // A mixed-mode Williams field plus a uniform stress sigma_22 = p, sigma_12 = s in the tip frame,
 // whose traction loads the crack faces (the two rows of points beside the line behind the tip,
 // each its share h): an exact solution with loaded faces. Its J is the singular field's,

@@ -98,7 +98,8 @@ bool nearest_to_end(const std::vector<FaceTraction>& faces, const std::vector<Do
 
 TipIntegrals integrate(const std::vector<PointTerms>& terms, const std::vector<DomainPoint>& points,
                        const Rotation& R, const TipFrame& tip, const JDomain& domain,
-                       const TipMaterial& m, const std::vector<FaceTraction>& faces) {
+                       const TipMaterial& m, const std::vector<FaceTraction>& faces,
+                       const std::vector<FaceContact>& contacts) {
   const double width = domain.outer - domain.inner;
   TipIntegrals out;
   double J = 0.0, M[2] = {0.0, 0.0};
@@ -201,6 +202,41 @@ TipIntegrals integrate(const std::vector<PointTerms>& terms, const std::vector<D
     }
     for (int k = 0; k < 2; ++k) M[k] -= share * (t1 * a[k].u1_1 + t2 * a[k].u2_1) * q;
   }
+  // Faces in contact: the traction t on the upper face, -t on the lower (j_integral.hpp).
+  for (const FaceContact& c : contacts) {
+    double x1, x2, t1, t2, n1, n2, d1, d2;
+    R.vec(c.x - tip.x, c.y - tip.y, x1, x2);
+    const double r = std::fabs(x1);
+    if (x1 >= 0.0 || r - 0.5 * c.length >= domain.outer) continue;
+    const double lo = std::max(r - 0.5 * c.length, 0.0), hi = r + 0.5 * c.length;
+    R.vec(c.tx, c.ty, t1, t2);
+    R.vec(c.nx, c.ny, n1, n2);
+    // J: t_i [[u_i]],1 with d/dx1 = (tau . e1) d/ds along the face (a face along the crack: +/- d/ds).
+    double tau1, tau2;
+    R.vec(c.tx_s, c.ty_s, tau1, tau2);
+    R.vec(c.jx_s, c.jy_s, d1, d2);
+    const double q = weight(r);
+    J -= (t1 * d1 + t2 * d2) * tau1 * q * c.length;
+    // M: each face's auxiliary gradient, the upper face on the side its normal points to; the
+    // shear part of the traction only (j_integral.hpp). Frictionless faces add nothing.
+    if (c.sx == 0.0 && c.sy == 0.0) continue;
+    R.vec(c.sx, c.sy, t1, t2);
+    const double share = 2.0 * (std::sqrt(hi) - std::sqrt(lo)) * std::sqrt(r);
+    const double up = n2 >= 0.0 ? 1.0 : -1.0;
+    for (const double side : {up, -up}) {
+      const double sign = side == up ? 1.0 : -1.0;  // the traction on that face's material
+      NearTipField a[2];
+      const double yf = side * 1e-12 * r;
+      if (v == 0.0) {
+        williams_fields(x1, yf, m.mu, m.kappa, a[0], a[1]);
+      } else {
+        RunningTipField rf[2];
+        running_tip_fields(x1, yf, v, m.mu, WaveSpeeds{m.c_d, m.c_s, 0.0, 0.0}, rf[0], rf[1]);
+        a[0] = rf[0].f, a[1] = rf[1].f;
+      }
+      for (int k = 0; k < 2; ++k) M[k] -= sign * share * (t1 * a[k].u1_1 + t2 * a[k].u2_1) * q;
+    }
+  }
   out.J = J;
   if (v == 0.0) {
     out.K_I = 0.5 * m.e_prime * M[0];
@@ -220,7 +256,8 @@ TipIntegrals integrate(const std::vector<PointTerms>& terms, const std::vector<D
 
 std::vector<TipIntegrals> tip_integrals(const std::vector<DomainPoint>& points, const TipFrame& tip,
                                         const std::vector<JDomain>& domains, const TipMaterial& m,
-                                        const std::vector<FaceTraction>& faces) {
+                                        const std::vector<FaceTraction>& faces,
+                                        const std::vector<FaceContact>& contacts) {
   const double norm = std::hypot(tip.e1x, tip.e1y);
   const Rotation R{tip.e1x / norm, tip.e1y / norm};
   double reach = 0.0;
@@ -241,14 +278,15 @@ std::vector<TipIntegrals> tip_integrals(const std::vector<DomainPoint>& points, 
 #pragma omp parallel for schedule(static) if (n > 256)
   for (long i = 0; i < n; ++i) terms[std::size_t(i)] = point_terms(points[inside[std::size_t(i)]], R, tip, m);
   std::vector<TipIntegrals> out;
-  for (const JDomain& d : domains) out.push_back(integrate(terms, points, R, tip, d, m, faces));
+  for (const JDomain& d : domains) out.push_back(integrate(terms, points, R, tip, d, m, faces, contacts));
   return out;
 }
 
 TipIntegrals tip_integrals(const std::vector<DomainPoint>& points, const TipFrame& tip,
                            const JDomain& domain, const TipMaterial& m,
-                           const std::vector<FaceTraction>& faces) {
-  return tip_integrals(points, tip, std::vector<JDomain>{domain}, m, faces).front();
+                           const std::vector<FaceTraction>& faces,
+                           const std::vector<FaceContact>& contacts) {
+  return tip_integrals(points, tip, std::vector<JDomain>{domain}, m, faces, contacts).front();
 }
 
 double hoop_stress_angle(double K_I, double K_II) {

@@ -14,7 +14,7 @@
 // lattice). Contract: the material is one
 // homogeneous linear elastic solid over the domain, with a stress-free reference state; the
 // crack faces inside the domain are straight and traction-free (the form then needs no face
-// term); the tip is stationary, or runs steadily near it at TipMaterial::speed v: then the
+// term), or carry the loads of FaceTraction and FaceContact (their face terms, below); the tip is stationary, or runs steadily near it at TipMaterial::speed v: then the
 // auxiliary fields are the running tip's, u^a_dot = -v u^a_,1, and M takes its steady form
 //   M = sum_p A_p [sigma_ij u^a_i,1 + sigma^a_ij u_i,1 - (sigma_ij eps^a_ij - rho v v_k u^a_k,1) delta_1j] q_,j
 // (the volume inertia terms, which cancel point by point for a steady field, dropped: their
@@ -65,6 +65,31 @@ struct FaceTraction {
   static constexpr double kNoEnd = std::numeric_limits<double>::quiet_NaN();
 };
 
+// Where the crack's faces press or rub on each other inside the domain (contact, or what is left
+// of a cohesive law once separated): a quadrature point of the line behind the tip carrying the
+// traction t on the upper face's material and -t on the lower's. Faces in contact are not
+// traction-free, so both integrals take the face term over the two faces (docs/fracture.md,
+// "Faces in contact"):
+//   J -= int t_i [[u_i]],1 q ds,   M -= int t_i (u^a_i,1(upper) - u^a_i,1(lower)) q ds,
+// [[u]] = u(upper) - u(lower) the jump, u^a on each face (theta = +/-pi), the r^-1/2 of u^a
+// integrated over the point's share as for FaceTraction. M takes the shear part s of t only: on
+// the faces the mode I field opens them (u^a_1 = 0) and the mode II field slides them (u^a_2 =
+// 0), so the pressure would act on K_I alone, and it is left out: a pressed tip's K_I is the
+// closed flaw's 0 (fracture/growth_criterion.hpp), and the penalty's pressure within a cell of a
+// tip is not resolved (it differs by ten times between the two tips of one crack). Without it a closed crack's pressure
+// p reads as a K_I of -c p sqrt(R) on a domain of radius R, and friction's traction as a K_II of
+// the same form (docs/validation.md, Kalthoff-Winkler). Contract: the points lie on the crack
+// line behind the tip (x1 < 0; others are skipped).
+struct FaceContact {
+  double x = 0.0, y = 0.0;        // the point, m
+  double length = 0.0;            // its share of the line, m
+  double tx = 0.0, ty = 0.0;      // traction on the upper face's material, Pa
+  double sx = 0.0, sy = 0.0;      // its shear part, along the face (friction's), Pa
+  double nx = 0.0, ny = 1.0;      // unit normal of the line, towards the upper face
+  double jx_s = 0.0, jy_s = 0.0;  // d[[u]]/ds along the line's direction (tx_s, ty_s), -
+  double tx_s = 1.0, ty_s = 0.0;  // unit direction of the line there
+};
+
 // The tip and the direction the crack points to (unit vector e1, from the crack into the
 // material ahead), global frame.
 struct TipFrame {
@@ -99,14 +124,16 @@ struct TipIntegrals {
 // The integrals over the points (those outside the outer square contribute nothing).
 TipIntegrals tip_integrals(const std::vector<DomainPoint>& points, const TipFrame& tip,
                            const JDomain& domain, const TipMaterial& material,
-                           const std::vector<FaceTraction>& faces = {});
+                           const std::vector<FaceTraction>& faces = {},
+                           const std::vector<FaceContact>& contacts = {});
 
 // The same on several domains at once (each point's auxiliary fields evaluated once; the
 // results are those of one call per domain, bit for bit).
 std::vector<TipIntegrals> tip_integrals(const std::vector<DomainPoint>& points, const TipFrame& tip,
                                         const std::vector<JDomain>& domains,
                                         const TipMaterial& material,
-                                        const std::vector<FaceTraction>& faces = {});
+                                        const std::vector<FaceTraction>& faces = {},
+                                        const std::vector<FaceContact>& contacts = {});
 
 // The maximum hoop stress direction (Erdogan & Sih 1963): the angle from the crack's direction
 // to the one a tip with K_I, K_II would kink into, radians, counterclockwise:

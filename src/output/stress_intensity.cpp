@@ -68,7 +68,7 @@ void sample_stress_intensity(const Case& c, RunState& s, const std::vector<Crack
       const bool grows = t < ends.size();
       const TipMaterial m = grows ? growing_tip_material(c, k, growth[k], int(t), ends[t].end, s.time, window) : mat;
       const double speed = grows ? growing_tip_speed(c, k, growth[k], int(t), ends[t].end, s.time, window) : 0.0;
-      const std::vector<TipIntegrals> r = read_tip(L, is, tips[t], m, s.time, initial);
+      const std::vector<TipIntegrals> r = read_tip(L, s.interface(k), is, tips[t], m, s.time, initial);
       for (std::size_t d = 0; d < r.size(); ++d)
         series[k].rows.insert(series[k].rows.end(),
                               {s.time, double(t), tips[t].x, tips[t].y, is.j_domains[d] * h, r[d].J,

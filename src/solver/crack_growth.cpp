@@ -283,14 +283,15 @@ void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& rec
     std::vector<std::vector<TipIntegrals>> readings(tips.size());
     const auto read = [&](std::size_t t) {
       if (!tips[t].read) return;
-      const InterfaceSpec& spec = L.interfaces[lines[tips[t].line].slot].spec;
+      const CohesiveInterface& line = L.interfaces[lines[tips[t].line].slot];
+      const InterfaceSpec& spec = line.spec;
       if (tips[t].domains == 1.0) {
-        readings[t] = read_tip(L, spec, tips[t].tip.frame, tips[t].mat, s.time, initial);
+        readings[t] = read_tip(L, line, spec, tips[t].tip.frame, tips[t].mat, s.time, initial);
         return;
       }
       InterfaceSpec near_sibling = spec;
       for (double& r : near_sibling.j_domains) r *= std::max(tips[t].domains, kSmallestDomain * h / r_out);
-      readings[t] = read_tip(L, near_sibling, tips[t].tip.frame, tips[t].mat, s.time, initial);
+      readings[t] = read_tip(L, line, near_sibling, tips[t].tip.frame, tips[t].mat, s.time, initial);
     };
     // Distributed: one tip after another (each read sums over the ranks; MPI calls stay outside
     // OpenMP regions).

@@ -32,8 +32,45 @@ std::vector<InitialStrain> initial_field_strains(const Case& c) {
   return out;
 }
 
-std::vector<TipIntegrals> read_tip(const State& L, const InterfaceSpec& is, const TipFrame& tip,
-                                   const TipMaterial& material, double time,
+namespace {
+
+// The separated Gauss points of the crack's line within `reach` of the tip whose faces touch
+// (their traction is contact's, or friction's), as the face loads of the J domains
+// (fracture/j_integral.hpp FaceContact). Points that still carry cohesion are left out: their
+// traction is the process zone's, and K stays the field outside it, as before. Distributed:
+// each rank the segments whose first node it owns (their sums over the ranks are the whole).
+std::vector<FaceContact> contacts_near(const CohesiveInterface& c, const TipFrame& tip, double reach) {
+  std::vector<FaceContact> out;
+  if (c.gp_tn.size() != c.num_segments() * std::size_t(CohesiveInterface::kGauss)) return out;
+  for (std::size_t s = 0; s < c.num_segments(); ++s) {
+    if (!c.owns(s)) continue;
+    const std::size_t e = c.segment_end(s);
+    const double len = c.seg_length[s];
+    if (!(len > 0.0)) continue;
+    const double xa = c.x0[s] + 0.5 * (c.ux_up[s] + c.ux_lo[s]), ya = c.y0[s] + 0.5 * (c.uy_up[s] + c.uy_lo[s]);
+    const double xb = c.x0[e] + 0.5 * (c.ux_up[e] + c.ux_lo[e]), yb = c.y0[e] + 0.5 * (c.uy_up[e] + c.uy_lo[e]);
+    const double da = std::hypot(xa - tip.x, ya - tip.y), db = std::hypot(xb - tip.x, yb - tip.y);
+    if (std::min(da, db) > reach + len) continue;
+    const double nx = c.seg_nx[s], ny = c.seg_ny[s];
+    const double taux = (c.x0[e] - c.x0[s]) / len, tauy = (c.y0[e] - c.y0[s]) / len;
+    const double jxs = (c.jump_x(e) - c.jump_x(s)) / len, jys = (c.jump_y(e) - c.jump_y(s)) / len;
+    for (int g = 0; g < CohesiveInterface::kGauss; ++g) {
+      const std::size_t i = s * std::size_t(CohesiveInterface::kGauss) + std::size_t(g);
+      if (!c.gp_separated[i] || (c.gp_tn[i] == 0.0 && c.gp_tt[i] == 0.0)) continue;
+      const double Nb = 0.5 * (1.0 + CohesiveInterface::kGaussXi[g]), Na = 1.0 - Nb;
+      // On the upper face: -(T^n n + T^t t), t = (n_y, -n_x) (solver/cohesive_step.cpp).
+      const double tn = c.gp_tn[i], tt = c.gp_tt[i];
+      out.push_back({Na * xa + Nb * xb, Na * ya + Nb * yb, 0.5 * len * CohesiveInterface::kGaussWeight[g],
+                     -(tn * nx + tt * ny), -(tn * ny - tt * nx), -tt * ny, tt * nx, nx, ny, jxs, jys, taux, tauy});
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<TipIntegrals> read_tip(const State& L, const CohesiveInterface& line, const InterfaceSpec& is,
+                                   const TipFrame& tip, const TipMaterial& material, double time,
                                    const std::vector<InitialStrain>& initial) {
   std::vector<TiedFields> ties;
   for (const BondedTie& b : L.bonded) ties.push_back({b.upper_field, b.lower_field, &b.nodes});
@@ -74,7 +111,8 @@ std::vector<TipIntegrals> read_tip(const State& L, const InterfaceSpec& is, cons
   }
   std::vector<JDomain> domains;
   for (double cells : is.j_domains) domains.push_back({0.5 * cells * h, cells * h});
-  std::vector<TipIntegrals> r = tip_integrals(pts, at, domains, material, faces);
+  const std::vector<FaceContact> contacts = contacts_near(line, tip, reach);
+  std::vector<TipIntegrals> r = tip_integrals(pts, at, domains, material, faces, contacts);
   if (!L.halo) return r;
   // J and M are sums over the points, K linear in M: the ranks' parts add up to the whole
   // domain's (the same bits on every rank, so every rank's growth decision is the same).

@@ -24,7 +24,9 @@ TipMaterial tip_material(const Case& c, std::size_t k);
 // Per velocity field, the uniform strain of its bodies' initial stress (bodies.NAME.stress).
 std::vector<InitialStrain> initial_field_strains(const Case& c);
 
-std::vector<TipIntegrals> read_tip(const State& level, const InterfaceSpec& is,
+// line: the crack's interface on that level (its faces in contact load the domains: the face
+// term of FaceContact); is: its spec, whose j_domains are read (a caller may shrink them).
+std::vector<TipIntegrals> read_tip(const State& level, const CohesiveInterface& line, const InterfaceSpec& is,
                                    const TipFrame& tip, const TipMaterial& material, double time,
                                    const std::vector<InitialStrain>& initial);
 
