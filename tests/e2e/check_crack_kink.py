@@ -20,8 +20,13 @@ the wing-crack analyses (Horii & Nemat-Nasser 1986): K_I = 0, K_II = -sigma sqrt
 cos beta. Each tip must start where its shear alone reaches the toughness (K_eq = 2/sqrt3 |K_II|
 half of its full-load value, within 3 %), kinked by +70.53 degrees (within 3), while the domains
 read a negative K_I at the start (the faces' pressure: so the test needs the closed tip to grow).
+With FRICTION=mu (compression only) the faces rub with Coulomb friction mu while they slide: the
+shear they do not hold drives the tip, K_II = -sigma sqrt(pi a) F (sin beta cos beta - mu cos^2
+beta) (the frictional closed flaw; the friction's traction enters K_II through the faces' contact
+term of the interaction integral, docs/fracture.md "Faces in contact"), and the start is checked
+against that K_II reaching the toughness.
 Usage: check_crack_kink.py RUPTURE WORK_DIR (BETAS: the angles, default "0 30 45 60"; LOAD:
-"tension", the default, or "compression")"""
+"tension", the default, or "compression"; FRICTION: 0 by default)"""
 import json
 import math
 import os
@@ -64,7 +69,8 @@ print("beta tip initiation_us expected_us angle_deg exact_deg")
 for beta in [int(v) for v in os.environ.get("BETAS", "0 30 45 60").split()]:
     c, s = math.cos(math.radians(beta)), math.sin(math.radians(beta))
     # Pressed shut: K_I = 0 (contact), and the shear's sign turns with the load's.
-    KI, KII = (0.0, -K0 * s * c) if closed else (K0 * c * c, K0 * s * c)
+    mu = float(os.environ.get("FRICTION", "0"))
+    KI, KII = (0.0, -K0 * (s * c - mu * c * c)) if closed else (K0 * c * c, K0 * s * c)
     theta = hoop_angle(KI, KII)
     Kc = 0.5 * hoop_intensity(KI, KII, theta)
     t_expected = ramp_time(0.5)
@@ -80,7 +86,8 @@ for beta in [int(v) for v in os.environ.get("BETAS", "0 30 45 60").split()]:
                     "--set", f"interface.crack.points={pts}", "--set", 'interface.crack.growth="max_hoop"',
                     "--set", f"interface.crack.toughness={Kc!r}", "--set", f"time.end={end!r}",
                     "--set", "output.crack_sample_interval=5e-6",
-                    *(["--set", "loads.top.normal=-10e6", "--set", "loads.bottom.normal=-10e6"] if closed else [])],
+                    *(["--set", "loads.top.normal=-10e6", "--set", "loads.bottom.normal=-10e6",
+                       "--set", f"interface.crack.friction={mu!r}"] if closed else [])],
                    check=True, stdout=subprocess.DEVNULL)
     d = np.genfromtxt(os.path.join(out, "crack_path_crack.csv"), delimiter=",", names=True, ndmin=1)
     record = json.load(open(os.path.join(out, "run.json")))
