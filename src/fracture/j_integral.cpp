@@ -96,6 +96,18 @@ bool nearest_to_end(const std::vector<FaceTraction>& faces, const std::vector<Do
   return true;
 }
 
+// The unit auxiliary fields of both modes on a face at x1 < 0, just above the line (yf > 0) or
+// just below it (yf < 0): the stationary tip's, or the running tip's at speed v.
+void face_fields(double x1, double yf, const TipMaterial& m, double v, NearTipField a[2]) {
+  if (v == 0.0) {
+    williams_fields(x1, yf, m.mu, m.kappa, a[0], a[1]);
+    return;
+  }
+  RunningTipField rf[2];
+  running_tip_fields(x1, yf, v, m.mu, WaveSpeeds{m.c_d, m.c_s, 0.0, 0.0}, rf[0], rf[1]);
+  a[0] = rf[0].f, a[1] = rf[1].f;
+}
+
 TipIntegrals integrate(const std::vector<PointTerms>& terms, const std::vector<DomainPoint>& points,
                        const Rotation& R, const TipFrame& tip, const JDomain& domain,
                        const TipMaterial& m, const std::vector<FaceTraction>& faces,
@@ -192,14 +204,7 @@ TipIntegrals integrate(const std::vector<PointTerms>& terms, const std::vector<D
     const double q = weight(r);
     const double share = 2.0 * (std::sqrt(hi) - std::sqrt(lo)) * std::sqrt(r);  // = l far away
     NearTipField a[2];
-    const double xf = x1, yf = std::copysign(1e-12 * std::fabs(x1), x2);
-    if (v == 0.0) {
-      williams_fields(xf, yf, m.mu, m.kappa, a[0], a[1]);
-    } else {
-      RunningTipField rf[2];
-      running_tip_fields(xf, yf, v, m.mu, WaveSpeeds{m.c_d, m.c_s, 0.0, 0.0}, rf[0], rf[1]);
-      a[0] = rf[0].f, a[1] = rf[1].f;
-    }
+    face_fields(x1, std::copysign(1e-12 * std::fabs(x1), x2), m, v, a);
     for (int k = 0; k < 2; ++k) M[k] -= share * (t1 * a[k].u1_1 + t2 * a[k].u2_1) * q;
   }
   // Faces in contact: the traction t on the upper face, -t on the lower (j_integral.hpp).
@@ -226,14 +231,7 @@ TipIntegrals integrate(const std::vector<PointTerms>& terms, const std::vector<D
     for (const double side : {up, -up}) {
       const double sign = side == up ? 1.0 : -1.0;  // the traction on that face's material
       NearTipField a[2];
-      const double yf = side * 1e-12 * r;
-      if (v == 0.0) {
-        williams_fields(x1, yf, m.mu, m.kappa, a[0], a[1]);
-      } else {
-        RunningTipField rf[2];
-        running_tip_fields(x1, yf, v, m.mu, WaveSpeeds{m.c_d, m.c_s, 0.0, 0.0}, rf[0], rf[1]);
-        a[0] = rf[0].f, a[1] = rf[1].f;
-      }
+      face_fields(x1, side * 1e-12 * r, m, v, a);
       for (int k = 0; k < 2; ++k) M[k] -= sign * share * (t1 * a[k].u1_1 + t2 * a[k].u2_1) * q;
     }
   }
