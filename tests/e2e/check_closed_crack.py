@@ -25,25 +25,22 @@ import sys
 
 import numpy as np
 
+from wide_plate import WIDE, crack
+
 rupture, work = sys.argv[1], sys.argv[2]
 here = os.path.dirname(os.path.abspath(__file__))
 example = os.path.join(here, "..", "..", "examples", "centre_crack_tension.toml")
 os.makedirs(work, exist_ok=True)
 sigma, a, F, beta = 10e6, 0.01, 1.0096, math.radians(45.0)
 c, s = math.cos(beta), math.sin(beta)
-y0 = 1e-4  # the crack's centre 0.1 mm above the plate's, as in check_stress_intensity.py
-pts = f"[[{-a * c!r}, {y0 - a * s!r}], [{a * c!r}, {y0 + a * s!r}]]"
 failures = []
 print("mu tip domain_mm K_I K_II exact_K_II error")
 for mu, bound in ((0.0, 0.05), (0.3, 0.10)):
     out = os.path.join(work, f"mu_{mu:g}")
     subprocess.run([rupture, "run", example, "-o", out, "--overwrite", "--quiet",
-                    "--set", "grid.min=[-0.08, -0.1]", "--set", "grid.max=[0.08, 0.1]",
-                    "--set", "bodies.plate.min=[-0.08, -0.1]", "--set", "bodies.plate.max=[0.08, 0.1]",
-                    "--set", "loads.top.from=[-0.08, 0.1]", "--set", "loads.top.to=[0.08, 0.1]",
-                    "--set", "loads.bottom.from=[0.08, -0.1]", "--set", "loads.bottom.to=[-0.08, -0.1]",
+                    *WIDE,
                     "--set", "loads.top.normal=-10e6", "--set", "loads.bottom.normal=-10e6",
-                    "--set", f"interface.crack.points={pts}", "--set", f"interface.crack.friction={mu!r}",
+                    *crack(a, 45), "--set", f"interface.crack.friction={mu!r}",
                     "--set", "time.end=300e-6", "--set", "output.crack_sample_interval=50e-6"],
                    check=True, stdout=subprocess.DEVNULL)
     k = np.genfromtxt(os.path.join(out, "stress_intensity_crack.csv"), delimiter=",", names=True)

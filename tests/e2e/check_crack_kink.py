@@ -35,6 +35,8 @@ import sys
 
 import numpy as np
 
+from wide_plate import CENTRE_Y, WIDE, crack
+
 rupture, work = sys.argv[1], sys.argv[2]
 here = os.path.dirname(os.path.abspath(__file__))
 example = os.path.join(here, "..", "..", "examples", "centre_crack_tension.toml")
@@ -75,15 +77,11 @@ for beta in [int(v) for v in os.environ.get("BETAS", "0 30 45 60").split()]:
     Kc = 0.5 * hoop_intensity(KI, KII, theta)
     t_expected = ramp_time(0.5)
     end = 345e-6 if beta == 0 else 315e-6
-    y0 = 1e-4
-    pts = f"[[{-a * c!r}, {y0 - a * s!r}], [{a * c!r}, {y0 + a * s!r}]]"
+    y0 = CENTRE_Y
     out = os.path.join(work, f"beta_{beta}")
     subprocess.run([rupture, "run", example, "-o", out, "--overwrite", "--quiet",
-                    "--set", "grid.min=[-0.08, -0.1]", "--set", "grid.max=[0.08, 0.1]",
-                    "--set", "bodies.plate.min=[-0.08, -0.1]", "--set", "bodies.plate.max=[0.08, 0.1]",
-                    "--set", "loads.top.from=[-0.08, 0.1]", "--set", "loads.top.to=[0.08, 0.1]",
-                    "--set", "loads.bottom.from=[0.08, -0.1]", "--set", "loads.bottom.to=[-0.08, -0.1]",
-                    "--set", f"interface.crack.points={pts}", "--set", 'interface.crack.growth="max_hoop"',
+                    *WIDE,
+                    *crack(a, beta), "--set", 'interface.crack.growth="max_hoop"',
                     "--set", f"interface.crack.toughness={Kc!r}", "--set", f"time.end={end!r}",
                     "--set", "output.crack_sample_interval=5e-6",
                     *(["--set", "loads.top.normal=-10e6", "--set", "loads.bottom.normal=-10e6",

@@ -31,6 +31,8 @@ import sys
 
 import numpy as np
 
+from wide_plate import CENTRE_Y, WIDE, crack
+
 rupture, work = sys.argv[1], sys.argv[2]
 here = os.path.dirname(os.path.abspath(__file__))
 example = os.path.join(here, "..", "..", "examples", "centre_crack_tension.toml")
@@ -44,18 +46,15 @@ KI, KII = K0 * c * c, K0 * s * c
 theta = 2 * math.atan((KI - math.sqrt(KI * KI + 8 * KII * KII)) / (4 * KII))
 ch = math.cos(theta / 2)
 Kc = 0.5 * ch * (KI * ch * ch - 1.5 * KII * math.sin(theta))
-y0 = 1e-4
+y0 = CENTRE_Y
 starts = {0: np.array([-a * c, y0 - a * s]), 1: np.array([a * c, y0 + a * s])}
 
 
 def run(name, *extra):
     out = os.path.join(work, name)
     cmd = [rupture, "run", example, "-o", out, "--overwrite", "--quiet",
-           "--set", "grid.min=[-0.08, -0.1]", "--set", "grid.max=[0.08, 0.1]",
-           "--set", "bodies.plate.min=[-0.08, -0.1]", "--set", "bodies.plate.max=[0.08, 0.1]",
-           "--set", "loads.top.from=[-0.08, 0.1]", "--set", "loads.top.to=[0.08, 0.1]",
-           "--set", "loads.bottom.from=[0.08, -0.1]", "--set", "loads.bottom.to=[-0.08, -0.1]",
-           "--set", f"interface.crack.points=[[{-a * c!r}, {y0 - a * s!r}], [{a * c!r}, {y0 + a * s!r}]]",
+           *WIDE,
+           *crack(a, beta),
            "--set", 'interface.crack.growth="max_hoop"', "--set", f"interface.crack.toughness={Kc!r}",
            "--set", "time.end=312e-6", "--set", "output.crack_sample_interval=5e-6"]
     for e in extra:

@@ -27,6 +27,8 @@ import sys
 
 import numpy as np
 
+from wide_plate import WIDE, crack
+
 rupture, work = sys.argv[1], sys.argv[2]
 here = os.path.dirname(os.path.abspath(__file__))
 example = os.path.join(here, "..", "..", "examples", "centre_crack_tension.toml")
@@ -50,14 +52,9 @@ print("beta tip K_I/ref K_II/ref (K_I-exact)/K0 (K_II-exact)/K0 J_spread J/(K^2/
 for beta in [int(v) for v in os.environ.get('BETAS', '0 30 45 60').split()]:
     c, s = math.cos(math.radians(beta)), math.sin(math.radians(beta))
     out = os.path.join(work, f"beta_{beta}")
-    y0 = 1e-4
-    pts = f"[[{-a * c!r}, {y0 - a * s!r}], [{a * c!r}, {y0 + a * s!r}]]"
     cmd = [rupture, "run", example, "-o", out, "--overwrite", "--quiet",
-           "--set", "grid.min=[-0.08, -0.1]", "--set", "grid.max=[0.08, 0.1]",
-           "--set", "bodies.plate.min=[-0.08, -0.1]", "--set", "bodies.plate.max=[0.08, 0.1]",
-           "--set", "loads.top.from=[-0.08, 0.1]", "--set", "loads.top.to=[0.08, 0.1]",
-           "--set", "loads.bottom.from=[0.08, -0.1]", "--set", "loads.bottom.to=[-0.08, -0.1]",
-           "--set", f"interface.crack.points={pts}"]
+           *WIDE,
+           *crack(a, beta)]
     subprocess.run(cmd, check=True)
     d = np.genfromtxt(os.path.join(out, "stress_intensity_crack.csv"), delimiter=",", names=True)
     last = d[d["time"] == d["time"].max()]
