@@ -14,7 +14,8 @@
 // lattice). Contract: the material is one
 // homogeneous linear elastic solid over the domain, with a stress-free reference state; the
 // crack faces inside the domain are straight and traction-free (the form then needs no face
-// term), or carry the loads of FaceTraction and FaceContact (their face terms, below); the tip is stationary, or runs steadily near it at TipMaterial::speed v: then the
+// term), or carry the loads of FaceTraction and FaceContact (their face terms, below); the tip
+// is stationary, or runs steadily near it at TipMaterial::speed v: then the
 // auxiliary fields are the running tip's, u^a_dot = -v u^a_,1, and M takes its steady form
 //   M = sum_p A_p [sigma_ij u^a_i,1 + sigma^a_ij u_i,1 - (sigma_ij eps^a_ij - rho v v_k u^a_k,1) delta_1j] q_,j
 // (the volume inertia terms, which cancel point by point for a steady field, dropped: their
@@ -76,9 +77,9 @@ struct FaceTraction {
 // the faces the mode I field opens them (u^a_1 = 0) and the mode II field slides them (u^a_2 =
 // 0), so the pressure would act on K_I alone, and it is left out: a pressed tip's K_I is the
 // closed flaw's 0 (fracture/growth_criterion.hpp), and the penalty's pressure within a cell of a
-// tip is not resolved (it differs by ten times between the two tips of one crack). Without it a closed crack's pressure
-// p reads as a K_I of -c p sqrt(R) on a domain of radius R, and friction's traction as a K_II of
-// the same form (docs/validation.md, Kalthoff-Winkler). Contract: the points lie on the crack
+// tip is not resolved (it differs by ten times between the two tips of one crack). Without the
+// term a closed crack's pressure p reads as a K_I of -c p sqrt(R) on a domain of radius R, and
+// friction's traction as a K_II of the same form (docs/validation.md, Kalthoff-Winkler). Contract: the points lie on the crack
 // line behind the tip (x1 < 0; others are skipped).
 struct FaceContact {
   double x = 0.0, y = 0.0;        // the point, m
