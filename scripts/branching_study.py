@@ -6,7 +6,10 @@ criterion measured it) and its largest speed over 2 mm of path before then, when
 tip splits and the half angle between the branches, where and when each branch reaches the
 plate's edge, the branches' largest mirror mismatch (|y_left + y_right| at equal x), the energy
 balance error, steps and wall time.
-Usage: branching_study.py RUPTURE WORK_DIR [CELL_SIZES...] (BRANCH_END=SECONDS: another end time)"""
+Usage: branching_study.py RUPTURE WORK_DIR [CELL_SIZES...] (BRANCH_END=SECONDS: another end time;
+BRANCH_SET="KEY=VALUE ...": more --set options, e.g. nested levels round the path:
+BRANCH_SET="grid.coarse_cell_size=1e-3 grid.refinement=nested grid.refine.path.level=1
+grid.refine.path.min=[0.0,-0.014] grid.refine.path.max=[0.1,0.014]")"""
 import json
 import os
 import subprocess
@@ -17,15 +20,16 @@ import numpy as np
 rupture, work = sys.argv[1], sys.argv[2]
 sizes = [float(v) for v in sys.argv[3:]] or [1e-3, 0.5e-3, 0.25e-3]
 end = float(os.environ.get("BRANCH_END", "80e-6"))  # s
+extra = [a for kv in os.environ.get("BRANCH_SET", "").split() for a in ("--set", kv)]
 here = os.path.dirname(os.path.abspath(__file__))
 example = os.path.join(here, "..", "examples", "dynamic_branching.toml")
 print("h_mm initiation_us speed_m_s peak_m_s split_us split_x_mm half_angle_deg "
       "left_end_mm left_us right_end_mm right_us mirror_mm energy_err steps wall_s")
 for h in sizes:
-    out = os.path.join(work, f"h_{h * 1e3:g}mm")
+    out = os.path.join(work, f"h_{h * 1e3:g}mm" + ("_set" if extra else ""))
     subprocess.run([rupture, "run", example, "-o", out, "--overwrite", "--quiet",
                     "--set", f"grid.cell_size={h!r}", "--set", f"interface.notch.segments={round(0.05 / h)}",
-                    "--set", f"time.end={end!r}"], check=True, stdout=subprocess.DEVNULL)
+                    "--set", f"time.end={end!r}", *extra], check=True, stdout=subprocess.DEVNULL)
     r = json.load(open(os.path.join(out, "run.json")))
     d = np.genfromtxt(os.path.join(out, "crack_path_notch.csv"), delimiter=",", names=True)
     split = np.nonzero(d["end"] >= 2)[0]

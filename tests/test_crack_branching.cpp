@@ -18,7 +18,9 @@
 #include "cohesive/interface_growth.hpp"
 #include "geometry/shape.hpp"
 #include "input/case_toml.hpp"
+#include "solver/cohesive_step.hpp"
 #include "solver/crack_branching.hpp"
+#include "solver/nested_state.hpp"
 #include "solver/state.hpp"
 #include "support.hpp"
 #include "support_run.hpp"
@@ -31,7 +33,7 @@ constexpr double kH = 0.5e-3;  // m
 
 // A 20 x 10 mm block with an edge crack from its left edge along y = 5 mm to x = 8 mm, its top
 // and bottom edges pulled by 2 MPa (raised over 1 us), its tip allowed one split.
-Case pulled_block() {
+Case pulled_block(const std::string& grid_extra = "") {
   return parse_case(fmt::format(R"({0}
 [model]
 plane = "strain"
@@ -40,6 +42,7 @@ min = [0.0, 0.0]
 max = [0.02, 0.01]
 cell_size = {1}
 particles_per_cell = 2
+{2}
 [bodies.block]
 material = "homalite"
 min = [0.0, 0.0]
@@ -69,7 +72,7 @@ rise_time = 1e-6
 [time]
 end = 10e-6
 )",
-                                test::kHomaliteToml, kH));
+                                test::kHomaliteToml, kH, grid_extra));
 }
 
 constexpr double kDeg = std::numbers::pi / 180.0;
@@ -165,4 +168,74 @@ TEST(CrackBranching, a_symmetric_split_keeps_the_mirror_symmetry_and_the_energy_
     worst = std::max({worst, std::fabs(P.vx[q] - P.vx[*it]), std::fabs(P.vy[q] + P.vy[*it])});
   }
   EXPECT_LT(worst, 1e-6 * vmax) << "largest mirror mismatch " << worst << " m/s of " << vmax;
+}
+
+// Nested levels: the crack and the material round it on 0.5 mm cells (x < 12 mm, 3 < y < 7 mm),
+// the rest of the block on 1 mm. The branches' cuts run on to the block's right edge through the
+// coarse level, so the wedge holds particles of both levels: each level's take the wedge's field,
+// the split line's tie goes on every level, and the branches' ties are laid on each level's own
+// lattice, after the run's interfaces (RunState::interface_levels). Without the other levels in
+// the call the coarse level keeps its wedge particles in the old fields: the check can fail.
+TEST(CrackBranching, on_nested_levels_every_level_takes_the_wedge_and_the_ties) {
+  const Case c = pulled_block(R"(coarse_cell_size = 1e-3
+refinement = "nested"
+[grid.refine.crack]
+min = [0.0, 0.003]
+max = [0.012, 0.007]
+level = 1)");
+  const int up = c.interfaces[0].upper_field, lo = c.interfaces[0].lower_field, w = c.interfaces[0].branch_fields[0];
+  const double tx = 0.008, ty = 0.005, t20 = std::tan(20.0 * kDeg);
+  for (const bool all_levels : {true, false}) {
+    RunState r = make_nested_state(c);
+    ASSERT_EQ(r.levels.size(), 2u);
+    ASSERT_EQ(r.interface_levels[0], 1);
+    State &fine = r.levels[1], &coarse = r.levels[0];
+    ASSERT_EQ(fine.bonded.size(), 1u);
+    ASSERT_EQ(coarse.bonded.size(), 1u);
+    ASSERT_FALSE(coarse.bonded[0].nodes.empty()) << "the coarse level ties the crack's extension";
+    const std::vector<CrackTip> tips = precrack_tips(fine.interfaces[0].spec, 1e-6 * kH);
+    ASSERT_EQ(tips.size(), 1u);
+    const TipFrame& f = tips[0].frame;
+    const double a = 20.0 * kDeg, len = 0.5 * kH;
+    const std::vector<State*> others = all_levels ? std::vector<State*>{&coarse} : std::vector<State*>{};
+    const BranchTies ties = all_levels ? BranchTies{0, r.num_interfaces()} : BranchTies{};
+    const std::array<std::size_t, 2> slots =
+        split_crack_tip(c, 0, fine, r.interface_slots[0], tips[0], f.x + len * std::cos(a), f.y + len * std::sin(a),
+                        f.x + len * std::cos(a), f.y - len * std::sin(a), w, true, others, ties);
+    // Every particle of a level in the field of the part it lies in.
+    const auto wrong_on = [&](const State& L, int& wedge) {
+      int wrong = 0;
+      wedge = 0;
+      const Particles& P = L.particles;
+      for (std::size_t q = 0; q < P.size(); ++q) {
+        const double x = P.x0[q], y = P.y0[q] - ty;
+        const bool in_wedge = x > tx && std::fabs(y) < (x - tx) * t20;
+        wrong += P.field[q] != (in_wedge ? w : y > 0.0 ? up : lo);
+        wedge += in_wedge;
+      }
+      return wrong;
+    };
+    int fine_wedge = 0, coarse_wedge = 0;
+    EXPECT_EQ(wrong_on(fine, fine_wedge), 0);
+    EXPECT_GT(fine_wedge, 10);
+    const int coarse_wrong = wrong_on(coarse, coarse_wedge);
+    ASSERT_GT(coarse_wedge, 10) << "the wedge reaches the coarse level";
+    if (!all_levels) {
+      EXPECT_GT(coarse_wrong, 0) << "the test would see a level left behind";
+      continue;
+    }
+    EXPECT_EQ(coarse_wrong, 0) << "the coarse level's wedge takes the kept field";
+    // The split line's tie is gone on both levels; each branch's tie is laid on each level's
+    // lattice at the branch's index among the run's interfaces (1 and 2 here).
+    for (const State* L : {&fine, &coarse}) {
+      ASSERT_EQ(L->bonded.size(), 3u);
+      EXPECT_TRUE(L->bonded[0].nodes.empty());
+      for (int b = 0; b < 2; ++b) {
+        const InterfaceSpec& sp = fine.interfaces[slots[std::size_t(b)]].spec;
+        EXPECT_EQ(L->bonded[1 + std::size_t(b)].nodes, bonded_nodes(L->grid, sp));
+        EXPECT_FALSE(L->bonded[1 + std::size_t(b)].nodes.empty());
+        EXPECT_EQ(L->bonded[1 + std::size_t(b)].upper_field, sp.upper_field);
+      }
+    }
+  }
 }

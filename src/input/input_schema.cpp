@@ -606,7 +606,7 @@ std::vector<KeyDoc> build_schema() {
        "true"},
       {"interface.*.growth_step", "number", "cells", "0.5", "(0, 0.5]; with growth",
        "the length of one new segment (a tip grows at most one segment per step)", "0.5"},
-      {"interface.*.branching", "string", "", "none", "none, yoffe; with growth = energy or max_hoop, on a uniform grid",
+      {"interface.*.branching", "string", "", "none", "none, yoffe; with growth = energy or max_hoop",
        "when a growing tip splits in two: yoffe, once the tip's speed (over the outer J domain's "
        "radius of path) reaches the speed where the running mode-I field's largest hoop stress "
        "leaves the crack's axis (Yoffe 1951; Freund 1990), the two new tips leaving at the angles "

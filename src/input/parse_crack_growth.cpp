@@ -26,7 +26,7 @@ bool cohesive_crack_law(const InterfaceSpec& is) {
 }
 
 // branching, max_branches (fracture/branching_criterion.hpp; solver/crack_branching.hpp).
-void parse_branching(Section& f, GrowthLaw& g, const Case& c) {
+void parse_branching(Section& f, GrowthLaw& g) {
   const std::string b = f.string("branching", "none", {"none", "yoffe"});
   g.branching = b == "yoffe" ? BranchCriterion::yoffe : BranchCriterion::none;
   if (g.branching == BranchCriterion::none) {
@@ -34,10 +34,6 @@ void parse_branching(Section& f, GrowthLaw& g, const Case& c) {
       fail(f.key("max_branches"), show(*f.node("max_branches")), "needs branching = \"yoffe\"");
     return;
   }
-  if (c.grid.refined())
-    fail(f.key("branching"), "\"" + b + "\"",
-         "needs a uniform grid: a branch's ties and its wedge's field are laid on one grid (a crack "
-         "on nested levels grows, but does not split yet)");
   if (g.criterion == GrowthCriterion::cohesive || g.criterion == GrowthCriterion::prescribed)
     fail(f.key("branching"), "\"" + b + "\"",
          "needs growth = \"energy\" or \"max_hoop\" (Yoffe's criterion reads the running tip's K field; "
@@ -184,7 +180,7 @@ void parse_growth(Section& f, InterfaceSpec& is, const Case& c) {
          "must be in (0, 0.5] (cells): a tip grows at most half a cell at a time, so a segment "
          "never jumps over the grid nodes that carry the fields on either side");
   is.stress_intensity = true;
-  parse_branching(f, g, c);
+  parse_branching(f, g);
   is.running_tip = f.boolean("running_tip", false);
   if (is.running_tip && g.criterion == GrowthCriterion::energy && g.plane_fracture_energy > 0.0)
     fail(f.key("running_tip"), "true",

@@ -33,7 +33,8 @@ WaveSpeeds crack_wave_speeds(const Case& c, std::size_t k) {
 
 std::array<std::size_t, 2> split_crack_tip(const Case& c, std::size_t k, State& L, std::size_t slot,
                                            const CrackTip& tip, double left_x, double left_y, double right_x,
-                                           double right_y, int wedge_field, bool flip_particles) {
+                                           double right_y, int wedge_field, bool flip_particles,
+                                           const std::vector<State*>& others, BranchTies entries) {
   const double h = L.grid.cell_size(), tol = 1e-6 * h;
   const Point a{tip.frame.x, tip.frame.y}, pl{left_x, left_y}, pr{right_x, right_y};
   const Point dl = unit(a, pl), dr = unit(a, pr);
@@ -51,21 +52,27 @@ std::array<std::size_t, 2> split_crack_tip(const Case& c, std::size_t k, State& 
                                                   near(a, t.x.back(), t.y.back(), tol));
     if (!at_tip) ties.push_back(t);
   }
+  std::vector<State*> levels{&L};
+  levels.insert(levels.end(), others.begin(), others.end());
+  const std::size_t parent_tie = entries.parent != std::size_t(-1) ? entries.parent : slot;
   {
     CohesiveInterface& in = L.interfaces[slot];
     in.spec.bonded_lines = ties;
     in.spec.bonded = !ties.empty();
-    L.bonded[slot].nodes = bonded_nodes(L.grid, in.spec);
+    for (State* S : levels) S->bonded[parent_tie].nodes = bonded_nodes(S->grid, in.spec);
   }
-  // The wedge: left of the walk in along the left cut and out along the right one.
+  // The wedge: left of the walk in along the left cut and out along the right one (on every
+  // level: each holds its own particles).
   if (flip_particles) {
     const Shape wedge = left_part(frame, {leave_box(frame, a, dl), a, leave_box(frame, a, dr)});
-    const Particles& P = L.particles;
-    for (std::size_t q = 0; q < P.size(); ++q) {
-      if (P.field[q] != left && P.field[q] != right) continue;
-      if (contains(wedge, P.x0[q], P.y0[q])) move_particle_to_field(L, q, std::uint8_t(wedge_field));
+    for (State* S : levels) {
+      const Particles& P = S->particles;
+      for (std::size_t q = 0; q < P.size(); ++q) {
+        if (P.field[q] != left && P.field[q] != right) continue;
+        if (contains(wedge, P.x0[q], P.y0[q])) move_particle_to_field(*S, q, std::uint8_t(wedge_field));
+      }
+      measure_windows_again(*S);
     }
-    measure_windows_again(L);
   }
   // The two branches, their nodes displaced as the tip node.
   const CohesiveInterface& from = L.interfaces[slot];
@@ -97,9 +104,11 @@ std::array<std::size_t, 2> split_crack_tip(const Case& c, std::size_t k, State& 
     ci.light_face_mass = light;
     ci.time = time;
     evaluate_interface(ci, time, time);
-    // At the new interface's index: stretches with ties of their own come after the interfaces.
-    L.bonded.insert(L.bonded.begin() + long(L.interfaces.size()),
-                    BondedTie{sp.upper_field, sp.lower_field, bonded_nodes(L.grid, sp)});
+    // At the new interface's index: stretches with ties of their own come after the interfaces
+    // (nested levels: after the run's interfaces, on every level).
+    const std::size_t at = entries.first_new != std::size_t(-1) ? entries.first_new + std::size_t(b) : L.interfaces.size();
+    for (State* S : levels)
+      S->bonded.insert(S->bonded.begin() + long(at), BondedTie{sp.upper_field, sp.lower_field, bonded_nodes(S->grid, sp)});
     L.interfaces.push_back(std::move(ci));
     slots[std::size_t(b)] = L.interfaces.size() - 1;
   }

@@ -21,6 +21,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 #include "cohesive/interface_growth.hpp"
 #include "fracture/branching_criterion.hpp"
@@ -37,8 +38,17 @@ WaveSpeeds crack_wave_speeds(const Case& c, std::size_t k);
 // right branch to (right_x, right_y) (reference positions, inside the body), the wedge in
 // `wedge_field`; with flip_particles the wedge's particles move to it (a restored run takes
 // fields from its checkpoint). Returns the slots of the left and right branches on the level.
+// Nested levels: `others` are the run's other levels (their particles of the wedge move with
+// L's, and every level lays the ties on its own lattice); ties.parent is the split line's entry
+// in every level's State::bonded and ties.first_new where the branches' two go (one grid: the
+// defaults, its slot and the level's interface count; nested levels: its index among the run's
+// interfaces and their count, RunState::interface_levels).
+struct BranchTies {
+  std::size_t parent = std::size_t(-1), first_new = std::size_t(-1);
+};
 std::array<std::size_t, 2> split_crack_tip(const Case& c, std::size_t k, State& L, std::size_t slot,
                                            const CrackTip& tip, double left_x, double left_y, double right_x,
-                                           double right_y, int wedge_field, bool flip_particles);
+                                           double right_y, int wedge_field, bool flip_particles,
+                                           const std::vector<State*>& others = {}, BranchTies ties = {});
 
 }  // namespace rupture

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 #include <variant>
 
 #include <fmt/format.h>
@@ -100,6 +101,32 @@ std::vector<CrackLine> crack_lines(const RunState& s, std::size_t k, const Crack
   return lines;
 }
 
+// Where a line's tie is in every level's State::bonded: one grid, its slot; nested levels, its
+// index among the run's interfaces (the case's, then the branches', RunState::interface_levels),
+// the same on every level.
+std::size_t tie_entry(const RunState& s, int level, std::size_t slot) {
+  if (!s.joined()) return slot;
+  for (std::size_t g = 0; g < s.num_interfaces(); ++g)
+    if (s.interface_levels[g] == level && s.interface_slots[g] == slot) return g;
+  throw std::logic_error("crack growth: a line on no level of the run");
+}
+
+// The run's levels other than `level` (nested levels; none on one grid).
+std::vector<State*> other_levels(RunState& s, int level) {
+  std::vector<State*> others;
+  if (s.joined())
+    for (std::size_t l = 0; l < s.levels.size(); ++l)
+      if (int(l) != level) others.push_back(&s.levels[l]);
+  return others;
+}
+
+// The split's ties (solver/crack_branching.hpp BranchTies): nested levels, the parent's entry
+// and the run's interface count; one grid, the defaults.
+BranchTies branch_ties(const RunState& s, int level, std::size_t slot) {
+  if (!s.joined()) return {};
+  return {tie_entry(s, level, slot), s.num_interfaces()};
+}
+
 // Splits the tip g grows at into two branches at +-g.split from its growth direction (each a
 // growth step long, ending on the body's edge at most), and records the split and the two
 // first segments. False (nothing done) where a branch would leave the body at once.
@@ -123,7 +150,7 @@ bool split_tip(const Case& c, std::size_t k, RunState& s, int level, std::size_t
   const std::size_t n = record.branch_slots.size();
   const std::array<std::size_t, 2> slots =
       split_crack_tip(c, k, s.levels[std::size_t(level)], slot, tip, end[0].x, end[0].y, end[1].x, end[1].y,
-                      c.interfaces[k].branch_fields[n / 2], true);
+                      c.interfaces[k].branch_fields[n / 2], true, other_levels(s, level), branch_ties(s, level, slot));
   for (const std::size_t b : slots) s.interface_levels.push_back(level), s.interface_slots.push_back(b);
   const double column = kSplitAtStart + (tip.end == LineEnd::start ? 0.0 : 1.0);
   record.rows.insert(record.rows.end(), {s.time, double(g.label), column, f.x, f.y, g.split * kDegree, 0.0, g.K_I, g.K_II});
@@ -135,15 +162,6 @@ bool split_tip(const Case& c, std::size_t k, RunState& s, int level, std::size_t
                        {s.time, double(2 + n + std::size_t(b)), 1.0, end[b].x, end[b].y, turn, len, g.K_I, g.K_II});
   }
   return true;
-}
-
-// The run's levels other than `level` (nested levels; none on one grid).
-std::vector<State*> other_levels(RunState& s, int level) {
-  std::vector<State*> others;
-  if (s.joined())
-    for (std::size_t l = 0; l < s.levels.size(); ++l)
-      if (int(l) != level) others.push_back(&s.levels[l]);
-  return others;
 }
 
 // On nested levels a tip is read from its level's particles and lattice alone, so every particle
@@ -390,7 +408,7 @@ void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& rec
         continue;
       }
       check_junction({it->frame.x, it->frame.y}, {g.x, g.y});
-      const bool through = add_crack_segment(c, k, L, slot, *it, g.x, g.y, true, others);
+      const bool through = add_crack_segment(c, k, L, slot, *it, g.x, g.y, true, others, tie_entry(s, level, slot));
       const double len = std::hypot(g.x - g.tip.frame.x, g.y - g.tip.frame.y);
       records[k].rows.insert(records[k].rows.end(),
                              {s.time, double(g.label), end_column, g.x, g.y, g.angle * kDegree, len, g.K_I, g.K_II});
@@ -412,7 +430,7 @@ void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& rec
         const double x = l == left ? edge.x : f.x + dx * l / left, y = l == left ? edge.y : f.y + dy * l / left;
         const double turn = std::atan2(f.e1x * dy - f.e1y * dx, f.e1x * dx + f.e1y * dy);
         check_junction({f.x, f.y}, {x, y});
-        const bool done = add_crack_segment(c, k, L, slot, *at, x, y, true, others);
+        const bool done = add_crack_segment(c, k, L, slot, *at, x, y, true, others, tie_entry(s, level, slot));
         records[k].rows.insert(records[k].rows.end(),
                                {s.time, double(g.label), end_column, x, y, turn * kDegree, l, g.K_I, g.K_II});
         check_ties(slot);
@@ -449,7 +467,7 @@ void regrow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& r
                                      "from (the checkpoint is not of this case)",
                                      k, i / kGrowthColumns, at == LineEnd::start ? "start" : "end"));
       if (!split) {
-        add_crack_segment(c, k, L, slot, *it, r[i + 3], r[i + 4], false, others);
+        add_crack_segment(c, k, L, slot, *it, r[i + 3], r[i + 4], false, others, tie_entry(s, level, slot));
         continue;
       }
       // A split: the next two rows are its branches' first segments.
@@ -461,7 +479,7 @@ void regrow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& r
       const std::size_t a = i + kGrowthColumns, bb = i + 2 * kGrowthColumns;
       const std::array<std::size_t, 2> slots =
           split_crack_tip(c, k, L, slot, *it, r[a + 3], r[a + 4], r[bb + 3], r[bb + 4],
-                          c.interfaces[k].branch_fields[n / 2], false);
+                          c.interfaces[k].branch_fields[n / 2], false, others, branch_ties(s, level, slot));
       for (const std::size_t sl : slots) s.interface_levels.push_back(level), s.interface_slots.push_back(sl);
       records[k].branch_slots.push_back(slots[0]);
       records[k].branch_slots.push_back(slots[1]);

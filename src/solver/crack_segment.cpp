@@ -78,7 +78,7 @@ std::vector<Point> current_cut(const InterfaceSpec& spec, const Box& frame, cons
 
 bool add_crack_segment(const Case& c, std::size_t k, State& L, std::size_t slot,
                        const CrackTip& tip, double x, double y, bool flip_particles,
-                       const std::vector<State*>& others) {
+                       const std::vector<State*>& others, std::size_t tie) {
   CohesiveInterface& in = L.interfaces[slot];
   const double h = L.grid.cell_size(), tol = 1e-6 * h;
   const Point a{tip.frame.x, tip.frame.y}, p{x, y};
@@ -166,9 +166,10 @@ bool add_crack_segment(const Case& c, std::size_t k, State& L, std::size_t slot,
   in.spec.bonded_lines = ties;
   in.spec.bonded = !ties.empty();
   // One grid: the level's ties follow its interfaces (slot); nested levels: every level has one
-  // per case interface (k).
-  L.bonded[others.empty() ? slot : k].nodes = bonded_nodes(L.grid, in.spec);
-  for (State* S : others) S->bonded[k].nodes = bonded_nodes(S->grid, in.spec);
+  // per interface of the run (k for the case's).
+  const std::size_t entry = tie != kCaseTie ? tie : others.empty() ? slot : k;
+  L.bonded[entry].nodes = bonded_nodes(L.grid, in.spec);
+  for (State* S : others) S->bonded[entry].nodes = bonded_nodes(S->grid, in.spec);
   return edge;
 }
 

@@ -11,7 +11,12 @@ where Yoffe's criterion says, and the two branches are mirror images.
   stress is largest at the speed (a scan of theta here, within 0.2 degrees);
 - the branches run to the plate's right edge, mirror images about y = 0 within 1e-6 of a cell;
 - the energy balance closes within 1 %.
-Usage: check_branching.py RUPTURE WORK_DIR"""
+With options after "--" (more --set, e.g. nested levels round the path) the same checks hold, and
+the split is compared with the plain example's (run into WORK_DIR/uniform): the same place within
+a cell, its time within 0.5 us (two crossings of a 1 mm coarse cell by the dilatational wave,
+0.26 us each: the load reaches the crack through the coarse level), the branches' ends within
+two cells.
+Usage: check_branching.py RUPTURE WORK_DIR [-- OPTION...]"""
 import json
 import math
 import os
@@ -21,10 +26,11 @@ import sys
 import numpy as np
 
 rupture, work = sys.argv[1:3]
+extra = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
 here = os.path.dirname(os.path.abspath(__file__))
 example = os.path.join(here, "..", "..", "examples", "dynamic_branching.toml")
 h = 0.5e-3
-r = subprocess.run([rupture, "run", example, "-o", work, "--overwrite", "--set", "time.end=65e-6"],
+r = subprocess.run([rupture, "run", example, "-o", work, "--overwrite", "--set", "time.end=65e-6", *extra],
                    capture_output=True, text=True)
 if r.returncode != 0:
     sys.exit(f"FAIL: run exited {r.returncode}:\n{r.stderr}")
@@ -107,4 +113,22 @@ mismatch = max(np.max(np.abs(left["x"][:n] - right["x"][:n])), np.max(np.abs(lef
 check(len(left) == len(right) and mismatch < 1e-6 * h,
       f"the branches are mirror images: {len(left)} and {len(right)} vertices, largest mismatch {mismatch:.2e} m")
 check(run["energy_balance_error"] < 0.01, f"energy balance error {run['energy_balance_error']:.4f} (< 0.01)")
+
+if extra:
+    plain = os.path.join(work, "uniform")
+    subprocess.run([rupture, "run", example, "-o", plain, "--overwrite", "--quiet", "--set", "time.end=65e-6"],
+                   check=True, stdout=subprocess.DEVNULL)
+    u = np.genfromtxt(os.path.join(plain, "crack_path_notch.csv"), delimiter=",", names=True)
+    j = int(np.nonzero(u["end"] >= 2)[0][0])
+    check(abs(d["x"][i] - u["x"][j]) <= h and abs(d["y"][i] - u["y"][j]) <= h,
+          f"split at ({d['x'][i] * 1e3:.2f}, {d['y'][i] * 1e3:.2f}) mm, the plain example's at "
+          f"({u['x'][j] * 1e3:.2f}, {u['y'][j] * 1e3:.2f}) mm (within a cell)")
+    check(abs(d["time"][i] - u["time"][j]) <= 0.5e-6,
+          f"split at {d['time'][i] * 1e6:.2f} us, the plain example's at {u['time'][j] * 1e6:.2f} us (within 0.5 us)")
+    for label in (2, 3):
+        a = d[(d["tip"] == label) & (d["end"] < 2)]
+        b = u[(u["tip"] == label) & (u["end"] < 2)]
+        check(abs(a["y"][-1] - b["y"][-1]) <= 2 * h,
+              f"branch {label} ends at y = {a['y'][-1] * 1e3:.2f} mm, the plain example's at {b['y'][-1] * 1e3:.2f} mm "
+              f"(within two cells)")
 sys.exit(1 if failures else 0)
