@@ -36,7 +36,8 @@ constexpr double kH = 0.5e-3;  // m
 // A 20 x 10 mm block with cuts up from its bottom edge, 3 mm deep, at each x of `cuts` (m),
 // pressed down at the top between them and held at the bottom corners. `refine`: keys added to
 // [grid] and tables after it (nested levels), with one step for every level.
-Case block_with_cuts(const std::vector<double>& cuts, const std::string& refine = "") {
+// `cut_keys`: more keys of every cut (growth).
+Case block_with_cuts(const std::vector<double>& cuts, const std::string& refine = "", const std::string& cut_keys = "") {
   std::string interfaces;
   for (std::size_t k = 0; k < cuts.size(); ++k)
     interfaces += fmt::format(R"([interface.cut{0}]
@@ -44,8 +45,9 @@ body = "block"
 points = [[{1}, 0.0], [{1}, 0.003]]
 segments = 6
 law = "contact"
+{2}
 )",
-                              k, cuts[k]);
+                              k, cuts[k], cut_keys);
   return parse_case(fmt::format(R"({0}
 [model]
 plane = "strain"
@@ -214,6 +216,68 @@ level = 1)");
     } else {
       EXPECT_GT(misplaced(spec, coarse.particles), 0) << "the test would see a level left behind";
     }
+  }
+}
+
+// Two cuts up from the bottom edge at x = 6 and 14 mm, each tied on to the top edge: three parts.
+// Once the right one has run through to the top edge (no tie, no tip left) it has cut the block
+// in two for good: the part right of it is beyond the left crack's reach (solver/crack_junction.hpp
+// cut_off_parts) and the right cut is an edge of that reach. The left crack then turned by 100
+// degrees (heading right and down: its tie runs straight on, as in the John-Shah beam broken at
+// its mid-span) has its tie end on the right cut instead of crossing it, which no junction check
+// refuses, and no particle beyond the right cut changes field. Without the part cut off the same
+// segment's tie runs on across the right cut, tying the left crack's two fields at nodes in the
+// part beyond (the check can fail).
+TEST(CrackGrowth, a_line_that_has_cut_the_body_in_two_is_the_edge_of_another_cracks_reach) {
+  // Both grow (prescribed): the part right of the right cut is not beyond the left crack's reach
+  // at set-up (input/crack_reach.hpp), only once the right cut has run through.
+  const Case c = block_with_cuts({0.006, 0.014}, "", "growth = \"prescribed\"\ngrowth_speed = 100.0");
+  for (const bool cut_off : {true, false}) {
+    RunState s = make_run_state(c);
+    State& L = s.levels[0];
+    const std::size_t a = s.interface_slots[0], b = s.interface_slots[1];
+    EXPECT_TRUE(cut_off_parts(c, s, 0, {a}).empty()) << "the right cut is tied: nothing cut off";
+    ASSERT_EQ(junction_lines(other_lines(c, s, {}, 0, {a})).size(), 2u) << "the right cut and its tie";
+    // The right cut runs through to the top edge.
+    for (int n = 0; n < 40; ++n) {
+      const std::vector<CrackTip> t = precrack_tips(L.interfaces[b].spec, 1e-6 * kH);
+      if (t.empty()) break;
+      add_crack_segment(c, 1, L, b, t[0], 0.014, std::min(t[0].frame.y + 0.5 * kH, 0.01), true);
+    }
+    ASSERT_TRUE(precrack_tips(L.interfaces[b].spec, 1e-6 * kH).empty());
+    ASSERT_TRUE(L.interfaces[b].spec.tie_geometries().empty());
+    const std::vector<OtherLine> all = other_lines(c, s, {}, 0, {a});
+    ASSERT_EQ(all.size(), 1u);
+    EXPECT_TRUE(all[0].edge) << "the right cut is the edge of the left crack's reach";
+    EXPECT_TRUE(junction_lines(all).empty());
+    const std::vector<std::vector<Side>> parts = cut_off_parts(c, s, 0, {a});
+    ASSERT_EQ(parts.size(), 1u);
+    Region cut_away{Shape{ShapeKind::rectangle, {-1.0, -1.0}, {1.0, 1.0}}, {}, parts[0]};
+    EXPECT_TRUE(contains(cut_away, 0.0145, 0.005));
+    EXPECT_TRUE(contains(cut_away, 0.019, 0.0005));
+    EXPECT_FALSE(contains(cut_away, 0.0135, 0.005));
+    EXPECT_FALSE(contains(cut_away, 0.006, 0.009));
+    if (cut_off) L.interfaces[a].spec.reach_cut_off = parts;
+    const std::vector<std::uint8_t> fields = L.particles.field;
+    grow(c, L, 0, -100.0, 0.5 * kH);
+    const std::vector<Polyline> ties = L.interfaces[a].spec.tie_geometries();
+    ASSERT_FALSE(ties.empty());
+    double right = -INFINITY;
+    for (const Polyline& t : ties)
+      for (std::size_t i = 0; i < t.num_vertices(); ++i) right = std::max(right, t.x[i]);
+    int beyond = 0, changed = 0;
+    for (std::size_t q = 0; q < L.particles.size(); ++q) {
+      changed += L.particles.field[q] != fields[q];
+      if (L.particles.x0[q] > 0.014) beyond += L.particles.field[q] != fields[q];
+    }
+    EXPECT_GT(changed, 0) << "the turned cut moves the left crack's particles";
+    if (!cut_off) {
+      EXPECT_GT(right, 0.0145) << "the tie runs on across the right cut";
+      continue;
+    }
+    EXPECT_NEAR(right, 0.014, 1e-9) << "the tie ends on the right cut";
+    EXPECT_NO_THROW(stop_at_tie_junction(c, 0, 0.0, junction_lines(other_lines(c, s, {}, 0, {a})), ties, kH));
+    EXPECT_EQ(beyond, 0) << "no particle beyond the right cut changes field";
   }
 }
 

@@ -24,6 +24,7 @@
 #include "cohesive/law.hpp"
 #include "cohesive/polyline.hpp"
 #include "fracture/growth_criterion.hpp"
+#include "geometry/shape.hpp"
 
 namespace rupture {
 
@@ -103,6 +104,11 @@ struct InterfaceSpec {
   // The velocity fields kept for the wedges of growth.max_branches branch events, in order
   // (input/: named NAME.branchK; no particles until a tip splits, solver/crack_branching.hpp).
   std::vector<int> branch_fields;
+  // A growing crack drawn inside a body: the parts of the body that other lines in it have cut
+  // off for good since the run began (derived at run time before each growth step, not read:
+  // solver/crack_junction.hpp cut_off_parts), each the points on its side of every cut in its
+  // list (Region::minus_parts); its material is beyond the crack's reach (solver/crack_cut.hpp).
+  std::vector<std::vector<Side>> reach_cut_off;
 
   Polyline geometry() const;                     // line, or its horizontal form
   std::vector<Polyline> tie_geometries() const;  // bonded_lines, or the horizontal form (none

@@ -38,7 +38,7 @@ std::array<std::size_t, 2> split_crack_tip(const Case& c, std::size_t k, State& 
   const double h = L.grid.cell_size(), tol = 1e-6 * h;
   const Point a{tip.frame.x, tip.frame.y}, pl{left_x, left_y}, pr{right_x, right_y};
   const Point dl = unit(a, pl), dr = unit(a, pr);
-  const Region body = crack_body(c, k);
+  const Region body = crack_body(c, k, L.interfaces[slot].spec);
   InterfaceSpec parent = L.interfaces[slot].spec;
   const Box frame = cut_frame(body, parent.geometry(), a, h);
   // Left of the crack's direction at the tip: the upper field at the line's end (the normal is

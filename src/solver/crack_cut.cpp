@@ -19,6 +19,12 @@ Region crack_body(const Case& c, std::size_t k) {
   return reach;
 }
 
+Region crack_body(const Case& c, std::size_t k, const InterfaceSpec& now) {
+  Region reach = crack_body(c, k);
+  reach.minus_parts.insert(reach.minus_parts.end(), now.reach_cut_off.begin(), now.reach_cut_off.end());
+  return reach;
+}
+
 Box cut_frame(const Region& body, const Polyline& line, const Point& p, double h) {
   Box f = bounding_box(body);
   auto take = [&](double x, double y) {

@@ -19,6 +19,9 @@ namespace rupture {
 // then edges of its reach, as an interface between its body and another is: a segment that
 // would cross one ends on it, and a tie ends there (solver/crack_junction.hpp).
 Region crack_body(const Case& c, std::size_t k);
+// The same less the parts other lines have cut off since (InterfaceSpec::reach_cut_off of the
+// crack's line `now`, as the run holds it).
+Region crack_body(const Case& c, std::size_t k, const InterfaceSpec& now);
 
 // A frame around the body, the line and p with room to spare (more than a tie's lead).
 Box cut_frame(const Region& body, const Polyline& line, const Point& p, double h);

@@ -134,7 +134,7 @@ template <class Grow, class Check>
 bool split_tip(const Case& c, std::size_t k, RunState& s, int level, std::size_t slot, const CrackTip& tip,
                const Grow& g, CrackGrowthRecord& record, const Check& check_junction) {
   const double h = s.levels[std::size_t(level)].grid.cell_size(), step = c.interfaces[k].growth.step * h;
-  const Region body = crack_body(c, k);
+  const Region body = crack_body(c, k, s.levels[std::size_t(level)].interfaces[slot].spec);
   const TipFrame& f = tip.frame;
   const double axis = g.angle;
   Point end[2];
@@ -162,6 +162,17 @@ bool split_tip(const Case& c, std::size_t k, RunState& s, int level, std::size_t
                        {s.time, double(2 + n + std::size_t(b)), 1.0, end[b].x, end[b].y, turn, len, g.K_I, g.K_II});
   }
   return true;
+}
+
+// The parts other lines have cut off crack k's body since the run began, on each of its lines
+// (solver/crack_junction.hpp cut_off_parts): before its growth step, and before each row a
+// restore lays again.
+void follow_cut_off_parts(const Case& c, RunState& s, std::size_t k, const std::vector<CrackLine>& lines) {
+  std::vector<std::size_t> own;
+  for (const CrackLine& l : lines) own.push_back(l.slot);
+  std::vector<std::vector<Side>> cut = cut_off_parts(c, s, k, own);
+  State& L = s.levels[std::size_t(s.interface_levels[k])];
+  for (const std::size_t slot : own) L.interfaces[slot].spec.reach_cut_off = cut;
 }
 
 // On nested levels a tip is read from its level's particles and lattice alone, so every particle
@@ -255,6 +266,7 @@ void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& rec
     const TipMaterial mat = tip_material(c, k);
     const std::vector<InitialStrain> initial = initial_field_strains(c);
     const std::vector<CrackLine> lines = crack_lines(s, k, records[k]);
+    follow_cut_off_parts(c, s, k, lines);
     // Read every tip first, then grow: one tip's segment does not change another's reading.
     // The frame K is read in and the kink turns from: the crack as the outer J domain sees it
     // (the chord over its radius; a kink shorter than that is not yet the crack's direction).
@@ -327,7 +339,7 @@ void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& rec
       double split = 0.0;  // > 0: the tip splits, its branches at +-split from the direction above
     };
     std::vector<Grow> grow;
-    const Region body = crack_body(c, k);
+    const Region body = crack_body(c, k, L.interfaces[s.interface_slots[k]].spec);
     std::size_t splits = std::size_t(records[k].branches());
     for (std::size_t t = 0; t < tips.size(); ++t) {
       if (!tips[t].read) continue;
@@ -441,50 +453,72 @@ void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& rec
 }
 
 void regrow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& records) {
+  // The rows of every crack in the order the run laid them (by time, and crack by crack within a
+  // step, as grow_cracks goes), a site's release at its time: a row's cut then meets the other
+  // lines as they were when it was laid (follow_cut_off_parts).
+  struct Event {
+    double time;
+    std::size_t k, row;  // row: the first column's index in records[k].rows; kRelease: the release
+  };
+  constexpr std::size_t kRelease = std::size_t(-1);
+  std::vector<Event> events;
   for (std::size_t k = 0; k < records.size() && k < c.interfaces.size(); ++k) {
+    records[k].branch_slots.clear();
+    if (records[k].nucleated()) events.push_back({records[k].nucleation_time, k, kRelease});
+    const std::vector<double>& r = records[k].rows;
+    for (std::size_t i = 0; i + kGrowthColumns <= r.size(); i += kGrowthColumns) {
+      events.push_back({r[i], k, i});
+      if (r[i + 2] >= kSplitAtStart) i += 2 * kGrowthColumns;  // a split and its two branches: one event
+    }
+  }
+  std::stable_sort(events.begin(), events.end(), [](const Event& a, const Event& b) {
+    return a.time < b.time || (a.time == b.time && a.k < b.k);
+  });
+  for (const Event& e : events) {
+    const std::size_t k = e.k, i = e.row;
     const int level = s.interface_levels[k];
     State& L = s.levels[std::size_t(level)];
     const double h = L.grid.cell_size();
     const std::vector<double>& r = records[k].rows;
     const std::vector<State*> others = other_levels(s, level);
-    records[k].branch_slots.clear();
-    if (records[k].nucleated()) release_site(c, k, L, s.interface_slots[k], others);
-    for (std::size_t i = 0; i + kGrowthColumns <= r.size(); i += kGrowthColumns) {
-      const int label = int(r[i + 1]);
-      const bool split = r[i + 2] >= kSplitAtStart;
-      const std::size_t b = std::size_t(label >= 2 ? label - 2 : 0);
-      if (label >= 2 && b >= records[k].branch_slots.size())
-        throw InputError(fmt::format("checkpoint: run.growth[{}] row {}: tip {} is a branch that has not split off "
-                                     "(the checkpoint is not of this case)", k, i / kGrowthColumns, label));
-      const std::size_t slot = label >= 2 ? records[k].branch_slots[b] : s.interface_slots[k];
-      const std::vector<CrackTip> now = precrack_tips(L.interfaces[slot].spec, 1e-6 * h);
-      // The tip the row grew (or split): a branch's one tip, or the crack's at the row's end.
-      const double column = split ? r[i + 2] - kSplitAtStart : r[i + 2];
-      const LineEnd at = label >= 2 ? LineEnd::end : column == 0.0 ? LineEnd::start : LineEnd::end;
-      const auto it = std::find_if(now.begin(), now.end(), [&](const CrackTip& t) { return t.end == at; });
-      if (it == now.end())
-        throw InputError(fmt::format("checkpoint: run.growth[{}] row {}: the crack has no tip at its {} to grow "
-                                     "from (the checkpoint is not of this case)",
-                                     k, i / kGrowthColumns, at == LineEnd::start ? "start" : "end"));
-      if (!split) {
-        add_crack_segment(c, k, L, slot, *it, r[i + 3], r[i + 4], false, others, tie_entry(s, level, slot));
-        continue;
-      }
-      // A split: the next two rows are its branches' first segments.
-      const std::size_t n = records[k].branch_slots.size();
-      if (i + 3 * kGrowthColumns > r.size() || n / 2 >= c.interfaces[k].branch_fields.size())
-        throw InputError(fmt::format("checkpoint: run.growth[{}] row {}: a split without its two branches, or "
-                                     "more splits than the crack's max_branches (the checkpoint is not of this case)",
-                                     k, i / kGrowthColumns));
-      const std::size_t a = i + kGrowthColumns, bb = i + 2 * kGrowthColumns;
-      const std::array<std::size_t, 2> slots =
-          split_crack_tip(c, k, L, slot, *it, r[a + 3], r[a + 4], r[bb + 3], r[bb + 4],
-                          c.interfaces[k].branch_fields[n / 2], false, others, branch_ties(s, level, slot));
-      for (const std::size_t sl : slots) s.interface_levels.push_back(level), s.interface_slots.push_back(sl);
-      records[k].branch_slots.push_back(slots[0]);
-      records[k].branch_slots.push_back(slots[1]);
-      i += 2 * kGrowthColumns;
+    if (i == kRelease) {
+      release_site(c, k, L, s.interface_slots[k], others);
+      continue;
     }
+    follow_cut_off_parts(c, s, k, crack_lines(s, k, records[k]));
+    const int label = int(r[i + 1]);
+    const bool split = r[i + 2] >= kSplitAtStart;
+    const std::size_t b = std::size_t(label >= 2 ? label - 2 : 0);
+    if (label >= 2 && b >= records[k].branch_slots.size())
+      throw InputError(fmt::format("checkpoint: run.growth[{}] row {}: tip {} is a branch that has not split off "
+                                   "(the checkpoint is not of this case)", k, i / kGrowthColumns, label));
+    const std::size_t slot = label >= 2 ? records[k].branch_slots[b] : s.interface_slots[k];
+    const std::vector<CrackTip> now = precrack_tips(L.interfaces[slot].spec, 1e-6 * h);
+    // The tip the row grew (or split): a branch's one tip, or the crack's at the row's end.
+    const double column = split ? r[i + 2] - kSplitAtStart : r[i + 2];
+    const LineEnd at = label >= 2 ? LineEnd::end : column == 0.0 ? LineEnd::start : LineEnd::end;
+    const auto it = std::find_if(now.begin(), now.end(), [&](const CrackTip& t) { return t.end == at; });
+    if (it == now.end())
+      throw InputError(fmt::format("checkpoint: run.growth[{}] row {}: the crack has no tip at its {} to grow "
+                                   "from (the checkpoint is not of this case)",
+                                   k, i / kGrowthColumns, at == LineEnd::start ? "start" : "end"));
+    if (!split) {
+      add_crack_segment(c, k, L, slot, *it, r[i + 3], r[i + 4], false, others, tie_entry(s, level, slot));
+      continue;
+    }
+    // A split: the next two rows are its branches' first segments.
+    const std::size_t n = records[k].branch_slots.size();
+    if (i + 3 * kGrowthColumns > r.size() || n / 2 >= c.interfaces[k].branch_fields.size())
+      throw InputError(fmt::format("checkpoint: run.growth[{}] row {}: a split without its two branches, or "
+                                   "more splits than the crack's max_branches (the checkpoint is not of this case)",
+                                   k, i / kGrowthColumns));
+    const std::size_t a = i + kGrowthColumns, bb = i + 2 * kGrowthColumns;
+    const std::array<std::size_t, 2> slots =
+        split_crack_tip(c, k, L, slot, *it, r[a + 3], r[a + 4], r[bb + 3], r[bb + 4],
+                        c.interfaces[k].branch_fields[n / 2], false, others, branch_ties(s, level, slot));
+    for (const std::size_t sl : slots) s.interface_levels.push_back(level), s.interface_slots.push_back(sl);
+    records[k].branch_slots.push_back(slots[0]);
+    records[k].branch_slots.push_back(slots[1]);
   }
 }
 

@@ -15,6 +15,71 @@
 
 namespace rupture {
 
+namespace {
+
+// The fields of the crack's lines (their faces', as drawn: a crack's faces change no field).
+std::vector<int> crack_fields(const State& L, const std::vector<std::size_t>& own) {
+  std::vector<int> f;
+  for (const std::size_t slot : own)
+    for (const int x : {L.interfaces[slot].spec.upper_field, L.interfaces[slot].spec.lower_field})
+      if (std::find(f.begin(), f.end(), x) == f.end()) f.push_back(x);
+  return f;
+}
+
+// The fields a face lies on (its stretches', or the whole face's).
+std::vector<int> face_fields(const std::vector<FaceField>& faces, int whole) {
+  std::vector<int> f;
+  for (const FaceField& x : faces) f.push_back(x.field);
+  if (f.empty()) f.push_back(whole);
+  return f;
+}
+
+// Whether `spec` has cut the crack's body in two for good (cut_off_parts): 1 when the part on
+// its upper face's side is cut off, -1 its lower face's, 0 neither.
+int cuts_off(const InterfaceSpec& spec, const std::vector<int>& mine, double tol) {
+  if (!spec.tie_geometries().empty() || !precrack_tips(spec, tol).empty()) return 0;
+  const auto on_crack = [&](const std::vector<int>& f) {
+    return std::all_of(f.begin(), f.end(), [&](int x) { return std::find(mine.begin(), mine.end(), x) != mine.end(); });
+  };
+  const auto one_other = [&](const std::vector<int>& f) {
+    return std::all_of(f.begin(), f.end(), [&](int x) { return x == f.front() && std::find(mine.begin(), mine.end(), x) == mine.end(); });
+  };
+  const std::vector<int> up = face_fields(spec.upper_faces, spec.upper_field);
+  const std::vector<int> lo = face_fields(spec.lower_faces, spec.lower_field);
+  if (on_crack(lo) && one_other(up)) return 1;
+  if (on_crack(up) && one_other(lo)) return -1;
+  return 0;
+}
+
+}  // namespace
+
+std::vector<std::vector<Side>> cut_off_parts(const Case& c, const RunState& s, std::size_t k,
+                                             const std::vector<std::size_t>& own) {
+  const State& L = s.levels[std::size_t(s.interface_levels[k])];
+  const double h = L.grid.cell_size();
+  const std::vector<int> mine = crack_fields(L, own);
+  const Region body = crack_body(c, k);
+  std::vector<std::vector<Side>> parts;
+  for (std::size_t slot = 0; slot < L.interfaces.size(); ++slot) {
+    if (std::find(own.begin(), own.end(), slot) != own.end()) continue;
+    const InterfaceSpec& spec = L.interfaces[slot].spec;
+    if (!drawn_in_crack_body(c, k, spec)) continue;
+    const int side = cuts_off(spec, mine, 1e-6 * h);
+    if (side == 0) continue;
+    const Polyline line = spec.geometry();
+    const std::size_t n = line.num_vertices();
+    if (n < 2) continue;
+    const Point first{line.x[0], line.y[0]}, last{line.x[n - 1], line.y[n - 1]};
+    const Box frame = cut_frame(body, line, first, h);
+    std::vector<Point> walk{leave_box(frame, first, unit(Point{line.x[1], line.y[1]}, first))};
+    for (std::size_t i = 0; i < n; ++i) walk.push_back({line.x[i], line.y[i]});
+    walk.push_back(leave_box(frame, last, unit(Point{line.x[n - 2], line.y[n - 2]}, last)));
+    // Left of the line's direction is its upper face's side.
+    parts.push_back({Side{left_part(frame, walk), side > 0}});
+  }
+  return parts;
+}
+
 std::vector<OtherLine> other_lines(const Case& c, const RunState& s, const std::vector<CrackGrowthRecord>& records,
                                    std::size_t k, const std::vector<std::size_t>& own) {
   const int level = s.interface_levels[k];
@@ -32,7 +97,8 @@ std::vector<OtherLine> other_lines(const Case& c, const RunState& s, const std::
           if (b == slot) name = fmt::format("a branch of interface '{}'", c.interface_names[j]);
     }
     const bool in_body = drawn_in_crack_body(c, k, spec);
-    const bool edge = in_body && on_edge_of_reach(c, k, spec);
+    const bool edge =
+        in_body && (on_edge_of_reach(c, k, spec) || cuts_off(spec, crack_fields(L, own), 1e-6 * L.grid.cell_size()) != 0);
     lines.push_back({spec.geometry(), name, false, in_body, edge, slot});
     for (const Polyline& t : spec.tie_geometries()) lines.push_back({t, name, true, in_body, edge, slot});
   }

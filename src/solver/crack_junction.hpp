@@ -42,6 +42,19 @@ struct OtherLine {
   std::size_t slot = 0;  // the interface on the level
 };
 
+// The parts of crack k's body that other lines drawn in it have cut off for good (`own`: the
+// crack's lines, its slots on its level): a line with no tie and no tip left (its ends on the
+// body's edge: the parts on its sides hold together by its law alone, and no growth moves
+// material across it any more), one of whose faces lies wholly on the crack's fields and the
+// other wholly on one field that is not the crack's, cuts off the part on that other face's side
+// (of its line run on straight out of the body at both ends). A line that has cut the body in
+// two is then an edge of the crack's reach (OtherLine::edge): the crack's tie ends on it instead
+// of crossing it, and a tip that reaches it ends there (a John-Shah beam broken at its mid-span
+// while its notch crack still turns). As Region::minus_parts takes them (InterfaceSpec::
+// reach_cut_off, set before each growth step and before each replayed row on a restore).
+std::vector<std::vector<Side>> cut_off_parts(const Case& c, const RunState& s, std::size_t k,
+                                             const std::vector<std::size_t>& own);
+
 // Every interface on crack k's level other than the crack's own lines (`own`: its slots, its
 // branches' included), with their ties.
 std::vector<OtherLine> other_lines(const Case& c, const RunState& s, const std::vector<CrackGrowthRecord>& records,

@@ -84,7 +84,7 @@ bool add_crack_segment(const Case& c, std::size_t k, State& L, std::size_t slot,
   const Point a{tip.frame.x, tip.frame.y}, p{x, y};
   const double len = std::hypot(x - a.x, y - a.y);
   const Point d{(x - a.x) / len, (y - a.y) / len};
-  const Region body = crack_body(c, k);
+  const Region body = crack_body(c, k, in.spec);
   const Box frame = cut_frame(body, in.spec.geometry(), p, h);
   // The cut beyond the tip before the segment, and after it (see tie_cut).
   const std::vector<Point> old_cut = current_cut(in.spec, frame, a, Point{tip.frame.e1x, tip.frame.e1y}, tol);
