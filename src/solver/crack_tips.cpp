@@ -1,8 +1,9 @@
 // rupture/solver/crack_tips.cpp
 #include "solver/crack_tips.hpp"
 
+#include <algorithm>
 #include <cmath>
-#include <unordered_map>
+#include <utility>
 
 #include "fracture/near_tip_field.hpp"
 #include "fracture/tip_domain.hpp"
@@ -39,9 +40,10 @@ namespace {
 // (fracture/j_integral.hpp FaceContact). Points that still carry cohesion are left out: their
 // traction is the process zone's, and K stays the field outside it, as before. Distributed:
 // each rank the segments whose first node it owns (their sums over the ranks are the whole).
-std::vector<FaceContact> contacts_near(const CohesiveInterface& c, const TipFrame& tip, double reach) {
-  std::vector<FaceContact> out;
-  if (c.gp_tn.size() != c.num_segments() * std::size_t(CohesiveInterface::kGauss)) return out;
+// Into `out` (cleared first).
+void contacts_near(const CohesiveInterface& c, const TipFrame& tip, double reach, std::vector<FaceContact>& out) {
+  out.clear();
+  if (c.gp_tn.size() != c.num_segments() * std::size_t(CohesiveInterface::kGauss)) return;
   for (std::size_t s = 0; s < c.num_segments(); ++s) {
     if (!c.owns(s)) continue;
     const std::size_t e = c.segment_end(s);
@@ -64,7 +66,6 @@ std::vector<FaceContact> contacts_near(const CohesiveInterface& c, const TipFram
                      -(tn * nx + tt * ny), -(tn * ny - tt * nx), -tt * ny, tt * nx, nx, ny, jxs, jys, taux, tauy});
     }
   }
-  return out;
 }
 
 }  // namespace
@@ -72,25 +73,19 @@ std::vector<FaceContact> contacts_near(const CohesiveInterface& c, const TipFram
 std::vector<TipIntegrals> read_tip(const State& L, const CohesiveInterface& line, const InterfaceSpec& is,
                                    const TipFrame& tip, const TipMaterial& material, double time,
                                    const std::vector<InitialStrain>& initial) {
-  std::vector<TiedFields> ties;
+  // Scratch kept by the calling thread from read to read (a read every step: no allocation once
+  // their capacities are reached), named by references.
+  thread_local std::vector<TiedFields> kept_ties;
+  thread_local std::vector<DomainPoint> kept_points;
+  thread_local std::vector<std::pair<std::uint32_t, std::uint32_t>> kept_ids;
+  thread_local std::vector<FaceTraction> kept_faces;
+  thread_local std::vector<JDomain> kept_domains;
+  std::vector<TiedFields>& ties = kept_ties;
+  std::vector<DomainPoint>& pts = kept_points;
+  ties.clear();
   for (const BondedTie& b : L.bonded) ties.push_back({b.upper_field, b.lower_field, &b.nodes});
   const double h = L.grid.cell_size();
-  // Tractions on faces (loads on crack faces): their particles' shares, by id.
-  struct Carried {
-    double length, tx, ty;
-    const double *from, *to;  // the loaded segment's ends, m
-  };
-  std::unordered_multimap<std::uint32_t, Carried> carried;
-  for (std::size_t j = 0; j < L.loads.patches.size(); ++j) {
-    double tx, ty;
-    patch_traction(L.loads.spec.tractions[j], L.loads.patches[j], time, tx, ty);
-    if (tx == 0.0 && ty == 0.0) continue;
-    const TractionPatch& patch = L.loads.patches[j];
-    for (std::size_t i = 0; i < patch.ids.size(); ++i)
-      carried.insert({patch.ids[i], {patch.length[i], tx, ty, L.loads.spec.tractions[j].from, L.loads.spec.tractions[j].to}});
-  }
   const double reach = is.j_domains.back() * h;
-  thread_local std::vector<DomainPoint> pts;  // kept: its capacity is reused every step
   // Distributed: the maps summed over the ranks, each rank's own particles' points.
   DomainSums ranks;
   if (L.halo) {
@@ -101,17 +96,37 @@ std::vector<TipIntegrals> read_tip(const State& L, const CohesiveInterface& line
   const TipDisplacement u = tip_domain_points(L.grid, L.fields, L.particles, L.stiffness, ties, tip, reach, L.dt,
                                               initial, pts, ranks);
   at.ux = u.ux, at.uy = u.uy;
-  std::vector<FaceTraction> faces;
-  for (std::size_t i = 0; i < pts.size(); ++i) {
-    const auto [lo, hi] = carried.equal_range(pts[i].id);
-    for (auto e = lo; e != hi; ++e) {
-      const Carried& c = e->second;
-      faces.push_back({i, c.length, c.tx, c.ty, c.from[0], c.from[1], c.to[0], c.to[1]});
+  // Tractions on faces (loads on crack faces): the shares of the domain's particles that a loaded
+  // patch holds, found by id (the points' ids sorted once; a patch's particles looked up in
+  // them), in the points' order and, for one point, in the patches' order.
+  std::vector<FaceTraction>& faces = kept_faces;
+  faces.clear();
+  if (!L.loads.patches.empty() && !pts.empty()) {
+    std::vector<std::pair<std::uint32_t, std::uint32_t>>& ids = kept_ids;
+    ids.clear();
+    for (std::size_t i = 0; i < pts.size(); ++i) ids.push_back({pts[i].id, std::uint32_t(i)});
+    std::sort(ids.begin(), ids.end());
+    for (std::size_t j = 0; j < L.loads.patches.size(); ++j) {
+      double tx, ty;
+      patch_traction(L.loads.spec.tractions[j], L.loads.patches[j], time, tx, ty);
+      if (tx == 0.0 && ty == 0.0) continue;
+      const TractionPatch& patch = L.loads.patches[j];
+      const double *from = L.loads.spec.tractions[j].from, *to = L.loads.spec.tractions[j].to;
+      for (std::size_t q = 0; q < patch.ids.size(); ++q) {
+        const auto hit = std::lower_bound(ids.begin(), ids.end(), std::make_pair(patch.ids[q], std::uint32_t(0)));
+        for (auto e = hit; e != ids.end() && e->first == patch.ids[q]; ++e)
+          faces.push_back({e->second, patch.length[q], tx, ty, from[0], from[1], to[0], to[1]});
+      }
     }
+    std::stable_sort(faces.begin(), faces.end(),
+                     [](const FaceTraction& a, const FaceTraction& b) { return a.point < b.point; });
   }
-  std::vector<JDomain> domains;
+  std::vector<JDomain>& domains = kept_domains;
+  domains.clear();
   for (double cells : is.j_domains) domains.push_back({0.5 * cells * h, cells * h});
-  const std::vector<FaceContact> contacts = contacts_near(line, tip, reach);
+  thread_local std::vector<FaceContact> kept_contacts;
+  std::vector<FaceContact>& contacts = kept_contacts;
+  contacts_near(line, tip, reach, contacts);
   std::vector<TipIntegrals> r = tip_integrals(pts, at, domains, material, faces, contacts);
   if (!L.halo) return r;
   // J and M are sums over the points, K linear in M: the ranks' parts add up to the whole
