@@ -34,10 +34,13 @@ std::vector<int> face_fields(const std::vector<FaceField>& faces, int whole) {
   return f;
 }
 
-// Whether `spec` has cut the crack's body in two for good (cut_off_parts): 1 when the part on
-// its upper face's side is cut off, -1 its lower face's, 0 neither.
-int cuts_off(const InterfaceSpec& spec, const std::vector<int>& mine, double tol) {
-  if (!spec.tie_geometries().empty() || !precrack_tips(spec, tol).empty()) return 0;
+// Whether `line` has cut the crack's body in two for good (cut_off_parts): 1 when the part on
+// its upper face's side is cut off, -1 its lower face's, 0 neither. A closed line (an inclusion's
+// edge) has no tip either; what it holds is beyond the crack's reach only as the set-up says
+// (input/crack_reach.hpp).
+int cuts_off(const CohesiveInterface& line, const std::vector<int>& mine, double tol) {
+  const InterfaceSpec& spec = line.spec;
+  if (line.closed || !spec.tie_geometries().empty() || !precrack_tips(spec, tol).empty()) return 0;
   const auto on_crack = [&](const std::vector<int>& f) {
     return std::all_of(f.begin(), f.end(), [&](int x) { return std::find(mine.begin(), mine.end(), x) != mine.end(); });
   };
@@ -64,7 +67,7 @@ std::vector<std::vector<Side>> cut_off_parts(const Case& c, const RunState& s, s
     if (std::find(own.begin(), own.end(), slot) != own.end()) continue;
     const InterfaceSpec& spec = L.interfaces[slot].spec;
     if (!drawn_in_crack_body(c, k, spec)) continue;
-    const int side = cuts_off(spec, mine, 1e-6 * h);
+    const int side = cuts_off(L.interfaces[slot], mine, 1e-6 * h);
     if (side == 0) continue;
     const Polyline line = spec.geometry();
     const std::size_t n = line.num_vertices();
@@ -98,7 +101,7 @@ std::vector<OtherLine> other_lines(const Case& c, const RunState& s, const std::
     }
     const bool in_body = drawn_in_crack_body(c, k, spec);
     const bool edge =
-        in_body && (on_edge_of_reach(c, k, spec) || cuts_off(spec, crack_fields(L, own), 1e-6 * L.grid.cell_size()) != 0);
+        in_body && (on_edge_of_reach(c, k, spec) || cuts_off(L.interfaces[slot], crack_fields(L, own), 1e-6 * L.grid.cell_size()) != 0);
     lines.push_back({spec.geometry(), name, false, in_body, edge, slot});
     for (const Polyline& t : spec.tie_geometries()) lines.push_back({t, name, true, in_body, edge, slot});
   }
