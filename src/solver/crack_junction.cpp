@@ -87,6 +87,7 @@ std::vector<OtherLine> other_lines(const Case& c, const RunState& s, const std::
                                    std::size_t k, const std::vector<std::size_t>& own) {
   const int level = s.interface_levels[k];
   const State& L = s.levels[std::size_t(level)];
+  const std::vector<int> mine = crack_fields(L, own);
   std::vector<OtherLine> lines;
   for (std::size_t slot = 0; slot < L.interfaces.size(); ++slot) {
     if (std::find(own.begin(), own.end(), slot) != own.end()) continue;
@@ -101,7 +102,7 @@ std::vector<OtherLine> other_lines(const Case& c, const RunState& s, const std::
     }
     const bool in_body = drawn_in_crack_body(c, k, spec);
     const bool edge =
-        in_body && (on_edge_of_reach(c, k, spec) || cuts_off(L.interfaces[slot], crack_fields(L, own), 1e-6 * L.grid.cell_size()) != 0);
+        in_body && (on_edge_of_reach(c, k, spec) || cuts_off(L.interfaces[slot], mine, 1e-6 * L.grid.cell_size()) != 0);
     lines.push_back({spec.geometry(), name, false, in_body, edge, slot});
     for (const Polyline& t : spec.tie_geometries()) lines.push_back({t, name, true, in_body, edge, slot});
   }
