@@ -98,6 +98,7 @@ void print_run_result(const Case& c, const RunResult& r, const std::string& out_
     fmt::print("particles_per_rank_end={}\n", fmt::join(r.particles_per_rank_end, ","));
     fmt::print("migrations={}\n", r.migrations);
     fmt::print("rebalances={}\n", r.rebalances);
+    fmt::print("reach_widenings={}\n", r.reach_widenings);
     fmt::print("exchange_bytes_per_rank_per_step={:.0f}\n", r.exchange_bytes_per_step);
     fmt::print("exchange_seconds={:.3f}\n", r.exchange_seconds);
     fmt::print("peak_memory_mib_per_rank={:.0f}\n", fmt::join(r.peak_memory_per_rank, ","));

@@ -129,15 +129,43 @@ void check_distributable(const State&, int) {
   // place for a check that some feature must run on one process.
 }
 
-void set_blocks(State& s, std::vector<CellBlock> blocks) {
+namespace {
+
+// This rank's reach from h.blocks and h.halo_nodes: its peers and halo nodes, the interfaces'
+// owned and known nodes, the ties of the reach; the windows re-fitted.
+void lay_reach(State& s) {
   Halo& h = halo_of(s);
-  h.blocks = std::move(blocks);
   h.peers.clear(), h.node_i.clear(), h.node_j.clear(), h.terms.clear(), h.box_node.clear();
   build_peers(h, s.grid);
   s.bonded = h.all_bonded;  // distribute_interfaces keeps the ties of the new reach
   distribute_interfaces(s);
-  s.plan.valid = false;         // re-sort, and
-  s.windows_checked_step = -2;  // re-fit the windows to this rank's particles
+  s.windows_checked_step = -2;  // re-fit the windows to this rank's particles and faces
+}
+
+}  // namespace
+
+void set_blocks(State& s, std::vector<CellBlock> blocks) {
+  Halo& h = halo_of(s);
+  h.blocks = std::move(blocks);
+  lay_reach(s);
+  s.plan.valid = false;  // re-sort (particles changed rank)
+}
+
+int reach_for_travel(double travel) { return std::max(1, int(std::ceil(travel)) + 1); }
+
+bool reach_too_narrow(const Halo& h, double travel) {
+  // Half a cell of headroom: a face moves far less than that in one step (the CFL bound), so the
+  // faces are still inside the reach when check_faces_in_reach looks, later in the same step.
+  return h.reaches.empty() && travel > double(h.face_cells) - 0.5;
+}
+
+void widen_interface_reach(State& s, double travel) {
+  Halo& h = halo_of(s);
+  collect_interface_state(s);  // the nodes this rank comes to know: their owners' state
+  h.face_cells = reach_for_travel(travel);
+  h.halo_nodes = 1 + 2 * h.face_cells;
+  lay_reach(s);  // the particles stay on their ranks and in their order: no re-sort
+  ++h.widenings;
 }
 
 void split_over_ranks(RunState& r, const Comm& comm, const SplitFrom& from) {
@@ -384,7 +412,12 @@ bool Halo::counts_node(const State& s, int field, std::size_t node) const {
 void Halo::migrate_if_due(State& s) {
   Halo& h = *this;
   h.step_start = std::chrono::steady_clock::now();
-  if (h.comm.max(h.drift) < kMigrateCells * h.cell) {
+  // One reduction for both bounds: the particles' drift since the last migration and how far the
+  // interfaces' faces have moved from where they were drawn (face_travel, in cells).
+  double bound[2] = {h.drift, s.interfaces.empty() ? 0.0 : face_travel(s)};
+  h.comm.max(bound, 2);
+  if (reach_too_narrow(h, bound[1])) widen_interface_reach(s, bound[1]);
+  if (bound[0] < kMigrateCells * h.cell) {
     if (s.step % s.plan.sort_interval == 0) rebalance_if_needed(s);  // a crack's load moves too
     return;
   }

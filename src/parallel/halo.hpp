@@ -85,6 +85,10 @@ struct Halo final : RankExchange {
   // it (its fields span the whole lattice, and a DOF may get its mass through the transitions).
   bool count_by_block = false;
   int halo_nodes = kHaloNodes;  // the reach's width beyond the block, nodes
+  // With interfaces: how far (cells) their faces may move from where their nodes were drawn; the
+  // reach is then 1 + 2 face_cells nodes (a known node's drawn cell lies within 1 + face_cells
+  // cells of the block, its face that much further, its stencil one node on). Set up: 1 (3 nodes).
+  int face_cells = 1;
   // Per rank, when set (nested levels: parallel/halo_nested.hpp): every rank's reach, in place
   // of its block and halo_nodes.
   std::vector<NodeBox> reaches;
@@ -99,6 +103,7 @@ struct Halo final : RankExchange {
   long migrations = 0;               // migrations so far
   std::vector<BondedTie> all_bonded;  // every tie (s.bonded keeps those of the reach)
   long rebalances = 0;                // new splits since the start
+  long widenings = 0;                 // times the reach widened for the faces (widen_interface_reach)
   bool rebalance = true;              // false: keep the split of t = 0 (--no-rebalance)
   // The load each rank measures (parallel/rebalance.cpp): wall time of its steps, s, and the
   // particle-updates and owned interface node-updates they did; owned_nodes: now.
@@ -241,11 +246,27 @@ void check_distributable(const State& s, int ranks);
 
 // Interfaces (parallel/halo_interface.cpp). A node is owned by the rank whose block holds the
 // cell of its reference point; a rank knows the nodes whose reference cell lies within 2 cells
-// of its block (the faces touching its owned grid nodes and the neighbours of its owned nodes,
-// for faces that moved less than a cell), so their faces' stencils lie in its reach
-// (kInterfaceHaloNodes). Throws InputError when an owned node's neighbour is not known (segments
+// of its block (halo_nodes - 1: the faces touching its owned grid nodes and the neighbours of
+// its owned nodes, for faces that moved less than a cell; more once the reach has widened,
+// below), so their faces' stencils lie in its reach (kInterfaceHaloNodes). Throws InputError when an owned node's neighbour is not known (segments
 // longer than a cell).
 void distribute_interfaces(State& s);
+// Faces that move far (a block sliding along a crack, a body carried across the grid): how far,
+// in cells, the owned nodes' faces are from where their nodes were drawn (the largest |u_x| or
+// |u_y| over this rank's owned nodes). At the start of every step (migrate_if_due, in the
+// drift's reduction) the largest over the ranks decides: once it comes within half a cell of
+// face_cells (reach_too_narrow), every rank sets face_cells = reach_for_travel(travel) (the
+// travel rounded up, and a cell more), knows the nodes drawn within 1 + face_cells cells of
+// its block and widens its reach to 1 + 2 face_cells nodes (widen_interface_reach: the
+// interface state gathered, the halo and the interfaces distributed again, the windows
+// re-fitted; the particles keep their ranks and their order). Nodes keep their owners (the
+// block of the drawn point's cell). A node more ranks hold sums the same contributions (the
+// added ones are 0), so the run is the same bit for bit. One grid; nested levels keep their
+// reaches (a face may move up to a cell there).
+double face_travel(const State& s);
+int reach_for_travel(double travel);
+bool reach_too_narrow(const Halo& h, double travel);
+void widen_interface_reach(State& s, double travel);
 // How many (node, rank) pairs `rank` sends in each sync of the interfaces' nodes, with the
 // split `blocks` (the exchange volume rupture check --ranks predicts).
 long interface_nodes_sent(const State& s, const std::vector<CellBlock>& blocks, int rank);

@@ -6,8 +6,10 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <string>
 #include <utility>
 
 #include "core/errors.hpp"
@@ -24,7 +26,10 @@ bool near_block(const CellBlock& b, int c, int r, int cells) {
   return c >= b.c0 - cells && c < b.c1 + cells && r >= b.r0 - cells && r < b.r1 + cells;
 }
 
-constexpr int kKnownCells = 2;  // a rank knows the nodes whose reference cell is this near its block
+// A rank knows the nodes whose reference cell lies within 1 + Halo::face_cells cells of its
+// block: the neighbours of its owned nodes, and the nodes whose faces may touch its own grid
+// nodes (a face moves less than face_cells cells). Set up, face_cells = 1: 2 cells.
+constexpr int kKnownCells = 2;
 
 // Owner-masked arrays made whole on every rank in one reduction: each node's values from its
 // owner (the sum of the owner's value and zeros, exact), `per_node` values per node in each
@@ -79,9 +84,8 @@ std::vector<int> node_owners(const Grid& g, const CohesiveInterface& c, const st
 }
 
 bool knows_node(const Grid& g, const CohesiveInterface& c, const std::vector<int>& owner,
-                const std::vector<CellBlock>& blocks, int q, std::size_t k) {
-  return owner[k] == q ||
-         near_block(blocks[std::size_t(q)], cell_x(g, c.x0[k]), cell_y(g, c.y0[k]), kKnownCells);
+                const std::vector<CellBlock>& blocks, int q, std::size_t k, int cells) {
+  return owner[k] == q || near_block(blocks[std::size_t(q)], cell_x(g, c.x0[k]), cell_y(g, c.y0[k]), cells);
 }
 
 }  // namespace
@@ -93,7 +97,7 @@ long interface_nodes_sent(const State& s, const std::vector<CellBlock>& blocks, 
     for (std::size_t k = 0; k < c.num_nodes(); ++k)
       if (owner[k] == rank)
         for (int q = 0; q < int(blocks.size()); ++q)
-          sent += q != rank && knows_node(s.grid, c, owner, blocks, q, k);
+          sent += q != rank && knows_node(s.grid, c, owner, blocks, q, k, kKnownCells);
   }
   return sent;
 }
@@ -103,11 +107,12 @@ void distribute_interfaces(State& s) {
   const int me = h.comm.rank();
   h.links.assign(s.interfaces.size(), {});
   h.owned_nodes = 0.0;
+  const int known = h.reaches.empty() ? 1 + h.face_cells : kKnownCells;
   for (std::size_t ic = 0; ic < s.interfaces.size(); ++ic) {
     CohesiveInterface& c = s.interfaces[ic];
     const std::size_t n = c.num_nodes();
     const std::vector<int> owner = node_owners(s.grid, c, h.blocks);
-    auto knows = [&](int q, std::size_t k) { return knows_node(s.grid, c, owner, h.blocks, q, k); };
+    auto knows = [&](int q, std::size_t k) { return knows_node(s.grid, c, owner, h.blocks, q, k, known); };
     c.rank_owned.assign(n, 0);
     c.rank_known.assign(n, 0);
     for (std::size_t k = 0; k < n; ++k) {
@@ -126,7 +131,7 @@ void distribute_interfaces(State& s) {
               "interface {} (input order): segment from ({:.6g}, {:.6g}) to ({:.6g}, {:.6g}) m is longer than "
               "a distributed run allows ({} cells of {:.6g} m between a node and its neighbour); "
               "refine the interface's segments or run on one process",
-              ic, c.x0[k], c.y0[k], c.x0[j], c.y0[j], kKnownCells, h.cell));
+              ic, c.x0[k], c.y0[k], c.x0[j], c.y0[j], known, h.cell));
     }
     Halo::InterfaceLinks& L = h.links[ic];
     L.send.assign(h.peers.size(), {});
@@ -191,6 +196,19 @@ void collect_interface_state(State& s) {
   }
 }
 
+double face_travel(const State& s) {
+  // By the owners (every node has one; its ghosts' copies may lag a step). Chebyshev, in cells of
+  // the finest size (graded grids: as the migration counts).
+  const double cell = halo_of(s).cell;
+  double most = 0.0;
+  for (const CohesiveInterface& c : s.interfaces)
+    for (std::size_t k = 0; k < c.num_nodes(); ++k)
+      if (c.owns(k))
+        for (const double u : {c.ux_up[k], c.uy_up[k], c.ux_lo[k], c.uy_lo[k]})
+          if (std::fabs(u) > most) most = std::fabs(u);  // a NaN stays out (the step diagnoses it)
+  return most / cell;
+}
+
 void Halo::check_faces_in_reach(State& s) {
   Halo& h = *this;
   for (std::size_t ic = 0; ic < s.interfaces.size(); ++ic) {
@@ -206,9 +224,14 @@ void Halo::check_faces_in_reach(State& s) {
         if (h.failure.empty())
           h.failure = fmt::format(
               "interface {} (input order) node {} at (x, y) = ({:.6g}, {:.6g}) m: its {} face moved to ({:.6g}, "
-              "{:.6g}) m, past rank {}'s halo (a face may move up to a cell on a distributed run), "
-              "step {}, t = {:.6g} s",
-              ic, k, c.x0[k], c.y0[k], side ? "lower" : "upper", x, y, h.comm.rank(), s.step, s.time);
+              "{:.6g}) m, past rank {}'s halo ({}), step {}, t = {:.6g} s",
+              ic, k, c.x0[k], c.y0[k], side ? "lower" : "upper", x, y, h.comm.rank(),
+              h.reaches.empty() ? fmt::format("its reach holds faces that moved less than {} from where they were "
+                                              "drawn, and widens before they reach that",
+                                              h.face_cells == 1 ? std::string("a cell")
+                                                                : fmt::format("{} cells", h.face_cells))
+                                : "on nested levels a face may move up to a cell on a distributed run",
+              s.step, s.time);
         return;
       }
     }

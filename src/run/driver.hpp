@@ -71,6 +71,7 @@ struct RunResult {
   std::vector<long> particles_per_rank_end;  // at the end of the run
   long migrations = 0;                 // particle migrations between ranks
   long rebalances = 0;                 // new splits when the load drifted (parallel/halo.hpp)
+  long reach_widenings = 0;            // times the ranks' reach widened for far-moved faces (parallel/halo.hpp)
   double exchange_bytes_per_step = 0.0;  // bytes a rank sends its neighbours per step (mean over ranks)
   double exchange_seconds = 0.0;       // wall time in the exchanges, the largest over the ranks, s
   // Each rank's largest resident memory over the run (getrusage: set-up, steps, outputs), MiB.

@@ -83,6 +83,7 @@ void add_totals(RunIo& io, RunResult& result, long first_step) {
   result.growth_seconds = record.growth_seconds;
   if (s.halo) {
     result.migrations = halo_of(s).migrations;
+    result.reach_widenings = halo_of(s).widenings;
     const long steps = std::max(1L, s.step - first_step);  // this process's steps
     const ExchangeCost cost = exchange_cost(s);
     result.exchange_bytes_per_step = comm.sum(cost.bytes_sent) / double(comm.size()) / double(steps);
