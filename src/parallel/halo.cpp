@@ -9,6 +9,7 @@
 #include <cstring>
 
 #include "core/errors.hpp"
+#include "parallel/agreement.hpp"
 #include "parallel/halo_nested.hpp"
 #include "parallel/rank_plan.hpp"
 #include "solver/energy.hpp"
@@ -131,15 +132,27 @@ void check_distributable(const State&, int) {
 
 namespace {
 
-// This rank's reach from h.blocks and h.halo_nodes: its peers and halo nodes, the interfaces'
-// owned and known nodes, the ties of the reach; the windows re-fitted.
-void lay_reach(State& s) {
+// lay_reach's work on this rank (no collective call).
+void lay_own_reach(State& s) {
   Halo& h = halo_of(s);
+  if (!s.interfaces.empty() && h.reaches.empty()) {
+    // An owned node's neighbours must be known: segments longer than two cells (an interface
+    // drawn with segments coarser than the grid) widen the reach from the start.
+    h.face_cells = std::max(h.face_cells, longest_segment_cells(s) - 1);
+    h.halo_nodes = std::max(h.halo_nodes, 1 + 2 * h.face_cells);
+  }
   h.peers.clear(), h.node_i.clear(), h.node_j.clear(), h.terms.clear(), h.box_node.clear();
   build_peers(h, s.grid);
   s.bonded = h.all_bonded;  // distribute_interfaces keeps the ties of the new reach
   distribute_interfaces(s);
   s.windows_checked_step = -2;  // re-fit the windows to this rank's particles and faces
+}
+
+// This rank's reach from h.blocks and h.halo_nodes: its peers and halo nodes, the interfaces'
+// owned and known nodes, the ties of the reach; the windows re-fitted. Collective (every rank
+// lays its reach at the same point): a refusal on one rank (distribute_interfaces) reaches all.
+void lay_reach(State& s) {
+  agree_on_failure(halo_of(s).comm, [&s] { lay_own_reach(s); });
 }
 
 }  // namespace

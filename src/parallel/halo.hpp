@@ -245,11 +245,13 @@ void check_distributable(const State& s, int ranks);
 // added since, in rank order, onto the kept values.
 
 // Interfaces (parallel/halo_interface.cpp). A node is owned by the rank whose block holds the
-// cell of its reference point; a rank knows the nodes whose reference cell lies within 2 cells
-// of its block (halo_nodes - 1: the faces touching its owned grid nodes and the neighbours of
-// its owned nodes, for faces that moved less than a cell; more once the reach has widened,
-// below), so their faces' stencils lie in its reach (kInterfaceHaloNodes). Throws InputError when an owned node's neighbour is not known (segments
-// longer than a cell).
+// cell of its reference point; a rank knows the nodes whose reference cell lies within
+// 1 + face_cells cells of its block (2 as set up: the faces touching its owned grid nodes and
+// the neighbours of its owned nodes, for faces that moved less than a cell; more once the reach
+// has widened, below), so their faces' stencils lie in its reach (kInterfaceHaloNodes as set
+// up). Nested levels: throws InputError on every rank (agreed, a collective call) when an
+// owned node's neighbour is not known (segments longer than two cells); one grid lays the reach
+// wide enough for them instead (longest_segment_cells).
 void distribute_interfaces(State& s);
 // Faces that move far (a block sliding along a crack, a body carried across the grid): how far,
 // in cells, the owned nodes' faces are from where their nodes were drawn (the largest |u_x| or
@@ -264,6 +266,10 @@ void distribute_interfaces(State& s);
 // added ones are 0), so the run is the same bit for bit. One grid; nested levels keep their
 // reaches (a face may move up to a cell there).
 double face_travel(const State& s);
+// The most cells (along x or y) between the drawn cells of two neighbouring interface nodes:
+// an owned node's neighbours must be known, so segments longer than two cells set face_cells
+// to at least this less one when the reach is laid (one grid).
+int longest_segment_cells(const State& s);
 int reach_for_travel(double travel);
 bool reach_too_narrow(const Halo& h, double travel);
 void widen_interface_reach(State& s, double travel);

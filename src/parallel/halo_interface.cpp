@@ -120,7 +120,8 @@ void distribute_interfaces(State& s) {
       c.rank_known[k] = knows(me, k);
       h.owned_nodes += c.rank_owned[k];
     }
-    // Segments reach one node on: an owned node's neighbours must be known.
+    // Segments reach one node on: an owned node's neighbours must be known (one grid: the reach
+    // is laid wide enough, lay_reach and longest_segment_cells; nested levels: refused here).
     for (std::size_t k = 0; k < n; ++k) {
       if (!c.rank_owned[k]) continue;
       const std::size_t next = c.closed ? (k + 1) % n : std::min(k + 1, n - 1);
@@ -129,8 +130,8 @@ void distribute_interfaces(State& s) {
         if (!c.rank_known[j])
           throw InputError(fmt::format(
               "interface {} (input order): segment from ({:.6g}, {:.6g}) to ({:.6g}, {:.6g}) m is longer than "
-              "a distributed run allows ({} cells of {:.6g} m between a node and its neighbour); "
-              "refine the interface's segments or run on one process",
+              "a distributed run on nested levels allows ({} cells of {:.6g} m between a node and its "
+              "neighbour); refine the interface's segments or run on one process",
               ic, c.x0[k], c.y0[k], c.x0[j], c.y0[j], known, h.cell));
     }
     Halo::InterfaceLinks& L = h.links[ic];
@@ -194,6 +195,19 @@ void collect_interface_state(State& s) {
     arrays.add(c.gp_separated, G);
     arrays.run(comm, c.rank_owned);
   }
+}
+
+int longest_segment_cells(const State& s) {
+  int most = 0;
+  for (const CohesiveInterface& c : s.interfaces) {
+    const std::size_t n = c.num_nodes();
+    for (std::size_t k = 0; k + 1 < n + (c.closed ? 1 : 0); ++k) {
+      const std::size_t j = (k + 1) % n;
+      most = std::max({most, std::abs(cell_x(s.grid, c.x0[k]) - cell_x(s.grid, c.x0[j])),
+                       std::abs(cell_y(s.grid, c.y0[k]) - cell_y(s.grid, c.y0[j]))});
+    }
+  }
+  return most;
 }
 
 double face_travel(const State& s) {
