@@ -24,6 +24,7 @@ FaultSite site_named(const std::string& name) {
   if (name == "bad_particle") return FaultSite::bad_particle;
   if (name == "record_write") return FaultSite::record_write;
   if (name == "setup") return FaultSite::setup;
+  if (name == "snapshot_index") return FaultSite::snapshot_index;
   throw InputError("RUPTURE_INJECT_FAULT: unknown site '" + name + "'");
 }
 

@@ -19,6 +19,7 @@ enum class FaultSite {
   bad_particle,          // solver/gather: a particle off the grid
   record_write,          // run/driver: rank 0's record files (history, crack tip, run.json)
   setup,                 // run/driver: this rank's set-up
+  snapshot_index,        // output/snapshot: rank 0's particles.xdmf after a distributed snapshot
 };
 
 // Reads RUPTURE_INJECT_FAULT for the process of rank `rank`; InputError on a malformed value.

@@ -16,6 +16,7 @@
 #include <utility>
 
 #include "core/errors.hpp"
+#include "core/fault_injection.hpp"
 #include "core/atomic_file.hpp"
 
 namespace rupture {
@@ -119,18 +120,26 @@ void SnapshotWriter::write(const Particles& p, const std::vector<ElasticStiffnes
     const std::string rel = fmt::format("snapshots/particles_{:06d}.h5", files_.size());
     const std::string path = dir_ + "/" + rel;
     std::string failure;
+    // Rank 0's index (particles.xdmf) is written before the agreement too: a write that fails
+    // there after it (a full disk) left rank 0 stopping alone while the others went on into the
+    // next step's collective calls.
     try {
       write_collective(p, stiffness, time, step, path + ".tmp");
       if (comm_.rank() == 0) commit_file(path + ".tmp", path);
+      files_.push_back(rel);
+      times_.push_back(time);
+      counts_.push_back(selected_);
+      if (comm_.rank() == 0) {
+        if (fault_due(FaultSite::snapshot_index, step))  // tests
+          throw IoError(fmt::format("error while writing '{}/particles.xdmf': No space left on device "
+                                    "(injected: RUPTURE_INJECT_FAULT)", dir_));
+        write_xdmf();
+      }
     } catch (const IoError& e) {
       failure = e.what();
     }
     const int failed = comm_.first_with(!failure.empty());  // every rank stops on a failure
-    if (failed >= 0) throw IoError(comm_.broadcast(failure, failed));
-    files_.push_back(rel);
-    times_.push_back(time);
-    counts_.push_back(selected_);
-    if (comm_.rank() == 0) write_xdmf();
+    if (failed >= 0) throw IoError(fmt::format("{} (rank {})", comm_.broadcast(failure, failed), failed));
     return;
   }
   const std::size_t n = selected_;
