@@ -1,5 +1,5 @@
 // rupture-case-bench: time to solution of a whole case on the graded tensor-product grid and on
-// nested levels (grid/nested.hpp, solver/nested_state.hpp), with the crack each gives (SPEC §4:
+// nested levels (grid/nested.hpp, solver/nested_state.hpp), with the crack each gives (theory §4:
 // E10 initiation, E11 speeds), no output written. For issue "Speed": same physics, fewer
 // particle-updates.
 //   rupture-case-bench CASE [--set key=value ...] [--realization graded|nested|both] [--threads T]

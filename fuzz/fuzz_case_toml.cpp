@@ -1,6 +1,6 @@
 // rupture/fuzz/fuzz_case_toml.cpp
 // libFuzzer harness: every input as a case file (fuzz_entry.hpp: case_toml_one). Seeds:
-// examples/*.toml and tests/inputs/*.toml (fuzz/corpus/case_toml/ holds what the runs add).
+// examples/*.toml and tests/inputs/*.toml (build/fuzz/corpus/case_toml/ holds what the runs add, scripts/fuzz.sh).
 #include <cstddef>
 #include <cstdint>
 

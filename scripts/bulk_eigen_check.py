@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Independent check of the bulk eigenvalue bound of the time step (docs/time_step.md).
 
-Assembles the lumped mass M and the stiffness K of uGIMP (SPEC E3-E5, plane strain) for a free
+Assembles the lumped mass M and the stiffness K of uGIMP (theory E3-E5, plane strain) for a free
 square block of N x N cells with ppc x ppc particles per cell, in numpy, and prints for several
 Poisson ratios the largest eigenvalue of M^-1 K and the largest Gershgorin row sum, both in
 units of (2 c_D / h)^2. rupture's bulk_eigen_bound (solver/time_step.cpp) computes the row sum;
@@ -13,7 +13,7 @@ import sys
 import numpy as np
 
 
-def weight(d, h, lp):  # SPEC E3, uniform axis: (S, dS/dx_p)
+def weight(d, h, lp):  # theory E3, uniform axis: (S, dS/dx_p)
     a = abs(d)
     if a < lp:
         return 1 - (d * d + lp * lp) / (2 * h * lp), -d / (h * lp)

@@ -6,7 +6,7 @@ Usage: /usr/bin/python3 scripts/map_table.py SWEEP_DIR...
 Each SWEEP_DIR holds a summary.csv whose runs vary boundary.impact.velocity; the finest cell
 size is read from each run's run.json. One row per run, sorted by impact speed: regime, sustained
 speed (m/s, and in c_R and c_S), the first time the E11 speed passes c_S, the daughter-crack time,
-the Mach angle with the speed it implies (SPEC E12), arrest, and the run's status. Times in us;
+the Mach angle with the speed it implies (theory E12), arrest, and the run's status. Times in us;
 "-" where the crack never did it. The daughter-crack time is recomputed from crack_stretches.csv
 with the summary's rule (a second stretch beyond an intact ligament of one grid cell), so runs
 summarised before that rule read the same.

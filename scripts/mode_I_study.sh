@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Grid and load study of examples/mode_I.toml (Freund's crack-face step, SPEC E18): for each
+# Grid and load study of examples/mode_I.toml (Freund's crack-face step, theory E18): for each
 # cell size H and crack-face pressure S (Pa), a run into runs/mode_I/h<H>_s<S>, then a table of
 # the initiation time (run.json crack.initiation_time) against Freund's t_F, when K_I(t) = K_c.
 #   scripts/mode_I_study.sh [H...] [-- S...]    default H = 0.25e-3 0.125e-3 0.0625e-3, S = 5e6

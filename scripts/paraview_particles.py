@@ -1,5 +1,5 @@
 """Opens a run's particles in ParaView ready to look at: the particles as discs coloured by
-tau_max (SPEC E13, the isochromatics' quantity) on one colour scale over all output times, at
+tau_max (theory E13, the isochromatics' quantity) on one colour scale over all output times, at
 the last output time.
 
   pvpython scripts/paraview_particles.py RUN_DIR [--array NAME] [--png FILE]

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""What the interface shows around the sub-Rayleigh -> intersonic transition (issue 14, SPEC §6).
+"""What the interface shows around the sub-Rayleigh -> intersonic transition (issue 14, theory §6).
 
 Usage: /usr/bin/python3 scripts/transition.py RUN_DIR... [--from T_US] [--profiles]
 

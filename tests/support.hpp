@@ -7,7 +7,7 @@
 
 namespace rupture::test {
 
-// Homalite-100 (SPEC §1) as a [materials] table, shared by the test cases.
+// Homalite-100 (theory §1) as a [materials] table, shared by the test cases.
 inline constexpr const char* kHomaliteToml = R"(
 [materials.homalite]
 youngs_modulus = 5.2e9

@@ -1,4 +1,4 @@
-// Shared helpers for tests that step a State: the energy balance (SPEC E14) and a run to a time.
+// Shared helpers for tests that step a State: the energy balance (theory E14) and a run to a time.
 #pragma once
 #include <cmath>
 

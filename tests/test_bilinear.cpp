@@ -171,7 +171,7 @@ TEST(Bilinear, damage_never_decreases_and_is_the_largest_opening_reached) {
   }
 }
 
-// SPEC E8's rule for this law: Tn = k_pen Dn for Dn < 0, k_pen = penalty sigma_max /
+// theory E8's rule for this law: Tn = k_pen Dn for Dn < 0, k_pen = penalty sigma_max /
 // (lambda0 delta_nc), whatever Dt and the damage; no penalty for Dn >= 0.
 TEST(Bilinear, penalty_is_independent_of_tangential_opening) {
   BilinearLaw law = test_law(0.05);

@@ -443,7 +443,7 @@ void check_turns_onto_the_bond(bool in_body) {
       if (to.y > 0.006) to = {f.x + (0.006 - f.y) / std::tan(a), 0.006};
       stop_at_segment_junction(c, 1, 0.0, junction_lines(all), {f.x, f.y}, to, kH);
       through = add_crack_segment(c, 1, L, slot, t[0], to.x, to.y, true);
-      record.rows.insert(record.rows.end(), {1e-9 * n, 0.0, 1.0, to.x, to.y, 0.0, 0.5 * kH, 0.0, 0.0});
+      record.rows.push_back({1e-9 * n, 0, LineEnd::end, false, to.x, to.y, 0.0, 0.5 * kH, 0.0, 0.0});
       stop_at_tie_junction(c, 1, 0.0, junction_lines(all), L.interfaces[slot].spec.tie_geometries(), kH);
       follow_edge_junctions(c, s, 1, {slot}, all, 0.0, kH);
       if (first_meeting < 0.0 && !bond.node_faces_lo.empty()) first_meeting = f.y;

@@ -15,7 +15,7 @@ using namespace rupture;
 
 namespace {
 
-// Homalite's wave speeds (SPEC §1), m/s.
+// Homalite's wave speeds (theory §1), m/s.
 const WaveSpeeds kHomalite{2534.5, 1247.9, 1165.0, 1164.0};
 
 // `segments` segments on [0, end], tau_max = sigma_max = 24 MPa, delta_t = 1 um.
@@ -178,7 +178,7 @@ TEST(CrackTip, reaching_the_end_of_the_cohesive_line_is_recorded) {
   EXPECT_LT(intact.end_reached_time(), 0.0) << "no crack, so no arrival";
 }
 
-// SPEC §6 bands, with Homalite's speeds: below c_R, between c_R and c_S (the band no crack
+// theory §6 bands, with Homalite's speeds: below c_R, between c_R and c_S (the band no crack
 // sustains), between c_S and c_D, above c_D; "none" for a crack that does not move.
 TEST(CrackTip, regimes_follow_the_wave_speeds) {
   EXPECT_EQ(crack_regime(0.0, kHomalite), "none");

@@ -23,8 +23,8 @@ struct Grown {
     is.growth.criterion = GrowthCriterion::max_hoop;
     c.interfaces.push_back(is);
     c.interface_names.push_back("crack");
-    auto row = [&](double t, double end, double x, double y) {
-      growth[0].rows.insert(growth[0].rows.end(), {t, end, end, x, y, 0.0, 0.1, 0.0, 0.0});
+    auto row = [&](double t, int end, double x, double y) {
+      growth[0].rows.push_back({t, end, end == 0 ? LineEnd::start : LineEnd::end, false, x, y, 0.0, 0.1, 0.0, 0.0});
     };
     row(1.0, 1, 1.1, 0.0), row(1.5, 0, -0.1, 0.05), row(2.0, 1, 1.2, 0.05), row(3.0, 0, -0.2, 0.1);
   }

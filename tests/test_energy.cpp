@@ -1,4 +1,4 @@
-// Tests of solver/energy.hpp: E14's strain energy is the work the stresses have done (SPEC E14).
+// Tests of solver/energy.hpp: E14's strain energy is the work the stresses have done (theory E14).
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -150,7 +150,7 @@ TEST(Geometry, self_intersections_are_found_and_simple_polygons_pass) {
   EXPECT_EQ(fold->second, 1);
 }
 
-// SPEC §2: the seeded mass of a curved or slanted body is rho x (area of the sub-cells whose
+// theory §2: the seeded mass of a curved or slanted body is rho x (area of the sub-cells whose
 // centres lie inside). Only sub-cells the boundary crosses can be wrong, each by at most its
 // area s^2 (s = h / ppc), and a boundary of length P crosses at most about sqrt(2) P / s + 4 of
 // them: |error| <= (sqrt(2) P / s + 4) s^2, first order in h. Midpoint sampling cancels most of
@@ -383,7 +383,7 @@ TEST(Geometry, a_part_walks_its_side_box_and_visits_the_points_of_the_whole_walk
   }
 }
 
-// SPEC E5 with a prestress: sigma_zz = nu (sxx + syy) in plane strain, eps from the compliance,
+// theory E5 with a prestress: sigma_zz = nu (sxx + syy) in plane strain, eps from the compliance,
 // and the strain energy 0.5 sigma:eps x area from t = 0.
 TEST(Geometry, initial_stress_sets_szz_strain_and_strain_energy) {
   const double s = -8e6, E = 5.2e9, nu = 0.34;

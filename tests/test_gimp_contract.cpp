@@ -1,4 +1,4 @@
-// The GIMP stencil contract on graded grids (grid/grid.hpp, SPEC E3 and §5): a particle box
+// The GIMP stencil contract on graded grids (grid/grid.hpp, theory E3 and §5): a particle box
 // may overlap at most two cells per axis. The exact test on an axis, and its check at every
 // re-sort: a coarse particle driven into a 4x finer region is stopped with a diagnosis naming
 // it and the cell; one driven into a 2x finer region is not.
@@ -81,7 +81,7 @@ TEST(GimpContract, box_may_overlap_two_cells_but_not_three) {
   }
   EXPECT_GT(expected, 0);
   EXPECT_EQ(count_stencil_overflows(a, xs.data(), ls.data(), xs.size()), std::size_t(expected));
-  // Why it matters: the box reaches a fourth node, whose weight (SPEC E3) the three-node
+  // Why it matters: the box reaches a fourth node, whose weight (theory E3) the three-node
   // stencil cannot carry, so the particle's mass and force go partly to the wrong nodes.
   Stencil1D st;
   stencil(a, 0.0086, lp, st);

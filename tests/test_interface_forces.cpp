@@ -1,4 +1,4 @@
-// Tests of the interface loop (SPEC E7-E9: solver/cohesive_step.cpp evaluate_interface and
+// Tests of the interface loop (theory E7-E9: solver/cohesive_step.cpp evaluate_interface and
 // add_cohesive_forces, with the laws of cohesive/) on the smallest interface there is: one
 // segment (two nodes) between two bodies, with a jump prescribed on its faces. Why: the
 // Gauss-point loop (shape functions, weights, the segment frame) and the spread of each node's
@@ -191,7 +191,7 @@ TEST(InterfaceForces, xu_needleman_normal_opening) {
   for (const double x : {0.3, 1.0, 2.5}) {  // below, at and past the peak (Tn = sigma_max at x = 1)
     State t = s;
     load_uniform(t, 0.0, x * delta_n);
-    const double Tn = kE * sigma_max * x * std::exp(-x);  // SPEC E7 at Dt = 0
+    const double Tn = kE * sigma_max * x * std::exp(-x);  // theory E7 at Dt = 0
     const double want_x[2] = {0.0, 0.0}, want_y[2] = {-Tn * kLength / 2, -Tn * kLength / 2};
     expect_forces(t, want_x, want_y, fmt::format("xu_needleman, Dn = {} delta_n", x));
   }

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <type_traits>
 
 #include "cohesive/interface_growth.hpp"
 
@@ -154,4 +155,40 @@ TEST(InterfaceGrowth, ACohesiveCracksNewSegmentsCarryTheLawAPreCracksDoNot) {
 }
 
 }  // namespace
+
+// Every array of state a grown line carries (InterfaceArrays' kGrown, walked generically: an
+// array added to the list is checked here too) keeps its values, shifted to the new numbering,
+// at either end; the new node's and new Gauss points' entries are the only ones that change.
+TEST(InterfaceGrowth, EveryGrownArrayOfTheListIsCarriedToTheNewNumbering) {
+  for (const LineEnd at : {LineEnd::start, LineEnd::end}) {
+    CohesiveInterface c = precrack();
+    std::size_t k = 0;
+    for_each_interface_array([&](const auto& a) {
+      using T = typename std::decay_t<decltype(a)>::value_type;
+      if (!a.has(kGrown)) return;  // x0: the geometry the new line is made from
+      auto& v = c.*a.member;
+      const std::size_t n = a.extent == InterfaceExtent::node    ? c.num_nodes()
+                            : a.extent == InterfaceExtent::gauss ? c.num_segments() * CohesiveInterface::kGauss
+                                                                 : c.num_segments();
+      v.resize(n);
+      for (std::size_t i = 0; i < n; ++i) v[i] = T(1 + (k * 7 + i) % 100);
+      ++k;
+    });
+    const CohesiveInterface before = c;
+    const bool front = at == LineEnd::start;
+    extend_interface(c, at, front ? -0.25 : 2.0, front ? 0.0 : 0.75, 0.0, 0.0);
+    for_each_interface_array([&](const auto& a) {
+      if (!a.has(kGrown)) return;
+      const auto& old = before.*a.member;
+      const auto& now = c.*a.member;
+      const std::size_t per = a.extent == InterfaceExtent::gauss ? CohesiveInterface::kGauss : 1;
+      ASSERT_EQ(now.size(), old.size() + per) << a.name;
+      const std::size_t shift = front ? per : 0;
+      for (std::size_t i = 0; i < old.size(); ++i) {
+        EXPECT_EQ(now[i + shift], old[i]) << a.name << " at " << i;
+      }
+    });
+  }
+}
+
 }  // namespace rupture

@@ -83,7 +83,7 @@ TEST(LawRegistry, names_are_unique_and_the_schema_lists_them_in_order) {
   const KeyDoc& law = doc("law");
   EXPECT_EQ(law.range, values);
   EXPECT_EQ(law.default_value, quoted(laws.front().name));
-  EXPECT_EQ(laws.front().name, "xu_needleman");  // the SPEC's law, the input's default
+  EXPECT_EQ(laws.front().name, "xu_needleman");  // the paper's law, the input's default
   // A case without `law` gets the first entry's law.
   const Case c = parse_case(case_with("sigma_max = 24e6\ndelta_n = 0.4e-6\n"));
   EXPECT_EQ(&law_entry(c.interfaces.at(0)), &laws.front());

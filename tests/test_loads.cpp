@@ -1,6 +1,6 @@
 // Tests of [loads] (bc/loads.hpp, solver/load_step.hpp) and the time functions they use
 // (bc/time_function.hpp): physics that a wrong implementation would miss (plane-wave amplitude
-// under a traction, free fall, a driven region), energy balance (SPEC E14) and bad input.
+// under a traction, free fall, a driven region), energy balance (theory E14) and bad input.
 #include <gtest/gtest.h>
 
 #include <fmt/format.h>

@@ -62,7 +62,7 @@ MachSearch search(double h, double dir_deg, double run) {
 }  // namespace
 
 TEST(MachAngle, SpeedAndAngleAreInverse) {
-  // SPEC E12 with Homalite's c_S: 2300 m/s -> 32.86 deg; sqrt(2) c_S -> 45 deg exactly.
+  // theory E12 with Homalite's c_S: 2300 m/s -> 32.86 deg; sqrt(2) c_S -> 45 deg exactly.
   EXPECT_NEAR(mach_angle_of_speed(2300.0, 1247.9), std::asin(1247.9 / 2300.0) * 180 / kPi, 1e-12);
   EXPECT_NEAR(mach_angle_of_speed(std::sqrt(2.0) * 1247.9, 1247.9), 45.0, 1e-9);
   EXPECT_NEAR(speed_of_mach_angle(mach_angle_of_speed(2300.0, 1247.9), 1247.9), 2300.0, 1e-9);

@@ -1,4 +1,4 @@
-// Tests of material/elastic.hpp against SPEC E1 and E5.
+// Tests of material/elastic.hpp against theory E1 and E5.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -28,7 +28,7 @@ TEST(Elastic, rayleigh_root_satisfies_rayleigh_equation) {
       const double residual = std::pow(2 - x2, 2) - 4 * std::sqrt(1 - x2 * k) * std::sqrt(1 - x2);
       EXPECT_NEAR(residual, 0.0, 1e-10) << "nu = " << nu;
       EXPECT_LT(w.rayleigh, w.shear);
-      // The SPEC E1 approximation is the plane-strain fit for nu >= 0 (about 1 % accurate).
+      // The theory E1 approximation is the plane-strain fit for nu >= 0 (about 1 % accurate).
       if (mode == PlaneMode::strain && nu >= 0.0) {
         EXPECT_NEAR(w.rayleigh, w.rayleigh_approx, 0.015 * w.shear) << "nu = " << nu;
       }

@@ -1,6 +1,6 @@
-// Tests of grid/nested (SPEC §5, nested levels with transition nodes): the levels' layout and
+// Tests of grid/nested (theory §5, nested levels with transition nodes): the levels' layout and
 // nesting, that every slave node is a partition-of-unity, linear-exact combination of DOFs, the
-// GIMP contract (SPEC E3) of particles anywhere, transitions included, after mapping to DOFs,
+// GIMP contract (theory E3) of particles anywhere, transitions included, after mapping to DOFs,
 // and that condense/distribute conserve mass and momentum and are each other's transpose.
 #include <gtest/gtest.h>
 
@@ -37,7 +37,7 @@ std::map<std::uint32_t, std::array<double, 3>> dof_weights(const NestedGrid& g,
                                                            int l, double x, double y, double lp,
                                                            bool& touched_slave) {
   touched_slave = false;
-  const Level& L = g.levels[std::size_t(l)];
+  const LevelLattice& L = g.levels[std::size_t(l)];
   Stencil1D sx, sy;
   stencil(L.x, x, lp, sx);
   stencil(L.y, y, lp, sy);
@@ -70,11 +70,11 @@ TEST(NestedGrid, levels_nest_properly_and_keep_the_boxes) {
   const NestedGrid g = example_levels(31.25e-6);
   ASSERT_EQ(g.levels.size(), 7u);
   for (std::size_t l = 0; l < g.levels.size(); ++l) {
-    const Level& L = g.levels[l];
+    const LevelLattice& L = g.levels[l];
     EXPECT_NEAR(L.x.h, 2e-3 / double(1 << l), 1e-15);
     EXPECT_EQ(L.unit, 64L >> l);
     if (l == 0) continue;
-    const Level& P = g.levels[l - 1];
+    const LevelLattice& P = g.levels[l - 1];
     for (int d = 0; d < 2; ++d) {
       // Inner borders on the parent's nodes, kNestingCells parent cells inside the parent's.
       if (!L.outer_lo[d]) {
@@ -127,7 +127,7 @@ TEST(NestedGrid, slaves_are_partition_of_unity_linear_exact_combinations_of_dofs
   EXPECT_LT(worst_lin, 1e-15);
 }
 
-// SPEC E3's contract for particles everywhere, densely around the transitions: partition of
+// theory E3's contract for particles everywhere, densely around the transitions: partition of
 // unity, zero gradient sum, and exact linear fields (sum S x = x_p, sum grad S (x) x = I), with
 // the particle's own half-width and with those of a particle moved in from the coarser level
 // or out from the finer one; on the level owning the point and on every level a particle may
@@ -145,7 +145,7 @@ TEST(NestedGrid, gimp_contract_holds_through_every_transition) {
     const double x = ux(rng), y = uy(rng);
     const double u = (x - g.min[0]) / g.finest, v = (y - g.min[1]) / g.finest;
     for (int l = 0; l < int(g.levels.size()); ++l) {
-    const Level& L = g.levels[std::size_t(l)];
+    const LevelLattice& L = g.levels[std::size_t(l)];
     const double grow = kMigrateDrift * double(g.levels.back().unit), p[2] = {u, v};
     bool reachable = true;
     for (int d = 0; d < 2; ++d)

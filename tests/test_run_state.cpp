@@ -37,7 +37,7 @@ TEST(RunState, one_grid_is_one_level_and_steps_as_that_level_alone) {
   const Case c = parse_case(test::strip_case_toml());
   RunState r = make_run_state(c);
   State alone = make_state(c);
-  ASSERT_FALSE(r.joined());
+  ASSERT_FALSE(r.is_nested());
   ASSERT_EQ(r.levels.size(), 1u);
   ASSERT_EQ(r.num_interfaces(), c.interfaces.size());
   for (std::size_t k = 0; k < r.num_interfaces(); ++k) EXPECT_EQ(&r.interface(k), &r.levels[0].interfaces[k]);
@@ -63,7 +63,7 @@ TEST(RunState, one_grid_is_one_level_and_steps_as_that_level_alone) {
 
 TEST(RunState, nested_levels_keep_their_interfaces_and_the_run_sums_the_levels) {
   RunState r = make_run_state(nested_plate());
-  ASSERT_TRUE(r.joined());
+  ASSERT_TRUE(r.is_nested());
   ASSERT_GT(r.levels.size(), 1u);
   ASSERT_EQ(r.num_interfaces(), 1u);
   const CohesiveInterface* home = &r.interface(0);

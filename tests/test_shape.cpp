@@ -1,4 +1,4 @@
-// Tests of shape/gimp.hpp and grid stencils (SPEC E3).
+// Tests of shape/gimp.hpp and grid stencils (theory E3).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -99,7 +99,7 @@ TEST(Shape, stencil_partition_of_unity_and_zero_gradient_sum) {
 }
 
 // The hot path's three-node form (gimp_uniform_three: outer weights from the box's overlap,
-// the middle node the rest) gives SPEC E3's weights node by node: the branchy closed form and
+// the middle node the rest) gives theory E3's weights node by node: the branchy closed form and
 // the quadrature agree with it to a few ulps for every box size the contract allows, the
 // gradients sum to zero, and an outer node the box does not reach gets exactly zero.
 // (Offsets c in units of h, h = 1, so the nodes' offsets c + 1, c, c - 1 carry no rounding

@@ -165,7 +165,7 @@ TEST(TieFollow, AMovingSplitPlateIsTheUndividedPlateOnNestedLevels) {
   const Case split_case = parse_case(text, sets), whole_case = parse_case(plain, sets);
   RunState split = make_run_state(split_case), whole = make_run_state(whole_case);
   RunState fixed = make_run_state(split_case);
-  ASSERT_TRUE(split.joined());
+  ASSERT_TRUE(split.is_nested());
   const int laid = run_to(split, 15e-6, true);
   run_to(whole, 15e-6, false);
   run_to(fixed, 15e-6, false);

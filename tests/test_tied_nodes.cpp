@@ -2,7 +2,7 @@
 // with solver/cohesive_step.hpp's bonded tie): where a crack drawn inside a body is tied beyond
 // its tip, the two fields' copies of a tied node are one continuum, so a velocity region that
 // reaches either copy prescribes both, and the work of a region, a driven edge or an absorbing
-// edge on a tied node is counted once. Energy balance (SPEC E14) is the check.
+// edge on a tied node is counted once. Energy balance (theory E14) is the check.
 #include <gtest/gtest.h>
 
 #include <fmt/format.h>

@@ -1,4 +1,4 @@
-// Tests of the particle -> grid scatter (SPEC E4: solver/transfer.cpp particles_to_grid, which
+// Tests of the particle -> grid scatter (theory E4: solver/transfer.cpp particles_to_grid, which
 // sums through per-strip tiles, solver/strip_tile.hpp, and batched SIMD stencils,
 // solver/stencil_batch.hpp) against a naive scatter written here: for every particle and every
 // node, the GIMP weights of shape/gimp.hpp (gimp_uniform on a uniform axis, gimp_graded on a
@@ -168,7 +168,7 @@ Naive naive_scatter(const State& s) {
     axis_weights(g.x, P.x[p], P.half_x[p], wx, dwx);
     axis_weights(g.y, P.y[p], P.half_y[p], wy, dwy);
     const double m = P.mass[p];
-    // SPEC E4: f_i = -sum_p V_p sigma_p . grad S_ip, V_p the current area V0 (1 + tr eps).
+    // theory E4: f_i = -sum_p V_p sigma_p . grad S_ip, V_p the current area V0 (1 + tr eps).
     const double V = P.volume0[p] * (1.0 + (P.sxx[p] + P.syy[p]) * tr[P.material[p]]);
     const double fxx = -V * P.sxx[p], fyy = -V * P.syy[p], fxy = -V * P.sxy[p];
     const double q[3] = {m, m * P.vx[p], m * P.vy[p]};

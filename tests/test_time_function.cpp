@@ -1,4 +1,4 @@
-// Tests of bc/time_function.hpp (SPEC E2).
+// Tests of bc/time_function.hpp (theory E2).
 #include <gtest/gtest.h>
 
 #include "bc/time_function.hpp"

@@ -1,4 +1,4 @@
-// Tests of bc/velocity_bc.hpp and the displacement of bc/time_function.hpp (SPEC E2): a
+// Tests of bc/velocity_bc.hpp and the displacement of bc/time_function.hpp (theory E2): a
 // condition normal to its edge follows the edge as it moves by the integral of V.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Tests of the Xu-Needleman law (SPEC E7, E8) against the SPEC's checks.
+// Tests of the Xu-Needleman law (theory E7, E8) against the paper's checks.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -133,9 +133,9 @@ TEST(XuNeedleman, tangent_matches_finite_differences_of_the_traction) {
   }
 }
 
-// SPEC E6 and E8: at zero opening the normal stiffness is e sigma_max / delta_n on the open
+// theory E6 and E8: at zero opening the normal stiffness is e sigma_max / delta_n on the open
 // side and twice that on the compressed side (law + penalty, k_pen = 1); the tangential one is
-// 2 phi_t / delta_t^2 = tau_max / delta_n for the SPEC's q = 1 parameters. The step bound takes
+// 2 phi_t / delta_t^2 = tau_max / delta_n for the paper's q = 1 parameters. The step bound takes
 // the compressed side for a face at rest.
 TEST(XuNeedleman, stiffness_at_rest_includes_the_penalty) {
   const XuNeedleman law = spec_law();

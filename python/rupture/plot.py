@@ -192,7 +192,7 @@ def plot_crack_tip(runs, labels, out):
         t = sc.tf * tip["time"]
         ax_x.plot(t, sc.lf * tip["tip_x"], label=label)
         line, = ax_v.plot(t, sc.vf * tip["speed"], label=label)
-        # The speed the measured Mach angles imply (SPEC E12), an independent check of E11.
+        # The speed the measured Mach angles imply (theory E12), an independent check of E11.
         mach = optional_table(run, "mach_angle.csv")
         if mach is not None:
             for key, marker in (("implied_speed_left", "^"), ("implied_speed_right", "v")):
@@ -233,7 +233,7 @@ def plot_crack_tip(runs, labels, out):
 
 def mach_line_points(reading, key, side, length):
     """The measured Mach front of one side (mach_angle.csv): from where it meets the crack line,
-    back and away from the crack at angle_<key> (SPEC E12)."""
+    back and away from the crack at angle_<key> (theory E12)."""
     beta = reading.get("angle_" + key)
     if beta is None or not np.isfinite(beta):
         return None

@@ -3,7 +3,7 @@
 // docs/loads.md), and what the time step needs to apply them (solver/load_step.hpp). SI units.
 // Contract: every load's amplitude is multiplied by its dimensionless time function `factor`;
 // forces enter the nodal force as particle external forces f_p scattered with the particle's
-// GIMP weights (SPEC E4); every load's work goes into State::external_work (SPEC E14).
+// GIMP weights (theory E4); every load's work goes into State::external_work (theory E14).
 //   traction:     f_p = factor(t) * traction * length_p on the surface particles of a segment,
 //                 length_p the part of the segment their box covers (the shares sum to its
 //                 length). traction is global (tx, ty), or normal/shear in the segment frame:

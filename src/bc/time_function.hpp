@@ -1,5 +1,5 @@
 // rupture/bc/time_function.hpp
-// Scalar functions of time for prescribed velocities (SPEC E2) and load factors (bc/loads.hpp).
+// Scalar functions of time for prescribed velocities (theory E2) and load factors (bc/loads.hpp).
 // Units: value in the unit of what it scales (m/s for a velocity; 1 for a load factor), times s.
 //   constant:    V(t) = value
 //   trapezoid:   V = V1 t/tr (0 <= t < tr); V1 (tr <= t <= tr+tp);
@@ -13,7 +13,7 @@
 //                and falls to 3 % of the peak at 2.5 f0. Its integral is V1 tau exp(-a), tau = t - t0.
 //   table:       value x the piecewise-linear interpolant through (t_k, v_k), k = 0..n-1, times
 //                strictly increasing; v_0 before t_0 and v_{n-1} after t_{n-1} (held constant).
-// (The paper prints the ramp-down with t - tp; SPEC E2 corrects it so V is continuous.)
+// (The paper prints the ramp-down with t - tp; theory E2 corrects it so V is continuous.)
 // displacement(t) is the exact integral of V from 0 to t (m for a velocity): how far a driven
 // edge has moved. Evaluation allocates nothing (a table is searched by bisection).
 #pragma once

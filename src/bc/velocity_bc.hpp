@@ -1,5 +1,5 @@
 // rupture/bc/velocity_bc.hpp
-// Prescribed-velocity boundary conditions on grid nodes (SPEC E2). A condition names an edge
+// Prescribed-velocity boundary conditions on grid nodes (theory E2). A condition names an edge
 // of the physical domain, a coordinate range along it, one velocity component and the velocity
 // fields (bodies) it acts on. Everything else is traction-free (nothing to do in MPM).
 //

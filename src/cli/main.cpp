@@ -105,8 +105,52 @@ int run_plot(const char* argv0, const std::string& dir, const std::vector<std::s
   return exec_python(script, args);
 }
 
-CaseSource read_case_source(const std::string& path, const std::vector<std::string>& overrides) {
+// The case file as read, or (a resume) the input its checkpoint stores. The fault site
+// case_read fails it as a missing file does (core/fault_injection.hpp).
+CaseSource read_source(bool resume, const std::string& path, const std::vector<std::string>& overrides) {
+  if (fault_due(FaultSite::case_read, 0))
+    throw InputError(fmt::format("cannot read {} '{}': No such file or directory (injected)",
+                                 resume ? "checkpoint" : "case file", path));
+  if (resume) return read_checkpoint_source(path);
   return CaseSource{read_bounded_file(path, kMaxCaseBytes, "case file"), path, overrides};
+}
+
+// The case every rank runs, read once. Under mpirun rank 0 alone reads the files (the case and
+// its table files, or the checkpoint's input) and parses them; the others parse what it sends
+// (the merged input with the tables inline when it read table files, which reads back to the
+// same case). A file that some node lacks or cannot read then stops every rank with rank 0's
+// message, where ranks that read their own copies could fail alone and leave the others
+// waiting in a collective call; any rank's failure is agreed (parallel/agreement.hpp).
+Case load_shared_case(const Comm& world, bool resume, const std::string& path,
+                      const std::vector<std::string>& overrides, CaseSource& source) {
+  Case c;
+  agree_on_failure(world, [&] {
+    if (world.rank() != 0) return;
+    source = read_source(resume, path, overrides);
+    c = parse_case(source.text, source.overrides, source.origin);
+  });
+  if (!world.distributed()) return c;
+  CaseSource sent;
+  if (world.rank() == 0) sent = c.read_table_files ? CaseSource{c.input_toml, source.origin, {}} : source;
+  sent.origin = world.broadcast(sent.origin, 0);
+  sent.text = world.broadcast(sent.text, 0);
+  // The overrides (a resume's are the checkpoint's), each as its length, ':' and its text.
+  std::string packed;
+  for (const std::string& o : sent.overrides) packed += fmt::format("{}:{}", o.size(), o);
+  packed = world.broadcast(packed, 0);
+  agree_on_failure(world, [&] {
+    if (world.rank() == 0) return;
+    sent.overrides.clear();
+    for (std::size_t at = 0; at < packed.size();) {
+      const std::size_t colon = packed.find(':', at);
+      const std::size_t n = std::stoul(packed.substr(at, colon - at));
+      sent.overrides.push_back(packed.substr(colon + 1, n));
+      at = colon + 1 + n;
+    }
+    source = sent;
+    c = parse_case(source.text, source.overrides, source.origin);
+  });
+  return c;
 }
 
 // rupture check --explain KEY: the schema entry (input/input_schema.hpp), or exit code 1 with the
@@ -299,15 +343,14 @@ int main(int argc, char** argv) {
     if (resume->parsed()) {
       out_dir = resume_dir;
       options.resume = true;
-      options.source = read_checkpoint_source(checkpoint_path(resume_dir));
       fmt::print("resuming run in {}\n", resume_dir);
     } else {
-      options.source = read_case_source(case_path, overrides);
       options.overwrite = overwrite;
     }
     options.output_dir = out_dir;
     options.comm = world;
-    const Case c = parse_case(options.source.text, options.source.overrides, options.source.origin);
+    const Case c = load_shared_case(world, options.resume, options.resume ? checkpoint_path(resume_dir) : case_path,
+                                    overrides, options.source);
     // A checkpoint must not depend on files that can change or vanish before `rupture resume`:
     // with table_file tables it stores the merged input with the tables inline (exact: the
     // echo writes every number so that it reads back to the same double).

@@ -134,7 +134,7 @@ void print_run_result(const Case& c, const RunResult& r, const std::string& out_
     fmt::print("crack.arrested={}\n", k.arrested);
     fmt::print("crack.arrest_time={:.6e}\n", k.arrest_time);
     fmt::print("crack.arrest_s={:.6e}\n", k.arrest_s);
-    // SPEC E12: the shear Mach angle read at the snapshot times (-1: not measured).
+    // theory E12: the shear Mach angle read at the snapshot times (-1: not measured).
     fmt::print("crack.mach_readings={}\n", k.mach_readings);
     fmt::print("crack.mach_angle={:.2f}\n", k.mach_angle);
     fmt::print("crack.mach_angle_spread={:.2f}\n", k.mach_angle_spread);

@@ -1,5 +1,5 @@
 // rupture/cohesive/crack_tip.hpp
-// Crack-tip tracking on a cohesive interface (SPEC §4, E10-E11). Positions are arc lengths s
+// Crack-tip tracking on a cohesive interface (theory §4, E10-E11). Positions are arc lengths s
 // along the interface's line from its first point (cohesive/polyline.hpp); the files also give
 // the (x, y) of each.
 //  - tip (E10): the farthest cohesive node from the initial tip (interface start) whose jump
@@ -18,7 +18,7 @@
 //    intervals);
 //  - summary: initiation time; the sustained speed of the steady running phase (see
 //    CrackSummary::sustained_speed) and the regime from it (sub-Rayleigh, Rayleigh-to-shear,
-//    intersonic, supersonic: SPEC §6); the least-squares slope over the last 4 us on its own
+//    intersonic, supersonic: theory §6); the least-squares slope over the last 4 us on its own
 //    (last_window_speed); arrest (a tip that has not moved for the last microsecond or more of
 //    the run) with its time and position; peak speed, first time above c_S, first daughter
 //    crack, and the time the tip reached the end of the cohesive line (beyond it the halves are
@@ -83,7 +83,7 @@ struct CrackSummary {
   double final_traction_zone = 0.0;  // m
   double end_reached_time = -1.0;    // first sample with the tip within end_tolerance of the
                                      // cohesive line's end, s (-1: never)
-  // The shear Mach angle (SPEC E12) read at the output times (cohesive/mach_angle.hpp, filled
+  // The shear Mach angle (theory E12) read at the output times (cohesive/mach_angle.hpp, filled
   // by the driver): medians of the readings in the steady phase (-1: none; MachSummary).
   int mach_readings = 0;
   double mach_angle = -1.0;         // both sides, degrees
@@ -91,7 +91,7 @@ struct CrackSummary {
   double mach_angle_left = -1.0;    // left of the running direction (upper for a crack along +x)
   double mach_angle_right = -1.0;   // degrees
   double mach_speed = -1.0;         // c_S / sin(beta), m/s
-  // none | sub-Rayleigh (v < c_R) | Rayleigh-to-shear (c_R <= v < c_S: SPEC §6 says no crack
+  // none | sub-Rayleigh (v < c_R) | Rayleigh-to-shear (c_R <= v < c_S: theory §6 says no crack
   // sustains it, so a run showing it says so) | intersonic (c_S <= v < c_D) | supersonic
   std::string regime = "none";
   // A fault's rupture front outside its nucleation patch, from the rupture-time profile
@@ -174,7 +174,7 @@ class CrackTracker {
   double end_reached_time_ = -1.0;
 };
 
-// Regime of a crack running at `speed` (SPEC §6); "none" below 1e-3 c_S.
+// Regime of a crack running at `speed` (theory §6); "none" below 1e-3 c_S.
 std::string crack_regime(double speed, const WaveSpeeds& w);
 
 // DIR/rupture_time<suffix>.csv: when each node of the interface cracked (-1: not yet).

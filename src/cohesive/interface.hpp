@@ -1,14 +1,14 @@
 // rupture/cohesive/interface.hpp
-// A cohesive interface between two velocity fields along a polyline (SPEC §3, E7-E9).
+// A cohesive interface between two velocity fields along a polyline (theory §3, E7-E9).
 // Cohesive nodes lie on the line (cohesive/polyline.hpp: a node on every vertex); each exists
 // twice, an upper face (moving with the field of the body the line's normal points into) and
 // a lower face (the other body's field), coincident at t = 0. Each segment has its own frame:
 // normal n (the line direction turned +90 degrees) and tangent t = (n_y, -n_x); jumps
 // (upper minus lower face displacement) and tractions are computed in that frame, so a
-// horizontal line drawn in +x has n = +y, t = +x as in the SPEC.
+// horizontal line drawn in +x has n = +y, t = +x as in docs/theory.md §3.
 // Face velocities are the grid velocities of their field interpolated with the bilinear hat at
 // the face position; forces go back to the same grid nodes with the same weights.
-// Separation (SPEC §3): a Gauss point whose jump magnitude reaches separation_factor * delta_t
+// Separation (theory §3): a Gauss point whose jump magnitude reaches separation_factor * delta_t
 // carries no traction from then on; a node whose jump reaches it counts as cracked (E10).
 // Where the two bodies are bonded instead (bonded_lines), their fields share every grid node
 // near the line (solver/cohesive_step.hpp: tie_bonded_nodes): one continuum there.
@@ -17,6 +17,7 @@
 #include <functional>
 #include <cmath>
 #include <cstdint>
+#include <tuple>
 #include <variant>
 #include <vector>
 
@@ -66,7 +67,7 @@ struct InterfaceSpec {
   // A node has ruptured once its slip rate |dDt/dt| first exceeds this (m/s; the SCEC
   // benchmarks' rupture-time definition, 1 mm/s).
   double rupture_slip_rate = 1e-3;
-  double separation_factor = 5.0;  // Xu-Needleman: separated at |jump| = this x delta_t (SPEC: 5)
+  double separation_factor = 5.0;  // Xu-Needleman: separated at |jump| = this x delta_t (theory §3: 5)
   // No cohesion at all (a pre-crack): every point starts separated; with `contact`, its faces
   // still press and rub on each other.
   bool precracked = false;
@@ -76,7 +77,7 @@ struct InterfaceSpec {
   bool drawn_open = false;
   // Contact of separated points (after separation, and on a pre-crack): faces in compression
   // do not pass through each other; optional Coulomb friction (cohesive/contact.hpp). Without
-  // it a separated point carries no traction (SPEC §3, the paper's choice).
+  // it a separated point carries no traction (theory §3, the paper's choice).
   bool contact = false;
   ContactLaw contact_law;
   // Where the two fields are bonded (tied): any number of lines (bonded_points gives one; a
@@ -137,8 +138,9 @@ struct FaceFields {
   double share = 1.0;
 };
 
-// Every member must also be written in run/checkpoint.cpp (restart is bitwise), except `spec`,
-// which is rebuilt from the case, and the derived scratch arrays marked so.
+// Every array of state is also listed in InterfaceArrays below (restart is bitwise: the
+// checkpoint walks that list), except `spec`, which is rebuilt from the case, and the derived
+// and scratch arrays marked so.
 struct CohesiveInterface {
   static constexpr int kGauss = 4;  // Gauss points per segment (E9)
   // The 4-point Gauss-Legendre rule on [-1, 1]: abscissae and weights (they sum to 2).
@@ -244,6 +246,74 @@ struct CohesiveInterface {
   // be summed over the ranks.
   double stored_energy() const;
 };
+
+// The interface's arrays of state (what the steps change), each listed once, in the checkpoint's
+// order: for_each_interface_array(f) calls f(entry) for each. Per node, per Gauss point
+// (segment-major, kGauss a segment) or per segment. Each entry says which of the operations over
+// a whole interface carry it: kStored (the checkpoint, run/checkpoint.cpp), kGrown (a line that
+// grows carries it over to its new numbering, cohesive/interface_growth.cpp), kGathered (a
+// distributed run gathers the whole interface from the ranks owning its nodes,
+// parallel/halo_interface.cpp collect_interface_state). What no entry lists is derived from the
+// spec at set-up (geometry but x0, laws, faces), per-step scratch recomputed before it is read,
+// or the ranks' bookkeeping (rank_owned, rank_known); time, work and the ties' points are the
+// checkpoint's own entries.
+enum class InterfaceExtent : unsigned char { node, gauss, segment };
+enum InterfaceCarry : unsigned char { kStored = 1, kGrown = 2, kGathered = 4 };
+
+template <class T>
+struct InterfaceStateArray {
+  using value_type = T;
+  const char* name;
+  std::vector<T> CohesiveInterface::*member;
+  InterfaceExtent extent;
+  unsigned char carry;  // InterfaceCarry flags
+  constexpr bool has(InterfaceCarry c) const { return (carry & c) != 0; }
+};
+
+namespace interface_arrays_detail {
+using E = InterfaceExtent;
+using D = InterfaceStateArray<double>;
+using CI = CohesiveInterface;
+inline constexpr unsigned char kAll = kStored | kGrown | kGathered;
+}  // namespace interface_arrays_detail
+
+inline constexpr auto InterfaceArrays = [] {
+  using namespace interface_arrays_detail;
+  return std::make_tuple(
+      // The reference node positions: stored so that a restore checks the grown line's.
+      D{"x0", &CI::x0, E::node, kStored},
+      D{"ux_up", &CI::ux_up, E::node, kAll}, D{"uy_up", &CI::uy_up, E::node, kAll},
+      D{"ux_lo", &CI::ux_lo, E::node, kAll}, D{"uy_lo", &CI::uy_lo, E::node, kAll},
+      D{"fx_node", &CI::fx_node, E::node, kAll}, D{"fy_node", &CI::fy_node, E::node, kAll},
+      D{"node_crack_time", &CI::node_crack_time, E::node, kAll},
+      D{"node_rupture_time", &CI::node_rupture_time, E::node, kAll},
+      D{"node_peak_slip_rate", &CI::node_peak_slip_rate, E::node, kAll},
+      D{"node_slip_path", &CI::node_slip_path, E::node, kAll},
+      D{"node_slip_rate", &CI::node_slip_rate, E::node, kAll},
+      D{"gp_dn", &CI::gp_dn, E::gauss, kAll}, D{"gp_dt", &CI::gp_dt, E::gauss, kAll},
+      D{"gp_tn", &CI::gp_tn, E::gauss, kAll}, D{"gp_tt", &CI::gp_tt, E::gauss, kAll},
+      InterfaceStateArray<std::uint8_t>{"gp_separated", &CI::gp_separated, E::gauss, kAll},
+      D{"gp_damage", &CI::gp_damage, E::gauss, kAll}, D{"gp_slip", &CI::gp_slip, E::gauss, kAll},
+      D{"gp_state", &CI::gp_state, E::gauss, kAll}, D{"gp_rate", &CI::gp_rate, E::gauss, kAll},
+      D{"gp_normal", &CI::gp_normal, E::gauss, kAll},
+      // The segments' end forces of the last evaluation (the next step's first force).
+      D{"seg_fa_x", &CI::seg_fa_x, E::segment, kStored}, D{"seg_fa_y", &CI::seg_fa_y, E::segment, kStored},
+      D{"seg_fb_x", &CI::seg_fb_x, E::segment, kStored}, D{"seg_fb_y", &CI::seg_fb_y, E::segment, kStored},
+      D{"stiffness_node", &CI::stiffness_node, E::node, kAll},
+      // The instability watch: each rank's own nodes (not gathered).
+      D{"last_increment_n", &CI::last_increment_n, E::node, kStored | kGrown},
+      D{"last_increment_t", &CI::last_increment_t, E::node, kStored | kGrown},
+      D{"streak_base", &CI::streak_base, E::node, kStored | kGrown},
+      InterfaceStateArray<std::int32_t>{"reversal_streak", &CI::reversal_streak, E::node, kStored | kGrown},
+      // |jump| at the step's start: scratch, but read across a growth step and a gather.
+      D{"jump_before", &CI::jump_before, E::node, kGrown | kGathered});
+}();
+
+template <class F>
+constexpr void for_each_interface_array(F&& f) {
+  std::apply([&](const auto&... entry) { (f(entry), ...); }, InterfaceArrays);
+}
+
 
 CohesiveInterface make_interface(const InterfaceSpec& spec);
 

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace rupture {
 namespace {
@@ -76,20 +77,14 @@ void extend_interface(CohesiveInterface& c, LineEnd at, double x, double y, doub
   CohesiveInterface g = make_interface(spec);
   const std::size_t node_shift = front ? 1 : 0;
   const std::size_t gp_shift = node_shift * std::size_t(CohesiveInterface::kGauss);
-  for (auto m : {&CohesiveInterface::ux_up, &CohesiveInterface::uy_up, &CohesiveInterface::ux_lo,
-                 &CohesiveInterface::uy_lo, &CohesiveInterface::fx_node, &CohesiveInterface::fy_node,
-                 &CohesiveInterface::node_crack_time, &CohesiveInterface::node_rupture_time,
-                 &CohesiveInterface::node_peak_slip_rate, &CohesiveInterface::node_slip_path,
-                 &CohesiveInterface::node_slip_rate, &CohesiveInterface::stiffness_node,
-                 &CohesiveInterface::jump_before, &CohesiveInterface::last_increment_n,
-                 &CohesiveInterface::last_increment_t, &CohesiveInterface::streak_base})
-    carry(c.*m, g.*m, node_shift);
-  carry(c.reversal_streak, g.reversal_streak, node_shift);
-  for (auto m : {&CohesiveInterface::gp_dn, &CohesiveInterface::gp_dt, &CohesiveInterface::gp_tn,
-                 &CohesiveInterface::gp_tt, &CohesiveInterface::gp_damage, &CohesiveInterface::gp_slip,
-                 &CohesiveInterface::gp_state, &CohesiveInterface::gp_rate, &CohesiveInterface::gp_normal})
-    carry(c.*m, g.*m, gp_shift);
-  carry(c.gp_separated, g.gp_separated, gp_shift);
+  // Every array of state that a grown line carries (InterfaceArrays' kGrown, per node or Gauss
+  // point), over to the new numbering.
+  for_each_interface_array([&](const auto& a) {
+    if (!a.has(kGrown)) return;
+    if (a.extent == InterfaceExtent::segment)
+      throw std::logic_error(std::string("extend_interface: no rule to carry the segment array ") + a.name);
+    carry(c.*a.member, g.*a.member, a.extent == InterfaceExtent::node ? node_shift : gp_shift);
+  });
   const std::size_t k = front ? 0 : g.num_nodes() - 1;  // the new node
   // The new segment's points: separated on a pre-crack (no cohesion), intact with the law on a
   // cohesive crack (drawn open or not): the process zone ahead is modelled by the law.

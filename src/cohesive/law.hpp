@@ -23,7 +23,7 @@
 //   double L::initial_stiffness() const;           Pa/m, the undamaged law's elastic stiffness
 //   bool L::separated(const GaussHistory& h) const;
 //       True once the law carries no cohesion (irreversible). XuNeedleman answers false: its
-//       criterion (|Delta| >= 5 delta_t, SPEC §3) is separates_at, which the loop asks first.
+//       criterion (|Delta| >= 5 delta_t, theory §3) is separates_at, which the loop asks first.
 //   double L::crack_measure(double dn, double dt) const;  double L::crack_threshold(double f)
 //   const;
 //       A node has cracked (E10) once crack_measure of its jumps reaches crack_threshold
@@ -33,7 +33,7 @@
 // and the questions the generic code asks instead of testing which law it has:
 //   bool L::separates_at(double dn, double dt, double f) const;
 //       True where the interface separates the point by its jump alone, before the law is
-//       asked (Xu-Needleman: |Delta| >= f delta_t, SPEC §3); false for a law whose own history
+//       asked (Xu-Needleman: |Delta| >= f delta_t, theory §3); false for a law whose own history
 //       says so (separated()).
 //   double L::load_fraction(double dn, double dt) const;
 //       The traction of a pristine point at these jumps as a fraction of its strength (the

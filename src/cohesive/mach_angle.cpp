@@ -289,7 +289,7 @@ bool read_mach_angle(const CrackTracker& crack, double c_s, const Particles& P, 
   std::vector<double> tau(P.size());
   for (std::size_t p = 0; p < P.size(); ++p) {
     const double a = 0.5 * (P.sxx[p] - P.syy[p]);
-    tau[p] = std::sqrt(a * a + P.sxy[p] * P.sxy[p]);  // (sigma_1 - sigma_2) / 2, SPEC E13
+    tau[p] = std::sqrt(a * a + P.sxy[p] * P.sxy[p]);  // (sigma_1 - sigma_2) / 2, theory E13
   }
   out = MachReading{};
   out.time = time;

@@ -1,5 +1,5 @@
 // rupture/cohesive/mach_angle.hpp
-// The shear Mach angle behind an intersonic crack tip (SPEC E12), measured on the particles'
+// The shear Mach angle behind an intersonic crack tip (theory E12), measured on the particles'
 // tau_max field (E13): beta, the angle between the crack line and the shear Mach front, and the
 // speed it implies, c_S / sin(beta), an independent check of the E11 speed.
 //
@@ -109,7 +109,7 @@ bool read_mach_angle(const CrackTracker& crack, double c_s, const Particles& p, 
                      const SumOverRanks* sum = nullptr);
 
 // beta (degrees) for a front behind a tip at speed v in a material of shear speed c_s
-// (SPEC E12: sin(beta) = c_s / v), and the speed c_s / sin(beta) a measured beta implies.
+// (theory E12: sin(beta) = c_s / v), and the speed c_s / sin(beta) a measured beta implies.
 double mach_angle_of_speed(double v, double c_s);
 double speed_of_mach_angle(double beta_degrees, double c_s);
 

@@ -1,22 +1,10 @@
-// rupture/cohesive/normal_relaxation.cpp: the parameter ranges of the normal-stress
-// regularization and the names of its forms.
+// rupture/cohesive/normal_relaxation.cpp: the normal-stress regularization's description and the
+// ranges of its parameters.
 #include "cohesive/normal_relaxation.hpp"
 
 #include <fmt/format.h>
 
 namespace rupture {
-
-const char* relaxation_name(RelaxationForm f) {
-  switch (f) {
-    case RelaxationForm::none:
-      return "none";
-    case RelaxationForm::time:
-      return "time";
-    case RelaxationForm::slip:
-      return "slip";
-  }
-  return "?";
-}
 
 std::string NormalRelaxation::describe() const {
   if (form == RelaxationForm::time)

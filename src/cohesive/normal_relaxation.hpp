@@ -56,7 +56,4 @@ struct NormalRelaxation {
   }
 };
 
-// The input's names of the forms ("none", "time", "slip").
-const char* relaxation_name(RelaxationForm f);
-
 }  // namespace rupture

@@ -1,6 +1,6 @@
 // rupture/cohesive/xu_needleman.hpp
-// The Xu-Needleman exponential traction-separation law (SPEC E7) with the interpenetration
-// penalty (SPEC E8). Units: tractions and strengths in Pa, openings in m, energies in J/m^2.
+// The Xu-Needleman exponential traction-separation law (theory E7) with the interpenetration
+// penalty (theory E8). Units: tractions and strengths in Pa, openings in m, energies in J/m^2.
 // Returned tractions are the resisting magnitudes T^ = dphi/dDelta in (normal, tangential)
 // components; the interface applies -T^ to the upper face and +T^ to the lower face.
 // Contract: delta_n, delta_t > 0; r != 1; everything finite.
@@ -33,14 +33,14 @@ struct XuNeedleman {
   double tau_max = 0.0;    // Pa
   double delta_n = 0.0;    // m
   double delta_t = 0.0;    // m
-  double q = 1.0;          // phi_t / phi_n (SPEC: phi_t = sqrt(e/2) tau_max delta_t)
+  double q = 1.0;          // phi_t / phi_n (theory (E7): phi_t = sqrt(e/2) tau_max delta_t)
   double r = 0.0;          // Delta_n* / delta_n
   double penalty = 1.0;    // k_pen: K = k_pen phi_n / delta_n^2 for Delta_n < 0 (E8)
 
   double phi_n() const { return std::exp(1.0) * sigma_max * delta_n; }
   double phi_t() const { return std::sqrt(std::exp(1.0) / 2.0) * tau_max * delta_t; }
   double penalty_stiffness() const { return penalty * phi_n() / (delta_n * delta_n); }
-  // Initial normal stiffness of the law, e sigma_max / delta_n (SPEC E6).
+  // Initial normal stiffness of the law, e sigma_max / delta_n (theory E6).
   double initial_stiffness() const { return std::exp(1.0) * sigma_max / delta_n; }
 
   // Normalized openings and their exponentials, shared by the traction and its tangent.
@@ -53,7 +53,7 @@ struct XuNeedleman {
     return {xn, xt, std::exp(-xn), std::exp(-xt * xt)};
   }
 
-  // SPEC E7 (+ E8 for dn < 0). dn, dt: normal and tangential openings, m.
+  // theory E7 (+ E8 for dn < 0). dn, dt: normal and tangential openings, m.
   CohesiveTraction traction(double dn, double dt) const { return traction(openings(dn, dt), dn); }
   CohesiveTraction traction(const Openings& o, double dn) const {
     const double pn = phi_n();
@@ -83,7 +83,7 @@ struct XuNeedleman {
     return K;
   }
 
-  // The stiffness that bounds the explicit step at this opening (SPEC E6, docs/time_step.md):
+  // The stiffness that bounds the explicit step at this opening (theory E6, docs/time_step.md):
   // the largest tangent eigenvalue, taken also on the compressed side of Dn = 0 when the face
   // is open or just closed, since the penalty (E8) switches on there and a step's round-off
   // moves a closed face across the kink.
@@ -111,7 +111,7 @@ struct XuNeedleman {
 
   // The traction-law contract (cohesive/law.hpp), as thin wrappers of the functions above with
   // bitwise the same results. The law has no history: it is elastic (a potential), and its
-  // separation criterion (|Delta| >= 5 delta_t, SPEC) belongs to the interface.
+  // separation criterion (|Delta| >= 5 delta_t, theory (E9)) belongs to the interface.
   LawResponse respond(double dn, double dt, GaussHistory& /*unused*/) const {
     const Openings o = openings(dn, dt);
     const CohesiveTraction T = traction(o, dn);
@@ -123,7 +123,7 @@ struct XuNeedleman {
   double fracture_energy_normal() const { return phi_n(); }
   double fracture_energy_tangential() const { return phi_t(); }
   bool separated(const GaussHistory& /*unused*/) const { return false; }
-  // Crack tracking (E10, SPEC §3): a node has cracked once |jump| reaches separation_factor x
+  // Crack tracking (E10, theory §3): a node has cracked once |jump| reaches separation_factor x
   // delta_t; past the peak shear traction (delta_t / sqrt 2) it is softening; delta_n is the
   // law's small opening scale (the instability watch's floor).
   double crack_measure(double dn, double dt) const { return std::hypot(dn, dt); }
@@ -132,7 +132,7 @@ struct XuNeedleman {
     return std::hypot(dn, dt) >= delta_t / std::sqrt(2.0);
   }
   double opening_scale() const { return delta_n; }
-  // Separated at |jump| >= separation_factor x delta_t (SPEC §3), asked by the interface loop
+  // Separated at |jump| >= separation_factor x delta_t (theory §3), asked by the interface loop
   // before respond(). Squares, not std::hypot (a libm call, ~1 % of a run): the openings are
   // far from overflow, and the two differ only within an ulp of the threshold.
   bool separates_at(double dn, double dt, double separation_factor) const {

@@ -21,10 +21,10 @@ FaultSite site_named(const std::string& name) {
   if (name == "face_out_of_reach") return FaultSite::face_out_of_reach;
   if (name == "cohesive_oscillation") return FaultSite::cohesive_oscillation;
   if (name == "gimp_contract") return FaultSite::gimp_contract;
-  if (name == "bad_particle") return FaultSite::bad_particle;
   if (name == "record_write") return FaultSite::record_write;
   if (name == "setup") return FaultSite::setup;
   if (name == "snapshot_index") return FaultSite::snapshot_index;
+  if (name == "case_read") return FaultSite::case_read;
   throw InputError("RUPTURE_INJECT_FAULT: unknown site '" + name + "'");
 }
 

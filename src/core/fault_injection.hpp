@@ -16,10 +16,10 @@ enum class FaultSite {
   face_out_of_reach,     // parallel/halo_interface: check_faces_in_reach
   cohesive_oscillation,  // solver/cohesive_step: advance_interfaces
   gimp_contract,         // solver/particle_sort: check_gimp_contract
-  bad_particle,          // solver/gather: a particle off the grid
-  record_write,          // run/driver: rank 0's record files (history, crack tip, run.json)
-  setup,                 // run/driver: this rank's set-up
+  record_write,          // run/run_io: rank 0's record files (history, crack tip, run.json)
+  setup,                 // run/run_setup: this rank's set-up
   snapshot_index,        // output/snapshot: rank 0's particles.xdmf after a distributed snapshot
+  case_read,             // cli/main: reading the case file (or the checkpoint's input), as if missing
 };
 
 // Reads RUPTURE_INJECT_FAULT for the process of rank `rank`; InputError on a malformed value.

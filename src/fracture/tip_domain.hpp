@@ -3,7 +3,7 @@
 // (fracture/j_integral.hpp's DomainPoint): stress and strain from the particle (its material's
 // compliance), its displacement u = x - X (plus the initial strain's, below), the displacement and velocity gradients from the particles' displacement
 // u = x - X and velocity mapped to the grid nodes of their own field (mass-weighted GIMP
-// weights, SPEC E3) and differentiated with the particle's GIMP gradients, as the time step
+// weights, theory E3) and differentiated with the particle's GIMP gradients, as the time step
 // differentiates the velocity; the acceleration from the last step's nodal velocity increment
 // (GridFields::dvel / dt). The two fields of a crack meet at tied nodes (bonded stretches: the
 // intact material beyond a tip) as one body there, so the maps sum both fields at those nodes.

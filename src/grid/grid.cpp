@@ -198,15 +198,15 @@ void GridFields::set_windows(std::size_t nx, std::size_t ny, const std::vector<i
     assert(r0[f] >= 0 && nr[f] > 0 && std::size_t(r0[f] + nr[f]) <= ny);
     start[f + 1] = start[f] + std::size_t(nc[f]) * std::size_t(nr[f]);
   }
-  for (auto* v : {&mass, &mom_x, &mom_y, &force_x, &force_y, &vel_x, &vel_y, &dvel_x, &dvel_y,
-                  &remap_x, &remap_y}) {
+  for_each_field_array([&](std::vector<double> GridFields::*m) {
+    std::vector<double>& v = this->*m;
     // A layout much smaller than the memory held (a whole lattice cut to a rank's windows:
     // parallel/halo_nested.hpp) gives the memory back; assign alone would keep it.
-    if (v->capacity() > 2 * start.back() + 4096) std::vector<double>().swap(*v);
-    v->assign(start.back(), 0.0);
-  }
+    if (v.capacity() > 2 * start.back() + 4096) std::vector<double>().swap(v);
+    v.assign(start.back(), 0.0);
+  });
 }
 
-std::size_t GridFields::bytes() const { return 11 * sizeof(double) * size(); }
+std::size_t GridFields::bytes() const { return field_array_count() * sizeof(double) * size(); }
 
 }  // namespace rupture

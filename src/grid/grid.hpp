@@ -15,7 +15,7 @@
 
 namespace rupture {
 
-// Nodes along one direction: uniform (spacing h) or graded (SPEC §5: cell sizes that are
+// Nodes along one direction: uniform (spacing h) or graded (theory §5: cell sizes that are
 // power-of-two multiples of the finest size h, changing by at most a factor 2 from one cell to
 // the next, every cell boundary on a multiple of h from the origin). A graded axis stores its
 // node coordinates and, per unit interval of length h, the cell that contains it, so locating
@@ -54,7 +54,7 @@ struct Stencil1D {
 };
 
 // The particle at xp with half-width lp (<= half the width of the cells it overlaps) touches
-// nodes first..first+2 (SPEC E3). Uniform: nodes i0-1..i0+1 if xp lies in the left half of
+// nodes first..first+2 (theory E3). Uniform: nodes i0-1..i0+1 if xp lies in the left half of
 // cell i0, else i0..i0+2. Graded: first is the cell holding the particle's left edge xp - lp
 // (its box overlaps at most two cells; the third weight may be zero).
 // The first node of that stencil (the same arithmetic as the transfers' batched stencils,
@@ -101,14 +101,14 @@ inline void stencil(const Axis& a, double xp, double lp, Stencil1D& st) {
   gimp_uniform_stencil((xp - a.origin) * inv_h - double(first), lp * inv_h, inv_h, st.s, st.ds);
 }
 
-// The GIMP stencil contract along one graded axis (SPEC E3, graded form). stencil() takes the
+// The GIMP stencil contract along one graded axis (theory E3, graded form). stencil() takes the
 // nodes first .. first + 2 with first = the cell holding the box's left edge x - lp, i.e. the
 // nodes of cells first and first + 1. The weights are complete (partition of unity, and no
 // write past the tile rows and columns that solver/step.cpp reserves) exactly when the box
 // [x - lp, x + lp] overlaps at most those two cells:
 //     x + lp <= x_{first+2}   <=>   2 lp <= (x_{first+1} - (x - lp)) + w_{first+1},
 // that is, no cell lies wholly inside the box. Since 0 < x_{first+1} - (x - lp) <= w_first,
-// lp <= w/2 for every cell the box overlaps (SPEC §2's lp <= h/2) is sufficient wherever the
+// lp <= w/2 for every cell the box overlaps (theory §2's lp <= h/2) is sufficient wherever the
 // particle sits, and 2 lp > w_{first+1} breaks it somewhere in that cell. A uniform axis with
 // lp <= h/2 always holds it. On a graded axis particles keep the half-width of the cell they
 // were made in (uGIMP), so one that moves from cells of width w into cells narrower than w/2
@@ -130,7 +130,6 @@ struct Grid {
   std::size_t num_nodes() const { return std::size_t(nodes_x()) * std::size_t(nodes_y()); }
   std::size_t node_index(int i, int j) const { return std::size_t(j) * nodes_x() + i; }
   int physical_cells_x() const { return x.cells - 2 * ghost; }
-  int physical_cells_y() const { return y.cells - 2 * ghost; }
   double cell_size() const { return x.h; }  // uniform: h; graded: the finest size
   bool graded() const { return x.graded() || y.graded(); }
 };
@@ -143,7 +142,7 @@ Grid make_uniform_grid(const double min[2], const double max[2], double h, doubl
 // Ghost cells of width w that hold a margin: 2 + ceil(margin / w).
 int ghost_cells(double margin, double w);
 
-// A refinement box (SPEC §5): cells inside it along each axis are at most `size` wide.
+// A refinement box (theory §5): cells inside it along each axis are at most `size` wide.
 struct RefineBox {
   double min[2]{}, max[2]{};  // m
   double size = 0.0;          // cell size asked for inside the box, m
@@ -204,5 +203,24 @@ struct GridFields {
   std::size_t size() const { return mass.size(); }
   std::size_t bytes() const;
 };
+
+// The nodal arrays of GridFields, each listed once: f(member) for each. set_windows sizes and
+// zeroes them, bytes() and the memory estimates (solver/summary.cpp, input/case_checks.cpp)
+// count them, so an array added here is carried by all.
+template <class F>
+constexpr void for_each_field_array(F&& f) {
+  for (std::vector<double> GridFields::*m :
+       {&GridFields::mass, &GridFields::mom_x, &GridFields::mom_y, &GridFields::force_x, &GridFields::force_y,
+        &GridFields::vel_x, &GridFields::vel_y, &GridFields::dvel_x, &GridFields::dvel_y, &GridFields::remap_x,
+        &GridFields::remap_y})
+    f(m);
+}
+
+// How many nodal arrays a field node holds (11).
+constexpr std::size_t field_array_count() {
+  std::size_t n = 0;
+  for_each_field_array([&](auto) { ++n; });
+  return n;
+}
 
 }  // namespace rupture

@@ -10,7 +10,7 @@
 
 namespace rupture {
 
-bool Level::owns_units(double u, double v) const {
+bool LevelLattice::owns_units(double u, double v) const {
   const double p[2] = {u, v};
   for (int d = 0; d < 2; ++d) {
     if (!outer_lo[d] && !(p[d] > double(lo[d]))) return false;
@@ -29,14 +29,14 @@ int NestedGrid::level_of(double x, double y) const {
 void NestedGrid::node_position(std::size_t id, double& x, double& y) const {
   const std::size_t l =
       std::size_t(std::upper_bound(level_start.begin(), level_start.end(), id) - level_start.begin()) - 1;
-  const Level& L = levels[l];
+  const LevelLattice& L = levels[l];
   const std::size_t n = id - level_start[l];
   x = L.x.node(int(n % std::size_t(L.nodes_x())));
   y = L.y.node(int(n / std::size_t(L.nodes_x())));
 }
 
 Grid level_grid(const NestedGrid& g, int l) {
-  const Level& L = g.levels[std::size_t(l)];
+  const LevelLattice& L = g.levels[std::size_t(l)];
   Grid out;
   out.x = L.x, out.y = L.y;
   out.ghost = kGhostRing;
@@ -53,9 +53,9 @@ long ceil_to(long u, long m) { return -floor_to(-u, m); }
 void resolve(const NestedGrid& g, int l, long U, long V, double c, std::vector<SlaveTerm>& out,
              int depth) {
   assert(depth < 64);
-  const Level& L = g.levels[std::size_t(l)];
+  const LevelLattice& L = g.levels[std::size_t(l)];
   const std::size_t nl = g.levels.size();
-  const auto id = [&](const Level& at, int lev, long u, long v) {
+  const auto id = [&](const LevelLattice& at, int lev, long u, long v) {
     const long i = (u - at.node0[0]) / at.unit, j = (v - at.node0[1]) / at.unit;
     assert(i >= 0 && i < at.nodes_x() && j >= 0 && j < at.nodes_y());
     return std::uint32_t(g.level_start[std::size_t(lev)] + at.node_index(int(i), int(j)));
@@ -70,7 +70,7 @@ void resolve(const NestedGrid& g, int l, long U, long V, double c, std::vector<S
   }
   // Hanging or ghost node: bilinear interpolant of the coarser level.
   assert(l > 0);
-  const Level& C = g.levels[std::size_t(l) - 1];
+  const LevelLattice& C = g.levels[std::size_t(l) - 1];
   long us[2], vs[2];
   int nu = 1, nv = 1;
   us[0] = floor_to(U - C.node0[0], C.unit) + C.node0[0];
@@ -123,7 +123,7 @@ NestedGrid make_nested_grid(const double min[2], const double max[2], double coa
   }
   g.levels.resize(std::size_t(finest_level) + 1);
   for (int l = 0; l <= finest_level; ++l) {
-    Level& lev = g.levels[std::size_t(l)];
+    LevelLattice& lev = g.levels[std::size_t(l)];
     lev.level = l;
     lev.unit = c0 >> l;
     if (l == 0) continue;
@@ -147,8 +147,8 @@ NestedGrid make_nested_grid(const double min[2], const double max[2], double coa
   }
   // Proper nesting, finest first: R_{l-1} holds R_l plus kNestingCells of its own cells.
   for (int l = finest_level; l >= 2; --l) {
-    Level& fine = g.levels[std::size_t(l)];
-    Level& up = g.levels[std::size_t(l) - 1];
+    LevelLattice& fine = g.levels[std::size_t(l)];
+    LevelLattice& up = g.levels[std::size_t(l) - 1];
     const long grow = kNestingCells * up.unit, snap = up.unit * 2;
     for (int d = 0; d < 2; ++d) {
       up.lo[d] = std::min(up.lo[d], floor_to(fine.lo[d] - grow, snap));
@@ -157,7 +157,7 @@ NestedGrid make_nested_grid(const double min[2], const double max[2], double coa
   }
   // Outer sides, lattices.
   for (int l = 0; l <= finest_level; ++l) {
-    Level& lev = g.levels[std::size_t(l)];
+    LevelLattice& lev = g.levels[std::size_t(l)];
     Axis* axes[2] = {&lev.x, &lev.y};
     for (int d = 0; d < 2; ++d) {
       if (l == 0 || lev.lo[d] <= 0) lev.outer_lo[d] = true, lev.lo[d] = outer_lo;
@@ -171,14 +171,14 @@ NestedGrid make_nested_grid(const double min[2], const double max[2], double coa
     }
   }
   g.level_start.assign(1, 0);
-  for (const Level& lev : g.levels) g.level_start.push_back(g.level_start.back() + lev.num_nodes());
+  for (const LevelLattice& lev : g.levels) g.level_start.push_back(g.level_start.back() + lev.num_nodes());
 
   // Classify every node; resolve each slave to DOFs.
   g.is_dof.assign(g.num_nodes(), 0);
   g.term_start.push_back(0);
   std::vector<SlaveTerm> t;
   for (int l = 0; l <= finest_level; ++l) {
-    const Level& lev = g.levels[std::size_t(l)];
+    const LevelLattice& lev = g.levels[std::size_t(l)];
     for (int j = 0; j < lev.nodes_y(); ++j)
       for (int i = 0; i < lev.nodes_x(); ++i) {
         const long U = lev.node0[0] + i * lev.unit, V = lev.node0[1] + j * lev.unit;
@@ -225,7 +225,7 @@ std::vector<LevelCount> count_level_cells(const NestedGrid& g, const double bmin
                                           const double bmax[2], int ppc) {
   std::vector<LevelCount> out(g.levels.size());
   for (std::size_t l = 0; l < g.levels.size(); ++l) {
-    const Level& lev = g.levels[l];
+    const LevelLattice& lev = g.levels[l];
     const double u = double(lev.unit);
     for (int j = 0; j < lev.y.cells; ++j)
       for (int i = 0; i < lev.x.cells; ++i) {

@@ -1,11 +1,11 @@
 // rupture/grid/nested.hpp
-// Nested refinement levels (SPEC §5: the paper's Fig. 6; transition nodes after Ma, Lu &
+// Nested refinement levels (theory §5: the paper's Fig. 6; transition nodes after Ma, Lu &
 // Komanduri, CMES 2006), the alternative to the graded tensor-product grid of grid/grid.hpp
 // that refines only inside each box instead of along whole rows and columns.
 //
 // Level l is a uniform lattice of square cells s_l = coarse / 2^l over its own rectangle R_l
 // plus a ring of ghost cells. A particle belongs to the finest level whose rectangle holds its
-// centre and takes its GIMP weights (SPEC E3, uniform form) on that level's lattice. Every
+// centre and takes its GIMP weights (theory E3, uniform form) on that level's lattice. Every
 // lattice node is either a degree of freedom (DOF) or a slave, a fixed combination of DOFs:
 //  - outside R_l or on its inner border: the bilinear interpolant of level l-1 at the node
 //    (coefficients 1, 1/2 or 1/4 at the nodes of the coarse cell holding it): the hanging
@@ -36,8 +36,9 @@ namespace rupture {
 inline constexpr int kNestingCells = 2;  // cells of level l-1 between R_l and R_{l-1}'s border
 inline constexpr int kGhostRing = 2;     // ghost cells of a level beyond an inner border
 
-// One level. Units: m; `lo`, `hi` and node coordinates also in finest units (integers).
-struct Level {
+// One nested level's lattice (its geometry; solver/levels.hpp Levels is the view of the levels'
+// States the step works on). Units: m; `lo`, `hi` and node coordinates also in finest units (integers).
+struct LevelLattice {
   int level = 0;
   Axis x, y;                    // uniform lattice axes (Axis::h = s_l); nodes row by row
   long unit = 1;                // s_l in finest units
@@ -60,7 +61,7 @@ struct SlaveTerm {
 struct NestedGrid {
   double finest = 0.0;           // finest cell size, m (the unit)
   double min[2]{}, max[2]{};     // physical domain, m
-  std::vector<Level> levels;     // coarsest first
+  std::vector<LevelLattice> levels;     // coarsest first
   // Global node ids: level l's node n is level_start[l] + n; level_start.back() = total.
   std::vector<std::size_t> level_start;
   std::vector<unsigned char> is_dof;  // per global node

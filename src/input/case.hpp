@@ -40,7 +40,7 @@ struct BodySpec {
   }
 };
 
-// Mesh refinement (SPEC §5) as nested boxes with a level each, level 0 being the whole plate
+// Mesh refinement (theory §5) as nested boxes with a level each, level 0 being the whole plate
 // at coarse_cell_size and each level halving the size: level L has cells of
 // max(coarse_cell_size / 2^L, cell_size). cell_size is the finest size, so changing it alone
 // adds or drops the deepest levels.
@@ -55,14 +55,14 @@ struct GridSpec {
   double cell_size = 0.0;        // h: the uniform cell size, or the finest one when refined, m
   double coarse_cell_size = 0.0; // level-0 size when refined (0: uniform grid), m
   std::vector<RefineLevel> refine;
-  int particles_per_cell = 2;    // per direction (2 -> 2x2, SPEC §2), on every level
+  int particles_per_cell = 2;    // per direction (2 -> 2x2, theory §2), on every level
   // Width of the empty band of ghost cells around the domain that free surfaces may bulge
   // into, beyond the two ghost cells every grid has, m. Unless given (grid.margin), the largest
   // displacement over the run of any prescribed velocity or body velocity: a surface driven
   // by those moves by about as much (the reference problem's crop bottom moved 0.2 mm while
   // its driven edge moved 0.45 mm, more than two 0.125 mm ghost cells hold).
   double margin = 0.0;
-  // How a refined grid is realized (SPEC §5): nested levels with transition nodes
+  // How a refined grid is realized (theory §5): nested levels with transition nodes
   // (grid/nested.hpp, solver/nested_state.hpp; the default with [grid.refine] boxes), or a
   // graded tensor-product grid (grid/grid.hpp; grid.refinement = "graded").
   bool nested = false;
@@ -82,7 +82,7 @@ enum class Subcycling { none, levels };
 
 struct TimeSpec {
   double end = 0.0;  // s
-  double cfl = 0.4;  // Delta t = cfl * h / c_D (SPEC E6)
+  double cfl = 0.4;  // Delta t = cfl * h / c_D (theory E6)
   // Delta t <= cohesive_safety * 2 / sqrt(lambda_bulk + lambda_cohesive), the bound of the
   // discrete system recomputed every step (solver/time_step.hpp, docs/time_step.md); any value
   // in (0, 1] is stable by construction, 1 sits on the bound.
@@ -131,7 +131,7 @@ struct Case {
   PlaneMode plane = PlaneMode::strain;
   std::vector<ElasticMaterial> materials;
   std::vector<BodySpec> bodies;
-  // Velocity fields (SPEC §3), numbered in order of first appearance among the bodies
+  // Velocity fields (theory §3), numbered in order of first appearance among the bodies
   // (bodies.NAME.field, by default the body's own name). At most 255.
   std::vector<std::string> field_names;
   GridSpec grid;
@@ -140,7 +140,7 @@ struct Case {
   std::vector<VelocityBC> boundary;
   std::vector<Edge> absorbing_edges;  // [absorbing].edges: viscous dashpots (bc/absorbing.hpp)
   Loads loads;  // [loads]: tractions, body forces, velocity regions (bc/loads.hpp)
-  std::vector<InterfaceSpec> interfaces;  // cohesive interfaces (SPEC §3)
+  std::vector<InterfaceSpec> interfaces;  // cohesive interfaces (theory §3)
   std::vector<std::string> interface_names;
   std::vector<StationSpec> stations;  // [stations] (output/stations.hpp)
   OutputSpec output;

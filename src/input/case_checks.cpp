@@ -67,7 +67,7 @@ std::vector<std::string> shared_bodies(const Case& c, const VelocityBC& a, const
   return names;
 }
 
-// SPEC E2: a node takes one prescribed value per component. resolve_nodes() applies the
+// theory E2: a node takes one prescribed value per component. resolve_nodes() applies the
 // conditions in input order, so of two that disagree the later one would silently win.
 void check_boundary_conflicts(Case& c) {
   const Grid grid = build_grid(c.grid);
@@ -190,7 +190,7 @@ void check_touching_shapes(const Case& c, const Grid& grid, const BodySpec& a, c
       a.name, b.name, near.x, near.y, contacts.size(), kPassThrough));
 }
 
-// Bodies of two velocity fields (SPEC §3) interact only through an interface between their
+// Bodies of two velocity fields (theory §3) interact only through an interface between their
 // fields. Touching without one, they would pass through each other: an input error (the user
 // asks for contact with an interface of law = "contact"). Bodies of one field are one
 // continuum: touching is what they are for.
@@ -238,8 +238,8 @@ void warn_long_run(Case& c, const CaseSummary& s) {
       "the run takes {:.0f} time steps (more than 1e7): time.end = {:g} s at dt = {:.4g} s ({}); "
       "check time.end and grid.cell_size",
       s.steps_exact, c.time.end, s.dt,
-      s.dt < s.dt_cfl ? "the cohesive stability limit x time.cohesive_safety, SPEC E6"
-                      : "time.cfl x the smallest cell / c_D, SPEC E6"));
+      s.dt < s.dt_cfl ? "the cohesive stability limit x time.cohesive_safety, theory E6"
+                      : "time.cfl x the smallest cell / c_D, theory E6"));
 }
 
 // A Ricker wavelet of peak frequency f0 carries energy up to about 2.5 f0 (its spectrum there is
@@ -294,18 +294,18 @@ void check_run_limits(const Case& c, const CaseSummary& s) {
       continue;
     fail("materials." + m.name, fmt::format("{{youngs_modulus = {:g} Pa, density = {:g} kg/m^3}}",
                                             m.youngs_modulus, m.density),
-         fmt::format("the wave speeds (c_D = {:g} m/s, c_S = {:g} m/s, SPEC E1) must be finite and "
+         fmt::format("the wave speeds (c_D = {:g} m/s, c_S = {:g} m/s, theory E1) must be finite and "
                      "positive: the modulus over the density is out of range of a double",
                      w.dilatational, w.shear));
   }
   if (!(std::isfinite(s.dt) && s.dt > 0))
     fail("time.cfl", c.time.cfl,
-         fmt::format("the time step dt = {:g} s (SPEC E6, from grid.cell_size = {:g} m) must be finite "
+         fmt::format("the time step dt = {:g} s (theory E6, from grid.cell_size = {:g} m) must be finite "
                      "and positive", s.dt, c.grid.cell_size));
   if (!(s.steps_exact <= kMostSteps))
     fail("time.end", c.time.end,
          fmt::format("at dt = {:.4g} s (time.cfl x the smallest cell {:g} m / c_D, or the cohesive "
-                     "limit, SPEC E6) the run takes {:.4g} steps; at most {:.4g} (2^52 x 1e-6: beyond, "
+                     "limit, theory E6) the run takes {:.4g} steps; at most {:.4g} (2^52 x 1e-6: beyond, "
                      "the time's round-off exceeds the output schedules' tolerance of 1e-6 dt)",
                      s.dt, s.min_cell_size, s.steps_exact, kMostSteps));
   constexpr double kIds = 4294967295.0;  // particle ids and node indices are 32-bit
@@ -353,13 +353,16 @@ void check_grid_limits(const Case& c) {
            fmt::format("the case seeds {}{:.0f} particles; at most 2^32 - 1 (32-bit particle ids)",
                        exact ? "" : "at least ", particles));
   }
-  const double grid_mib = nodes * 11.0 * sizeof(double) / (1024.0 * 1024.0);
+  const double grid_mib = nodes * double(field_array_count() * sizeof(double)) / (1024.0 * 1024.0);
   check_memory(c, grid_mib,
                fmt::format("the grid alone (at least {:.0f} nodes, grid.cell_size = {:g} m)", nodes,
                            c.grid.cell_size),
                "");
+  // A damped material's particles carry the Kelvin-Voigt stress too.
+  const bool damped = std::any_of(c.materials.begin(), c.materials.end(),
+                                  [](const ElasticMaterial& m) { return m.kelvin_voigt > 0.0; });
   if (particles > 0.0)
-    check_memory(c, grid_mib + particles * double(Particles::bytes_per_particle() + 12) / (1024.0 * 1024.0),
+    check_memory(c, grid_mib + particles * double(Particles::bytes_per_particle(damped) + 12) / (1024.0 * 1024.0),
                  fmt::format("the grid with its particles ({} {:.0f} particles, at least {:.0f} nodes, "
                              "grid.cell_size = {:g} m)",
                              exact ? "exactly" : "at least", particles, nodes, c.grid.cell_size),

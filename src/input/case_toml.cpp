@@ -143,7 +143,7 @@ void parse_output(Section& top, Case& c) {
   c.output.progress_interval = o.number("progress_interval", 1.0);
   if (c.output.progress_interval <= 0)
     fail(o.key("progress_interval"), c.output.progress_interval, "must be > 0 (wall-clock s)");
-  // 0.05 us (SPEC E10) for laboratory runs; a 384th of the run when that is longer (the SPEC's
+  // 0.05 us (theory E10) for laboratory runs; a 384th of the run when that is longer (the paper's
   // 19.2 us run has 384 samples either way), so no absolute time scale is built in.
   const double longer = c.time.end / 384.0;
   c.output.crack_sample_interval =

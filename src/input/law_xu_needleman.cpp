@@ -1,6 +1,6 @@
 // rupture/input/law_xu_needleman.cpp: the Xu-Needleman law's entry in the table of laws
-// (input/law_registry.hpp): its input keys, their defaults and ranges (SPEC E7-E8, the separation
-// criterion of SPEC §3), and its words in `rupture check`. Units: Pa, m, J/m^2.
+// (input/law_registry.hpp): its input keys, their defaults and ranges (theory E7-E8, the separation
+// criterion of theory §3), and its words in `rupture check`. Units: Pa, m, J/m^2.
 #include <fmt/format.h>
 
 #include <cmath>
@@ -62,7 +62,7 @@ std::string describe(const InterfaceSpec& is) {
 LawEntry xu_needleman_entry() {
   return {XuNeedleman::kName,
           "the Xu-Needleman exponential traction-separation law with an interpenetration "
-          "penalty (SPEC E7-E8), separated at |jump| = separation x delta_t",
+          "penalty (theory E7-E8), separated at |jump| = separation x delta_t",
           "",
           law_alternative<XuNeedleman>(),
           false,

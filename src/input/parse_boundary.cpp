@@ -1,5 +1,5 @@
 // rupture/input/parse_boundary.cpp
-// The [boundary] table: prescribed velocities on domain edges (SPEC E2).
+// The [boundary] table: prescribed velocities on domain edges (theory E2).
 #include <fmt/format.h>
 
 #include <algorithm>

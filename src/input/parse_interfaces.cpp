@@ -1,5 +1,5 @@
 // rupture/input/parse_interfaces.cpp
-// The [interface] table: cohesive interfaces, their line, law and bonded stretch (SPEC §3).
+// The [interface] table: cohesive interfaces, their line, law and bonded stretch (theory §3).
 // A line is horizontal (y, start, end: the original form), a polyline (points, closed) or a
 // circle (center, radius); it must separate its two bodies, the upper one on the side its
 // normal (direction turned +90 degrees) points to.

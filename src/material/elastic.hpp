@@ -1,5 +1,5 @@
 // rupture/material/elastic.hpp
-// Small-strain isotropic linear elasticity in 2D (SPEC E5) and its wave speeds (SPEC E1).
+// Small-strain isotropic linear elasticity in 2D (theory E5) and its wave speeds (theory E1).
 // Units: E and stresses in Pa, density in kg/m^3, speeds in m/s.
 // Plane strain keeps sigma_zz = nu (sigma_xx + sigma_yy); plane stress has sigma_zz = 0.
 #pragma once
@@ -40,7 +40,7 @@ struct ElasticState {
 // The state of a material prestressed to the in-plane stress (sxx, syy, sxy), Pa: the strain
 // is the compliance of the plane mode applied to it, and sigma_zz = nu (sxx + syy) in plane
 // strain (eps_zz = 0), 0 in plane stress. So sigma = C : eps, as the incremental stress update
-// (SPEC E5) assumes, and 0.5 sigma:eps is the strain energy density from the start.
+// (theory E5) assumes, and 0.5 sigma:eps is the strain energy density from the start.
 ElasticState prestressed_state(const ElasticMaterial& m, PlaneMode mode, double sxx, double syy,
                                double sxy);
 
@@ -67,10 +67,10 @@ struct WaveSpeeds {
   double dilatational;  // c_D, m/s
   double shear;         // c_S, m/s
   double rayleigh;      // exact root of the Rayleigh equation, m/s
-  double rayleigh_approx;  // c_S (0.862 + 1.14 nu)/(1 + nu), SPEC E1
+  double rayleigh_approx;  // c_S (0.862 + 1.14 nu)/(1 + nu), theory E1
 };
 
-// SPEC E1, with kappa = 3 - 4 nu (plane strain) or (3 - nu)/(1 + nu) (plane stress).
+// theory E1, with kappa = 3 - 4 nu (plane strain) or (3 - nu)/(1 + nu) (plane stress).
 WaveSpeeds wave_speeds(const ElasticMaterial& m, PlaneMode mode);
 
 }  // namespace rupture

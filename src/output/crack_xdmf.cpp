@@ -10,32 +10,32 @@ namespace rupture {
 std::vector<std::array<double, 2>> crack_path_at(const Case& c, std::size_t k, const CrackGrowthRecord& growth,
                                                  double t) {
   const Polyline drawn = c.interfaces[k].geometry();
-  const std::vector<double>& r = growth.rows;
+  const std::vector<GrowthRow>& r = growth.rows;
   std::vector<std::array<double, 2>> start, path;
-  for (std::size_t i = 0; i + kGrowthColumns <= r.size() && r[i] <= t; i += kGrowthColumns)
-    if (r[i + 2] == 0.0 && r[i + 1] < 2.0) start.push_back({r[i + 3], r[i + 4]});
+  for (std::size_t i = 0; i < r.size() && r[i].time <= t; ++i)
+    if (!r[i].split && r[i].tip < 2 && r[i].end == LineEnd::start) start.push_back({r[i].x, r[i].y});
   // The start's vertices were put in front one by one: the last made is the path's first.
   path.assign(start.rbegin(), start.rend());
   for (std::size_t v = 0; v < drawn.num_vertices(); ++v) path.push_back({drawn.x[v], drawn.y[v]});
-  for (std::size_t i = 0; i + kGrowthColumns <= r.size() && r[i] <= t; i += kGrowthColumns)
-    if (r[i + 2] == 1.0 && r[i + 1] < 2.0) path.push_back({r[i + 3], r[i + 4]});
+  for (std::size_t i = 0; i < r.size() && r[i].time <= t; ++i)
+    if (!r[i].split && r[i].tip < 2 && r[i].end == LineEnd::end) path.push_back({r[i].x, r[i].y});
   return path;
 }
 
 std::vector<std::vector<std::array<double, 2>>> crack_branches_at(const CrackGrowthRecord& growth, double t) {
-  const std::vector<double>& r = growth.rows;
+  const std::vector<GrowthRow>& r = growth.rows;
   std::vector<std::vector<std::array<double, 2>>> branches;
   std::array<double, 2> split{};
-  for (std::size_t i = 0; i + kGrowthColumns <= r.size() && r[i] <= t; i += kGrowthColumns) {
-    if (r[i + 2] >= kSplitAtStart) {
-      split = {r[i + 3], r[i + 4]};
+  for (std::size_t i = 0; i < r.size() && r[i].time <= t; ++i) {
+    if (r[i].split) {
+      split = {r[i].x, r[i].y};
       continue;
     }
-    if (r[i + 1] < 2.0) continue;
-    const std::size_t b = std::size_t(r[i + 1]) - 2;
+    if (r[i].tip < 2) continue;
+    const std::size_t b = std::size_t(r[i].tip) - 2;
     if (b >= branches.size()) branches.resize(b + 1);
     if (branches[b].empty()) branches[b].push_back(split);  // its first row follows its split
-    branches[b].push_back({r[i + 3], r[i + 4]});
+    branches[b].push_back({r[i].x, r[i].y});
   }
   return branches;
 }

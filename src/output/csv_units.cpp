@@ -7,7 +7,7 @@ namespace rupture {
 
 const std::vector<CsvColumn>& csv_columns() {
   static const std::vector<CsvColumn> columns = {
-      // output/history.cpp (SPEC E14), per unit thickness
+      // output/history.cpp (theory E14), per unit thickness
       {"history.csv", "time", "s", "simulated time"},
       {"history.csv", "kinetic_energy", "J/m", "sum 1/2 m v^2 of the particles"},
       {"history.csv", "strain_energy", "J/m", "stored stress work (solver/energy.hpp)"},
@@ -17,7 +17,7 @@ const std::vector<CsvColumn>& csv_columns() {
       {"history.csv", "relative_balance_error", "-", "|balance| / (initial energy + |external work|)"},
       {"history.csv", "cohesive_stored", "J/m", "recoverable energy in the cohesive interfaces"},
       {"history.csv", "cohesive_dissipated", "J/m", "work on the interfaces not stored in them"},
-      // cohesive/crack_tip.cpp (SPEC E10, E11)
+      // cohesive/crack_tip.cpp (theory E10, E11)
       {"crack_tip*.csv", "time", "s", "sample time"},
       {"crack_tip*.csv", "tip_x", "m", "x of the tip (E10: jump 5 delta_t)"},
       {"crack_tip*.csv", "speed", "m/s", "E11 speed (31-sample least squares); nan at the ends"},
@@ -74,7 +74,7 @@ const std::vector<CsvColumn>& csv_columns() {
       {"crack_path_*.csv", "K_I", "Pa m^1/2", "what the criterion read"},
       {"crack_path_*.csv", "K_II", "Pa m^1/2", "what the criterion read"},
       {"crack_path_*.csv", "speed", "m/s", "the tip's speed over the outer J domain's radius of path (0 until it grew that far)"},
-      // cohesive/mach_angle.cpp (SPEC E12)
+      // cohesive/mach_angle.cpp (theory E12)
       {"mach_angle*.csv", "time", "s", "reading time"},
       {"mach_angle*.csv", "tip_x", "m", "x of the tip"},
       {"mach_angle*.csv", "tip_y", "m", "y of the tip"},

@@ -1,5 +1,5 @@
 // rupture/output/history.hpp
-// Energy history (SPEC E14), sampled at a fixed interval of simulated time. Units: s and J per
+// Energy history (theory E14), sampled at a fixed interval of simulated time. Units: s and J per
 // unit thickness. The CSV is rewritten atomically, so it is always complete.
 // Columns: time, kinetic_energy, strain_energy, external_work, total_energy, balance,
 // relative_balance_error, cohesive_stored, cohesive_dissipated, where

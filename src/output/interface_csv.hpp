@@ -1,5 +1,5 @@
 // rupture/output/interface_csv.hpp
-// Interface profiles (SPEC §4, the paper's Fig. 12): DIR/interface/interface_NNNNNN.csv, one
+// Interface profiles (theory §4, the paper's Fig. 12): DIR/interface/interface_NNNNNN.csv, one
 // row per cohesive node: time (s), x (m), jump_n, jump_t (m), traction_n, traction_t (Pa,
 // resisting magnitudes T^ at the node's jump, 0 once cracked), force_x, force_y (N/m, nodal
 // cohesive force on the upper face; the lower face carries the opposite), y_upper, y_lower

@@ -160,7 +160,7 @@ void SnapshotWriter::write(const Particles& p, const std::vector<ElasticStiffnes
     half[2 * k + 1] = p.half_y[i];
     sxx[k] = p.sxx[i], syy[k] = p.syy[i], sxy[k] = p.sxy[i], szz[k] = stress_zz(stiffness[p.material[i]], p.sxx[i], p.syy[i]);
     const double a = 0.5 * (p.sxx[i] - p.syy[i]);
-    tau[k] = std::sqrt(a * a + p.sxy[i] * p.sxy[i]);  // (sigma_1 - sigma_2)/2, SPEC E13
+    tau[k] = std::sqrt(a * a + p.sxy[i] * p.sxy[i]);  // (sigma_1 - sigma_2)/2, theory E13
     body[k] = p.field[i];
     vertex[k] = int(k);
   }
@@ -226,7 +226,7 @@ void SnapshotWriter::write_collective(const Particles& p, const std::vector<Elas
     sxx.push_back(p.sxx[i]), syy.push_back(p.syy[i]), sxy.push_back(p.sxy[i]);
     szz.push_back(stress_zz(stiffness[p.material[i]], p.sxx[i], p.syy[i]));
     const double a = 0.5 * (p.sxx[i] - p.syy[i]);
-    tau.push_back(std::sqrt(a * a + p.sxy[i] * p.sxy[i]));  // SPEC E13
+    tau.push_back(std::sqrt(a * a + p.sxy[i] * p.sxy[i]));  // theory E13
     body.push_back(p.field[i]);
     vertex.push_back(int(slot));
   }

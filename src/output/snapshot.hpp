@@ -7,7 +7,7 @@
 // same particles in the same rows in every file), connectivity [N] (0..N-1: one vertex cell
 // per particle; without it ParaView's Xdmf3 readers load the points but no cells, and the
 // default view shows nothing); root attributes time (s) and step.
-// tau_max = (sigma_1 - sigma_2)/2, the in-plane maximum shear stress (SPEC E13).
+// tau_max = (sigma_1 - sigma_2)/2, the in-plane maximum shear stress (theory E13).
 // Optionally only a region of interest is written. Every file is written to a temporary name
 // and renamed when complete.
 // Distributed runs (a Comm of N > 1 ranks): every rank calls write() with its own particles;

@@ -96,17 +96,15 @@ void write_crack_paths(const std::string& dir, const Case& c,
   for (std::size_t k = 0; k < c.interfaces.size() && k < growth.size(); ++k) {
     if (!c.interfaces[k].growth.on()) continue;
     std::string out = "time,tip,end,x,y,angle,length,K_I,K_II,speed\n";
-    const std::vector<double>& r = growth[k].rows;
+    const std::vector<GrowthRow>& r = growth[k].rows;
     // speed: the tip's when the row was made (solver/crack_growth.hpp, tip_speed: over the outer
     // J domain's radius of path, as the branching criterion reads it; 0 until it has grown that far).
     const double window = c.interfaces[k].j_domains.back() * c.grid.cell_size;
-    for (std::size_t i = 0; i + kGrowthColumns <= r.size(); i += kGrowthColumns) {
-      const bool split = r[i + 2] >= kSplitAtStart;
-      const double column = split ? r[i + 2] - kSplitAtStart : r[i + 2];
-      const LineEnd end = column == 0.0 ? LineEnd::start : LineEnd::end;
-      const double v = tip_speed(growth[k], int(r[i + 1]), end, r[i], window, i / kGrowthColumns + (split ? 0 : 1));
-      out += fmt::format("{:.9e},{:d},{:d},{:.9e},{:.9e},{:.6f},{:.9e},{:.9e},{:.9e},{:.6g}\n", r[i], int(r[i + 1]),
-                         int(r[i + 2]), r[i + 3], r[i + 4], r[i + 5], r[i + 6], r[i + 7], r[i + 8], v);
+    for (std::size_t i = 0; i < r.size(); ++i) {
+      const GrowthRow& w = r[i];
+      const double v = tip_speed(growth[k], w.tip, w.end, w.time, window, i + (w.split ? 0 : 1));
+      out += fmt::format("{:.9e},{:d},{:d},{:.9e},{:.9e},{:.6f},{:.9e},{:.9e},{:.9e},{:.6g}\n", w.time, w.tip,
+                         w.end_code(), w.x, w.y, w.angle, w.length, w.K_I, w.K_II, v);
     }
     write_file_atomic(dir + "/crack_path_" + c.interface_names[k] + ".csv", out);
   }

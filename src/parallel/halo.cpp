@@ -125,11 +125,6 @@ void Halo::exchange(bool sized) {
   exchange_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-void check_distributable(const State&, int) {
-  // Every feature of a case is distributed now (velocity regions were the last refused): the
-  // place for a check that some feature must run on one process.
-}
-
 namespace {
 
 // lay_reach's work on this rank (no collective call).
@@ -182,7 +177,7 @@ void widen_interface_reach(State& s, double travel) {
 }
 
 void split_over_ranks(RunState& r, const Comm& comm, const SplitFrom& from) {
-  if (r.joined()) {  // nested levels: one split for every level (parallel/halo_nested.hpp)
+  if (r.is_nested()) {  // nested levels: one split for every level (parallel/halo_nested.hpp)
     if (from.held) distribute_held_nested(r, comm, *from.held);
     else distribute_nested(r, comm, from.fresh);
   } else {
@@ -205,7 +200,6 @@ ExchangeCost exchange_cost(const RunState& r) {
 }
 
 void distribute(State& s, const Comm& comm, bool fresh) {
-  check_distributable(s, comm.size());
   attach_halo(s, comm);
   set_blocks(s, plan_ranks(s, comm.size()).levels.at(0).split.block);
   keep_own_particles(s);  // every rank made the same State: the same particles, the same split

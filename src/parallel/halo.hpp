@@ -222,9 +222,6 @@ struct ExchangeCost {
 };
 ExchangeCost exchange_cost(const RunState& r);
 
-// The distributed run's checks of a case, before any work starts (InputError naming the key).
-void check_distributable(const State& s, int ranks);
-
 // The step's exchanges, called by the solver through solver/rank_exchange.hpp (the names it
 // calls them by, then Halo's):
 //

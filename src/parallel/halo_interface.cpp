@@ -9,7 +9,9 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <utility>
 
 #include "core/errors.hpp"
@@ -183,16 +185,23 @@ void collect_interface_state(State& s) {
   const Comm& comm = halo_of(s).comm;
   for (CohesiveInterface& c : s.interfaces) {
     WholeArrays arrays;
-    for (auto* v : {&c.ux_up, &c.uy_up, &c.ux_lo, &c.uy_lo, &c.fx_node, &c.fy_node,
-                    &c.node_crack_time, &c.node_rupture_time, &c.node_peak_slip_rate,
-                    &c.node_slip_path, &c.node_slip_rate, &c.stiffness_node, &c.jump_before})
-      if (v->size() == c.num_nodes()) arrays.add(*v, 1);
-    // Gauss points by segment, each from the owner of its first node.
+    // Every array InterfaceArrays marks kGathered: a node's values from its owner (arrays of
+    // another length, not in use on this interface, stay as they are), Gauss points by segment,
+    // each from the owner of its first node.
     const std::size_t G = std::size_t(CohesiveInterface::kGauss);
-    for (auto* v : {&c.gp_dn, &c.gp_dt, &c.gp_tn, &c.gp_tt, &c.gp_damage, &c.gp_slip, &c.gp_state, &c.gp_rate,
-                     &c.gp_normal})
-      arrays.add(*v, G);
-    arrays.add(c.gp_separated, G);
+    for_each_interface_array([&](const auto& a) {
+      if (!a.has(kGathered)) return;
+      using T = typename std::decay_t<decltype(a)>::value_type;
+      if constexpr (std::is_same_v<T, double> || std::is_same_v<T, std::uint8_t>) {
+        auto& v = c.*a.member;
+        if (a.extent == InterfaceExtent::gauss)
+          arrays.add(v, G);
+        else if (a.extent == InterfaceExtent::node && v.size() == c.num_nodes())
+          arrays.add(v, 1);
+      } else {
+        throw std::logic_error(std::string("collect_interface_state: no rule to gather ") + a.name);
+      }
+    });
     arrays.run(comm, c.rank_owned);
   }
 }

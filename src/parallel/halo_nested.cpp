@@ -83,8 +83,8 @@ NestedTally nested_seed_tally(const Case& c, const RunState& n, int k) {
 }
 
 CellBlock level_block(const NestedGrid& g, int l, const CellBlock& cut, int k) {
-  const Level& C = g.levels[0];
-  const Level& L = g.levels[std::size_t(l)];
+  const LevelLattice& C = g.levels[0];
+  const LevelLattice& L = g.levels[std::size_t(l)];
   const long unit = C.unit >> k;  // the cut lattice's cell, finest units
   // Cut line m lies at C.node0 + m unit finest units; on level l, at or above the level's line
   // below it (floor: the same map for every block, so the blocks tile the level).
@@ -187,7 +187,6 @@ NestedSplit split_nested(const RunState& n, const std::vector<std::uint32_t>& co
 }
 
 void distribute_held_nested(RunState& n, const Comm& comm, const std::vector<std::vector<double>>& keys) {
-  check_distributable(n.levels[0], comm.size());
   const int k = nested_cut_level(n);
   // Every rank's particles of every level on the cut lattice (weighted as at t = 0), bisected
   // over the ranks (parallel/decomposition.hpp: no rank holds the lattice's count).
@@ -457,7 +456,6 @@ RunState make_nested_rank_state(const Case& c, const Comm& comm) {
   std::uint32_t first = 0;
   for (const std::uint32_t count : tally.per_level) share.first_id.push_back(first), first += count;
   RunState r = make_run_state(c, &share);
-  check_distributable(r.levels[0], comm.size());
   distribute_nested(r, comm, true, &sp);
   // The case's sums: one mass floor from its lightest particle (solver/setup.cpp), the initial
   // energy the ranks' parts added.

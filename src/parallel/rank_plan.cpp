@@ -123,7 +123,7 @@ RankPlan plan_of(const RunState* levels, const State& s, int ranks) {
 RankPlan plan_ranks(const State& s, int ranks) { return plan_of(nullptr, s, ranks); }
 
 RankPlan plan_ranks(const RunState& r, int ranks) {
-  return r.joined() ? plan_of(&r, r.levels[r.grid_level], ranks) : plan_of(nullptr, r.levels[0], ranks);
+  return r.is_nested() ? plan_of(&r, r.levels[r.grid_level], ranks) : plan_of(nullptr, r.levels[0], ranks);
 }
 
 }  // namespace rupture

@@ -60,7 +60,6 @@ RunState make_rank_state(const Case& c, const Comm& comm) {
   };
   RunState r = make_run_state(c, &share);
   State& s = r.levels[0];
-  check_distributable(s, comm.size());
   attach_halo(s, comm);
   set_blocks(s, d.block);
   r.halo = s.halo;
@@ -77,7 +76,6 @@ RunState make_rank_state(const Case& c, const Comm& comm) {
 namespace rupture {
 
 void distribute_held(State& s, const Comm& comm, const std::vector<double>& key) {
-  check_distributable(s, comm.size());
   Particles& P = s.particles;
   const int cols = s.grid.x.cells, rows = s.grid.y.cells;
   std::vector<int> cell(P.size());

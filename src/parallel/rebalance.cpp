@@ -112,12 +112,12 @@ void rebalance_if_needed(State& s) {
 }
 
 void enable_rebalance(RunState& r, bool on) {
-  if (r.halo && !r.joined()) halo_of(r.levels[0]).rebalance = on;  // nested levels: one split (halo_nested.cpp)
+  if (r.halo && !r.is_nested()) halo_of(r.levels[0]).rebalance = on;  // nested levels: one split (halo_nested.cpp)
 }
 
 std::string kept_split_drift(const RunState& r, const Comm& comm, const std::vector<long>& start,
                              const std::vector<long>& end) {
-  if (!r.joined() || !comm.distributed()) return {};  // other splits follow the load, or none is made
+  if (!r.is_nested() || !comm.distributed()) return {};  // other splits follow the load, or none is made
   // The most particles on a rank over the mean, minus 1.
   const auto over = [](const std::vector<long>& v) {
     double most = 0.0, all = 0.0;

@@ -2,24 +2,25 @@
 #include "particles/particles.hpp"
 
 #include <cmath>
+#include <type_traits>
 #include <utility>
 
 namespace rupture {
 
+// Each operation below walks ParticleArrays (particles.hpp); a store holds the viscous arrays
+// only while viscous_on.
+
 void Particles::resize(std::size_t n) {
-  for (auto* v : {&x, &y, &vx, &vy, &mass, &volume0, &half_x, &half_y, &sxx, &syy, &sxy, &x0, &y0}) {
-    v->resize(n, 0.0);
-  }
-  field.resize(n, 0);
-  material.resize(n, 0);
-  id.resize(n, 0);
-  if (viscous_on)
-    for (auto* v : {&vsxx, &vsyy, &vsxy}) v->resize(n, 0.0);
+  for_each_particle_array([&](const auto& a) {
+    if (a.kind == ParticleArrayKind::every || viscous_on) (this->*a.member).resize(n, 0);
+  });
 }
 
 void Particles::enable_viscous() {
   viscous_on = true;
-  for (auto* v : {&vsxx, &vsyy, &vsxy}) v->resize(size(), 0.0);
+  for_each_particle_array([&](const auto& a) {
+    if (a.kind == ParticleArrayKind::viscous) (this->*a.member).resize(size(), 0);
+  });
 }
 
 namespace {
@@ -34,19 +35,24 @@ void permute_one(std::vector<T>& v, const std::vector<std::uint32_t>& order, std
   for (long k = 0; k < n; ++k) tmp[std::size_t(k)] = v[order[std::size_t(k)]];
   v.swap(tmp);
 }
+
+// The scratch of one element type (double: the caller's, kept between calls).
+template <class T>
+std::vector<T>& scratch_of(std::vector<double>& doubles) {
+  if constexpr (std::is_same_v<T, double>) {
+    return doubles;
+  } else {
+    thread_local std::vector<T> tmp;
+    return tmp;
+  }
+}
 }  // namespace
 
 void Particles::permute(const std::vector<std::uint32_t>& order, std::vector<double>& scratch) {
-  for (auto* v : {&x, &y, &vx, &vy, &mass, &volume0, &half_x, &half_y, &sxx, &syy, &sxy, &x0, &y0}) {
-    permute_one(*v, order, scratch);
-  }
-  thread_local std::vector<std::uint8_t> tmp8;
-  permute_one(field, order, tmp8);
-  permute_one(material, order, tmp8);
-  thread_local std::vector<std::uint32_t> tmp32;
-  permute_one(id, order, tmp32);
-  if (viscous_on)
-    for (auto* v : {&vsxx, &vsyy, &vsxy}) permute_one(*v, order, scratch);
+  for_each_particle_array([&](const auto& a) {
+    using T = typename std::decay_t<decltype(a)>::value_type;
+    if (a.kind == ParticleArrayKind::every || viscous_on) permute_one(this->*a.member, order, scratch_of<T>(scratch));
+  });
 }
 
 namespace {
@@ -66,58 +72,42 @@ void move_one(std::vector<T>& from, std::vector<T>& to, const std::vector<unsign
 
 std::size_t Particles::move_marked(const std::vector<unsigned char>& mark, Particles& to) {
   const std::size_t before = size();
-  for (auto [a, b] : {std::pair{&x, &to.x}, {&y, &to.y}, {&vx, &to.vx}, {&vy, &to.vy},
-                      {&mass, &to.mass}, {&volume0, &to.volume0},
-                      {&half_x, &to.half_x}, {&half_y, &to.half_y}, {&sxx, &to.sxx},
-                      {&syy, &to.syy}, {&sxy, &to.sxy}, {&x0, &to.x0}, {&y0, &to.y0}}) {
-    move_one(*a, *b, mark);
-  }
-  move_one(field, to.field, mark);
-  move_one(material, to.material, mark);
-  move_one(id, to.id, mark);
-  if (viscous_on || to.viscous_on) {  // both stores of a damped run carry it
-    enable_viscous(), to.enable_viscous();
-    for (auto [a, b] : {std::pair{&vsxx, &to.vsxx}, {&vsyy, &to.vsyy}, {&vsxy, &to.vsxy}})
-      move_one(*a, *b, mark);
-    to.enable_viscous();
-  }
+  if (viscous_on || to.viscous_on) enable_viscous(), to.enable_viscous();  // both stores of a damped run carry it
+  for_each_particle_array([&](const auto& a) {
+    if (a.kind == ParticleArrayKind::every || viscous_on) move_one(this->*a.member, to.*a.member, mark);
+  });
   return before - size();
 }
 
 void Particles::append_copy(const Particles& from) {
-  const auto add = [](auto& to, const auto& v) { to.insert(to.end(), v.begin(), v.end()); };
-  add(x, from.x), add(y, from.y), add(vx, from.vx), add(vy, from.vy), add(mass, from.mass);
-  add(volume0, from.volume0), add(half_x, from.half_x), add(half_y, from.half_y);
-  add(sxx, from.sxx), add(syy, from.syy), add(sxy, from.sxy);
-  add(x0, from.x0), add(y0, from.y0);
-  add(field, from.field), add(material, from.material), add(id, from.id);
-  if (viscous_on || from.viscous_on) {
-    const std::size_t n = x.size();
-    viscous_on = true;
-    for (auto [to, v] : {std::pair{&vsxx, &from.vsxx}, {&vsyy, &from.vsyy}, {&vsxy, &from.vsxy}}) {
-      to->resize(n - from.size(), 0.0);
-      if (v->empty()) to->resize(n, 0.0); else add(*to, *v);
-    }
-  }
+  const std::size_t n = size() + from.size();
+  if (from.viscous_on && !viscous_on) enable_viscous();
+  for_each_particle_array([&](const auto& a) {
+    if (a.kind == ParticleArrayKind::viscous && !viscous_on) return;
+    auto& to = this->*a.member;
+    const auto& v = from.*a.member;
+    if (a.kind == ParticleArrayKind::viscous && !from.viscous_on)
+      to.resize(n, 0);  // an undamped store's particles carry no viscous stress
+    else
+      to.insert(to.end(), v.begin(), v.end());
+  });
 }
 
 void Particles::pack(std::size_t p, double* out) const {
-  const double v[kPacked] = {x[p],   y[p],   vx[p],  vy[p],           mass[p],
-                             volume0[p], half_x[p], half_y[p], sxx[p], syy[p],
-                             sxy[p], double(field[p]), double(material[p]), double(id[p]),
-                             viscous_on ? vsxx[p] : 0.0, viscous_on ? vsyy[p] : 0.0,
-                             viscous_on ? vsxy[p] : 0.0, x0[p], y0[p]};
-  for (std::size_t k = 0; k < kPacked; ++k) out[k] = v[k];
+  std::size_t k = 0;
+  for_each_particle_array([&](const auto& a) {
+    const bool held = a.kind == ParticleArrayKind::every || viscous_on;
+    out[k++] = held ? double((this->*a.member)[p]) : 0.0;
+  });
 }
 
 void Particles::push_packed(const double* in) {
-  std::vector<double>* d[11] = {&x, &y, &vx, &vy, &mass, &volume0, &half_x, &half_y, &sxx, &syy, &sxy};
-  for (std::size_t k = 0; k < 11; ++k) d[k]->push_back(in[k]);
-  x0.push_back(in[17]), y0.push_back(in[18]);
-  field.push_back(std::uint8_t(in[11]));
-  material.push_back(std::uint8_t(in[12]));
-  id.push_back(std::uint32_t(in[13]));
-  if (viscous_on) vsxx.push_back(in[14]), vsyy.push_back(in[15]), vsxy.push_back(in[16]);
+  std::size_t k = 0;
+  for_each_particle_array([&](const auto& a) {
+    using T = typename std::decay_t<decltype(a)>::value_type;
+    const double v = in[k++];
+    if (a.kind == ParticleArrayKind::every || viscous_on) (this->*a.member).push_back(T(v));
+  });
 }
 
 void seed_rectangle(Particles& p, const double min[2], const double max[2], double h, int ppc,

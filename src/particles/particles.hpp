@@ -9,11 +9,20 @@
 #pragma once
 #include <cstddef>
 #include <cstdint>
+#include <tuple>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace rupture {
 
-// Every array must also be written in run/checkpoint.cpp (restart is bitwise).
+// Which particles an array holds a value for: every one, or (viscous) every one while the store
+// carries the Kelvin-Voigt stress (Particles::viscous_on), none otherwise.
+enum class ParticleArrayKind : unsigned char { every, viscous };
+
+// Every array is listed once, in ParticleArrays below: the operations over all of them (resize,
+// permute, moving and appending particles, packing one for another rank, the checkpoint and its
+// checks, the bytes per particle) walk that list, so an array added there is carried by all.
 struct Particles {
   std::vector<double> x, y;            // position, m
   std::vector<double> vx, vy;          // velocity, m/s
@@ -37,13 +46,10 @@ struct Particles {
   void enable_viscous();  // sizes the viscous arrays (zeros) and keeps them from now on
   bool viscous_on = false;
 
-
   std::size_t size() const { return x.size(); }
   void resize(std::size_t n);
-  // Bytes held per particle by the arrays above.
-  static constexpr std::size_t bytes_per_particle() {
-    return 13 * sizeof(double) + 2 * sizeof(std::uint8_t) + sizeof(std::uint32_t);
-  }
+  // Bytes held per particle by the arrays (with the viscous ones: a damped run's).
+  static constexpr std::size_t bytes_per_particle(bool viscous = false);
   // Reorders every array so that the particle now at index k is the one that was at
   // order[k]. `scratch` is reused between calls to avoid allocating in the time loop.
   void permute(const std::vector<std::uint32_t>& order, std::vector<double>& scratch);
@@ -52,13 +58,60 @@ struct Particles {
   std::size_t move_marked(const std::vector<unsigned char>& mark, Particles& to);
   // Appends a copy of every particle of `from`.
   void append_copy(const Particles& from);
-  // One particle as kPacked doubles (every array; the integers are exact in a double), for
-  // sending it to another process (parallel/halo.hpp), and back; the viscous stress travels
-  // too (zeros when the store has none), then the reference position.
+  // One particle as kPacked doubles (every array in ParticleArrays' order; the integers are
+  // exact in a double), for sending it to another process (parallel/halo.hpp), and back; the
+  // viscous stress travels too (zeros when the store has none).
   static constexpr std::size_t kPacked = 19;
   void pack(std::size_t p, double* out) const;
   void push_packed(const double* in);
 };
+
+// One entry of the list: the array's name (the checkpoint's), the member, its kind.
+template <class T>
+struct ParticleArray {
+  using value_type = T;
+  const char* name;
+  std::vector<T> Particles::*member;
+  ParticleArrayKind kind;
+};
+
+// The list, in the checkpoint's order (run/checkpoint.cpp): for_each_particle_array(f) calls
+// f(entry) for each entry of ParticleArrays.
+inline constexpr auto ParticleArrays = std::make_tuple(
+    ParticleArray<double>{"x", &Particles::x, ParticleArrayKind::every},
+    ParticleArray<double>{"y", &Particles::y, ParticleArrayKind::every},
+    ParticleArray<double>{"vx", &Particles::vx, ParticleArrayKind::every},
+    ParticleArray<double>{"vy", &Particles::vy, ParticleArrayKind::every},
+    ParticleArray<double>{"mass", &Particles::mass, ParticleArrayKind::every},
+    ParticleArray<double>{"volume0", &Particles::volume0, ParticleArrayKind::every},
+    ParticleArray<double>{"half_x", &Particles::half_x, ParticleArrayKind::every},
+    ParticleArray<double>{"half_y", &Particles::half_y, ParticleArrayKind::every},
+    ParticleArray<double>{"sxx", &Particles::sxx, ParticleArrayKind::every},
+    ParticleArray<double>{"syy", &Particles::syy, ParticleArrayKind::every},
+    ParticleArray<double>{"sxy", &Particles::sxy, ParticleArrayKind::every},
+    ParticleArray<std::uint8_t>{"field", &Particles::field, ParticleArrayKind::every},
+    ParticleArray<std::uint8_t>{"material", &Particles::material, ParticleArrayKind::every},
+    ParticleArray<std::uint32_t>{"id", &Particles::id, ParticleArrayKind::every},
+    ParticleArray<double>{"x0", &Particles::x0, ParticleArrayKind::every},
+    ParticleArray<double>{"y0", &Particles::y0, ParticleArrayKind::every},
+    ParticleArray<double>{"vsxx", &Particles::vsxx, ParticleArrayKind::viscous},
+    ParticleArray<double>{"vsyy", &Particles::vsyy, ParticleArrayKind::viscous},
+    ParticleArray<double>{"vsxy", &Particles::vsxy, ParticleArrayKind::viscous});
+
+template <class F>
+constexpr void for_each_particle_array(F&& f) {
+  std::apply([&](const auto&... entry) { (f(entry), ...); }, ParticleArrays);
+}
+
+constexpr std::size_t Particles::bytes_per_particle(bool viscous) {
+  std::size_t bytes = 0;
+  for_each_particle_array([&](const auto& a) {
+    if (a.kind == ParticleArrayKind::every || viscous) bytes += sizeof(typename std::decay_t<decltype(a)>::value_type);
+  });
+  return bytes;
+}
+static_assert(Particles::kPacked == std::tuple_size_v<std::decay_t<decltype(ParticleArrays)>>,
+              "kPacked: one double per array of ParticleArrays");
 
 // The centre of sub-cell k (side `side`) of a uniform lattice starting at `origin` (m): every
 // seeding path computes a particle position this way, from the grid's origin and the global

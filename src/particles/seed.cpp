@@ -118,7 +118,7 @@ std::size_t seed_region(Particles& p, const Grid& g, const Region& r, int ppc,
   return points.size();
 }
 
-// SPEC §5: on a refined grid every cell the body covers gets ppc x ppc particles of the
+// theory §5: on a refined grid every cell the body covers gets ppc x ppc particles of the
 // cell's own size (rectangular where the cell is), in rows of particles across the body.
 void for_each_graded_rectangle_point(const Grid& g, const double min[2], const double max[2], int ppc,
                                      const SeedVisit& visit) {

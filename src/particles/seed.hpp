@@ -1,5 +1,5 @@
 // rupture/particles/seed.hpp
-// Where a body's particles go (SPEC §2, §5). Every grid cell is cut into ppc x ppc sub-cells of
+// Where a body's particles go (theory §2, §5). Every grid cell is cut into ppc x ppc sub-cells of
 // its own size; a particle sits at the centre of each sub-cell whose centre lies in the body's
 // region, with the sub-cell's area as its volume and half its sides as GIMP half-widths. The
 // boundary is thus a staircase of sub-cells, exact for rectangles on grid lines and first-order
@@ -61,7 +61,7 @@ double seed_points_at_least(const Region& r, double s);
 std::size_t seed_region(Particles& p, const Grid& g, const Region& r, int ppc,
                         const SeedProperties& props);
 
-// A rectangle whose edges lie on lines of a graded grid (SPEC §5): every cell whose centre lies
+// A rectangle whose edges lie on lines of a graded grid (theory §5): every cell whose centre lies
 // in [min, max] gets ppc x ppc particles of the cell's own size. Appends to `p`.
 void seed_graded_rectangle(Particles& p, const Grid& g, const double min[2], const double max[2],
                            int ppc, const SeedProperties& props);

@@ -74,28 +74,15 @@ void fields(A& a, RunContext& c);
 template <class A>
 void fields(A& a, CaseSource& c);
 
+// Every array of ParticleArrays (particles/particles.hpp), in its order, with viscous_on
+// before the first viscous one.
 template <class A>
 void fields(A& a, Particles& p) {
-  a("x", p.x);
-  a("y", p.y);
-  a("vx", p.vx);
-  a("vy", p.vy);
-  a("mass", p.mass);
-  a("volume0", p.volume0);
-  a("half_x", p.half_x);
-  a("half_y", p.half_y);
-  a("sxx", p.sxx);
-  a("syy", p.syy);
-  a("sxy", p.sxy);
-  a("field", p.field);
-  a("material", p.material);
-  a("id", p.id);
-  a("x0", p.x0);
-  a("y0", p.y0);
-  a("viscous_on", p.viscous_on);
-  a("vsxx", p.vsxx);
-  a("vsyy", p.vsyy);
-  a("vsxy", p.vsxy);
+  bool flag = false;
+  for_each_particle_array([&](const auto& e) {
+    if (e.kind == ParticleArrayKind::viscous && !flag) a("viscous_on", p.viscous_on), flag = true;
+    a(e.name, p.*e.member);
+  });
 }
 
 // The particle order and the strips it was sorted into fix the summation order: both stored.
@@ -133,43 +120,16 @@ void fields(A& a, StepLimits& l) {
   a("dt", l.dt);
 }
 
-// `spec` comes from the case (gp_law, node_law, node_field_up and node_field_lo with it: a line
+// `spec` comes from the case (gp_law, node_law, node_faces_up and node_faces_lo with it: a line
 // whose face changes field does not grow), light_face_mass from the case at
 // set-up; face_up/face_lo, jump_before, seg_ka/seg_kb are per-step scratch, recomputed before
 // they are read.
 template <class A>
 void fields(A& a, CohesiveInterface& c) {
-  a("x0", c.x0);
-  a("ux_up", c.ux_up);
-  a("uy_up", c.uy_up);
-  a("ux_lo", c.ux_lo);
-  a("uy_lo", c.uy_lo);
-  a("fx_node", c.fx_node);
-  a("fy_node", c.fy_node);
-  a("node_crack_time", c.node_crack_time);
-  a("node_rupture_time", c.node_rupture_time);
-  a("node_peak_slip_rate", c.node_peak_slip_rate);
-  a("node_slip_path", c.node_slip_path);
-  a("node_slip_rate", c.node_slip_rate);
-  a("gp_dn", c.gp_dn);
-  a("gp_dt", c.gp_dt);
-  a("gp_tn", c.gp_tn);
-  a("gp_tt", c.gp_tt);
-  a("gp_separated", c.gp_separated);
-  a("gp_damage", c.gp_damage);
-  a("gp_slip", c.gp_slip);
-  a("gp_state", c.gp_state);
-  a("gp_rate", c.gp_rate);
-  a("gp_normal", c.gp_normal);
-  a("seg_fa_x", c.seg_fa_x);
-  a("seg_fa_y", c.seg_fa_y);
-  a("seg_fb_x", c.seg_fb_x);
-  a("seg_fb_y", c.seg_fb_y);
-  a("stiffness_node", c.stiffness_node);
-  a("last_increment_n", c.last_increment_n);
-  a("last_increment_t", c.last_increment_t);
-  a("streak_base", c.streak_base);
-  a("reversal_streak", c.reversal_streak);
+  // Every array of state InterfaceArrays marks kStored (cohesive/interface.hpp), in its order.
+  for_each_interface_array([&](const auto& e) {
+    if (e.has(kStored)) a(e.name, c.*e.member);
+  });
   a("time", c.time);
   a("work", c.work);
   a("tie_x0", c.tie_x0);  // where its ties are laid (solver/tie_follow.hpp)
@@ -291,7 +251,7 @@ void fields(A& a, NestedEntry& e) {
 
 template <class A>
 void fields(A& a, RunState& r) {
-  if (!r.joined()) {  // one grid: its level's entries
+  if (!r.is_nested()) {  // one grid: its level's entries
     State& s = r.levels[0];
     s.initial_energy = r.initial_energy;  // the run's (distributed: the ranks' sum)
     state_fields(a, s, false);
@@ -405,25 +365,16 @@ void fields(A& a, TipSeries& r) {
   a("rows", r.rows);
 }
 
+// A growing crack's record as stored: its rows flat (solver/crack_growth.hpp growth_rows_flat).
+struct StoredGrowth {
+  std::vector<double> rows;
+  double nucleation_time = -1.0;
+};
+
 template <class A>
-void fields(A& a, CrackGrowthRecord& r) {
+void fields(A& a, StoredGrowth& r) {
   a("rows", r.rows);
   a("nucleation_time", r.nucleation_time);
-}
-
-// The grown segments a restore lays again: whole rows, each at an end (0 or 1) of its line.
-void check_growth_rows(const std::vector<CrackGrowthRecord>& growth, const std::string& origin) {
-  for (std::size_t k = 0; k < growth.size(); ++k) {
-    const std::vector<double>& r = growth[k].rows;
-    if (r.size() % kGrowthColumns != 0)
-      throw InputError(fmt::format("checkpoint '{}': run.growth[{}].rows.length = {}: must be a multiple of {} (whole rows)",
-                                   origin, k, r.size(), kGrowthColumns));
-    for (std::size_t i = 0; i < r.size(); i += kGrowthColumns)
-      if (r[i + 2] != 0.0 && r[i + 2] != 1.0 && r[i + 2] != kSplitAtStart && r[i + 2] != kSplitAtStart + 1.0)
-        throw InputError(fmt::format("checkpoint '{}': run.growth[{}].rows[{}] = {}: must be 0 or 1 (the end of the line the segment grew at) "
-                                     "or 2 or 3 (the end whose tip split)",
-                                     origin, k, i + 2, r[i + 2]));
-  }
 }
 
 template <class A>
@@ -446,9 +397,18 @@ void fields(A& a, RunContext& c) {
   // The grown cracks first: a restore lays their segments on the case's interfaces (their
   // geometry, ties and tied nodes) before it reads the state that holds their nodes.
   a.same("growth.count", c.growth.size());
-  a("growth", c.growth);
+  std::vector<StoredGrowth> growth(c.growth.size());
+  if constexpr (!A::reading)
+    for (std::size_t k = 0; k < growth.size(); ++k)
+      growth[k] = {growth_rows_flat(c.growth[k].rows), c.growth[k].nucleation_time};
+  a("growth", growth);
   if constexpr (A::reading) {
-    check_growth_rows(c.growth, a.origin());
+    // The grown segments a restore lays again: whole rows, each at an end of its line.
+    for (std::size_t k = 0; k < growth.size() && k < c.growth.size(); ++k) {
+      c.growth[k].rows =
+          growth_rows_from_flat(growth[k].rows, fmt::format("checkpoint '{}': run.growth[{}]", a.origin(), k));
+      c.growth[k].nucleation_time = growth[k].nucleation_time;
+    }
     if (c.regrow) c.regrow(c.s, c.growth);
   }
   a("state", c.s);

@@ -231,7 +231,7 @@ void check_state(const Checker& ck, const State& s, const std::string& entry, bo
 }
 
 void check_run_state(const Checker& ck, const RunState& r, const std::string& entry) {
-  if (!r.joined()) return check_state(ck, r.levels[0], entry, false);
+  if (!r.is_nested()) return check_state(ck, r.levels[0], entry, false);
   check_clock(ck, r.limits, r.dt, r.time, r.step, r.cohesive_seconds, entry);
   std::vector<InterfaceOnGrid> all;  // each on the lattice of its level
   for (std::size_t k = 0; k < r.num_interfaces(); ++k)
@@ -285,18 +285,16 @@ CheckpointBaseline checkpoint_baseline(const RunContext& fresh) {
 void check_particle_arrays(const Particles& p, const std::string& entry, const std::string& origin) {
   const Checker ck{origin};
   const std::size_t n = p.x.size();
-  const std::pair<const char*, std::size_t> arrays[] = {
-      {"y", p.y.size()},           {"vx", p.vx.size()},         {"vy", p.vy.size()},
-      {"mass", p.mass.size()},     {"volume0", p.volume0.size()}, {"half_x", p.half_x.size()},
-      {"half_y", p.half_y.size()}, {"sxx", p.sxx.size()},       {"syy", p.syy.size()},
-      {"sxy", p.sxy.size()},       {"field", p.field.size()},   {"material", p.material.size()},
-      {"id", p.id.size()},         {"x0", p.x0.size()},         {"y0", p.y0.size()}};
-  for (const auto& [name, size] : arrays) ck.length(entry + "." + name, size, n, "the length of x, one per particle");
   // The Kelvin-Voigt stress: one per particle in a damped run, none otherwise.
   const std::size_t viscous = p.viscous_on ? n : 0;
-  for (const auto& [name, size] : {std::pair{"vsxx", p.vsxx.size()}, {"vsyy", p.vsyy.size()}, {"vsxy", p.vsxy.size()}})
-    ck.length(entry + "." + name, size, viscous,
-              p.viscous_on ? "the length of x (viscous_on: a damped material)" : "0 (viscous_on is false)");
+  for_each_particle_array([&](const auto& a) {
+    const std::size_t size = (p.*a.member).size();
+    if (a.kind == ParticleArrayKind::every)
+      ck.length(entry + "." + a.name, size, n, "the length of x, one per particle");
+    else
+      ck.length(entry + "." + a.name, size, viscous,
+                p.viscous_on ? "the length of x (viscous_on: a damped material)" : "0 (viscous_on is false)");
+  });
 }
 
 void check_particles(const Particles& p, const State& s, const std::string& entry, const std::string& origin) {
@@ -368,7 +366,7 @@ void check_restored(const RunContext& ctx, const CheckpointBaseline& fresh, cons
       std::iota(expected.begin(), expected.end(), 0u);
     }
     check_particle_ids(std::move(ids), expected,
-                       s.joined() ? "run.state.nested.levels[*].particles.id" : "run.state.particles.id", origin);
+                       s.is_nested() ? "run.state.nested.levels[*].particles.id" : "run.state.particles.id", origin);
   }
   for (std::size_t k = 0; k < ctx.cracks.size(); ++k) {
     const CrackTracker& t = ctx.cracks[k];

@@ -43,7 +43,7 @@ void step_forward(RunState& s) {
 
 // Distributed: says so when the split followed the load in this step.
 void note_rebalance(const RunState& r, RunResult& result, bool writer) {
-  if (!r.halo || r.joined()) return;  // nested levels keep their first split
+  if (!r.halo || r.is_nested()) return;  // nested levels keep their first split
   const Halo& h = halo_of(r.levels[0]);
   if (h.rebalances == result.rebalances) return;
   result.rebalances = h.rebalances;

@@ -1,6 +1,6 @@
 // rupture/run/output_dir.hpp
 // One run per directory, so `rupture plot` never mixes runs: a directory that holds any of a
-// run's files (kRunFiles) belongs to that run. `rupture run` refuses it unless --overwrite,
+// run's files (run_files()) belongs to that run. `rupture run` refuses it unless --overwrite,
 // which deletes exactly those entries (and their .tmp leftovers) and nothing else: files of the
 // user's own in the directory stay. `rupture resume DIR` reuses its own directory.
 #pragma once

@@ -46,7 +46,7 @@ struct RunContext {
   RunState s;  // the levels, the clock and the sums (solver/run_state.hpp)
   History history;
   std::vector<CrackTracker> cracks;           // one per interface
-  std::vector<MachReading> mach;              // Mach-angle readings (SPEC E12), all interfaces
+  std::vector<MachReading> mach;              // Mach-angle readings (theory E12), all interfaces
   std::unique_ptr<SnapshotWriter> snapshots;  // null without snapshots
   double eps = 0.0;                           // absorbs round-off in accumulated time, s
   Schedule hist, snap, prof, crack, checkpoint;

@@ -151,7 +151,7 @@ void write_interfaces(RunIo& io) {
 }
 
 void read_mach_angles(RunIo& io) {
-  // SPEC E12 (output.mach_interval): the shear Mach front behind each crack running above c_S.
+  // theory E12 (output.mach_interval): the shear Mach front behind each crack running above c_S.
   // Distributed: each rank bins its particles, the bins summed over the ranks (collective).
   const Comm& comm = io.comm;
   const SumOverRanks sum_bins = [&comm](double* v, int n) { comm.sum(v, n); };

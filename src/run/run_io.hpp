@@ -63,7 +63,7 @@ void begin_steps(RunIo& io);
 void writer_only(RunIo& io, const std::function<void()>& write);
 
 // The outputs' writes: the interface profiles (interface/*.csv, the next file number); the
-// Mach-angle readings (SPEC E12) behind each crack (collective); the crack files; station rows
+// Mach-angle readings (theory E12) behind each crack (collective); the crack files; station rows
 // (collective); an energy sample appended to the history and checked (collective).
 void write_interfaces(RunIo& io);
 void read_mach_angles(RunIo& io);

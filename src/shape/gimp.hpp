@@ -1,5 +1,5 @@
 // rupture/shape/gimp.hpp
-// uGIMP weights and gradients (SPEC E3, Bardenhagen & Kober 2004): the grid's linear hat
+// uGIMP weights and gradients (theory E3, Bardenhagen & Kober 2004): the grid's linear hat
 // function N_i averaged over a particle box of half-width lp. Two forms:
 //  - gimp_uniform: closed form for a uniform axis of spacing h (the hot path);
 //  - gimp_graded: any node with left/right cell sizes hL, hR (graded tensor-product grids).
@@ -17,7 +17,7 @@ struct Weight1D {
   double ds;  // dS_ip/dx_p (1/m)
 };
 
-// SPEC E3, uniform spacing h, d = x_p - x_i.
+// theory E3, uniform spacing h, d = x_p - x_i.
 inline Weight1D gimp_uniform(double d, double h, double lp) {
   const double a = std::fabs(d);
   const double sgn = d < 0.0 ? -1.0 : 1.0;
@@ -35,7 +35,7 @@ inline Weight1D gimp_uniform(double d, double h, double lp) {
 // stencil is nodes mid - 1, mid, mid + 1), l = lp / h <= 1/2, inv_4l = 1 / (4 l). The particle
 // box [c - l, c + l] then lies between the outer nodes, where the outer hats are linear, so
 // each outer weight is the length of the box on its side of the middle node times the hat's
-// mean there (SPEC E3's box average):
+// mean there (theory E3's box average):
 //   r_lo = clamp(l - c, 0, 2 l),  S_lo = r_lo (p + p') / (4 l),  dS_lo/dx_p = -r_lo / (2 l h)
 //   r_hi = clamp(c + l, 0, 2 l),  S_hi = r_hi (q + q') / (4 l),  dS_hi/dx_p =  r_hi / (2 l h)
 // with p = (l - c)+, p' = (-c - l)+, q = (c + l)+, q' = (c - l)+; the middle node takes the
@@ -65,13 +65,13 @@ inline void gimp_uniform_stencil(double u, double l, double inv_h, double s[3], 
   gimp_uniform_three(u - 1.0, l, 0.25 / l, inv_h, s[0], s[1], s[2], ds[0], ds[1], ds[2]);
 }
 
-// Linear hat of node i on a graded axis, u = x - x_i (SPEC E3).
+// Linear hat of node i on a graded axis, u = x - x_i (theory E3).
 inline double hat_graded(double u, double hL, double hR) {
   if (u <= -hL || u >= hR) return 0.0;
   return u <= 0.0 ? 1.0 + u / hL : 1.0 - u / hR;
 }
 
-// Antiderivative F_i of the hat, F_i(-inf) = 0 (SPEC E3).
+// Antiderivative F_i of the hat, F_i(-inf) = 0 (theory E3).
 inline double hat_integral_graded(double u, double hL, double hR) {
   if (u <= -hL) return 0.0;
   if (u <= 0.0) return (u + hL) * (u + hL) / (2.0 * hL);
@@ -79,7 +79,7 @@ inline double hat_integral_graded(double u, double hL, double hR) {
   return 0.5 * (hL + hR);
 }
 
-// SPEC E3, graded axis: node with left cell hL and right cell hR, u = x_p - x_i.
+// theory E3, graded axis: node with left cell hL and right cell hR, u = x_p - x_i.
 // The sign convention matches gimp_uniform: ds is the derivative w.r.t. the particle position.
 inline Weight1D gimp_graded(double u, double hL, double hR, double lp) {
   const double inv = 1.0 / (2.0 * lp);

@@ -142,7 +142,7 @@ void evaluate_with(CohesiveInterface& c, const Law& law, double t, double t_befo
       h.x = Na * c.x0[s] + Nb * c.x0[e], h.y = Na * c.y0[s] + Nb * c.y0[e];  // reference position
       h.time = t, h.duration = t - t_before;
       LawResponse r{0.0, 0.0, 0.0};
-      // Xu-Needleman: separated at |jump| >= 5 delta_t (SPEC §3); the other laws never here.
+      // Xu-Needleman: separated at |jump| >= 5 delta_t (theory §3); the other laws never here.
       if (!c.gp_separated[i] && L.separates_at(dn, dt, c.spec.separation_factor))
         c.gp_separated[i] = 1, h.slip = dt;
       if (!c.gp_separated[i]) {
@@ -170,7 +170,7 @@ void evaluate_with(CohesiveInterface& c, const Law& law, double t, double t_befo
       ka += jw * Na * k, kb += jw * Nb * k;
     }
     c.seg_ka[s] = ka, c.seg_kb[s] = kb;
-    // Force on the upper face: -T^ = -(T^n n + T^t t) (rotation of the faces neglected, SPEC §3).
+    // Force on the upper face: -T^ = -(T^n n + T^t t) (rotation of the faces neglected, theory §3).
     c.seg_fa_x[s] = -(fa_n * nx + fa_t * tx), c.seg_fa_y[s] = -(fa_n * ny + fa_t * ty);
     c.seg_fb_x[s] = -(fb_n * nx + fb_t * tx), c.seg_fb_y[s] = -(fb_n * ny + fb_t * ty);
   }

@@ -1,5 +1,5 @@
 // rupture/solver/cohesive_step.hpp
-// The cohesive phases of the time step (SPEC E7-E9) and the tie of bonded interface stretches.
+// The cohesive phases of the time step (theory E7-E9) and the tie of bonded interface stretches.
 //   update_face_stencils: each face node's stencil on its field (after the bonded tie, with
 //                        this step's nodal masses), used by both phases below;
 //   add_cohesive_forces: nodal cohesive forces of every interface onto its two fields' grid

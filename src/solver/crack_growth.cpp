@@ -63,10 +63,8 @@ struct WeakPlane {
 WeakPlane weak_plane(const InterfaceSpec& drawn, const CrackGrowthRecord& record, LineEnd end) {
   WeakPlane w;
   if (drawn.growth.plane_fracture_energy <= 0.0) return w;
-  const double end_column = end == LineEnd::start ? 0.0 : 1.0;
-  const std::vector<double>& r = record.rows;
-  for (std::size_t i = 0; i + kGrowthColumns <= r.size(); i += kGrowthColumns)
-    if (r[i + 2] == end_column && r[i + 5] != 0.0) return w;
+  for (const GrowthRow& r : record.rows)
+    if (!r.split && r.end == end && r.angle != 0.0) return w;
   const Polyline line = drawn.geometry();
   const std::size_t n = line.num_vertices();
   const std::size_t a = end == LineEnd::start ? 1 : n - 2, b = end == LineEnd::start ? 0 : n - 1;
@@ -105,7 +103,7 @@ std::vector<CrackLine> crack_lines(const RunState& s, std::size_t k, const Crack
 // index among the run's interfaces (the case's, then the branches', RunState::interface_levels),
 // the same on every level.
 std::size_t tie_entry(const RunState& s, int level, std::size_t slot) {
-  if (!s.joined()) return slot;
+  if (!s.is_nested()) return slot;
   for (std::size_t g = 0; g < s.num_interfaces(); ++g)
     if (s.interface_levels[g] == level && s.interface_slots[g] == slot) return g;
   throw std::logic_error("crack growth: a line on no level of the run");
@@ -114,7 +112,7 @@ std::size_t tie_entry(const RunState& s, int level, std::size_t slot) {
 // The run's levels other than `level` (nested levels; none on one grid).
 std::vector<State*> other_levels(RunState& s, int level) {
   std::vector<State*> others;
-  if (s.joined())
+  if (s.is_nested())
     for (std::size_t l = 0; l < s.levels.size(); ++l)
       if (int(l) != level) others.push_back(&s.levels[l]);
   return others;
@@ -123,7 +121,7 @@ std::vector<State*> other_levels(RunState& s, int level) {
 // The split's ties (solver/crack_branching.hpp BranchTies): nested levels, the parent's entry
 // and the run's interface count; one grid, the defaults.
 BranchTies branch_ties(const RunState& s, int level, std::size_t slot) {
-  if (!s.joined()) return {};
+  if (!s.is_nested()) return {};
   return {tie_entry(s, level, slot), s.num_interfaces()};
 }
 
@@ -152,14 +150,13 @@ bool split_tip(const Case& c, std::size_t k, RunState& s, int level, std::size_t
       split_crack_tip(c, k, s.levels[std::size_t(level)], slot, tip, end[0].x, end[0].y, end[1].x, end[1].y,
                       c.interfaces[k].branch_fields[n / 2], true, other_levels(s, level), branch_ties(s, level, slot));
   for (const std::size_t b : slots) s.interface_levels.push_back(level), s.interface_slots.push_back(b);
-  const double column = kSplitAtStart + (tip.end == LineEnd::start ? 0.0 : 1.0);
-  record.rows.insert(record.rows.end(), {s.time, double(g.label), column, f.x, f.y, g.split * kDegree, 0.0, g.K_I, g.K_II});
+  record.rows.push_back({s.time, g.label, tip.end, true, f.x, f.y, g.split * kDegree, 0.0, g.K_I, g.K_II});
   for (int b = 0; b < 2; ++b) {
     record.branch_slots.push_back(slots[std::size_t(b)]);
     const double len = std::hypot(end[b].x - f.x, end[b].y - f.y);
     const double turn = (axis + (b == 0 ? g.split : -g.split)) * kDegree;
-    record.rows.insert(record.rows.end(),
-                       {s.time, double(2 + n + std::size_t(b)), 1.0, end[b].x, end[b].y, turn, len, g.K_I, g.K_II});
+    record.rows.push_back({s.time, int(2 + n + std::size_t(b)), LineEnd::end, false, end[b].x, end[b].y, turn, len,
+                           g.K_I, g.K_II});
   }
   return true;
 }
@@ -182,11 +179,11 @@ void follow_cut_off_parts(const Case& c, RunState& s, std::size_t k, const std::
 // reading would be wrong, not merely coarse.
 void check_tip_on_level(const Case& c, std::size_t k, const RunState& s, int level, const TipFrame& f,
                         double reach) {
-  if (!s.joined()) return;
-  const Level& lv = s.grid.levels[std::size_t(level)];
+  if (!s.is_nested()) return;
+  const LevelLattice& lv = s.grid.levels[std::size_t(level)];
   const double p[2] = {f.x, f.y};
   if (std::size_t(level) + 1 < s.grid.levels.size()) {
-    const Level& fine = s.grid.levels[std::size_t(level) + 1];
+    const LevelLattice& fine = s.grid.levels[std::size_t(level) + 1];
     double lo[2], hi[2], gap2 = 0.0;
     for (int d = 0; d < 2; ++d) {
       lo[d] = s.grid.min[d] + double(fine.lo[d]) * s.grid.finest;
@@ -413,7 +410,6 @@ void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& rec
       const std::vector<CrackTip> now = precrack_tips(L.interfaces[slot].spec, 1e-6 * h);
       const auto it = std::find_if(now.begin(), now.end(), [&](const CrackTip& t) { return t.end == g.tip.end; });
       if (it == now.end()) continue;
-      const double end_column = g.tip.end == LineEnd::start ? 0.0 : 1.0;
       if (g.split > 0.0 && split_tip(c, k, s, level, slot, *it, g, records[k], check_junction)) {
         for (std::size_t b = records[k].branch_slots.size() - 2; b < records[k].branch_slots.size(); ++b)
           check_ties(records[k].branch_slots[b]);
@@ -422,8 +418,7 @@ void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& rec
       check_junction({it->frame.x, it->frame.y}, {g.x, g.y});
       const bool through = add_crack_segment(c, k, L, slot, *it, g.x, g.y, true, others, tie_entry(s, level, slot));
       const double len = std::hypot(g.x - g.tip.frame.x, g.y - g.tip.frame.y);
-      records[k].rows.insert(records[k].rows.end(),
-                             {s.time, double(g.label), end_column, g.x, g.y, g.angle * kDegree, len, g.K_I, g.K_II});
+      records[k].rows.push_back({s.time, g.label, g.tip.end, false, g.x, g.y, g.angle * kDegree, len, g.K_I, g.K_II});
       check_ties(slot);  // after the row: the path written at the stop holds the segment laid
       // A free surface less than a cell away: the ligament left holds fewer than two particles
       // across and cannot carry a field of its own on the grid (nor can a J domain cut by the
@@ -443,8 +438,7 @@ void grow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& rec
         const double turn = std::atan2(f.e1x * dy - f.e1y * dx, f.e1x * dx + f.e1y * dy);
         check_junction({f.x, f.y}, {x, y});
         const bool done = add_crack_segment(c, k, L, slot, *at, x, y, true, others, tie_entry(s, level, slot));
-        records[k].rows.insert(records[k].rows.end(),
-                               {s.time, double(g.label), end_column, x, y, turn * kDegree, l, g.K_I, g.K_II});
+        records[k].rows.push_back({s.time, g.label, g.tip.end, false, x, y, turn * kDegree, l, g.K_I, g.K_II});
         check_ties(slot);
         if (done || l == left) break;
       }
@@ -458,17 +452,17 @@ void regrow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& r
   // lines as they were when it was laid (follow_cut_off_parts).
   struct Event {
     double time;
-    std::size_t k, row;  // row: the first column's index in records[k].rows; kRelease: the release
+    std::size_t k, row;  // row: the index in records[k].rows; kRelease: the release
   };
   constexpr std::size_t kRelease = std::size_t(-1);
   std::vector<Event> events;
   for (std::size_t k = 0; k < records.size() && k < c.interfaces.size(); ++k) {
     records[k].branch_slots.clear();
     if (records[k].nucleated()) events.push_back({records[k].nucleation_time, k, kRelease});
-    const std::vector<double>& r = records[k].rows;
-    for (std::size_t i = 0; i + kGrowthColumns <= r.size(); i += kGrowthColumns) {
-      events.push_back({r[i], k, i});
-      if (r[i + 2] >= kSplitAtStart) i += 2 * kGrowthColumns;  // a split and its two branches: one event
+    const std::vector<GrowthRow>& r = records[k].rows;
+    for (std::size_t i = 0; i < r.size(); ++i) {
+      events.push_back({r[i].time, k, i});
+      if (r[i].split) i += 2;  // a split and its two branches: one event
     }
   }
   std::stable_sort(events.begin(), events.end(), [](const Event& a, const Event& b) {
@@ -479,42 +473,41 @@ void regrow_cracks(const Case& c, RunState& s, std::vector<CrackGrowthRecord>& r
     const int level = s.interface_levels[k];
     State& L = s.levels[std::size_t(level)];
     const double h = L.grid.cell_size();
-    const std::vector<double>& r = records[k].rows;
+    const std::vector<GrowthRow>& r = records[k].rows;
     const std::vector<State*> others = other_levels(s, level);
     if (i == kRelease) {
       release_site(c, k, L, s.interface_slots[k], others);
       continue;
     }
     follow_cut_off_parts(c, s, k, crack_lines(s, k, records[k]));
-    const int label = int(r[i + 1]);
-    const bool split = r[i + 2] >= kSplitAtStart;
+    const int label = r[i].tip;
+    const bool split = r[i].split;
     const std::size_t b = std::size_t(label >= 2 ? label - 2 : 0);
     if (label >= 2 && b >= records[k].branch_slots.size())
       throw InputError(fmt::format("checkpoint: run.growth[{}] row {}: tip {} is a branch that has not split off "
-                                   "(the checkpoint is not of this case)", k, i / kGrowthColumns, label));
+                                   "(the checkpoint is not of this case)", k, i, label));
     const std::size_t slot = label >= 2 ? records[k].branch_slots[b] : s.interface_slots[k];
     const std::vector<CrackTip> now = precrack_tips(L.interfaces[slot].spec, 1e-6 * h);
     // The tip the row grew (or split): a branch's one tip, or the crack's at the row's end.
-    const double column = split ? r[i + 2] - kSplitAtStart : r[i + 2];
-    const LineEnd at = label >= 2 ? LineEnd::end : column == 0.0 ? LineEnd::start : LineEnd::end;
+    const LineEnd at = label >= 2 ? LineEnd::end : r[i].end;
     const auto it = std::find_if(now.begin(), now.end(), [&](const CrackTip& t) { return t.end == at; });
     if (it == now.end())
       throw InputError(fmt::format("checkpoint: run.growth[{}] row {}: the crack has no tip at its {} to grow "
                                    "from (the checkpoint is not of this case)",
-                                   k, i / kGrowthColumns, at == LineEnd::start ? "start" : "end"));
+                                   k, i, at == LineEnd::start ? "start" : "end"));
     if (!split) {
-      add_crack_segment(c, k, L, slot, *it, r[i + 3], r[i + 4], false, others, tie_entry(s, level, slot));
+      add_crack_segment(c, k, L, slot, *it, r[i].x, r[i].y, false, others, tie_entry(s, level, slot));
       continue;
     }
     // A split: the next two rows are its branches' first segments.
     const std::size_t n = records[k].branch_slots.size();
-    if (i + 3 * kGrowthColumns > r.size() || n / 2 >= c.interfaces[k].branch_fields.size())
+    if (i + 3 > r.size() || n / 2 >= c.interfaces[k].branch_fields.size())
       throw InputError(fmt::format("checkpoint: run.growth[{}] row {}: a split without its two branches, or "
                                    "more splits than the crack's max_branches (the checkpoint is not of this case)",
-                                   k, i / kGrowthColumns));
-    const std::size_t a = i + kGrowthColumns, bb = i + 2 * kGrowthColumns;
+                                   k, i));
+    const GrowthRow &a = r[i + 1], &bb = r[i + 2];
     const std::array<std::size_t, 2> slots =
-        split_crack_tip(c, k, L, slot, *it, r[a + 3], r[a + 4], r[bb + 3], r[bb + 4],
+        split_crack_tip(c, k, L, slot, *it, a.x, a.y, bb.x, bb.y,
                         c.interfaces[k].branch_fields[n / 2], false, others, branch_ties(s, level, slot));
     for (const std::size_t sl : slots) s.interface_levels.push_back(level), s.interface_slots.push_back(sl);
     records[k].branch_slots.push_back(slots[0]);

@@ -37,6 +37,7 @@
 // Units: m, s, degrees in the records.
 #pragma once
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "input/case.hpp"
@@ -46,20 +47,47 @@
 
 namespace rupture {
 
-// Per row: time (s), tip (its index among the crack's tips, as in stress_intensity_NAME.csv;
-// 2 + b: the tip of branch b, solver/crack_branching.hpp), end (0: the line's start, 1: its
-// end; 2, 3: the tip at the line's start, end split there), x, y (the new vertex, reference
-// position, m; a split: the tip), angle (degrees, counterclockwise from the crack's direction at
-// the tip, the chord above, to the new segment; the first row's: from the drawn crack's
-// direction; a split: the half angle between its branches), length (of the segment, m; a split:
-// 0), K_I, K_II (Pa m^1/2, what the criterion read). A split row is followed by its two
-// branches' first segments (tips 2 + b, 3 + b: left, right of the running direction).
-inline constexpr std::size_t kGrowthColumns = 9;
-inline constexpr double kSplitAtStart = 2.0;  // end column of a split (+1: at the line's end)
+// One event of a crack's growth: a straight segment laid at a tip, or a tip split in two
+// (crack_path_NAME.csv's columns, docs/fracture.md). Units: s, m, degrees, Pa m^1/2.
+struct GrowthRow {
+  double time = 0.0;  // when the segment was made (or the tip split), s
+  // The tip: its index among the crack's tips (as in stress_intensity_NAME.csv); 2 + b: the tip
+  // of branch b (solver/crack_branching.hpp).
+  int tip = 0;
+  LineEnd end = LineEnd::start;  // the end of the line the tip is at (a branch's: its end)
+  bool split = false;            // the tip split in two here (its two branches' rows follow)
+  // The new vertex, reference position, m; a split: the tip.
+  double x = 0.0, y = 0.0;
+  // Counterclockwise from the crack's direction at the tip (the chord above) to the new
+  // segment; the first row's: from the drawn crack's direction; a split: the half angle
+  // between its branches, degrees.
+  double angle = 0.0;
+  double length = 0.0;           // of the segment (a split: 0), m
+  double K_I = 0.0, K_II = 0.0;  // what the criterion read, Pa m^1/2
+  // The CSV's and the checkpoint's `end` code: 0, 1 a segment at the line's start, end; 2, 3
+  // the tip there split.
+  int end_code() const { return (split ? 2 : 0) + (end == LineEnd::end ? 1 : 0); }
+  // Whether the row grew the tip (label, end): a branch's tip by its label, the crack's own by
+  // its end (its label, the index among its tips, changes when the other stops). A split grows
+  // no tip.
+  bool grows(int label, LineEnd at) const {
+    if (split) return false;
+    return label >= 2 ? tip == label : tip < 2 && end == at;
+  }
+};
 
-// One interface's growth (checkpointed: the rows); empty rows: it has not grown.
+// The checkpoint's form of the rows: kGrowthColumns numbers a row (time, tip, end code, x, y,
+// angle, length, K_I, K_II: the CSV's order), and back; a row whose tip or end code is not one
+// the rows can hold is an InputError naming `where`'s entry, the value and what is allowed.
+inline constexpr std::size_t kGrowthColumns = 9;
+std::vector<double> growth_rows_flat(const std::vector<GrowthRow>& rows);
+std::vector<GrowthRow> growth_rows_from_flat(const std::vector<double>& flat, const std::string& where);
+
+// One interface's growth (checkpointed: the rows); empty rows: it has not grown. A split row is
+// followed by its two branches' first segments (tips 2 + b, 3 + b: left, right of the running
+// direction).
 struct CrackGrowthRecord {
-  std::vector<double> rows;
+  std::vector<GrowthRow> rows;
   // A crack that nucleates (InterfaceSpec::nucleation_strength): when its drawn line came loose,
   // s; -1 while it is intact (checkpointed).
   double nucleation_time = -1.0;
@@ -68,10 +96,10 @@ struct CrackGrowthRecord {
   // splits as they happen, by regrow_cracks on a restore).
   std::vector<std::size_t> branch_slots;
   bool grown() const { return !rows.empty(); }
-  double initiation_time() const { return grown() ? rows[0] : -1.0; }  // s
-  double initial_angle() const { return grown() ? rows[5] : 0.0; }     // degrees
-  double length() const;                                              // grown length, m (branches too)
-  int branches() const;                                               // how many times a tip split
+  double initiation_time() const { return grown() ? rows[0].time : -1.0; }  // s
+  double initial_angle() const { return grown() ? rows[0].angle : 0.0; }    // degrees
+  double length() const;                                                   // grown length, m (branches too)
+  int branches() const;                                                    // how many times a tip split
 };
 
 // The speed of a tip (label and end as in the rows), m/s: the path it grew over the last

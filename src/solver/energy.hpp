@@ -1,5 +1,5 @@
 // rupture/solver/energy.hpp
-// Energies of the particle system (SPEC E14), J per unit thickness (J/m in 2D).
+// Energies of the particle system (theory E14), J per unit thickness (J/m in 2D).
 //   kinetic = sum 1/2 m_p |v_p|^2
 //   strain (E14, the balance) = State::strain_work: the elastic energy at t = 0 plus the work
 //             the stresses have done since, accumulated by the stress update (solver/transfer)
@@ -7,7 +7,7 @@
 //   elastic = sum 1/2 V0_p sigma_p : eps_p, the energy of the current state at the initial
 //             volume (the same at t = 0).
 // Why the stored work for the balance: the internal forces use the current volume
-// V = V0 (1 + tr eps) (SPEC E4), so the energy they store is sum int V sigma : d eps; the elastic
+// V = V0 (1 + tr eps) (theory E4), so the energy they store is sum int V sigma : d eps; the elastic
 // sum misses the (2/3)|eps| part of it, which drifted the balance by -8 J/m (0.37 %) under the
 // reference impact's 1.2 % compression by 19.2 us (docs/validation.md). For linear elasticity
 // with V = V0 the midpoint sum equals 1/2 V0 sigma : eps exactly (C is symmetric), so the two

@@ -2,7 +2,7 @@
 // Keeps every velocity field's window of nodes (GridFields, grid/grid.hpp) covering all the
 // nodes the time step touches in that field:
 //   - its particles: one in cell (c, r) reaches node columns c - 1 .. c + 2 and rows
-//     r - 1 .. r + 2 (the 3-node GIMP stencil, SPEC E3);
+//     r - 1 .. r + 2 (the 3-node GIMP stencil, theory E3);
 //   - the faces of its interfaces: a face point in cell (c, r), nodes c .. c + 1, r .. r + 1
 //     (its bilinear stencil, solver/cohesive_step.cpp);
 //   - the nodes its bonded stretches tie.

@@ -1,5 +1,5 @@
 // rupture/solver/gather.cpp
-// Grid -> particle gather of the time step (SPEC E5): stress update, velocity (USL/USF) and
+// Grid -> particle gather of the time step (theory E5): stress update, velocity (USL/USF) and
 // the move, in batches of kBatch consecutive particles. Each batch runs as separate short
 // loops: the stencils (SIMD over particles, solver/stencil_batch.hpp), the node gather (one
 // particle at a time: 9 nodes of the strip's tile, solver/strip_tile.hpp, which packs the
@@ -9,7 +9,7 @@
 // batch's particles, which are contiguous in every particle array. Splitting the work this way
 // keeps few array pointers live per loop (one fused per-particle loop spilled them to the
 // stack: the hottest instructions on AMD Zen 4). Per particle the arithmetic and its order are
-// those of SPEC E5, so results do not depend on the batch size or the thread count.
+// those of theory E5, so results do not depend on the batch size or the thread count.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -163,7 +163,7 @@ void gather_nodes(const StencilBatch& B, int n, const typename GatherTile<kMode>
   }
 }
 
-// SPEC E5 for particles [p, p + n): eps_dot = sym(L), sigma_dot = C : eps_dot (small strain,
+// theory E5 for particles [p, p + n): eps_dot = sym(L), sigma_dot = C : eps_dot (small strain,
 // plane mode in C), and E14's stress work of the increment (solver/energy.hpp), summed in
 // particle order into `work`. The stress is the stored state: tr eps (for the volume) follows
 // from it (material/elastic.hpp), and sigma_zz and the strain are derived where needed.
@@ -324,7 +324,7 @@ GridLimits grid_limits(const State& s) {
           ay.node(ay.cells - 1)};
 }
 
-// One strip of s (SPEC E5 for its particles), in batches of kBatch. One specialization per
+// One strip of s (theory E5 for its particles), in batches of kBatch. One specialization per
 // G2PMode, so the loops carry no mode tests.
 template <G2PMode kMode>
 StripResult strip_to_particles(State& s, int strip, const double* gvx, const double* gvy) {

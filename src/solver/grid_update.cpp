@@ -1,5 +1,5 @@
 // rupture/solver/grid_update.cpp
-// Nodal updates of the time step (SPEC E4) and the prescribed velocities of the edges (E2),
+// Nodal updates of the time step (theory E4) and the prescribed velocities of the edges (E2),
 // plain parallel loops over every field's nodes.
 #include "solver/grid_update.hpp"
 
@@ -114,7 +114,7 @@ void apply_velocity_bcs(State& s, const std::vector<unsigned char>* only) {
     double& vel = (e.component == 0 ? G.vel_x : G.vel_y)[i];
     double& dvel = (e.component == 0 ? G.dvel_x : G.dvel_y)[i];
     // The constraint's impulse m (V^{n+1} - v_free) acts on a node moving at the mean
-    // prescribed velocity over the step: its work is the external work of SPEC E14.
+    // prescribed velocity over the step: its work is the external work of theory E14.
     if (counts_work(s, e.field, e.node)) s.external_work += m * (v1 - vel) * 0.5 * (v0 + v1);
     dvel += v1 - vel;
     vel = v1;

@@ -1,5 +1,5 @@
 // rupture/solver/grid_update.hpp
-// Nodal phases of the time step (SPEC E4) and the prescribed edge velocities (E2), over every
+// Nodal phases of the time step (theory E4) and the prescribed edge velocities (E2), over every
 // field's nodes; nodes lighter than State::mass_floor are empty (velocity 0).
 #pragma once
 #include <cstddef>

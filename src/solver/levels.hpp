@@ -1,6 +1,6 @@
 // rupture/solver/levels.hpp
 // The levels one time step runs over. A single grid is one level without transitions; nested
-// refinement (solver/nested_state.hpp, SPEC §5) is several uniform lattices joined at their
+// refinement (solver/nested_state.hpp, theory §5) is several uniform lattices joined at their
 // transition nodes. The update schemes (solver/step.cpp) are written once over this view: every
 // phase runs level by level, and the transitions' two operations are no-ops on one grid:
 //   condense_to_dofs: after a scatter, each slave node's extensive values (mass, momentum,

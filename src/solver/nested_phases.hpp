@@ -19,7 +19,8 @@ void condense_to_dofs(RunState& n, std::initializer_list<NodalArray> arrays);
 void condense_to_dofs(RunState& n, std::initializer_list<LoadArray> arrays);
 void spread_to_slaves(RunState& n, std::initializer_list<NodalArray> arrays);
 
-// The view over every level of n (levels_of keeps its pointers until n's levels change).
+// The view over every level of n: it points into n.level_pointers, valid until n.levels is
+// resized or moved (a later call on n leaves an earlier view as it is).
 Levels levels_of(RunState& n);
 
 // solver/step.cpp's phases (each level in turn):
@@ -31,7 +32,7 @@ void cohesive_forces_and_ties(const Levels& L);
 // E5 over L's levels; distributed, a bad particle's diagnosis waits for the end of the step.
 void gather(const Levels& L, NodalArray gx, NodalArray gy, G2PMode mode);
 
-// One step of the scheme with one dt (the smallest of the levels' limits, SPEC E6) for every
+// One step of the scheme with one dt (the smallest of the levels' limits, theory E6) for every
 // level, then the clock and the interfaces advanced (solver/step.cpp).
 void step_levels(const Levels& L, Scheme scheme);
 // The end of a step on every level of L: the region particles' velocity, the clock, the

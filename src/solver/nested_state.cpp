@@ -25,11 +25,10 @@ namespace rupture {
 using namespace detail;
 namespace {
 
-// The velocity conditions of the domain edges this level reaches (its outer sides), on the
-// level's lattice line of the edge.
-// The lattice line of level L that the domain edge of `bc` lies on; -1 when L does not reach
-// that edge. InputError when the edge is not on one of L's lines.
-long edge_line(const VelocityBC& bc, const Case& c, const Level& L) {
+// The lattice line of level L that the domain edge of `bc` lies on at t = 0; -1 when L does not
+// reach that edge. InputError when the edge is not on one of L's lines. (bc/velocity_bc.hpp
+// edge_line is the single grid's: the line nearest the edge at time t, clamped to the grid.)
+long level_edge_line(const VelocityBC& bc, const Case& c, const LevelLattice& L) {
   const int d = (bc.edge == Edge::left || bc.edge == Edge::right) ? 0 : 1;
   const bool lo = bc.edge == Edge::left || bc.edge == Edge::bottom;
   if (!(lo ? L.outer_lo[d] : L.outer_hi[d])) return -1;
@@ -47,9 +46,11 @@ long edge_line(const VelocityBC& bc, const Case& c, const Level& L) {
   return line;
 }
 
-void set_level_boundary(State& s, const Case& c, const Level& L, std::vector<int>& base) {
+// The velocity conditions of the domain edges this level reaches (its outer sides), on the
+// level's lattice line of the edge.
+void set_level_boundary(State& s, const Case& c, const LevelLattice& L, std::vector<int>& base) {
   for (const VelocityBC& bc : c.boundary) {
-    const long line = edge_line(bc, c, L);
+    const long line = level_edge_line(bc, c, L);
     if (line < 0) continue;
     s.boundary.push_back(bc);
     base.push_back(int(line));
@@ -80,7 +81,7 @@ void follow_edges(State& s, const std::vector<int>& base) {
 int owning_level(const NestedGrid& g, const std::vector<double>& x0, const std::vector<double>& y0,
                  const std::string& name) {
   const int l = g.level_of(x0[0], y0[0]);
-  const Level& L = g.levels[std::size_t(l)];
+  const LevelLattice& L = g.levels[std::size_t(l)];
   for (std::size_t k = 0; k < x0.size(); ++k) {
     const double u = (x0[k] - g.min[0]) / g.finest, v = (y0[k] - g.min[1]) / g.finest;
     const double cu = std::floor(u / double(L.unit)) * double(L.unit), cv = std::floor(v / double(L.unit)) * double(L.unit);
@@ -144,7 +145,7 @@ void migrate(RunState& n) {
         throw SimulationError(fmt::format(
             "GIMP contract broken at step {}, t = {:.6g} s: particle {} (field {}) at (x, y) = "
             "({:.6g}, {:.6g}) m with half-width {:.4g} m entered nested level {} ({:.4g} m "
-            "cells): 2 l_p exceeds the cell, so its 3-node stencil (SPEC E3) loses a node. It "
+            "cells): 2 l_p exceeds the cell, so its 3-node stencil (theory E3) loses a node. It "
             "was made on a level at least two coarser; widen the boxes between (the nesting "
             "band) so that moving material stays within one level of where it started",
             n.step, n.time, arriving[d].id[p], int(arriving[d].field[p]), arriving[d].x[p],
@@ -170,10 +171,13 @@ void migrate_levels(RunState& n) {
 namespace detail {
 
 Levels levels_of(RunState& n) {
-  thread_local std::vector<State*> pointers;
-  pointers.clear();
-  for (State& s : n.levels) pointers.push_back(&s);
-  return Levels{pointers.data(), pointers.size(), &n};
+  std::vector<State*>& p = n.level_pointers;
+  const bool moved = p.size() != n.levels.size() || (!p.empty() && p[0] != n.levels.data());
+  if (moved) {
+    p.clear();
+    for (State& s : n.levels) p.push_back(&s);
+  }
+  return Levels{p.data(), p.size(), &n};
 }
 
 }  // namespace detail
@@ -274,7 +278,7 @@ void set_level_absorbing(const Case& c, RunState& n) {
   if (c.absorbing_edges.empty()) return;
   const std::size_t levels = n.levels.size();
   for (std::size_t l = 0; l < levels; ++l) {
-    const Level& L = n.grid.levels[l];
+    const LevelLattice& L = n.grid.levels[l];
     std::vector<Edge> reached;
     for (const Edge e : c.absorbing_edges) {
       const int d = (e == Edge::left || e == Edge::right) ? 0 : 1;
@@ -357,8 +361,8 @@ void check_nested_support(const Case& c) {
   // What the levels' set-up checks, on the levels' lattices alone (no particle, no field).
   const NestedGrid g = make_nested_grid(c.grid.min, c.grid.max, c.grid.coarse_cell_size, c.grid.cell_size,
                                         refine_boxes(c.grid), std::max(0.0, c.grid.margin));
-  for (const Level& L : g.levels)
-    for (const VelocityBC& bc : c.boundary) edge_line(bc, c, L);
+  for (const LevelLattice& L : g.levels)
+    for (const VelocityBC& bc : c.boundary) level_edge_line(bc, c, L);
   int level = -1;
   for (std::size_t k = 0; k < c.interfaces.size(); ++k) {
     const LineNodes nodes = discretize(c.interfaces[k].geometry(), c.interfaces[k].segments);
@@ -386,7 +390,7 @@ RunState make_nested_state(const Case& c, const ParticleShare* share) {
   double min_mass = INFINITY;
   n.base_lines.resize(std::size_t(levels));
   for (int l = 0; l < levels; ++l) {
-    const Level& L = n.grid.levels[std::size_t(l)];
+    const LevelLattice& L = n.grid.levels[std::size_t(l)];
     const NestedGrid& g = n.grid;
     const std::function<bool(double, double)> own = [share, l](double x, double y) { return share->own_level(l, x, y); };
     n.levels.push_back(make_level_state(c, level_grid(n.grid, l),
@@ -442,8 +446,8 @@ RunState make_nested_state(const Case& c, const ParticleShare* share) {
     const std::size_t l = n.slave_level[k];
     bool deep = l + 1 < n.grid.levels.size();
     if (deep) {
-      const Level& L = n.grid.levels[l];
-      const Level& F = n.grid.levels[l + 1];
+      const LevelLattice& L = n.grid.levels[l];
+      const LevelLattice& F = n.grid.levels[l + 1];
       const long node = long(n.slave_node[k]);
       const long u[2] = {L.node0[0] + (node % L.nodes_x()) * L.unit, L.node0[1] + (node / L.nodes_x()) * L.unit};
       const long depth = long(kInactiveDepth) * L.unit;
@@ -455,7 +459,7 @@ RunState make_nested_state(const Case& c, const ParticleShare* share) {
     if (!deep) n.active_slaves.push_back(std::uint32_t(k));
   }
   // The active slaves' terms transposed, by DOF (ascending), each DOF's in slave order:
-  // condense_fields.
+  // condense_to_dofs (solver/transitions.cpp).
   std::vector<std::uint32_t> order, slave_of(nt);
   for (const std::uint32_t k : n.active_slaves)
     for (std::uint32_t t = n.grid.term_start[k]; t < n.grid.term_start[k + 1]; ++t) {

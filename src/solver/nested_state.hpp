@@ -1,8 +1,8 @@
 // rupture/solver/nested_state.hpp
-// The time step on nested refinement levels (grid/nested.hpp, SPEC §5): one State per level
+// The time step on nested refinement levels (grid/nested.hpp, theory §5): one State per level
 // (its uniform lattice, the particles whose centres it owns, every field over the whole
 // lattice, the velocity conditions of the domain edges it reaches) and the same phases as the
-// single-grid step (solver/step.cpp, SPEC E4-E5) run level by level, with the levels joined
+// single-grid step (solver/step.cpp, theory E4-E5) run level by level, with the levels joined
 // at the transition nodes: after every scatter the slaves' mass, momentum and force are
 // condensed onto their DOFs, before every gather the slaves take their DOFs' velocities.
 // Every level steps with the same dt (the smallest of the levels' limits), or, with

@@ -9,7 +9,7 @@
 // finest step. Each finest step, after the condensed nodal update:
 //   - the held momentum takes its mass times the step's velocity increment, and the
 //     increments are summed per node over the level's step;
-//   - a level whose step ends gathers the summed increments (FLIP, SPEC E5), re-maps, and
+//   - a level whose step ends gathers the summed increments (FLIP, theory E5), re-maps, and
 //     updates stress and position over its whole step (MUSL, with the re-mapped velocity);
 //   - a level whose step goes on re-maps, where finer levels read, the velocity its
 //     particles would have now without keeping it (band_remap: exact, and needed for
@@ -151,7 +151,7 @@ void find_band(const State& s, const std::vector<unsigned char>& reach, LevelHol
 }
 
 // The re-mapped momentum of a level whose step goes on, where finer levels' particles may read
-// it (SPEC E5's re-map with the velocity its particles would have now: v_p + sum S_ip inc_i;
+// it (theory E5's re-map with the velocity its particles would have now: v_p + sum S_ip inc_i;
 // the other particles reach no such node). The particles keep their velocity. Exact, where
 // the held momentum (v_p + inc_i lumped per node) is not: mixing the two at a node shared
 // with a level that re-maps its particles makes the coupled step unstable (a free vibration
@@ -211,7 +211,7 @@ void band_remap(State& s, const LevelHold& H, const std::vector<std::uint32_t>& 
   }
 }
 
-// h: the smallest of every level's stability limit (SPEC E6: its CFL step, and on the
+// h: the smallest of every level's stability limit (theory E6: its CFL step, and on the
 // interface's level the cohesive bound) over its period, within the time left to the end.
 void subcycled_time_step(RunState& n) {
   double h = INFINITY;
@@ -267,7 +267,7 @@ void step_subcycled(RunState& n) {
   for (const State& s : n.levels) drift = std::max(drift, s.window_drift);
   int longest = 1;
   for (int p : n.period) longest = std::max(longest, p);
-  // While a prescribed edge velocity changes (SPEC E2: the impact's rise and fall) every level
+  // While a prescribed edge velocity changes (theory E2: the impact's rise and fall) every level
   // steps every h: a level's step spanning a ramp would strain its particles with the
   // velocity at its end, not over the ramp (62.5 um example: 2.4 % energy balance instead of
   // 1.2 %, all of it from the rise and the fall).

@@ -47,7 +47,7 @@ void check_gimp_contract(State& s) {
         "GIMP contract broken at step {}, t = {:.6g} s: particle {} (field {}) at (x, y) = "
         "({:.6g}, {:.6g}) m with half-widths (l_x, l_y) = ({:.4g}, {:.4g}) m spans, along {}, "
         "[{:.6g}, {:.6g}] m, which holds cell (column {}, row {}) of width {:.4g} m whole: its "
-        "3-node stencil (SPEC E3) loses a node: the box may overlap at most two cells, so 2 l_p "
+        "3-node stencil (theory E3) loses a node: the box may overlap at most two cells, so 2 l_p "
         "must not exceed the width of a cell it reaches. A particle keeps the size of the cell "
         "it was made in (l_p = a quarter of it at 2 x 2 per cell), so this one came from cells "
         "more than twice as wide. Move the refinement-box transition further from moving "
@@ -95,7 +95,7 @@ void sort_particles(State& s) {
   plan.num_strips = (cx + width - 1) / width;
   // Bucket (strip, stencil row, stencil column): strip-major, so every strip is one contiguous
   // particle range; inside a strip, the particles whose 3 x 3 stencils start at the same node
-  // (SPEC E3: grid/grid.hpp stencil_first; about four at 2 x 2 per cell) are adjacent, and the
+  // (theory E3: grid/grid.hpp stencil_first; about four at 2 x 2 per cell) are adjacent, and the
   // transfers handle such a run with one read of its nine tile nodes (solver/transfer.cpp).
   // The strip is the cell column's; its stencils start at columns strip * width - 1 .. + width.
   const std::size_t stencil_cols = std::size_t(width) + 2;

@@ -14,7 +14,7 @@ bool RunState::holds_interfaces(int level) const {
 }
 
 const Particles& all_particles(RunState& r) {
-  if (!r.joined()) return r.levels[0].particles;
+  if (!r.is_nested()) return r.levels[0].particles;
   if (r.merged_step != r.step) {  // once per step, whatever reads them
     r.merged.resize(0);
     for (const State& l : r.levels) r.merged.append_copy(l.particles);
@@ -31,7 +31,7 @@ std::size_t held_particles(const RunState& r) {
 
 void collect_run_sums(RunState& r) {
   r.merged_step = -1;  // the particles may have changed (a split, a restore)
-  if (!r.joined()) {  // one grid: its level is the run
+  if (!r.is_nested()) {  // one grid: its level is the run
     const State& s = r.levels[0];
     r.time = s.time, r.dt = s.dt, r.step = s.step;
     r.limits = s.limits;

@@ -1,7 +1,7 @@
 // rupture/solver/run_state.hpp
 // The state of a run, whatever its grid: its levels and, between them, the transitions. A
 // uniform or graded grid is one level without transitions; grid.refinement = "nested"
-// (grid/nested.hpp, SPEC §5) is several uniform lattices, coarsest first, joined at their
+// (grid/nested.hpp, theory §5) is several uniform lattices, coarsest first, joined at their
 // transition nodes. Each level is a State (solver/state.hpp: its lattice, particles, fields,
 // boundary nodes and the interfaces that lie on it); this struct adds the run's clock and
 // sums, which interface is where, and the transitions' tables (empty on one grid).
@@ -114,8 +114,11 @@ struct RunState {
   // step merged_step (all_particles; scratch, not checkpointed).
   Particles merged;
   long merged_step = -1;
+  // &levels[l] for every level: what detail::levels_of's views point into (scratch, laid again
+  // only when the levels have moved, so a view stays valid while another is taken).
+  std::vector<State*> level_pointers;
 
-  bool joined() const { return !grid.levels.empty(); }  // nested levels (else one grid)
+  bool is_nested() const { return !grid.levels.empty(); }  // nested levels (else one grid)
   bool subcycled() const;
   bool synchronized() const { return substep == 0; }
   bool holds_interfaces(int level) const;  // some interface lies on this level

@@ -203,7 +203,7 @@ void for_each_case_point(const Case& c, const Grid& g, const CasePointVisit& vis
 }
 
 void for_each_run_point(const Case& c, const RunState& r, const RunPointVisit& visit) {
-  if (!r.joined()) {
+  if (!r.is_nested()) {
     for_each_case_point(c, r.levels[0].grid, [&](const SeedPoint& p, std::size_t, std::uint32_t id) { visit(p.x, p.y, id); });
     return;
   }

@@ -69,10 +69,10 @@ struct ScatterPlan {
 
 // Every member must also be written in run/checkpoint.cpp.
 struct StepLimits {
-  double cfl_dt = 0.0;       // cfl * h / max c_D, s (SPEC E6)
+  double cfl_dt = 0.0;       // cfl * h / max c_D, s (theory E6)
   double bulk_eigen_bound = 0.0;  // lambda_bulk of solver/time_step.hpp, 1/s^2
   double cohesive_dt = 0.0;  // this step's stability limit 2/sqrt(lambda_bulk + lambda_coh), s
-                             // (SPEC E6, solver/time_step.hpp; inf without interfaces)
+                             // (theory E6, solver/time_step.hpp; inf without interfaces)
   double min_cohesive_dt = INFINITY;  // smallest cohesive_dt of the run so far, s
   double dt = 0.0;           // step at t = 0, s
 };

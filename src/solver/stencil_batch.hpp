@@ -1,7 +1,7 @@
 // rupture/solver/stencil_batch.hpp
 // The particle-loop machinery shared by the transfers (solver/transfer.cpp) and the particle
 // sort (solver/particle_sort.cpp): GIMP stencils of 16 particles at a time, computed SIMD
-// over particles (SPEC E3), and the two-colour strip loop of ScatterPlan (solver/state.hpp).
+// over particles (theory E3), and the two-colour strip loop of ScatterPlan (solver/state.hpp).
 // Internal to solver/.
 #pragma once
 #include <algorithm>
@@ -32,7 +32,7 @@ struct StencilBatch {
 };
 
 // One axis for n <= kBatch particles: the stencil rule of grid/grid.hpp (stencil()), with
-// the weights of gimp_uniform_node written out over plain arrays so the loop vectorizes.
+// the weights of gimp_uniform_three written out over plain arrays so the loop vectorizes.
 // kGradients = false: dw is left unset where the axis is uniform (the velocity pass reads
 // the weights only: a third fewer operations there).
 template <bool kGradients = true>
@@ -46,7 +46,7 @@ inline void axis_stencils(const Axis& ax, const double* __restrict xp, const dou
   double* __restrict d1 = dw[1];
   double* __restrict d2 = dw[2];
   if (ax.graded()) {
-    // Graded axis (SPEC E3): per particle the first cell, its node and inverse width (table
+    // Graded axis (theory E3): per particle the first cell, its node and inverse width (table
     // lookups), then the uniform form SIMD over the batch. Where a stencil straddles a change
     // of cell size (cells first-1 .. first+2 not all equal: uniform_from), a batch also looks
     // up the three node coordinates and four widths and takes the graded form (gimp_graded

@@ -1,6 +1,6 @@
 // rupture/solver/step.cpp
 // The time step: one function per update scheme, each the method's phases in order with the
-// boundary conditions, loads and cohesive phases visible (SPEC E4-E9), written once over the
+// boundary conditions, loads and cohesive phases visible (theory E4-E9), written once over the
 // levels of solver/levels.hpp (one grid: one level, whose transitions are no-ops). The phases
 // live in solver/transfer (particle <-> grid), solver/grid_update (nodes, velocity BCs,
 // absorbing edges), solver/cohesive_step (interfaces), solver/load_step ([loads]),
@@ -67,7 +67,7 @@ void sum_shared_nodes(const Levels& L, std::initializer_list<NodalArray> arrays)
   each(L, [&](State& s) { halo_sum(s, arrays); });
 }
 
-// One dt for every level and rank: the smallest of their limits (SPEC E6).
+// One dt for every level and rank: the smallest of their limits (theory E6).
 void common_time_step(const Levels& L) {
   double dt = INFINITY;
   each(L, [&](State& s) {
@@ -311,7 +311,7 @@ void step(State& s) {
 
 void step(RunState& r) {
   for (State& l : r.levels) l.dt_cap = r.dt_cap, l.forced_dt = r.forced_dt;
-  if (!r.joined()) {  // one grid: its level is the run
+  if (!r.is_nested()) {  // one grid: its level is the run
     try {
       step(r.levels[0]);
     } catch (...) {

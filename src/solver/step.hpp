@@ -1,5 +1,5 @@
 // rupture/solver/step.hpp
-// One explicit GIMP time step (SPEC E4-E6) and its phases, each a free function over the
+// One explicit GIMP time step (theory E4-E6) and its phases, each a free function over the
 // State's plain arrays. step() runs the phases in the order of the chosen update scheme:
 //   MUSL: P2G -> tie, face stencils, dt -> cohesive forces -> integrate + BCs -> G2P (velocity)
 //         + re-map -> stress (re-mapped v) and move -> advance interfaces

@@ -45,11 +45,17 @@ std::size_t interface_bytes_estimate(const Case& c) {
   return bytes;
 }
 
-// 11 nodal arrays per field node (grid/grid.hpp) + particle arrays + sort scratch (order, one
-// double array for the permutation) + the interfaces.
-double memory_bytes(long field_nodes, double particles, std::size_t interface_bytes) {
-  return double(interface_bytes) + double(field_nodes) * 11.0 * sizeof(double) +
-         particles * double(Particles::bytes_per_particle() + 12);
+// Whether some material is damped: its particles then carry the Kelvin-Voigt stress too.
+bool damped(const Case& c) {
+  return std::any_of(c.materials.begin(), c.materials.end(),
+                     [](const ElasticMaterial& m) { return m.kelvin_voigt > 0.0; });
+}
+
+// The nodal arrays per field node (grid/grid.hpp, 11) + particle arrays + sort scratch (order,
+// one double array for the permutation) + the interfaces.
+double memory_bytes(long field_nodes, double particles, std::size_t interface_bytes, bool damped) {
+  return double(interface_bytes) + double(field_nodes) * double(field_array_count() * sizeof(double)) +
+         particles * double(Particles::bytes_per_particle(damped) + 12);
 }
 
 // grid.refinement = "nested": cells, particles and nodes of the levels (grid/nested.hpp), every
@@ -79,8 +85,8 @@ void summarize_nested(const Case& c, CaseSummary& s) {
     s.particles += n;
   }
   s.field_nodes = long(g.num_nodes()) * s.fields;
-  s.memory_bytes = std::size_t(s.field_nodes) * 11 * sizeof(double) +
-                   std::size_t(s.particles) * (Particles::bytes_per_particle() + 12);
+  s.memory_bytes = std::size_t(s.field_nodes) * field_array_count() * sizeof(double) +
+                   std::size_t(s.particles) * (Particles::bytes_per_particle(damped(c)) + 12);
 }
 
 }  // namespace
@@ -102,7 +108,7 @@ CaseSummary summarize(const Case& c) {
   const double mass_factor = c.solver.mass == MassMatrix::averaged ? std::sqrt(0.5) : 1.0;
   s.dt_cfl = mass_factor * c.time.cfl * h / max_cd;
   s.dt = s.dt_cfl;
-  // SPEC E6 as derived in solver/time_step.hpp. Bulk: the Gershgorin bound of uGIMP for each
+  // theory E6 as derived in solver/time_step.hpp. Bulk: the Gershgorin bound of uGIMP for each
   // material at the smallest cell. Cohesive, at rest: every face node sits on its row, so its
   // stencil holds the row's nodes of mass m = rho h^2 / 2 (per field) and the row sum is
   // (2 / m) k h with k the law's stiffness at rest, penalty included (a node carries a length
@@ -204,7 +210,7 @@ CaseSummary summarize(const Case& c) {
     s.memory_bytes += interface_bytes;
     return s;
   }
-  s.memory_bytes = std::size_t(memory_bytes(s.field_nodes, double(s.particles), interface_bytes));
+  s.memory_bytes = std::size_t(memory_bytes(s.field_nodes, double(s.particles), interface_bytes, damped(c)));
   return s;
 }
 
@@ -232,7 +238,7 @@ double memory_bytes_before_seeding(const Case& c) {
     particles += exact ? std::round((o.max[0] - o.min[0]) / h) * std::round((o.max[1] - o.min[1]) / h) * ppc * ppc
                        : seed_points_at_least(whole, h / ppc);
   }
-  return memory_bytes(field_nodes_estimate(c, grid), particles, interface_bytes_estimate(c));
+  return memory_bytes(field_nodes_estimate(c, grid), particles, interface_bytes_estimate(c), damped(c));
 }
 
 }  // namespace rupture

@@ -1,6 +1,6 @@
 // rupture/solver/summary.hpp
-// Quantities derived from a Case without allocating it: wave speeds (SPEC E1), time step
-// (SPEC E6), sizes and a memory estimate. Used by `rupture check` and written to run.json.
+// Quantities derived from a Case without allocating it: wave speeds (theory E1), time step
+// (theory E6), sizes and a memory estimate. Used by `rupture check` and written to run.json.
 #pragma once
 #include <cstddef>
 #include <string>
@@ -28,7 +28,7 @@ struct CaseSummary {
   std::vector<long> particles_per_body;
   long particles = 0;
   int fields = 0;
-  // Refined grids (SPEC §5): cells and particles per level. A cell's level is that of its
+  // Refined grids (theory §5): cells and particles per level. A cell's level is that of its
   // smaller side, log2(coarse_cell_size / min(hx, hy)); uniform grids have one level.
   std::vector<long> cells_per_level, particles_per_level;
   std::vector<double> level_sizes;  // m

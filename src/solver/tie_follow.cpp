@@ -187,7 +187,7 @@ struct Tied {
 
 std::vector<Tied> interfaces_of(RunState& s) {
   std::vector<Tied> out;
-  if (!s.joined()) {
+  if (!s.is_nested()) {
     for (std::size_t i = 0; i < s.levels[0].interfaces.size(); ++i) out.push_back({&s.levels[0].interfaces[i], i});
   } else {
     for (std::size_t k = 0; k < s.num_interfaces(); ++k) out.push_back({&s.interface(k), k});
@@ -202,7 +202,7 @@ void lay(RunState& s, const Tied& t) {
   const Polyline crack = c.spec.geometry();
   const std::vector<Polyline> laid =
       carried_ties(sample_ties(ties, spacing_of(s)), c.tie_ux, c.tie_uy, kStraightness * cell_of(s));
-  if (s.joined()) {
+  if (s.is_nested()) {
     for (State& L : s.levels) L.bonded[t.index].nodes = bonded_nodes(L.grid, ties, crack, laid);
     return;
   }

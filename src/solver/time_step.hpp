@@ -1,5 +1,5 @@
 // rupture/solver/time_step.hpp
-// The explicit step's stability bound (SPEC E6), derived from the discrete system that is
+// The explicit step's stability bound (theory E6), derived from the discrete system that is
 // integrated rather than from a lumped two-node model (derivation: docs/time_step.md).
 // Central differences are stable while dt <= 2 / sqrt(lambda_max) of M^-1 K. With the bulk
 // and the cohesive stiffness added, lambda_max <= lambda_bulk + lambda_cohesive (Weyl), and

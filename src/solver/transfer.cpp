@@ -1,5 +1,5 @@
 // rupture/solver/transfer.cpp
-// Particle -> grid transfers of the time step (SPEC E4) and the MUSL re-map, through the
+// Particle -> grid transfers of the time step (theory E4) and the MUSL re-map, through the
 // two-colour strip plan of ScatterPlan. The grid -> particle gather (E5) is solver/gather.cpp.
 // Stencils: solver/stencil_batch.hpp.
 #include "solver/transfer.hpp"
@@ -19,7 +19,7 @@ using namespace detail;
 namespace {
 
 
-// -V sigma of particles [p0, p0 + n) (the internal force's factor, SPEC E4), SIMD over the
+// -V sigma of particles [p0, p0 + n) (the internal force's factor, theory E4), SIMD over the
 // batch: the current area V = V0 (1 + tr eps) with tr eps from the stress
 // (material/elastic.hpp: strain_trace), m^2 Pa.
 struct BatchForce {
@@ -86,7 +86,7 @@ void scatter_strip(State& s, int strip, std::size_t begin, std::size_t end) {
   for_each_in_batches(s, begin, end, [&](std::size_t p, int k, const StencilBatch& B) {
     const double m = P.mass[p];
     const Lane8 A = {m, m * P.vx[p], m * P.vy[p], 0, 0, 0, 0, 0};
-    // SPEC E4: f_i = -sum_p V_p sigma_p . grad S_ip
+    // theory E4: f_i = -sum_p V_p sigma_p . grad S_ip
     const Lane8 Fx = {0, 0, 0, f.xx[k], f.xy[k], 0, 0, 0};
     const Lane8 Fy = {0, 0, 0, f.xy[k], f.yy[k], 0, 0, 0};
     Lane8* t0 = tile + T.index(P.field[p], B.first_x[k], B.first_y[k]);

@@ -1,5 +1,5 @@
 // rupture/solver/transfer.hpp
-// Particle <-> grid transfers of the time step (SPEC E3-E5), each a free function over the
+// Particle <-> grid transfers of the time step (theory E3-E5), each a free function over the
 // State's plain arrays, per velocity field: the scatters use the race-free strip plan
 // (ScatterPlan, kept up to date by build_scatter_plan), the gathers plain parallel loops.
 // grid_to_particles throws SimulationError (what, where, when) on a non-finite particle or one

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Benchmark regression (SPEC §6, V_imp = 30 m/s): initiation 10.4 +- 0.3 us, sustained speed
+"""Benchmark regression (theory §6, V_imp = 30 m/s): initiation 10.4 +- 0.3 us, sustained speed
 2300 m/s +- 5 %, intersonic regime, energy balance (E14) within 0.5 % at the end and within 2 %
 over the whole history after the first microsecond (an offset of about 2 J/m appears during
 the 0.1 us rise of the impact, about three steps at the default safety; it is 0.9 % of the work

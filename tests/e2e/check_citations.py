@@ -1,7 +1,7 @@
 #!/usr/bin/python3
-"""Every equation and section the code cites resolves inside the checkout: each "SPEC En",
-"(En)" next to docs/theory.md, and "SPEC §n" in src/, tests/, bench/, examples/ and docs/ names
-a heading of docs/theory.md ("### (En) ..." or "## §n ...").
+"""Every equation and section the code cites resolves inside the checkout: each "theory En"
+(or the older "SPEC En") and "theory §n" ("SPEC §n") in src/, tests/, bench/, examples/ and
+docs/ names a heading of docs/theory.md ("### (En) ..." or "## §n ...").
 
   check_citations.py ROOT"""
 import os
@@ -12,8 +12,8 @@ root = sys.argv[1]
 theory = open(os.path.join(root, "docs", "theory.md"), encoding="utf-8").read()
 equations = set(re.findall(r"^#+ \((E\d+)\)", theory, re.M))
 sections = set(re.findall(r"^#+ §(\d+)", theory, re.M))
-cite_eq = re.compile(r"SPEC\s+(E\d+)(?:\s*[-–…]+\s*E?(\d+))?")
-cite_sec = re.compile(r"SPEC\s+§(\d+)")
+cite_eq = re.compile(r"(?:SPEC|theory)\s+(E\d+)(?:\s*[-–…]+\s*E?(\d+))?")
+cite_sec = re.compile(r"(?:SPEC|theory)\s+§(\d+)")
 missing = []
 count = 0
 for top in ("src", "tests", "bench", "examples", "docs", "fuzz", "scripts"):

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Freund's dynamic K_I(t) of a stationary crack whose faces are suddenly loaded by a pressure
-sigma* (Freund, Dynamic Fracture Mechanics, 1990, sec. 2.5; SPEC E18), from the interaction
+sigma* (Freund, Dynamic Fracture Mechanics, 1990, sec. 2.5; theory E18), from the interaction
 integral with the loaded-face term (docs/fracture.md): examples/mode_I.toml (the pre-crack's
 tip at x = 20 mm, sigma* = 5 MPa on both faces from t = 0, a Xu-Needleman weak plane ahead) with
 stress_intensity = true, 0.25 mm, to 2.6 us (before t_F = 2.59 us, when Freund's K_I reaches

@@ -49,7 +49,7 @@ if same:
 for name, r in zip(("rotated", "unrotated"), runs if not same else []):
     check(r["energy_balance_error"] <= 0.01, f"{name}: energy balance error {100 * r['energy_balance_error']:.2f} % "
           f"(final {100 * r['energy_balance_error_final']:.2f} %, limit 1 %)")
-# The shear Mach angles (SPEC E12, informative): an independent reading of the two speeds.
+# The shear Mach angles (theory E12, informative): an independent reading of the two speeds.
 if a.get("mach_angle") is not None and b.get("mach_angle") is not None:  # null: not measured
     print(f"Mach angle (median over the steady phase) {a['mach_angle']:.2f} vs {b['mach_angle']:.2f} deg, "
           f"implied speeds {a['mach_speed']:.1f} vs {b['mach_speed']:.1f} m/s")

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The shear Mach angle of the 30 m/s reference problem (SPEC E12, §6: about 33 degrees).
+"""The shear Mach angle of the 30 m/s reference problem (theory E12, §6: about 33 degrees).
 
 Usage: check_mach.py RUN_DIR
 

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Compares the crack figures of two finished runs (refined vs uniform grid at the same
-finest cell size, SPEC §5): initiation within 0.1 us, speed within 2 % over the same window, the
+finest cell size, theory §5): initiation within 0.1 us, speed within 2 % over the same window, the
 last 4 us of both runs (crack.last_window_speed; each run's steady phase is found in its own
 history, and two runs' phases need not coincide)."""
 import json

@@ -1,5 +1,5 @@
 """Freund's dynamic K_I(t) of a stationary semi-infinite crack whose faces are suddenly loaded by
-a pressure p (Freund, Dynamic Fracture Mechanics, 1990, sec. 2.5; SPEC E18), plane strain:
+a pressure p (Freund, Dynamic Fracture Mechanics, 1990, sec. 2.5; theory E18), plane strain:
     K_I(t) = 2 p sqrt(c_D t (1 - 2 nu) / pi) / (1 - nu),
 and the check the e2e scripts share: every row of stress_intensity_NAME.csv from 1.5 to 2.6 us
 (each domain) within 5 % of it, K_II within 1 % of K_I, J within 10.25 % (1.05^2 - 1) of

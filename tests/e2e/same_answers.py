@@ -4,9 +4,13 @@
 The set covers every shape the time step takes: one uniform grid (MUSL, USL, USF), the graded
 grid, nested levels (MUSL, USL, per-level steps), distributed runs on 2 and 3 ranks, a
 slip-weakening fault with absorbing edges and stations, [loads] velocity regions, and a run
-stopped and resumed from its checkpoint (compared with the uninterrupted run's files). For each
-run the written crack_tip.csv, history.csv and station files are compared with the recorded
-ones in tests/data/same_answers/<run>/ (gzip).
+stopped and resumed from its checkpoint (compared with the uninterrupted run's files); and the
+2D fracture and fault features: cracks that grow (Kalthoff-Winkler, the inclined centre crack
+kinking), branch (the branching plate), read K and J over time (the centre crack), follow ties
+into a bond (a crack growing into a bonded interface), and a rate-and-state fault (TPV101-2D,
+coarse). For each run the written crack_tip*.csv, crack_path_*.csv, stress_intensity_*.csv,
+rupture_time_*.csv, history.csv and station files are compared with the recorded ones in
+tests/data/same_answers/<run>/ (gzip).
 
 Bound (stated once): the files print 10 significant digits. Two values agree when they are the
 same text, or differ by at most 1e-12 of their column's largest magnitude in the reference
@@ -54,6 +58,19 @@ NESTED = ROSAKIS + BOXES + ["--set", 'grid.refinement="nested"', "--set", 'time.
 FAULT = [os.path.join(EX, "tpv205_2d.toml"), "--set", "grid.cell_size=400",
          "--set", "interface.fault.segments=100", "--set", "time.end=3"]
 LOADS = [os.path.join(ROOT, "tests", "inputs", "velocity_regions.toml")]
+# The fracture runs (whole examples of a few seconds, no snapshots or profiles).
+QUIET = ["--set", "output.snapshot_interval=0", "--set", "output.interface_interval=0"]
+KALTHOFF = [os.path.join(EX, "kalthoff_winkler.toml")] + QUIET
+BRANCHING = [os.path.join(EX, "dynamic_branching.toml")] + QUIET
+CENTRE = [os.path.join(EX, "centre_crack_tension.toml"), "--set", "time.end=300e-6"] + QUIET
+# The inclined centre crack (30 degrees) kinking by max_hoop (as e2e_mpi_growth_kink).
+KINK = [os.path.join(EX, "centre_crack_tension.toml"),
+        "--set", "interface.crack.points=[[-0.008660254037844387,-0.0049],[0.008660254037844387,0.0051]]",
+        "--set", 'interface.crack.growth="max_hoop"', "--set", "interface.crack.toughness=935738.96",
+        "--set", "loads.top.rise_time=150e-6", "--set", "loads.bottom.rise_time=150e-6",
+        "--set", "time.end=115e-6", "--set", "output.crack_sample_interval=5e-6"] + QUIET
+TIES = [os.path.join(EX, "crack_into_bond.toml")] + QUIET
+RATE_STATE = [os.path.join(EX, "tpv101_2d.toml"), "--set", "grid.cell_size=400", "--set", "time.end=4"] + QUIET
 
 # name: (case arguments, ranks, how: "run" or "resume" (stopped after 100 steps, resumed),
 #        the run whose references it is compared with)
@@ -70,12 +87,20 @@ RUNS = {
     "fault": (FAULT, 1, "run", None),
     "loads": (LOADS, 1, "run", None),
     "resumed": (UNIFORM, 1, "resume", "uniform_musl"),
+    "growth_kalthoff": (KALTHOFF, 1, "run", None),
+    "growth_branching": (BRANCHING, 1, "run", None),
+    "centre_crack_k": (CENTRE, 1, "run", None),
+    "growth_kink": (KINK, 1, "run", None),
+    "ties_into_bond": (TIES, 1, "run", None),
+    "rate_state": (RATE_STATE, 1, "run", None),
 }
 
 
 def outputs(run_dir):
     """The compared files of a run directory, relative paths."""
-    names = [f for f in ("crack_tip.csv", "history.csv") if os.path.exists(os.path.join(run_dir, f))]
+    prefixes = ("crack_tip", "crack_path_", "stress_intensity_", "rupture_time_")
+    names = sorted(f for f in os.listdir(run_dir) if f.endswith(".csv") and f.startswith(prefixes))
+    names += [f for f in ("history.csv",) if os.path.exists(os.path.join(run_dir, f))]
     st = os.path.join(run_dir, "stations")
     if os.path.isdir(st):
         names += sorted(os.path.join("stations", f) for f in os.listdir(st) if f.endswith(".csv"))

@@ -2,7 +2,7 @@
 // Comm::all_to_all (parallel/comm.hpp) under `mpirun -n N`: every rank sends rank q a message
 // of its own length (0 included, one far longer than the rest) and contents, in rounds of a
 // small chunk (1 byte, 7, 64, 1000 bytes) and of the default one; every rank checks each
-// message it received, byte for byte, and prints `all_to_all ok rounds_checked=K` on rank 0
+// message it received, byte for byte, and prints `all_to_all ok messages_checked=K` on rank 0
 // when all of them hold on every rank; Comm::sum_in_rank_order checked alike (the rank-order
 // sums, the same bits on every rank). Exit 0 then, 1 otherwise.
 #include <mpi.h>

@@ -1,4 +1,4 @@
-// Verification: a plane P wave through a bimaterial interface at normal incidence (SPEC E20).
+// Verification: a plane P wave through a bimaterial interface at normal incidence (theory E20).
 // A bar in uniaxial strain (rollers on top and bottom: v_y = 0) of Homalite (material 1,
 // x < 20 mm) and an aluminium-like material 2 (x > 20 mm, Z2/Z1 = 5.3) is pulled at its left
 // end with a smooth 1 us ramp to a constant velocity V (a tensile step wave). With
@@ -14,7 +14,7 @@
 // Three ways to join the materials:
 //   shared_field: two bodies in one velocity field: one continuum, a perfect bond;
 //   bonded:       two fields joined by an interface tied (bonded_points) over its whole length;
-//   cohesive:     two fields joined by an intact Xu-Needleman interface (SPEC parameters). It is
+//   cohesive:     two fields joined by an intact Xu-Needleman interface (the paper's parameters). It is
 //                 a spring of stiffness K = e sigma_max / delta_n = 1.63e14 Pa/m in series:
 //                 a step is transmitted with the bonded amplitude after a relaxation time
 //                 tau = Z1 Z2 / ((Z1 + Z2) K) = 16 ns (the jump sigma/K rises to its final

@@ -1,4 +1,4 @@
-// Verification of the cohesive interface (SPEC §3, E7-E9, E14): no spurious jumps under
+// Verification of the cohesive interface (theory §3, E7-E9, E14): no spurious jumps under
 // rigid motion or uniform stretch, a bonded interface equals one body, and separating a strip
 // dissipates phi_n per unit length.
 #include <gtest/gtest.h>

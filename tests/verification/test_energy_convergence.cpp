@@ -1,4 +1,4 @@
-// Verification: energy balance of an elastic impact (SPEC E14), spatial convergence on a
+// Verification: energy balance of an elastic impact (theory E14), spatial convergence on a
 // standing wave with a known solution, and thread-count independence of the results.
 #include <gtest/gtest.h>
 #include <omp.h>

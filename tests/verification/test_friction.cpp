@@ -119,7 +119,7 @@ TEST(Friction, block_slides_once_the_push_exceeds_mu_times_the_normal_force) {
   ASSERT_GT(slide_time, 0.0) << "the block never slid";
   EXPECT_NEAR(push_at_slide, 1.0, 0.02) << "sliding must start at push = mu N within 2 %";
   // Under pressure p the penalty leaves p / k of interpenetration: 1e-9 m here, within 1 % of
-  // the reference law's delta_n = 0.4 um (SPEC §3).
+  // the reference law's delta_n = 0.4 um (theory §3).
   EXPECT_LT(max_penetration, 0.01 * 0.4e-6);
   EXPECT_GT(max_penetration, 0.0) << "the faces must be pressed together";
 }

@@ -1,4 +1,4 @@
-// Verification: initiation of a mode I cohesive crack under Freund's crack-face loading (SPEC
+// Verification: initiation of a mode I cohesive crack under Freund's crack-face loading (theory
 // E18). A semi-infinite crack in an unbounded plane-strain solid, at rest, whose faces are
 // suddenly loaded at t = 0 by a uniform pressure sigma* (the upper face pushed up, the lower
 // down) has the stress intensity factor
@@ -10,8 +10,8 @@
 // / (4 sigma*^2 c_D (1 - 2 nu)).
 //
 // Model: a Homalite plate 30 x 20 mm, two bodies (y > 0 and y < 0, two velocity fields); a
-// pre-crack with no interface from x = 0 to a = 20 mm, a Xu-Needleman weak plane (SPEC
-// parameters, tau_max = sigma_max) from a to the right edge. The crack faces carry the step
+// pre-crack with no interface from x = 0 to a = 20 mm, a Xu-Needleman weak plane (the
+// paper's parameters, tau_max = sigma_max) from a to the right edge. The crack faces carry the step
 // traction (loads with bodies = [...], normal = -sigma*). The formula holds until a wave from
 // the plate's edges reaches the tip: from the loaded faces' end at the left edge (a / c_D =
 // 7.9 us), the top and bottom edges (2 H / c_D = 7.9 us) and the right edge (2 (W - a) / c_D).

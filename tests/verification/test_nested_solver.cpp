@@ -1,4 +1,4 @@
-// Verification of the time step on nested levels (solver/nested_state.hpp, SPEC §5): the
+// Verification of the time step on nested levels (solver/nested_state.hpp, theory §5): the
 // refinement checks of test_refinement.cpp (a plane wave through coarse -> fine -> coarse
 // transitions: < 2 % reflected, arrival within 1 %, energy balance within 1 %) now with the
 // real phases of the solver on each level, and a free block translating through transitions
@@ -324,7 +324,7 @@ TEST(NestedSolver, interfaces_on_two_levels_step_each_on_its_own) {
                             "grid.refine.a={min=[0.0,-0.06],max=[0.075,0.04],level=1}",
                             "grid.refine.b={min=[0.0,-0.06],max=[0.075,0.004],level=2}"});
   RunState s = make_run_state(c);
-  ASSERT_TRUE(s.joined());
+  ASSERT_TRUE(s.is_nested());
   EXPECT_TRUE(s.holds_interfaces(1) && s.holds_interfaces(2) && !s.holds_interfaces(0));
   EXPECT_EQ(s.interface_levels, (std::vector<int>{2, 1}));
   ASSERT_EQ(s.num_interfaces(), 2u);
@@ -448,7 +448,7 @@ cell_size = 0.25e-3
   // make_run_state gives the nested run: every level's particles (merged for the writers),
   // the levels stepping; make_state is one grid's.
   RunState s = make_run_state(nested);
-  ASSERT_TRUE(s.joined());
+  ASSERT_TRUE(s.is_nested());
   EXPECT_EQ(all_particles(s).size(), held_particles(s));
   EXPECT_EQ(s.levels.size(), 3u);
   EXPECT_THROW((void)make_state(nested), std::logic_error);
@@ -482,7 +482,7 @@ void check_nested_checkpoint(const Case& c, int before, int after, bool expect_m
   const CaseSource source{"title = \"x\"\n", "case.toml", {}};
   RunContext a;
   a.s = make_run_state(c);
-  ASSERT_TRUE(a.s.joined());
+  ASSERT_TRUE(a.s.is_nested());
   for (int k = 0; k < before || !synchronized(a.s); ++k) step(a.s);  // a checkpoint's time
   const long moved = a.s.migrations;
   const std::string bytes = checkpoint_bytes(source, a);
@@ -630,7 +630,7 @@ TEST(NestedSolver, per_level_steps_keep_momentum_and_energy_over_a_long_free_vib
 }
 
 // Four blocks in four velocity fields (20 field arrays in a transition pass: more than one
-// pass of kMaxColumns, solver/nested_step.cpp) translate rigidly through the level transitions
+// pass of kMaxColumns, solver/transitions.cpp) translate rigidly through the level transitions
 // (3 mm at 120 m/s: two blocks enter the fine box, two leave it) as one block does: every particle keeps its velocity, no stress arises, mass and momentum
 // are kept to round-off.
 TEST(NestedSolver, four_fields_translate_rigidly_through_transitions) {

@@ -1,9 +1,9 @@
-// Verification of nested levels with transition nodes (grid/nested.hpp, SPEC §5) before the
+// Verification of nested levels with transition nodes (grid/nested.hpp, theory §5) before the
 // time step uses them: a plane P-wave pulse through a strip whose middle band is refined twice
 // (coarse -> fine -> finer -> fine -> coarse along the path, hanging nodes along the band's
 // top and bottom) must reflect < 2 % of its amplitude, arrive within 1 % of the analytic time
 // and keep the energy balance within 1 %: the checks the graded grid passes in
-// test_refinement.cpp. The MUSL step below is the method of SPEC E3-E5 over plain arrays with
+// test_refinement.cpp. The MUSL step below is the method of theory E3-E5 over plain arrays with
 // the nested grid's condense (after every scatter) and distribute (before every gather); it is
 // this test's harness, not the solver's time step.
 #include <gtest/gtest.h>
@@ -50,7 +50,7 @@ struct Weights {
 
 Weights weights(const NestedGrid& g, double x, double y, double lp) {
   const int l = g.level_of(x, y);
-  const Level& L = g.levels[std::size_t(l)];
+  const LevelLattice& L = g.levels[std::size_t(l)];
   Stencil1D sx, sy;
   stencil(L.x, x, lp, sx);
   stencil(L.y, y, lp, sy);
@@ -88,7 +88,7 @@ PulseRun pulse(const std::vector<RefineBox>& boxes, double rise, double dt, doub
   // 2 x 2 particles per cell of the level that owns the cell.
   Particles2D p;
   for (std::size_t l = 0; l < g.levels.size(); ++l) {
-    const Level& L = g.levels[l];
+    const LevelLattice& L = g.levels[l];
     for (int j = 0; j < L.y.cells; ++j)
       for (int i = 0; i < L.x.cells; ++i)
         for (int b = 0; b < 2; ++b)

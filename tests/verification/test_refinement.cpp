@@ -1,4 +1,4 @@
-// Verification of the graded (refined) grid, SPEC §2 (E3) and §5: weights across every kind
+// Verification of the graded (refined) grid, theory §2 (E3) and §5: weights across every kind
 // of cell boundary, a plane wave crossing coarse -> fine -> coarse transitions (reflection,
 // arrival time) and the energy balance of an impact through refined regions.
 #include <gtest/gtest.h>
@@ -14,7 +14,7 @@ using namespace rupture;
 namespace {
 
 // Hat function of node i on a graded axis, integrated over the particle box by the midpoint
-// rule: the definition of the GIMP weight (SPEC E3), independent of the closed form.
+// rule: the definition of the GIMP weight (theory E3), independent of the closed form.
 double quadrature_weight(const Axis& a, int i, double xp, double lp) {
   const int n = 4000;
   double sum = 0.0;

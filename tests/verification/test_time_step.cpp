@@ -1,4 +1,4 @@
-// Verification of the time-step bound (SPEC E6, docs/time_step.md): the largest eigenvalue of
+// Verification of the time-step bound (theory E6, docs/time_step.md): the largest eigenvalue of
 // the discrete GIMP operator M^-1 K, found by power iteration on the code's own phases,
 // against the analytic bound lambda_bulk = (2 c_D / h)^2 the step uses.
 #include <gtest/gtest.h>
@@ -61,7 +61,7 @@ double bulk_max_eigenvalue(State& s, int iterations) {
   return lambda;
 }
 
-// Two Homalite blocks 8 x 4 mm joined by the SPEC's Xu-Needleman interface along y = 0,
+// Two Homalite blocks 8 x 4 mm joined by the paper's Xu-Needleman interface along y = 0,
 // the upper one pulled up at its top edge (mode I), at cell size h.
 Case pulled_pair(double h, double safety) {
   return parse_case(fmt::format(R"({}
@@ -134,7 +134,7 @@ TEST(TimeStep, cohesive_forces_on_the_two_fields_sum_to_zero_next_to_a_bonded_st
   EXPECT_LT(std::fabs(sum_y), 1e-13 * scale);
 }
 
-// SPEC E6 at rest: the per-step bound from the face stencils and masses equals the lumped
+// theory E6 at rest: the per-step bound from the face stencils and masses equals the lumped
 // estimate `rupture check` prints (faces on their node row, row mass rho h^2 / 2, stiffness
 // 2 e sigma_max / delta_n with the penalty), and the step is safety x that.
 TEST(TimeStep, per_step_cohesive_bound_at_rest_matches_the_lumped_estimate) {

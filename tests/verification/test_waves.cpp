@@ -1,4 +1,4 @@
-// Verification against analytic 1D elastodynamics (SPEC E1, E4-E6): a plane-strain strip
+// Verification against analytic 1D elastodynamics (theory E1, E4-E6): a plane-strain strip
 // hit at one end carries a step wave at c_D (P) or c_S (S) with plateau stress rho c v.
 #include <gtest/gtest.h>
 
@@ -48,7 +48,7 @@ TEST(Waves, measured_p_and_s_wave_speeds_match_spec_E1) {
     const double t2 = test::arrival_time(s, end, x2, 0.25 * h, pr.stress, plateau);
     const double speed = (x2 - x1) / (t2 - t1);
     EXPECT_NEAR(speed, pr.c, 0.02 * pr.c) << pr.drive << "-driven wave";
-    std::printf("%s wave: measured %.1f m/s, SPEC E1 %.1f m/s (%.2f %%)\n",
+    std::printf("%s wave: measured %.1f m/s, theory E1 %.1f m/s (%.2f %%)\n",
                 pr.drive[0] == 'x' ? "P" : "S", speed, pr.c, 100 * (speed - pr.c) / pr.c);
   }
 }
