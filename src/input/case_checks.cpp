@@ -238,8 +238,8 @@ void warn_long_run(Case& c, const CaseSummary& s) {
       "the run takes {:.0f} time steps (more than 1e7): time.end = {:g} s at dt = {:.4g} s ({}); "
       "check time.end and grid.cell_size",
       s.steps_exact, c.time.end, s.dt,
-      s.dt < s.dt_cfl ? "the cohesive stability limit x time.cohesive_safety, theory E6"
-                      : "time.cfl x the smallest cell / c_D, theory E6"));
+      s.dt < s.dt_cfl ? "the cohesive stability limit x time.cohesive_safety, docs/theory.md E6"
+                      : "time.cfl x the smallest cell / c_D, docs/theory.md E6"));
 }
 
 // A Ricker wavelet of peak frequency f0 carries energy up to about 2.5 f0 (its spectrum there is
@@ -294,18 +294,18 @@ void check_run_limits(const Case& c, const CaseSummary& s) {
       continue;
     fail("materials." + m.name, fmt::format("{{youngs_modulus = {:g} Pa, density = {:g} kg/m^3}}",
                                             m.youngs_modulus, m.density),
-         fmt::format("the wave speeds (c_D = {:g} m/s, c_S = {:g} m/s, theory E1) must be finite and "
+         fmt::format("the wave speeds (c_D = {:g} m/s, c_S = {:g} m/s, docs/theory.md E1) must be finite and "
                      "positive: the modulus over the density is out of range of a double",
                      w.dilatational, w.shear));
   }
   if (!(std::isfinite(s.dt) && s.dt > 0))
     fail("time.cfl", c.time.cfl,
-         fmt::format("the time step dt = {:g} s (theory E6, from grid.cell_size = {:g} m) must be finite "
+         fmt::format("the time step dt = {:g} s (docs/theory.md E6, from grid.cell_size = {:g} m) must be finite "
                      "and positive", s.dt, c.grid.cell_size));
   if (!(s.steps_exact <= kMostSteps))
     fail("time.end", c.time.end,
          fmt::format("at dt = {:.4g} s (time.cfl x the smallest cell {:g} m / c_D, or the cohesive "
-                     "limit, theory E6) the run takes {:.4g} steps; at most {:.4g} (2^52 x 1e-6: beyond, "
+                     "limit, docs/theory.md E6) the run takes {:.4g} steps; at most {:.4g} (2^52 x 1e-6: beyond, "
                      "the time's round-off exceeds the output schedules' tolerance of 1e-6 dt)",
                      s.dt, s.min_cell_size, s.steps_exact, kMostSteps));
   constexpr double kIds = 4294967295.0;  // particle ids and node indices are 32-bit

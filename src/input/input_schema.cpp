@@ -128,7 +128,7 @@ std::vector<KeyDoc> build_schema() {
       {"materials", "named tables", "", "required", "at least one material, at most 255",
        "Isotropic linear elastic materials, one [materials.NAME] table each; bodies name them.",
        ""},
-      {"materials.*", "table", "", "", "", "One material (theory E1, E5).", ""},
+      {"materials.*", "table", "", "", "", "One material (docs/theory.md E1, E5).", ""},
       {"materials.*.youngs_modulus", "number", "Pa",
        "required, unless p_wave_speed and s_wave_speed are given", "> 0", "Young's modulus E",
        "5.2e9"},
@@ -151,7 +151,7 @@ std::vector<KeyDoc> build_schema() {
 
       {"grid", "table", "", "required", "",
        "The background grid: a rectangular domain of square cells, optionally refined in nested "
-       "boxes (theory §5, README: Mesh refinement).",
+       "boxes (docs/theory.md §5, README: Mesh refinement).",
        ""},
       {"grid.min", "[x, y]", "m", "required", "finite", "lower-left corner of the domain",
        "[0.0, -0.15]"},
@@ -220,7 +220,7 @@ std::vector<KeyDoc> build_schema() {
 
   const std::vector<KeyDoc> time_solver = {
       {"time", "table", "", "required", "",
-       "The run's length and time step (theory E6, docs/time_step.md).", ""},
+       "The run's length and time step (docs/theory.md E6, docs/time_step.md).", ""},
       {"time.end", "number", "s", "required", "> 0", "simulated time to run to", "19.2e-6"},
       {"time.cfl", "number", "", fmt::format("{:g}", TimeSpec{}.cfl), "(0, 1]",
        "Courant number: dt <= cfl h / c_D at the smallest cell", "0.4"},
@@ -267,7 +267,7 @@ std::vector<KeyDoc> build_schema() {
        "condition drives",
        "the absorbing edges", "[\"left\", \"right\", \"bottom\"]"},
       {"boundary", "named tables", "", "none", "",
-       "Prescribed velocities on edges of the domain, one [boundary.NAME] table each (theory E2).",
+       "Prescribed velocities on edges of the domain, one [boundary.NAME] table each (docs/theory.md E2).",
        ""},
       {"boundary.*", "table", "", "", "",
        "One velocity condition: a component on (part of) an edge, driven by a time function.", ""},
@@ -353,7 +353,7 @@ std::vector<KeyDoc> build_schema() {
   const std::vector<KeyDoc> interfaces = {
       {"interface", "named tables", "", "none", "",
        "Cohesive interfaces, one [interface.NAME] table each, joining two bodies of different "
-       "velocity fields, or lying inside one body, which is split along it (theory §3, "
+       "velocity fields, or lying inside one body, which is split along it (docs/theory.md §3, "
        "docs/interfaces.md, docs/cohesive_laws.md).",
        ""},
       {"interface.*", "table", "", "", "",
@@ -417,10 +417,10 @@ std::vector<KeyDoc> build_schema() {
        "depends: from q, q e sigma_max delta_n / (sqrt(e/2) tau_max)", "> 0",
        "tangential characteristic opening (G_IIc = sqrt(e/2) tau_max delta_t)", "1.32e-6",
        "law = xu_needleman"},
-      {"interface.*.q", "number", "", "1.0", "> 0", "q = phi_t / phi_n (theory E7)", "1.0",
+      {"interface.*.q", "number", "", "1.0", "> 0", "q = phi_t / phi_n (docs/theory.md E7)", "1.0",
        "law = xu_needleman"},
       {"interface.*.r", "number", "", "0.0", ">= 0 and differ from 1",
-       "Xu-Needleman coupling parameter r (theory E7)", "0.0", "law = xu_needleman"},
+       "Xu-Needleman coupling parameter r (docs/theory.md E7)", "0.0", "law = xu_needleman"},
       {"interface.*.penalty", "number", "", "1.0", ">= 0",
        "interpenetration penalty, a multiple of phi_n/delta_n^2 (xu_needleman) or of "
        "sigma_max/(lambda0 delta_nc) (bilinear)",
@@ -707,12 +707,12 @@ std::vector<KeyDoc> build_schema() {
       {"output.station_interval", "number", "s", "0", ">= 0 (s; 0 = every step)",
        "station samples (stations/*.csv) interval", "0.005"},
       {"output.crack_sample_interval", "number", "s", "depends: max(0.05e-6, time.end / 384)", "> 0",
-       "crack-tip sampling interval (theory E10); speeds use 31 samples (E11)", "0.02e-6"},
+       "crack-tip sampling interval (docs/theory.md E10); speeds use 31 samples (E11)", "0.02e-6"},
       {"output.interface_interval", "number", "s", "depends: output.snapshot_interval",
        ">= 0 (s; 0 = none)", "interface profiles (interface/interface_*.csv) interval", "0.2e-6"},
       {"output.mach_interval", "number", "s", "depends: output.snapshot_interval",
        ">= 0 (s; 0 = none)",
-       "shear Mach-angle readings behind intersonic tips (theory E12; mach_angle.csv) interval",
+       "shear Mach-angle readings behind intersonic tips (docs/theory.md E12; mach_angle.csv) interval",
        "1e-6"},
       {"output.snapshot_region_min", "[x, y]", "m", "none (the whole domain)",
        "given together with snapshot_region_max",

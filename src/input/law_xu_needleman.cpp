@@ -62,7 +62,7 @@ std::string describe(const InterfaceSpec& is) {
 LawEntry xu_needleman_entry() {
   return {XuNeedleman::kName,
           "the Xu-Needleman exponential traction-separation law with an interpenetration "
-          "penalty (theory E7-E8), separated at |jump| = separation x delta_t",
+          "penalty (docs/theory.md E7-E8), separated at |jump| = separation x delta_t",
           "",
           law_alternative<XuNeedleman>(),
           false,

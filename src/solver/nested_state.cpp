@@ -145,7 +145,7 @@ void migrate(RunState& n) {
         throw SimulationError(fmt::format(
             "GIMP contract broken at step {}, t = {:.6g} s: particle {} (field {}) at (x, y) = "
             "({:.6g}, {:.6g}) m with half-width {:.4g} m entered nested level {} ({:.4g} m "
-            "cells): 2 l_p exceeds the cell, so its 3-node stencil (theory E3) loses a node. It "
+            "cells): 2 l_p exceeds the cell, so its 3-node stencil (docs/theory.md E3) loses a node. It "
             "was made on a level at least two coarser; widen the boxes between (the nesting "
             "band) so that moving material stays within one level of where it started",
             n.step, n.time, arriving[d].id[p], int(arriving[d].field[p]), arriving[d].x[p],

@@ -47,7 +47,7 @@ void check_gimp_contract(State& s) {
         "GIMP contract broken at step {}, t = {:.6g} s: particle {} (field {}) at (x, y) = "
         "({:.6g}, {:.6g}) m with half-widths (l_x, l_y) = ({:.4g}, {:.4g}) m spans, along {}, "
         "[{:.6g}, {:.6g}] m, which holds cell (column {}, row {}) of width {:.4g} m whole: its "
-        "3-node stencil (theory E3) loses a node: the box may overlap at most two cells, so 2 l_p "
+        "3-node stencil (docs/theory.md E3) loses a node: the box may overlap at most two cells, so 2 l_p "
         "must not exceed the width of a cell it reaches. A particle keeps the size of the cell "
         "it was made in (l_p = a quarter of it at 2 x 2 per cell), so this one came from cells "
         "more than twice as wide. Move the refinement-box transition further from moving "

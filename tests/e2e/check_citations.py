@@ -12,8 +12,8 @@ root = sys.argv[1]
 theory = open(os.path.join(root, "docs", "theory.md"), encoding="utf-8").read()
 equations = set(re.findall(r"^#+ \((E\d+)\)", theory, re.M))
 sections = set(re.findall(r"^#+ §(\d+)", theory, re.M))
-cite_eq = re.compile(r"(?:SPEC|theory)\s+(E\d+)(?:\s*[-–…]+\s*E?(\d+))?")
-cite_sec = re.compile(r"(?:SPEC|theory)\s+§(\d+)")
+cite_eq = re.compile(r"(?:SPEC|theory|theory\.md)\s+(E\d+)(?:\s*[-–…]+\s*E?(\d+))?")
+cite_sec = re.compile(r"(?:SPEC|theory|theory\.md)\s+§(\d+)")
 missing = []
 count = 0
 for top in ("src", "tests", "bench", "examples", "docs", "fuzz", "scripts"):
