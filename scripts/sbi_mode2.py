@@ -4,9 +4,9 @@ homogeneous elastic full space with rate-and-state friction: the method of the T
 references (uguca), written here from its equations, so that the references' own method can be
 run on finer grids than the one stored (docs/faults.md, TPV103-2D).
 
-Usage:  scripts/sbi_mode2.py tpv103|tpv101 CELL_M [END_S] [OUT.csv]
-Needs numpy and mpmath (Debian: python3-numpy, python3-mpmath; the kernel is computed once, about
-4 minutes, and cached in /tmp).
+Usage:  scripts/sbi_mode2.py tpv103|tpv101 CELL_M [END_S] [OUT.csv] [--tail full|static|cut]
+                             [--tcut 100] [--check-kernel]
+Needs numpy and scipy (Debian: python3-numpy, python3-scipy; mpmath only for --check-kernel).
 Prints the rupture time (slip rate above 1 mm/s), peak slip rate and final slip at the stations
 0, 2.5, 5, 7.5, 9, 12, 15, 18 km and the arrest position; OUT.csv gets the rupture-time profile
 and OUT_stations.csv every step's time, slip (m), slip rate (m/s) and shear traction (Pa) at
@@ -22,8 +22,33 @@ is the full space's mode II stiffness in the scaled Laplace variable s = p / (|k
     R(s) = (2 + s^2)^2 - 4 alpha beta, alpha = sqrt(1 + s^2 / eta^2), beta = sqrt(1 + s^2),
 eta = c_P / c_S (derived in the docs from the half-space y > 0 with the tangential displacement
 delta/2 and no normal-traction change, which is the antisymmetry of mode II; G(0) = 2 (1 -
-1/eta^2) = 1/(1 - nu) is the static stiffness and G(s) -> s the radiation damping). C is
-inverted with mpmath's Talbot method on 0 <= T <= 100 and cut there, as uguca's tables are.
+1/eta^2) = 1/(1 - nu) is the static stiffness and G(s) -> s the radiation damping).
+
+The kernel in closed form. G(s) - s = (beta - s) + 3/beta + 4 (1/beta - alpha)/s^2, and term by
+term (beta - s <-> J1(T)/T, 1/beta <-> J0(T), alpha - s/eta <-> J1(eta T)/T, 1/s^2 <-> T):
+    C(T) = J1(T)/T + 3 J0(T) - 4 J0(eta T)/eta + 4 T [A(T) - A(eta T) - J1(T) + J1(eta T)],
+with A(x) = int_0^x J0 and C(0) = 3.5 - 4/eta. It agrees with mpmath's numerical inversion
+(Talbot; --check-kernel) to 3e-13 on 0 <= T <= 100 (the earlier version of this script tabulated
+that inversion). Its tail is slow: C(T) ~ -J0(T) ~ -sqrt(2/(pi T)) cos(T - pi/4), so
+int_0^T C oscillates about G(0) with the amplitude sqrt(2/(pi T)) (0.08 at T = 100):
+int_0^100 C = 1.412 against G(0) = 1.333 (eta = 6000/3464).
+
+The tail (--tail). Cut at T_cut (--tail cut, this script's earlier behaviour; uguca's tables
+are cut at 100 too), each mode keeps, once |k| c_s t > T_cut, the stiffness int_0^T_cut C
+(1.41) instead of G(0) (1.33): 6 % too stiff late in the run for the short waves (wavelengths
+below about 2.6 km by 12 s at T_cut = 100). --tail full (the default) keeps the whole kernel and
+every mode's whole history: no cut; the cost grows as the square of the number of steps (TPV103
+to 12 s: 1 min at 100 m on 2 cores). --tail static keeps the kernel exact to T_cut and adds the
+rest of its integral, G(0) - int_0^T_cut C, to the step that crosses T_cut (the convolution of
+the slip rate with the step response G(0) - int_0^T C, cut there, as Lapusta et al. 2000): the
+static stiffness is exact, but the slip-rate history older than T_cut / (|k| c_s) is left out,
+and with this slowly decaying kernel that is not small. TPV103-2D at 100 m, slip at 9 s against
+the converged reference (tests/data/validation/tpv103-2d-converged, 25 m) at 0 / 9 / 15 km and
+the arrest (24.95 km there): full -0.1 / +0.5 / +2.5 %, 25.9 km; static +3.9 / +5.2 / +8.2 %,
+27.7 km; cut +6.5 / +8.4 / +10.9 %, no arrest by 12 s (docs/faults.md, TPV103-2D).
+uguca's in-plane kernels (H00, H01, H11, tabulated to T = 100) decay faster: with its tables
+the static stiffness of the mode II combination, int H00 - ((2 - eta) + int H01)^2 / int H11 with
+each integral to T = 100, is 1.3342, 0.07 % above G(0).
 
 Time step: dt = 0.1 dx / c_S (uguca's choice). Each step, predictor-corrector (Heun): the slip
 and the state move over dt with the slip rate V* (V_n, then (V_n + V_n+1)/2), the functional is
@@ -44,56 +69,97 @@ MU = RHO * CS * CS
 SIGMA, TAU0 = 120e6, 40e6
 V0, F0 = 1e-6, 0.6
 L_PERIOD = 72e3
-T_CUT = 100.0
 
 
-def kernel_table(eta, dT=0.01):
-    """C(T) on [0, T_CUT] (rows T, C), computed once and cached in /tmp."""
-    cache = f"/tmp/sbi_mode2_kernel_eta{eta:.6f}_dT{dT}.npy"
+def int_j0(x):
+    """A(x) = int_0^x J0, elementwise for x >= 0. scipy's itj0y0 is off by up to 5e-10 near
+    x = 20, where it changes method (the kernel multiplies A by 4 T), so below 40: 16-point
+    Gauss-Legendre on pieces 0.05 wide (1e-15)."""
+    from scipy import special as sp
+    x = np.asarray(x, dtype=float)
+    out = np.array(sp.itj0y0(x)[0], dtype=float)
+    low = x < 40.0
+    if np.any(low):
+        g, w = np.polynomial.legendre.leggauss(16)
+        h = 0.05
+        edges = np.arange(0.0, 40.0 + h, h)
+        mids = 0.5 * (edges[1:] + edges[:-1])
+        pieces = (0.5 * h * w[None, :] * sp.j0(mids[:, None] + 0.5 * h * g[None, :])).sum(1)
+        A_edge = np.concatenate([[0.0], np.cumsum(pieces)])
+        xl = x[low]
+        i = np.minimum((xl / h).astype(int), edges.size - 1)
+        a = edges[i]
+        part = (0.5 * (xl - a)[:, None] * w[None, :]
+                * sp.j0(0.5 * (a + xl)[:, None] + 0.5 * (xl - a)[:, None] * g[None, :])).sum(1)
+        out[low] = A_edge[i] + part
+    return out
+
+
+def kernel_C(T, eta):
+    """The mode II kernel C(T) in closed form (module docstring)."""
+    from scipy import special as sp
+    T = np.asarray(T, dtype=float)
+    Ts = np.where(T > 1e-6, T, 1.0)
+    eT = eta * Ts
+    C = (sp.j1(Ts) / Ts + 3 * sp.j0(Ts) - 4 * sp.j0(eT) / eta
+         + 4 * Ts * (int_j0(Ts) - int_j0(eT) - sp.j1(Ts) + sp.j1(eT)))
+    return np.where(T > 1e-6, C, 3.5 - 4 / eta)
+
+
+def kernel_table(eta, T_max, dT=0.01):
+    """Rows T, I(T) = int_0^T C on 0 <= T <= T_max (Simpson on each dT; cached in /tmp)."""
+    n = int(math.ceil(T_max / dT))
+    cache = f"/tmp/sbi_mode2_kernel_closed_eta{eta:.6f}_dT{dT}_n{n}.npy"
     if os.path.exists(cache):
         return np.load(cache)
-    import mpmath as mp
-
-    def G_minus_s(s):
-        # beta = sqrt(1 + s^2) and alpha written as s sqrt(1 + 1/s^2) (and alike), whose
-        # principal branches put the cuts on the imaginary segments [-i, i] and [-i eta, i eta]:
-        # analytic right of them, as Talbot's contour needs.
-        e = mp.sqrt(mp.mpf(eta) ** 2)
-        b = s * mp.sqrt(1 + 1 / (s * s))
-        a = (s / e) * mp.sqrt(1 + e * e / (s * s))
-        R = (2 + s * s) ** 2 - 4 * a * b
-        return R / (s * s * b) - s
-
-    # Talbot's sum loses digits to cancellation as T grows: 20 + 1.5 T digits (checked: the
-    # values at T = 50, 75, 100 agree to 10 digits between 150 and 200 digits).
-    Tc = np.arange(0.0, T_CUT + 1e-9, 0.05)
-    Cc = np.empty_like(Tc)
-    for i, t in enumerate(Tc):
-        mp.mp.dps = int(30 + 1.5 * t)
-        Cc[i] = float(mp.invertlaplace(G_minus_s, max(t, 1e-9), method="talbot"))
-    T = np.arange(0.0, T_CUT + 1e-9, dT)
-    C = np.interp(T, Tc, Cc)
-    table = np.vstack([T, C])
+    T = np.arange(n + 1) * dT
+    C = kernel_C(T, eta)
+    Cm = kernel_C(T[:-1] + 0.5 * dT, eta)
+    I = np.concatenate([[0.0], np.cumsum(dT / 6 * (C[:-1] + 4 * Cm + C[1:]))])
+    table = np.vstack([T, I])
     np.save(cache, table)
     return table
 
 
-def cumulative(T, C):
-    I = np.zeros_like(C)
-    I[1:] = np.cumsum(0.5 * (C[1:] + C[:-1]) * np.diff(T))
-    return I
+def check_kernel(eta):
+    """The closed form against mpmath's Talbot inversion of G(s) - s (the earlier table)."""
+    import mpmath as mp
+
+    def G_minus_s(s):
+        # beta and alpha written as s sqrt(1 + 1/s^2) (and alike): branch cuts on the imaginary
+        # segments [-i, i] and [-i eta, i eta], analytic right of them, as Talbot's contour needs.
+        e = mp.mpf(eta)
+        b = s * mp.sqrt(1 + 1 / (s * s))
+        a = (s / e) * mp.sqrt(1 + e * e / (s * s))
+        return ((2 + s * s) ** 2 - 4 * a * b) / (s * s * b) - s
+
+    worst = 0.0
+    for t in (0.0, 0.5, 1.0, 2.0, 5.0, 10.0, 20.0, 35.0, 50.0, 75.0, 100.0):
+        mp.mp.dps = int(30 + 1.5 * t)  # Talbot loses digits to cancellation as T grows
+        ref = float(mp.invertlaplace(G_minus_s, max(t, 1e-9), method="talbot"))
+        c = float(kernel_C(np.array([t]), eta)[0])
+        worst = max(worst, abs(c - ref))
+        print(f"T = {t:6.1f}: closed form {c:+.12f}, Talbot {ref:+.12f}")
+    print(f"largest difference {worst:.2e}")
 
 
 def main():
-    case = sys.argv[1]
-    dx = float(sys.argv[2])
-    t_end = float(sys.argv[3]) if len(sys.argv) > 3 else 12.0
-    out = sys.argv[4] if len(sys.argv) > 4 else None
+    import argparse
+    ap = argparse.ArgumentParser(description="spectral BI solver, mode II (module docstring)")
+    ap.add_argument("case", choices=("tpv103", "tpv101"))
+    ap.add_argument("dx", type=float)
+    ap.add_argument("t_end", type=float, nargs="?", default=12.0)
+    ap.add_argument("out", nargs="?", default=None)
+    ap.add_argument("--tail", choices=("full", "static", "cut"), default="full")
+    ap.add_argument("--tcut", type=float, default=100.0)
+    ap.add_argument("--check-kernel", action="store_true")
+    args = ap.parse_args()
+    case, dx, t_end, out = args.case, args.dx, args.t_end, args.out
     eta = CP / CS
-    T, C = kernel_table(eta)
-    I = cumulative(T, C)
-    print(f"kernel: C(0) = {C[0]:.6f}, int_0^{T_CUT:g} C dT = {I[-1]:.6f} "
-          f"(G(0) = 2 (1 - 1/eta^2) = {2 * (1 - 1 / eta**2):.6f}, the static stiffness)")
+    G0 = 2 * (1 - 1 / eta**2)  # the static stiffness
+    if args.check_kernel:
+        check_kernel(eta)
+        return
 
     N = int(round(L_PERIOD / dx))
     x = (np.arange(N) - N // 2) * dx  # hypocentre on node N // 2
@@ -102,18 +168,41 @@ def main():
     nt = int(math.ceil(t_end / dt))
     k = 2 * np.pi * np.fft.rfftfreq(N, d=dx)  # >= 0
     nk = k.size
-    # Step weights W[m, j] = int over the m-th step of C(k c_s tau) k c_s dtau (0 past T_CUT).
     M = nt + 1
+    T_cut = args.tcut
+    T_max = k[-1] * CS * dt * (M + 1) if args.tail == "full" else T_cut
+    T, I = kernel_table(eta, T_max)
+    I_cut = np.interp(T_cut, T, I) if args.tail != "full" else math.nan
+    print(f"kernel (closed form): C(0) = {3.5 - 4 / eta:.6f}, int_0^{T_cut:g} C dT = "
+          f"{np.interp(T_cut, T, I) if T[-1] >= T_cut else math.nan:.6f}, G(0) = 2 (1 - 1/eta^2) "
+          f"= {G0:.6f} (the static stiffness); tail: {args.tail}")
+    # Step weights W[m, j] = int over the m-th step of C(k c_s tau) k c_s dtau.
+    #   cut: 0 for the steps that end past T_cut (the earlier behaviour);
+    #   static: the step that crosses T_cut gets G(0) - int_0^{T_m} C, the later ones 0;
+    #   full: no cut.
     W = np.zeros((M, nk))
     for j in range(1, nk):
         Tm = k[j] * CS * dt * np.arange(M + 1)
-        Im = np.interp(Tm, T, I, right=I[-1])
+        if args.tail == "full":
+            W[:, j] = np.diff(np.interp(Tm, T, I))
+            continue
+        Im = np.interp(Tm, T, I, right=I_cut)
         w = np.diff(Im)
-        w[Tm[1:] > T_CUT] = 0.0
+        past = Tm[1:] > T_cut
+        if args.tail == "static" and past.any():
+            first = int(np.argmax(past))
+            w[first] = G0 - Im[first]
+            past[first] = False
+        w[past] = 0.0
         W[:, j] = w
+    # Each step's convolution is sum_m Wa[m] hist[n - m], Wa[m] = (W[m] + W[m + 1]) / 2: the
+    # slip averaged over each step (the m = 0 term's newer half, delta_{n+1}, is added apart).
+    Wn = np.vstack([W[1:], np.zeros((1, nk))])
+    Wa = 0.5 * (W + Wn)
     # The modes whose kernels are cut early need only their own history: columns grouped in
     # blocks, each summed over its longest history.
-    hist_len = np.array([np.count_nonzero(W[:, j]) for j in range(nk)])
+    nz = W != 0.0
+    hist_len = np.where(nz.any(0), M - np.argmax(nz[::-1], axis=0), 0)
     blocks = [(j0, min(j0 + 16, nk)) for j0 in range(0, nk, 16)]
     block_len = [int(hist_len[j0:j1].max()) for j0, j1 in blocks]
     fac = -0.5 * MU * k  # f_k = fac * conv
@@ -201,14 +290,9 @@ def main():
             m_top = min(n + 1, Lb)
             if m_top <= 0:
                 continue
-            # sum_{m=0}^{m_top-1} W[m] * 0.5 (hist[n+1-m] + hist[n-m]); hist[n+1] is the new one:
-            # its share is 0.5 W[0] (added below); the rest is known.
-            w = W[:m_top, j0:j1]
-            older = hist[n - np.arange(m_top), j0:j1]  # hist[n-m]
-            newer = hist[n + 1 - np.arange(1, m_top), j0:j1]  # hist[n+1-m], m >= 1
-            conv_hist[j0:j1] = 0.5 * np.einsum("mj,mj->j", w, older)
-            if m_top > 1:
-                conv_hist[j0:j1] += 0.5 * np.einsum("mj,mj->j", w[1:], newer)
+            # sum_{m=0}^{m_top-1} W[m] * 0.5 (hist[n+1-m] + hist[n-m]) = sum Wa[m] hist[n-m]
+            # (hist[0] = 0); hist[n+1] is the new one: its share is 0.5 W[0] (added below).
+            conv_hist[j0:j1] = np.einsum("mj,mj->j", Wa[:m_top, j0:j1], hist[n::-1][:m_top, j0:j1])
         nuc = dtau_nuc * F * Gt(t1)
         Vstar = V
         for it in range(2):
