@@ -179,8 +179,8 @@ void assemble_consistent_mass(State& s) {
         }
       }
     };
-    for_each_in_batches<false>(s, begin, end, [&](std::size_t p, int k, const StencilBatch& B) {
-      const std::size_t t0 = T.index(std::size_t(P.field[p]), B.first_x[k], B.first_y[k]);
+    for_each_in_batches<false>(s, begin, end, [&](std::size_t p, int k, const StencilBatch2& B) {
+      const std::size_t t0 = T.index(std::size_t(P.field[p]), B.first[0][k], B.first[1][k]);
       if (t0 != run_t0) {
         end_run();
         run_t0 = t0;
@@ -188,7 +188,7 @@ void assemble_consistent_mass(State& s) {
       }
       double w[9];
       for (int b = 0; b < 3; ++b)
-        for (int a = 0; a < 3; ++a) w[3 * b + a] = B.sx[a][k] * B.sy[b][k];
+        for (int a = 0; a < 3; ++a) w[3 * b + a] = B.w[0][a][k] * B.w[1][b][k];
       const double m = P.mass[p];
       for (int i = 0; i < 9; ++i) {
         const double mi = m * w[i];

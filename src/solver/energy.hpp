@@ -17,6 +17,7 @@
 
 #include <vector>
 
+#include "bulk/elastic_update.hpp"
 #include "material/elastic.hpp"
 #include "particles/particles.hpp"
 
@@ -38,9 +39,8 @@ inline double elastic_energy(const Particles& P, const ElasticStiffness& C, std:
 inline double stress_work(double volume0, double tr_eps, double sxx, double syy, double sxy,
                           double dexx, double deyy, double dexy, double dsxx, double dsyy,
                           double dsxy) {
-  const double v_mid = volume0 * (1.0 + tr_eps + 0.5 * (dexx + deyy));
-  return v_mid * ((sxx + 0.5 * dsxx) * dexx + (syy + 0.5 * dsyy) * deyy +
-                  2.0 * (sxy + 0.5 * dsxy) * dexy);
+  const double s[3] = {sxx, syy, sxy}, de[3] = {dexx, deyy, dexy}, ds[3] = {dsxx, dsyy, dsxy};
+  return stress_work<2>(volume0, tr_eps, s, de, ds);  // bulk/elastic_update.hpp
 }
 
 }  // namespace rupture

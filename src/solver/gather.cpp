@@ -19,6 +19,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "bulk/elastic_update.hpp"
 #include "core/errors.hpp"
 #include "solver/energy.hpp"
 #include "solver/stencil_batch.hpp"
@@ -123,30 +124,30 @@ struct RunNodes {
 // then down the rows with the y weights: S = sx_a sy_b, dS/dx = dsx_a sy_b, dS/dy = sx_a dsy_b.
 // Every lane of the tile vector at once: no horizontal sums.
 template <G2PMode kMode>
-void gather_nodes(const StencilBatch& B, int n, const typename GatherTile<kMode>::Lane* tile,
+void gather_nodes(const StencilBatch2& B, int n, const typename GatherTile<kMode>::Lane* tile,
                   const TileLayout& T, const std::uint8_t* field, Gathered& out,
                   RunNodes<typename GatherTile<kMode>::Lane>& run) {
   using GT = GatherTile<kMode>;
   using Lane = typename GT::Lane;
   const std::size_t cols = std::size_t(T.cols);
   for (int k = 0; k < n; ++k) {
-    const Lane* t0 = tile + T.index(field[k], B.first_x[k], B.first_y[k]);
+    const Lane* t0 = tile + T.index(field[k], B.first[0][k], B.first[1][k]);
     if (t0 != run.t0) {  // a new run of particles sharing a stencil (sort_particles)
       run.t0 = t0;
       for (int b = 0; b < 3; ++b)
         for (int a = 0; a < 3; ++a) run.node[3 * b + a] = t0[std::size_t(b) * cols + std::size_t(a)];
     }
-    const double sx0 = B.sx[0][k], sx1 = B.sx[1][k], sx2 = B.sx[2][k];
-    const double dx0 = B.dsx[0][k], dx1 = B.dsx[1][k], dx2 = B.dsx[2][k];
+    const double sx0 = B.w[0][0][k], sx1 = B.w[0][1][k], sx2 = B.w[0][2][k];
+    const double dx0 = B.dw[0][0][k], dx1 = B.dw[0][1][k], dx2 = B.dw[0][2][k];
     Lane S{}, Gx{}, Gy{};
     for (int b = 0; b < 3; ++b) {
       const Lane* r = run.node + 3 * b;
       const Lane row_s = sx0 * r[0] + sx1 * r[1] + sx2 * r[2];
-      S += B.sy[b][k] * row_s;
+      S += B.w[1][b][k] * row_s;
       if constexpr (GT::kStress) {
         const Lane row_d = dx0 * r[0] + dx1 * r[1] + dx2 * r[2];
-        Gx += B.sy[b][k] * row_d;
-        Gy += B.dsy[b][k] * row_s;
+        Gx += B.w[1][b][k] * row_d;
+        Gy += B.dw[1][b][k] * row_s;
       }
     }
     if constexpr (GT::kStress) {
@@ -183,15 +184,16 @@ void update_stress(Particles& P, std::size_t p, int n, const Gathered& g,
   const double* __restrict vol0 = P.volume0.data() + p;
 #pragma omp simd
   for (int k = 0; k < n; ++k) {
-    const double dexx = g.L00[k] * dt, deyy = g.L11[k] * dt, dexy = 0.5 * (g.L01[k] + g.L10[k]) * dt;
-    const double dsxx = c11[k] * dexx + c12[k] * deyy, dsyy = c12[k] * dexx + c11[k] * deyy,
-                 dsxy = 2.0 * mu[k] * dexy;
-    const double tr_eps = (sxx[k] + syy[k]) * kt[k];  // strain_trace, before the increment
-    wk[k] = stress_work(vol0[k], tr_eps, sxx[k], syy[k], sxy[k], dexx, deyy, dexy, dsxx, dsyy,
-                        dsxy);
-    sxx[k] += dsxx;
-    syy[k] += dsyy;
-    sxy[k] += dsxy;
+    const double L[2][2] = {{g.L00[k], g.L01[k]}, {g.L10[k], g.L11[k]}};
+    double de[3], ds[3];
+    strain_increment<2>(L, dt, de);
+    stress_increment<2>(c11[k], c12[k], mu[k], de, ds);
+    const double sig[3] = {sxx[k], syy[k], sxy[k]};
+    const double tr_eps = trace<2>(sig) * kt[k];  // strain_trace, before the increment
+    wk[k] = stress_work<2>(vol0[k], tr_eps, sig, de, ds);
+    sxx[k] += ds[0];
+    syy[k] += ds[1];
+    sxy[k] += ds[2];
   }
   for (int k = 0; k < n; ++k) work += wk[k];
   if (!P.viscous_on) return;
@@ -203,12 +205,16 @@ void update_stress(Particles& P, std::size_t p, int n, const Gathered& g,
   double* __restrict vxy = P.vsxy.data() + p;
 #pragma omp simd
   for (int k = 0; k < n; ++k) {
-    const double dexx = g.L00[k] * dt, deyy = g.L11[k] * dt, dexy = 0.5 * (g.L01[k] + g.L10[k]) * dt;
-    const double V = vol0[k] * (1.0 + (sxx[k] + syy[k]) * kt[k]);
-    wk[k] = V * (vxx[k] * dexx + vyy[k] * deyy + 2.0 * vxy[k] * dexy);
-    vxx[k] = kv[k] * (c11[k] * dexx + c12[k] * deyy);
-    vyy[k] = kv[k] * (c12[k] * dexx + c11[k] * deyy);
-    vxy[k] = kv[k] * 2.0 * mu[k] * dexy;
+    const double L[2][2] = {{g.L00[k], g.L01[k]}, {g.L10[k], g.L11[k]}};
+    double de[3], vs[3];
+    strain_increment<2>(L, dt, de);
+    const double sig[3] = {sxx[k], syy[k], sxy[k]}, vs_last[3] = {vxx[k], vyy[k], vxy[k]};
+    const double V = vol0[k] * (1.0 + trace<2>(sig) * kt[k]);
+    wk[k] = V * contract<2>(vs_last, de);
+    viscous_stress<2>(kv[k], c11[k], c12[k], mu[k], de, vs);
+    vxx[k] = vs[0];
+    vyy[k] = vs[1];
+    vxy[k] = vs[2];
   }
   for (int k = 0; k < n; ++k) viscous_work += wk[k];  // in particle order, as the elastic work
 }
@@ -351,7 +357,7 @@ StripResult strip_to_particles(State& s, int strip, const double* gvx, const dou
   for_each_tile_row(s, T, [&](std::size_t t, std::size_t e, int count) {
     pack_tile_row<GT::kLanes>(tile + t, count, lanes, e);
   });
-  StencilBatch B;
+  StencilBatch2 B;
   Gathered g;
   RunNodes<typename GT::Lane> run;
   for (std::size_t p0 = begin; p0 < end; p0 += kBatch) {

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "bulk/node_update.hpp"
 #include "solver/state.hpp"
 
 namespace rupture {
@@ -25,16 +26,9 @@ void remapped_grid_velocity(State& s, const std::vector<std::uint32_t>& nodes,
 // E4 at element i: p^{n+1} = p^n + dt f stored as velocity and increment (zero where the node is
 // empty). The loops of integrate_grid and of the nested levels' partial updates.
 inline void integrate_node(GridFields& G, std::size_t i, double dt, double floor) {
-  const double m = G.mass[i];
-  if (m > floor) {
-    const double inv_m = 1.0 / m;
-    G.dvel_x[i] = dt * G.force_x[i] * inv_m;
-    G.dvel_y[i] = dt * G.force_y[i] * inv_m;
-    G.vel_x[i] = G.mom_x[i] * inv_m + G.dvel_x[i];
-    G.vel_y[i] = G.mom_y[i] * inv_m + G.dvel_y[i];
-  } else {
-    G.dvel_x[i] = G.dvel_y[i] = G.vel_x[i] = G.vel_y[i] = 0.0;
-  }
+  const NodeArrays<2> g{G.mass.data(), {G.mom_x.data(), G.mom_y.data()}, {G.force_x.data(), G.force_y.data()},
+                        {G.vel_x.data(), G.vel_y.data()}, {G.dvel_x.data(), G.dvel_y.data()}};
+  integrate_node<2>(g, i, dt, floor);  // bulk/node_update.hpp
 }
 
 }  // namespace rupture

@@ -165,30 +165,32 @@ void band_remap(State& s, const LevelHold& H, const std::vector<std::uint32_t>& 
   // The band's particles of band[j0, j1), in batches (their stencils SIMD over the batch).
   const auto remap = [&](std::size_t j0, std::size_t j1) {
     alignas(64) double x[kBatch], y[kBatch], hx[kBatch], hy[kBatch];
-    StencilBatch B;
+    StencilBatch2 B;
     for (; j0 < j1; j0 += std::size_t(kBatch)) {
       const int n = int(std::min<std::size_t>(std::size_t(kBatch), j1 - j0));
       for (int k = 0; k < n; ++k) {
         const std::size_t p = H.band[j0 + std::size_t(k)];
         x[k] = P.x[p], y[k] = P.y[p], hx[k] = P.half_x[p], hy[k] = P.half_y[p];
       }
-      axis_stencils(s.grid.x, x, hx, n, B.sx, B.dsx, B.first_x);
-      axis_stencils(s.grid.y, y, hy, n, B.sy, B.dsy, B.first_y);
+      const Axis* const axis[2] = {&s.grid.x, &s.grid.y};
+      const double* const xy[2] = {x, y};
+      const double* const lp[2] = {hx, hy};
+      rupture::batch_stencils<2>(axis, xy, lp, n, B);
       for (int k = 0; k < n; ++k) {
         const std::size_t p = H.band[j0 + std::size_t(k)];
-        const std::size_t base = G.index(P.field[p], B.first_x[k], B.first_y[k]), stride = G.stride(P.field[p]);
+        const std::size_t base = G.index(P.field[p], B.first[0][k], B.first[1][k]), stride = G.stride(P.field[p]);
         double vx = P.vx[p], vy = P.vy[p];
         for (int b = 0; b < 3; ++b)
           for (int a = 0; a < 3; ++a) {
             const std::size_t i = base + std::size_t(b) * stride + std::size_t(a);
-            const double w = B.sx[a][k] * B.sy[b][k];
+            const double w = B.w[0][a][k] * B.w[1][b][k];
             vx += w * H.inc_x[i], vy += w * H.inc_y[i];
           }
         const double m = P.mass[p];
         for (int b = 0; b < 3; ++b)
           for (int a = 0; a < 3; ++a) {
             const std::size_t i = base + std::size_t(b) * stride + std::size_t(a);
-            const double w = m * B.sx[a][k] * B.sy[b][k];
+            const double w = m * B.w[0][a][k] * B.w[1][b][k];
             G.remap_x[i] += w * vx, G.remap_y[i] += w * vy;
           }
       }

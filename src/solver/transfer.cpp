@@ -55,10 +55,10 @@ inline void batch_force(const Particles& P, const ElasticStiffness* stiffness, b
 // contribution first and adding it took a third more vector operations; measured in
 // docs/performance.md, "Choices in the code").
 template <bool kWithForce>
-inline void add_node_contribution(Lane8& acc, const StencilBatch& B, int k, int b,
+inline void add_node_contribution(Lane8& acc, const StencilBatch2& B, int k, int b,
                                   const Lane8& col, const Lane8& col_y) {
-  acc += B.sy[b][k] * col;
-  if constexpr (kWithForce) acc += B.dsy[b][k] * col_y;
+  acc += B.w[1][b][k] * col;
+  if constexpr (kWithForce) acc += B.dw[1][b][k] * col_y;
 }
 
 // One strip of the mass, momentum [and force] scatter (strips of one colour run in parallel).
@@ -83,22 +83,22 @@ void scatter_strip(State& s, int strip, std::size_t begin, std::size_t end) {
     for (int b = 0; b < 3; ++b)
       for (int a = 0; a < 3; ++a) run_t0[std::size_t(b) * cols + std::size_t(a)] += run[3 * b + a];
   };
-  for_each_in_batches(s, begin, end, [&](std::size_t p, int k, const StencilBatch& B) {
+  for_each_in_batches(s, begin, end, [&](std::size_t p, int k, const StencilBatch2& B) {
     const double m = P.mass[p];
     const Lane8 A = {m, m * P.vx[p], m * P.vy[p], 0, 0, 0, 0, 0};
     // theory E4: f_i = -sum_p V_p sigma_p . grad S_ip
     const Lane8 Fx = {0, 0, 0, f.xx[k], f.xy[k], 0, 0, 0};
     const Lane8 Fy = {0, 0, 0, f.xy[k], f.yy[k], 0, 0, 0};
-    Lane8* t0 = tile + T.index(P.field[p], B.first_x[k], B.first_y[k]);
+    Lane8* t0 = tile + T.index(P.field[p], B.first[0][k], B.first[1][k]);
     // Node (a, b) takes S A + dS/dx Fx + dS/dy Fy with S = sx_a sy_b, dS/dx = dsx_a sy_b,
     // dS/dy = sx_a dsy_b: the column factors sx_a A + dsx_a Fx and sx_a Fy once per column,
     // then two vector operations per node.
     Lane8 col[3], col_y[3] = {};
     for (int a = 0; a < 3; ++a) {
-      col[a] = B.sx[a][k] * A;
+      col[a] = B.w[0][a][k] * A;
       if constexpr (kWithForce) {
-        col[a] += B.dsx[a][k] * Fx;
-        col_y[a] = B.sx[a][k] * Fy;
+        col[a] += B.dw[0][a][k] * Fx;
+        col_y[a] = B.w[0][a][k] * Fy;
       }
     }
     const bool first = t0 != run_t0;
@@ -172,13 +172,13 @@ void particles_to_grid_force(State& s) {
   State* one = &s;
   for_each_strip_coloured(&one, 1, [&](State&, int, std::size_t begin, std::size_t end) {
     BatchForce f;
-    for_each_in_batches(s, begin, end, [&](std::size_t p, int k, const StencilBatch& B) {
+    for_each_in_batches(s, begin, end, [&](std::size_t p, int k, const StencilBatch2& B) {
       const int field = P.field[p];
-      const std::size_t base = G.index(field, B.first_x[k], B.first_y[k]), stride = G.stride(field);
+      const std::size_t base = G.index(field, B.first[0][k], B.first[1][k]), stride = G.stride(field);
       for (int b = 0; b < 3; ++b) {
         const std::size_t row = base + std::size_t(b) * stride;
         for (int a = 0; a < 3; ++a) {
-          const double gx = B.dsx[a][k] * B.sy[b][k], gy = B.sx[a][k] * B.dsy[b][k];
+          const double gx = B.dw[0][a][k] * B.w[1][b][k], gy = B.w[0][a][k] * B.dw[1][b][k];
           fx[row + a] += f.xx[k] * gx + f.xy[k] * gy;
           fy[row + a] += f.xy[k] * gx + f.yy[k] * gy;
         }
@@ -223,8 +223,8 @@ void velocity_remap_strip(State& s, int strip, std::size_t begin, std::size_t en
     for (int b = 0; b < 3; ++b)
       for (int a = 0; a < 3; ++a) out[run_t0 + std::size_t(b) * cols + std::size_t(a)] += run[3 * b + a];
   };
-  for_each_in_batches<false>(s, begin, end, [&](std::size_t p, int k, const StencilBatch& B) {
-    const std::size_t t0 = T.index(P.field[p], B.first_x[k], B.first_y[k]);
+  for_each_in_batches<false>(s, begin, end, [&](std::size_t p, int k, const StencilBatch2& B) {
+    const std::size_t t0 = T.index(P.field[p], B.first[0][k], B.first[1][k]);
     const bool first = t0 != run_t0;
     if (first) {
       end_run();
@@ -236,7 +236,7 @@ void velocity_remap_strip(State& s, int strip, std::size_t begin, std::size_t en
     In acc = {};  // dv x, dv y [, v x, v y]
     for (int b = 0; b < 3; ++b) {
       const In* r = node + 3 * b;
-      acc += B.sy[b][k] * (B.sx[0][k] * r[0] + B.sx[1][k] * r[1] + B.sx[2][k] * r[2]);
+      acc += B.w[1][b][k] * (B.w[0][0][k] * r[0] + B.w[0][1][k] * r[1] + B.w[0][2][k] * r[2]);
     }
     // FLIP/PIC blend of the particle velocity update.
     double vx, vy;
@@ -251,13 +251,13 @@ void velocity_remap_strip(State& s, int strip, std::size_t begin, std::size_t en
     P.vy[p] = vy;
     const double m = P.mass[p];
     const Lane2 mv = {m * vx, m * vy};
-    const Lane2 col[3] = {B.sx[0][k] * mv, B.sx[1][k] * mv, B.sx[2][k] * mv};
+    const Lane2 col[3] = {B.w[0][0][k] * mv, B.w[0][1][k] * mv, B.w[0][2][k] * mv};
     if (first) {
       for (int b = 0; b < 3; ++b)
-        for (int a = 0; a < 3; ++a) run[3 * b + a] = B.sy[b][k] * col[a];
+        for (int a = 0; a < 3; ++a) run[3 * b + a] = B.w[1][b][k] * col[a];
     } else {
       for (int b = 0; b < 3; ++b)
-        for (int a = 0; a < 3; ++a) run[3 * b + a] += B.sy[b][k] * col[a];
+        for (int a = 0; a < 3; ++a) run[3 * b + a] += B.w[1][b][k] * col[a];
     }
   }, [&](std::size_t p0) {
     for (const std::vector<double>* a : {&P.mass, &P.vx, &P.vy}) prefetch_batch(a->data(), p0);
