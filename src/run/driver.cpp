@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <filesystem>
 #include <fmt/format.h>
 
@@ -18,6 +19,7 @@
 #include "run/run_io.hpp"
 #include "run/run_result.hpp"
 #include "run/run_setup.hpp"
+#include "run/thread_tuner.hpp"
 #include "solver/crack_growth.hpp"
 #include "solver/step.hpp"
 #include "solver/summary.hpp"
@@ -25,6 +27,13 @@
 
 namespace rupture {
 namespace {
+
+// CPU time of the process (all its threads), s.
+double process_cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
 
 // Added to the step's agreed signal number when rank 0 failed to write (signals are < 128).
 constexpr double kWriteFailed = 1024.0;
@@ -84,13 +93,20 @@ RunResult run_case(const Case& c, const RunOptions& options) {
   const double eps = ctx.eps;
   const bool growing = std::any_of(c.interfaces.begin(), c.interfaces.end(),
                                    [](const InterfaceSpec& is) { return is.growth.on(); });
+  // solver.threads = 0: the thread count from the step times (run/thread_tuner.hpp).
+  ThreadTuner tuner(omp_get_max_threads(), c.solver.threads == 0);
   InterruptGuard interrupt_guard;
   RunEnd end;
   try {
     while (s.time < c.time.end - eps) {
       s.dt_cap = c.time.end - s.time;  // land exactly on the end time
       s.sync_by = sync_by(outputs, c.time.end, eps);  // what reads particles waits for the levels
+      const auto step_start = std::chrono::steady_clock::now();
+      const double cpu_start = process_cpu_seconds();
       step_forward(s);
+      const int threads = tuner.threads();
+      const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - step_start).count();
+      if (tuner.after_step(wall, process_cpu_seconds() - cpu_start) != threads) omp_set_num_threads(tuner.threads());
       note_rebalance(s, result, io.writer);
       const bool last = s.time >= c.time.end - eps;
       // Between the finest steps of a coarser level's step (per-level time steps) some particles

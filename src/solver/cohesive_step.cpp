@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <vector>
 #include <type_traits>
 #include <cmath>
 #include <variant>
@@ -113,8 +114,13 @@ void evaluate_with(CohesiveInterface& c, const Law& law, double t, double t_befo
   const bool contact = c.spec.contact;
   const ContactLaw& contact_law = c.spec.contact_law;
   const long nseg = long(c.num_segments());
-  double work = 0.0;
-#pragma omp parallel for schedule(static) reduction(+ : work)
+  // The tractions' work per Gauss point, summed after the loop in Gauss-point order: the same to
+  // the bit whatever the number of threads (a run may change it between steps:
+  // run/thread_tuner.hpp).
+  thread_local std::vector<double> gp_work;
+  gp_work.assign(std::size_t(nseg) * kG, 0.0);
+  double* const work_of = gp_work.data();
+#pragma omp parallel for schedule(static)
   for (long sl = 0; sl < nseg; ++sl) {
     const std::size_t s = std::size_t(sl), e = c.segment_end(s);
     // Distributed: the segments touching an owned node (their Gauss histories are kept alike
@@ -162,8 +168,8 @@ void evaluate_with(CohesiveInterface& c, const Law& law, double t, double t_befo
       const double tn = r.tn, tt = r.tt, k = r.stiffness;
       // Work of the tractions over the step, trapezoidal in time (E14).
       const double jw = kW[g] * half;
-      work += count_work * jw * (0.5 * (c.gp_tn[i] + tn) * (dn - c.gp_dn[i]) +
-                                 0.5 * (c.gp_tt[i] + tt) * (dt - c.gp_dt[i]));
+      work_of[i] = count_work * jw * (0.5 * (c.gp_tn[i] + tn) * (dn - c.gp_dn[i]) +
+                                      0.5 * (c.gp_tt[i] + tt) * (dt - c.gp_dt[i]));
       c.gp_dn[i] = dn, c.gp_dt[i] = dt, c.gp_tn[i] = tn, c.gp_tt[i] = tt;
       fa_n += jw * Na * tn, fa_t += jw * Na * tt;
       fb_n += jw * Nb * tn, fb_t += jw * Nb * tt;
@@ -174,6 +180,8 @@ void evaluate_with(CohesiveInterface& c, const Law& law, double t, double t_befo
     c.seg_fa_x[s] = -(fa_n * nx + fa_t * tx), c.seg_fa_y[s] = -(fa_n * ny + fa_t * ty);
     c.seg_fb_x[s] = -(fb_n * nx + fb_t * tx), c.seg_fb_y[s] = -(fb_n * ny + fb_t * ty);
   }
+  double work = 0.0;
+  for (const double w : gp_work) work += w;
   c.work += work;
   c.time = t;
   const long nn = long(c.num_nodes());
