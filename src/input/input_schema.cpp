@@ -250,7 +250,8 @@ std::vector<KeyDoc> build_schema() {
        "1/sqrt(2) of the lumped one's)",
        "\"averaged\""},
       {"solver.threads", "integer", "", "0", "[0, 1024] (0 = all cores)",
-       "OpenMP threads (results do not depend on it)", "2"},
+       "OpenMP threads (results do not depend on it); 0: all cores, or 1 where another process "
+       "holds a core and 1 thread steps faster (timed during the run: docs/performance.md)", "2"},
       {"solver.memory_limit_mib", "number", "MiB", "0 (the machine's memory)", ">= 0",
        "the largest memory estimate (rupture check's memory_estimate_mib) a run may start "
        "with; a case above it is refused before any allocation, and before its bodies' seed "
