@@ -62,6 +62,25 @@ TEST(VelocityBC, a_normal_condition_moves_to_the_nearest_grid_line) {
   EXPECT_EQ(edge_line(top, g, 0.151), g.y.cells - g.ghost + 2);
 }
 
+// A nested level's edge starts on the level's own line (its base), not on the single grid's
+// initial line: the same rule moves it by the same displacement from there.
+TEST(VelocityBC, an_edge_moves_from_the_line_it_starts_on) {
+  const double h = 0.1;
+  const double lo[2] = {0.0, 0.0}, hi[2] = {1.0, 1.0};
+  const Grid g = make_uniform_grid(lo, hi, h);
+  const VelocityBC push = condition(Edge::left, 0, 1.0);
+  const int base = g.ghost + 4;
+  EXPECT_EQ(edge_line(push, g, base, 0.0), base);
+  EXPECT_EQ(edge_line(push, g, base, 0.049), base);
+  EXPECT_EQ(edge_line(push, g, base, 0.251), base + 3);
+  EXPECT_EQ(edge_line(push, g, base, 0.251) - base, edge_line(push, g, 0.251) - g.ghost);
+  EXPECT_EQ(initial_lines({push}, g), std::vector<int>{g.ghost});
+  std::vector<int> lines;
+  EXPECT_TRUE(update_edge_lines({push}, {base}, g, 0.151, lines));
+  EXPECT_EQ(lines, std::vector<int>{base + 2});
+  EXPECT_FALSE(update_edge_lines({push}, {base}, g, 0.16, lines));
+}
+
 TEST(VelocityBC, a_moving_condition_drives_its_line_and_every_line_outside_it) {
   const double h = 0.1;
   const double lo[2] = {0.0, 0.0}, hi[2] = {1.0, 1.0};

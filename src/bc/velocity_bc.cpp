@@ -24,11 +24,10 @@ int initial_line(const VelocityBC& bc, const Grid& grid) {
 }
 }  // namespace
 
-int edge_line(const VelocityBC& bc, const Grid& grid, double t) {
-  const int line0 = initial_line(bc, grid);
-  if (!bc.moves()) return line0;
+int edge_line(const VelocityBC& bc, const Grid& grid, int base, double t) {
+  if (!bc.moves()) return base;
   const Axis& across = vertical(bc.edge) ? grid.x : grid.y;
-  const double pos = across.node(line0) + bc.velocity.displacement(t);
+  const double pos = across.node(base) + bc.velocity.displacement(t);
   // Nearest node: the cell holding pos, then whichever of its two nodes is closer.
   int c = across.cell_of(pos);
   c = std::clamp(c, 0, across.cells - 1);
@@ -36,16 +35,31 @@ int edge_line(const VelocityBC& bc, const Grid& grid, double t) {
   return std::clamp(nearest, 0, across.nodes() - 1);
 }
 
-bool update_edge_lines(const std::vector<VelocityBC>& bcs, const Grid& grid, double t,
-                       std::vector<int>& lines) {
+std::vector<int> initial_lines(const std::vector<VelocityBC>& bcs, const Grid& grid) {
+  std::vector<int> lines;
+  for (const VelocityBC& bc : bcs) lines.push_back(initial_line(bc, grid));
+  return lines;
+}
+
+int edge_line(const VelocityBC& bc, const Grid& grid, double t) {
+  return edge_line(bc, grid, initial_line(bc, grid), t);
+}
+
+bool update_edge_lines(const std::vector<VelocityBC>& bcs, const std::vector<int>& base,
+                       const Grid& grid, double t, std::vector<int>& lines) {
   bool changed = lines.size() != bcs.size();
   lines.resize(bcs.size(), -1);
   for (std::size_t c = 0; c < bcs.size(); ++c) {
-    const int l = edge_line(bcs[c], grid, t);
+    const int l = edge_line(bcs[c], grid, base[c], t);
     changed = changed || l != lines[c];
     lines[c] = l;
   }
   return changed;
+}
+
+bool update_edge_lines(const std::vector<VelocityBC>& bcs, const Grid& grid, double t,
+                       std::vector<int>& lines) {
+  return update_edge_lines(bcs, initial_lines(bcs, grid), grid, t, lines);
 }
 
 std::vector<NodeBC> resolve_nodes(const std::vector<VelocityBC>& bcs, const Grid& grid,

@@ -47,12 +47,20 @@ struct NodeBC {
 };
 
 // Index of the grid line (a node column for left/right edges, a node row for bottom/top) nearest
-// to the edge of condition bc at time t: the initial edge line, moved by the velocity's
-// displacement when bc.moves(). Clamped to the grid.
+// to the edge of condition bc at time t: line `base` (where the edge starts, t = 0), moved by the
+// velocity's displacement when bc.moves(). Clamped to the grid. The one rule for the single grid
+// (base: initial_lines) and for each nested level (base: the level's own line of the edge,
+// solver/nested_state.cpp).
+int edge_line(const VelocityBC& bc, const Grid& grid, int base, double t);
+// Where every condition's edge starts on the single grid (the domain's edges, inside the ghosts).
+std::vector<int> initial_lines(const std::vector<VelocityBC>& bcs, const Grid& grid);
+// The same from the single grid's initial line.
 int edge_line(const VelocityBC& bc, const Grid& grid, double t);
 
-// Sets lines[c] = edge_line(bcs[c], grid, t) for every condition (resizing lines if needed);
-// returns true if any entry changed.
+// Sets lines[c] = edge_line(bcs[c], grid, base[c], t) for every condition (resizing lines if
+// needed); returns true if any entry changed. Without base: from initial_lines.
+bool update_edge_lines(const std::vector<VelocityBC>& bcs, const std::vector<int>& base,
+                       const Grid& grid, double t, std::vector<int>& lines);
 bool update_edge_lines(const std::vector<VelocityBC>& bcs, const Grid& grid, double t,
                        std::vector<int>& lines);
 

@@ -5,6 +5,7 @@
 // Levels view. Internal to solver/.
 #pragma once
 #include <initializer_list>
+#include <vector>
 
 #include "solver/levels.hpp"
 #include "solver/nested_state.hpp"
@@ -31,6 +32,13 @@ void tie_and_face_stencils(const Levels& L);
 void cohesive_forces_and_ties(const Levels& L);
 // E5 over L's levels; distributed, a bad particle's diagnosis waits for the end of the step.
 void gather(const Levels& L, NodalArray gx, NodalArray gy, G2PMode mode);
+
+// The beginning of a level's step, on one grid and on each nested level: when `resort` (its
+// particles have moved since its last step began) the particles re-sorted when due and each
+// field's window fitted to them; a driven edge that has moved onto another grid line takes its
+// condition with it (E2: the nearest line to where the edge is, from the lines it started on,
+// base_lines); the loads' particles after a sort and region nodes at t^n.
+void begin_level_step(State& s, const std::vector<int>& base_lines, bool resort);
 
 // One step of the scheme with one dt (the smallest of the levels' limits, theory E6) for every
 // level, then the clock and the interfaces advanced (solver/step.cpp).

@@ -59,22 +59,6 @@ void set_level_boundary(State& s, const Case& c, const LevelLattice& L, std::vec
   s.bc_nodes = resolve_nodes(s.boundary, s.grid, s.fields.num_fields, s.bc_lines);
 }
 
-// A driven edge that has moved onto another lattice line takes its condition with it (E2),
-// as update_edge_lines does on the single grid: the nearest line to where the edge is now.
-void follow_edges(State& s, const std::vector<int>& base) {
-  bool changed = false;
-  for (std::size_t k = 0; k < s.boundary.size(); ++k) {
-    const VelocityBC& bc = s.boundary[k];
-    if (!bc.moves()) continue;
-    const Axis& a = (bc.edge == Edge::left || bc.edge == Edge::right) ? s.grid.x : s.grid.y;
-    const int line = std::clamp(base[k] + int(std::lround(bc.velocity.displacement(s.time) / a.h)), 0,
-                                a.nodes() - 1);
-    changed = changed || line != s.bc_lines[k];
-    s.bc_lines[k] = line;
-  }
-  if (changed) s.bc_nodes = resolve_nodes(s.boundary, s.grid, s.fields.num_fields, s.bc_lines);
-}
-
 // The level that holds interface `ci` whole: every face node's bilinear stencil (its cell's
 // four nodes) made of that level's DOFs, so the cohesive forces land on DOFs and the faces
 // read DOF velocities. Throws InputError otherwise.
@@ -570,15 +554,8 @@ void step_nested(RunState& n) {
   }
   if (RankExchange* x = n.levels[0].halo.get()) x->migrate_levels_if_due(n);  // distributed: particles
   // that left the rank's block
-  for (std::size_t l = 0; l < n.levels.size(); ++l) {
-    State& s = n.levels[l];
-    if (!subcycled || n.substep % n.period[l] == 0) {  // the particles have moved since
-      build_scatter_plan(s);
-      fit_field_windows(s);
-    }
-    follow_edges(s, n.base_lines[l]);
-    prepare_loads(s);  // loaded particles after a sort, region nodes at t^n
-  }
+  for (std::size_t l = 0; l < n.levels.size(); ++l)  // resorted where the particles have moved since
+    detail::begin_level_step(n.levels[l], n.base_lines[l], !subcycled || n.substep % n.period[l] == 0);
   const NestedDrift before = nested_drift_before(n);
   const Levels all = detail::levels_of(n);
   const Scheme scheme = n.levels[0].scheme;

@@ -278,6 +278,16 @@ void gather(const Levels& L, NodalArray gx, NodalArray gy, G2PMode mode) {
   }
 }
 
+void begin_level_step(State& s, const std::vector<int>& base_lines, bool resort) {
+  if (resort) {
+    build_scatter_plan(s);
+    fit_field_windows(s);  // every field's window covers its particles, faces and ties
+  }
+  if (update_edge_lines(s.boundary, base_lines, s.grid, s.time, s.bc_lines))
+    s.bc_nodes = resolve_nodes(s.boundary, s.grid, s.fields.num_fields, s.bc_lines);
+  prepare_loads(s);  // loaded particles after a sort, region nodes at t^n
+}
+
 void step_levels(const Levels& L, Scheme scheme) {
   switch (scheme) {
     case Scheme::MUSL:
@@ -297,13 +307,10 @@ void step_levels(const Levels& L, Scheme scheme) {
 
 void step(State& s) {
   migrate_if_due(s);  // distributed: particles that left their rank's block move to its owner
-  build_scatter_plan(s);
-  const double drift_at_start = s.plan.drift;
-  fit_field_windows(s);  // every field's window covers its particles, faces and ties
-  // A driven edge that has moved onto another grid line takes its condition with it (E2).
-  if (update_edge_lines(s.boundary, s.grid, s.time, s.bc_lines))
-    s.bc_nodes = resolve_nodes(s.boundary, s.grid, s.fields.num_fields, s.bc_lines);
-  prepare_loads(s);  // loaded particles after a sort, region nodes at t^n
+  thread_local std::vector<int> base;  // the single grid's edges start on its initial lines
+  base = initial_lines(s.boundary, s.grid);
+  detail::begin_level_step(s, base, true);
+  const double drift_at_start = s.plan.drift;  // the re-sort's (fit_field_windows leaves it)
   State* const one[] = {&s};
   detail::step_levels(Levels{one, 1, nullptr}, s.scheme);
   finish_distributed_step(s, drift_at_start);  // migration bound; a failure on any rank stops all
