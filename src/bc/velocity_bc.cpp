@@ -35,9 +35,14 @@ int edge_line(const VelocityBC& bc, const Grid& grid, int base, double t) {
   return std::clamp(nearest, 0, across.nodes() - 1);
 }
 
+void initial_lines(const std::vector<VelocityBC>& bcs, const Grid& grid, std::vector<int>& lines) {
+  lines.clear();
+  for (const VelocityBC& bc : bcs) lines.push_back(initial_line(bc, grid));
+}
+
 std::vector<int> initial_lines(const std::vector<VelocityBC>& bcs, const Grid& grid) {
   std::vector<int> lines;
-  for (const VelocityBC& bc : bcs) lines.push_back(initial_line(bc, grid));
+  initial_lines(bcs, grid, lines);
   return lines;
 }
 

@@ -54,6 +54,7 @@ struct NodeBC {
 int edge_line(const VelocityBC& bc, const Grid& grid, int base, double t);
 // Where every condition's edge starts on the single grid (the domain's edges, inside the ghosts).
 std::vector<int> initial_lines(const std::vector<VelocityBC>& bcs, const Grid& grid);
+void initial_lines(const std::vector<VelocityBC>& bcs, const Grid& grid, std::vector<int>& lines);  // into lines, reusing it
 // The same from the single grid's initial line.
 int edge_line(const VelocityBC& bc, const Grid& grid, double t);
 

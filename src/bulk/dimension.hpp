@@ -48,7 +48,6 @@ constexpr int symmetric_index(int i, int j) {
 }
 
 // Nodes of a GIMP stencil: 3 per axis.
-inline constexpr int kStencilAxis = 3;
 template <int dim>
 inline constexpr int kStencilNodes = dim == 2 ? 9 : 27;
 

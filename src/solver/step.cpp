@@ -308,7 +308,7 @@ void step_levels(const Levels& L, Scheme scheme) {
 void step(State& s) {
   migrate_if_due(s);  // distributed: particles that left their rank's block move to its owner
   thread_local std::vector<int> base;  // the single grid's edges start on its initial lines
-  base = initial_lines(s.boundary, s.grid);
+  initial_lines(s.boundary, s.grid, base);  // no allocation once sized
   detail::begin_level_step(s, base, true);
   const double drift_at_start = s.plan.drift;  // the re-sort's (fit_field_windows leaves it)
   State* const one[] = {&s};
